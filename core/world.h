@@ -1,0 +1,131 @@
+// One SSL world: the immutable model (scene + compiled MuJoCo model) and the
+// mutable state (MuJoCo data, per-robot commands and feedback).
+//
+// A step runs in named stages; inputs enter only between steps:
+//   inputs   SetCommand / TeleportBall / TeleportRobot / Reset (validated)
+//   Step():  1 watchdog  2 drive  3 ball handling (kick, dribble)
+//            4 ball model  5 physics (mj_step)  6 containment  7 feedback
+//   outputs  Snapshot() and the accessors (read-only)
+// Time is the step counter times the scene's step: never a wall clock.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/ball_handling.h"
+#include "core/scene.h"
+#include "core/types.h"
+
+struct mjModel_;
+struct mjData_;
+
+namespace turf {
+
+struct RobotSnapshot {
+  Team team = Team::kBlue;
+  int id = 0;
+  bool on_field = false;
+  double x = 0.0;
+  double y = 0.0;
+  double yaw = 0.0;
+  double vx = 0.0;
+  double vy = 0.0;
+  double omega = 0.0;
+  bool ball_contact = false;
+  uint32_t kick_count = 0;
+  KickKind last_kick = KickKind::kNone;
+};
+
+struct BallSnapshot {
+  Vec3 position;
+  Vec3 velocity;
+  Vec3 angular_velocity;
+};
+
+struct WorldSnapshot {
+  int64_t time_ns = 0;
+  uint64_t frame = 0;
+  BallSnapshot ball;
+  std::vector<RobotSnapshot> robots;  // every robot of the model, team-major
+};
+
+// Counters of what the world corrected to stay sane; non-zero values are worth
+// a log line.
+struct WorldHealth {
+  uint64_t containment_corrections = 0;  // a body pushed back inside the walls
+  uint64_t instability_recoveries = 0;  // a non-finite step undone
+};
+
+class World {
+ public:
+  // Owns MuJoCo's model and data (RAII).
+  struct MjDeleter {
+    void operator()(mjModel_* m) const;
+    void operator()(mjData_* d) const;
+  };
+
+  // Throws std::invalid_argument if the scene fails ValidateScene or MuJoCo
+  // cannot compile it; a constructed World is always usable.
+  explicit World(Scene scene);
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  const Scene& scene() const { return scene_; }
+
+  // --- Inputs: validated; a refused input changes nothing. ---
+  InputError SetCommand(const RobotCommand& command);
+  InputError TeleportBall(const BallTeleport& teleport);
+  InputError TeleportRobot(const RobotTeleport& teleport);
+  // Back to the scene's start: time 0, start poses, no commands.
+  void Reset();
+
+  // --- One physics step through all stages. ---
+  void Step();
+
+  // --- Outputs. ---
+  int64_t time_ns() const { return frame_ * step_ns_; }
+  uint64_t frame() const { return frame_; }
+  int64_t step_ns() const { return step_ns_; }
+  const WorldHealth& health() const { return health_; }
+  WorldSnapshot Snapshot() const;
+  void Snapshot(WorldSnapshot* out) const;  // reuses out's storage
+  // Index of a robot in Snapshot().robots, or -1 if the scene has no such robot.
+  int RobotIndex(Team team, int id) const;
+
+ private:
+  struct RobotSlot;
+
+  RobotKinematics Kinematics(const RobotSlot& slot) const;
+  BallState Ball() const;
+  double FloorNormalForce() const;
+  void PlaceRobot(RobotSlot& slot, double x, double y, double yaw, const Vec3& velocity);
+  void StageWatchdog();
+  void StageDrive();
+  void StageBallHandling();
+  void StageBallModel();
+  bool StagePhysics();
+  void StageContainment();
+  void StageFeedback();
+
+  Scene scene_;
+  std::unique_ptr<mjModel_, MjDeleter> model_;
+  std::unique_ptr<mjData_, MjDeleter> data_;
+  std::vector<RobotSlot> robots_;
+  int ball_qpos_ = 0;
+  int ball_qvel_ = 0;
+  int ball_body_ = 0;
+  int ball_geom_ = 0;
+  int floor_geom_ = 0;
+  double floor_normal_force_ = 0.0;  // carpet on ball, from the last step
+  double ball_inertia_ = 0.0;
+  int64_t step_ns_ = 0;
+  uint64_t frame_ = 0;
+  std::vector<double> last_good_qpos_;
+  std::vector<double> last_good_qvel_;
+  WorldHealth health_;
+};
+
+}  // namespace turf
