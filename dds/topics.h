@@ -1,0 +1,47 @@
+// Every turf DDS topic, once. Participants, tests and docs derive names and
+// QoS profile names from this table; the QoS itself is in configs/qos/turf_qos.xml.
+#pragma once
+
+#include <string>
+
+namespace turf::dds {
+
+enum class Topic {
+  kClock,
+  kWorldState,
+  kSslField,
+  kSslCamera,
+  kSslCommandBlue,
+  kSslCommandYellow,
+  kSslFeedbackBlue,
+  kSslFeedbackYellow,
+  kControl,
+  kControlReply,
+};
+
+struct TopicInfo {
+  Topic topic;
+  const char* suffix;  // full name: <prefix>/<suffix>
+  const char* profile;  // data_writer / data_reader profile in the QoS file
+  const char* type;  // IDL type (turf::idl::...)
+  const char* what;
+};
+
+inline constexpr TopicInfo kTopics[] = {
+    {Topic::kClock, "clock", "turf.clock", "Clock", "simulation time, with every world state"},
+    {Topic::kWorldState, "world_state", "turf.state", "WorldState", "ground truth of ball and robots"},
+    {Topic::kSslField, "ssl/field", "turf.field", "SslField", "field geometry, ball model, cameras (latched)"},
+    {Topic::kSslCamera, "ssl/camera", "turf.sensor", "CameraFrame", "per-camera detections, keyed by camera"},
+    {Topic::kSslCommandBlue, "ssl/command/blue", "turf.command", "SslRobotCommand", "blue robot commands"},
+    {Topic::kSslCommandYellow, "ssl/command/yellow", "turf.command", "SslRobotCommand", "yellow robot commands"},
+    {Topic::kSslFeedbackBlue, "ssl/feedback/blue", "turf.feedback", "SslRobotFeedback", "blue ball contact, kicks"},
+    {Topic::kSslFeedbackYellow, "ssl/feedback/yellow", "turf.feedback", "SslRobotFeedback",
+     "yellow ball contact, kicks"},
+    {Topic::kControl, "control", "turf.control", "SimControl", "teleport, pause, step, reset, time mode"},
+    {Topic::kControlReply, "control_reply", "turf.control", "SimControlReply", "what a control request did"},
+};
+
+const TopicInfo& Info(Topic topic);
+std::string TopicName(const std::string& prefix, Topic topic);
+
+}  // namespace turf::dds

@@ -1,0 +1,70 @@
+#include "participants/common/process.h"
+
+#include <spdlog/spdlog.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdlib>
+#include <unistd.h>
+
+namespace turf {
+
+bool SetupLogging(const std::string& process_name, const std::string& level) {
+  spdlog::set_pattern(fmt::format("[%H:%M:%S.%e] [{}] [%^%l%$] %v", process_name));
+  const spdlog::level::level_enum parsed = spdlog::level::from_str(level);
+  // from_str answers "off" for anything it does not know.
+  if (parsed == spdlog::level::off && level != "off") {
+    spdlog::error("unknown log level '{}' (trace, debug, info, warn, error, critical, off)", level);
+    return false;
+  }
+  spdlog::set_level(parsed);
+  return true;
+}
+
+namespace {
+std::atomic<int> g_stop_signals{0};
+
+void OnStopSignal(int) {
+  if (g_stop_signals.fetch_add(1) >= 1) _exit(130);  // second Ctrl-C: leave now
+}
+}  // namespace
+
+void InstallStopSignals() {
+  struct sigaction action {};
+  action.sa_handler = OnStopSignal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+bool StopRequested() { return g_stop_signals.load() > 0; }
+void RequestStop() { g_stop_signals.fetch_add(1); }
+
+RejectLog::RejectLog(std::string what, std::chrono::seconds interval) : what_(std::move(what)), interval_(interval) {}
+
+void RejectLog::Reject(const std::string& kind, const std::string& detail) {
+  const uint64_t n = ++counts_[kind];
+  const auto now = std::chrono::steady_clock::now();
+  auto it = last_log_.find(kind);
+  if (it != last_log_.end() && now - it->second < interval_) return;
+  const uint64_t since = n - reported_[kind];
+  if (since <= 1)
+    spdlog::warn("refused {} ({}): {}", what_, kind, detail);
+  else
+    spdlog::warn("refused {} ({}): {} [{} refused since last report, {} in all]", what_, kind, detail, since, n);
+  reported_[kind] = n;
+  last_log_[kind] = now;
+}
+
+uint64_t RejectLog::Count(const std::string& kind) const {
+  auto it = counts_.find(kind);
+  return it == counts_.end() ? 0 : it->second;
+}
+
+uint64_t RejectLog::Total() const {
+  uint64_t total = 0;
+  for (const auto& [kind, n] : counts_) total += n;
+  return total;
+}
+
+}  // namespace turf

@@ -1,0 +1,40 @@
+// What every turf process shares: log setup, clean shutdown on SIGINT/SIGTERM,
+// and counted, rate-limited reports of refused input.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <string>
+
+namespace turf {
+
+// Configures the default spdlog logger ("[time] [name] [level] message").
+// Returns false (and logs why) if `level` is not a spdlog level name.
+bool SetupLogging(const std::string& process_name, const std::string& level);
+
+// SIGINT and SIGTERM set a flag that StopRequested() reads; a second signal
+// exits at once.
+void InstallStopSignals();
+bool StopRequested();
+void RequestStop();
+
+// Counts refused inputs per kind and logs them: the first of each kind at
+// once, then at most one summary line per kind every `interval`.
+class RejectLog {
+ public:
+  explicit RejectLog(std::string what, std::chrono::seconds interval = std::chrono::seconds(5));
+  void Reject(const std::string& kind, const std::string& detail);
+  uint64_t Count(const std::string& kind) const;
+  uint64_t Total() const;
+  const std::map<std::string, uint64_t>& counts() const { return counts_; }
+
+ private:
+  std::string what_;
+  std::chrono::seconds interval_;
+  std::map<std::string, uint64_t> counts_;
+  std::map<std::string, uint64_t> reported_;
+  std::map<std::string, std::chrono::steady_clock::time_point> last_log_;
+};
+
+}  // namespace turf

@@ -1,0 +1,76 @@
+// turf-sim: the physics participant. Loads a scene, steps the MuJoCo world and
+// publishes it on DDS; see sim_node.h for its topics.
+#include <CLI/CLI.hpp>
+#include <mujoco/mujoco.h>
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <string>
+
+#include "config/scene_yaml.h"
+#include "participants/common/process.h"
+#include "participants/sim/sim_node.h"
+
+namespace {
+
+void MujocoWarning(const char* message) { spdlog::warn("MuJoCo: {}", message); }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"turf-sim: the MuJoCo physics participant of turf (SSL scenes), publishing on DDS"};
+  std::string scene_path = std::string(TURF_SOURCE_DIR) + "/configs/scenes/ssl_div_a.yaml";
+  turf::SimNodeOptions options;
+  std::string speed = "1";
+  bool lockstep = false;
+  std::string log_level = "info";
+  app.add_option("-s,--scene", scene_path, "scene file (YAML)")->capture_default_str();
+  app.add_option("-d,--domain", options.domain, "DDS domain id")->capture_default_str()->check(CLI::Range(0, 232));
+  app.add_option("-p,--prefix", options.prefix, "topic name prefix (two matches on one network: use two)")
+      ->capture_default_str();
+  app.add_option("--qos", options.qos_file, "Fast DDS XML QoS profiles (default: configs/qos/turf_qos.xml)");
+  app.add_option("--speed", speed, "multiple of real time, or 'max' to run free")->capture_default_str();
+  app.add_flag("--lockstep", lockstep, "advance only on STEP control requests");
+  app.add_flag("--paused", options.start_paused, "start paused");
+  app.add_option("--duration", options.duration, "stop after this many simulated seconds (0: run until Ctrl-C)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--log-level", log_level, "trace, debug, info, warn, error")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  if (!turf::SetupLogging("turf-sim", log_level)) return 2;
+  if (lockstep) {
+    options.mode = turf::TimeMode::kLockstep;
+  } else if (speed == "max") {
+    options.mode = turf::TimeMode::kFreeRunning;
+  } else {
+    try {
+      options.speed = std::stod(speed);
+    } catch (const std::exception&) {
+      options.speed = NAN;
+    }
+    if (!(std::isfinite(options.speed) && options.speed > 0 && options.speed <= 1000)) {
+      spdlog::error("--speed must be a number in (0, 1000] or 'max' (got '{}')", speed);
+      return 2;
+    }
+    options.mode = options.speed == 1.0 ? turf::TimeMode::kRealtime : turf::TimeMode::kScaled;
+  }
+
+  turf::SceneLoadResult loaded = turf::LoadSceneFile(scene_path);
+  if (!loaded.scene) {
+    spdlog::error("cannot load scene {}:", scene_path);
+    for (const std::string& e : loaded.errors) spdlog::error("  {}", e);
+    return 2;
+  }
+  spdlog::info("scene file {}", scene_path);
+  mju_user_warning = MujocoWarning;
+  turf::InstallStopSignals();
+  try {
+    turf::SimNode node(std::move(*loaded.scene), options);
+    node.Run([] { return turf::StopRequested(); });
+  } catch (const std::exception& e) {
+    spdlog::critical("{}", e.what());
+    return 1;
+  }
+  spdlog::info("stopped cleanly");
+  return 0;
+}
