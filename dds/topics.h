@@ -28,7 +28,7 @@ struct TopicInfo {
 };
 
 inline constexpr TopicInfo kTopics[] = {
-    {Topic::kClock, "clock", "turf.clock", "Clock", "simulation time, with every world state"},
+    {Topic::kClock, "clock", "turf.state", "Clock", "simulation time, with every world state"},
     {Topic::kWorldState, "world_state", "turf.state", "WorldState", "ground truth of ball and robots"},
     {Topic::kSslField, "ssl/field", "turf.field", "SslField", "field geometry, ball model, cameras (latched)"},
     {Topic::kSslCamera, "ssl/camera", "turf.sensor", "CameraFrame", "per-camera detections, keyed by camera"},

@@ -1,0 +1,414 @@
+// turf-sim over DDS, with the simulator and a client as participants in one
+// process. Each test has its own DDS domain and topic prefix, so tests can run
+// in parallel. Waits are bounded; assertions are on the simulated state.
+#include <gtest/gtest.h>
+#include <turf/idl/ClockPubSubTypes.h>
+#include <turf/idl/SimControlPubSubTypes.h>
+#include <turf/idl/SslRobotPubSubTypes.h>
+#include <turf/idl/SslVisionPubSubTypes.h>
+#include <turf/idl/WorldStatePubSubTypes.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <thread>
+
+#include "dds/participant.h"
+#include "participants/sim/sim_node.h"
+#include "tests/core/test_scenes.h"
+
+namespace turf {
+namespace {
+
+using namespace std::chrono_literals;
+using Clock = std::chrono::steady_clock;
+
+int g_test_counter = 0;
+
+dds::ParticipantOptions UniqueDds(const char* name) {
+  ++g_test_counter;
+  dds::ParticipantOptions o;
+  o.domain = 100 + static_cast<int>(getpid() % 100);
+  o.prefix = "test" + std::to_string(getpid()) + "_" + std::to_string(g_test_counter);
+  o.name = name;
+  o.qos_file = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
+  return o;
+}
+
+// turf-sim's node on a thread of its own.
+class SimUnderTest {
+ public:
+  SimUnderTest(Scene scene, const dds::ParticipantOptions& dds, TimeMode mode, double speed = 1.0) {
+    SimNodeOptions o;
+    o.domain = dds.domain;
+    o.prefix = dds.prefix;
+    o.qos_file = dds.qos_file;
+    o.mode = mode;
+    o.speed = speed;
+    node_ = std::make_unique<SimNode>(std::move(scene), o);
+    thread_ = std::thread([this] { node_->Run([this] { return stop_.load(); }); });
+  }
+  ~SimUnderTest() {
+    stop_ = true;
+    thread_.join();
+  }
+  SimNode& node() { return *node_; }
+
+ private:
+  std::unique_ptr<SimNode> node_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+// What a team stack or a test harness would be: a plain DDS participant.
+class Client {
+ public:
+  explicit Client(const dds::ParticipantOptions& o)
+      : participant_(Named(o)),
+        blue_(participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue)),
+        yellow_(participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow)),
+        control_(participant_.MakeWriter<idl::SimControlPubSubType>(dds::Topic::kControl)),
+        state_(participant_.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
+        clock_(participant_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock)),
+        camera_(participant_.MakeReader<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)),
+        field_(participant_.MakeReader<idl::SslFieldPubSubType>(dds::Topic::kSslField)),
+        reply_(participant_.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)) {}
+
+  // Polls until `done` holds for the newest world state, or the timeout.
+  bool WaitState(const std::function<bool(const idl::WorldState&)>& done, std::chrono::milliseconds timeout = 5s) {
+    const auto end = Clock::now() + timeout;
+    while (Clock::now() < end) {
+      Poll();
+      if (has_state_ && done(state_now_)) return true;
+      std::this_thread::sleep_for(2ms);
+    }
+    return false;
+  }
+  bool WaitMatched(std::chrono::milliseconds timeout = 5s) {
+    const auto end = Clock::now() + timeout;
+    while (Clock::now() < end) {
+      if (blue_->Matched() > 0 && yellow_->Matched() > 0 && control_->Matched() > 0 && state_->Matched() > 0)
+        return WaitState([](const idl::WorldState&) { return true; });
+      std::this_thread::sleep_for(5ms);
+    }
+    return false;
+  }
+  // Sends a control request and waits for its reply.
+  std::optional<idl::SimControlReply> Control(idl::SimControl req, std::chrono::milliseconds timeout = 5s) {
+    req.client("test");
+    req.request_id(++request_id_);
+    control_->Write(req);
+    const auto end = Clock::now() + timeout;
+    while (Clock::now() < end) {
+      std::vector<idl::SimControlReply> replies;
+      reply_->Take(&replies);
+      for (const auto& r : replies)
+        if (r.request_id() == request_id_) return r;
+      std::this_thread::sleep_for(1ms);
+    }
+    return std::nullopt;
+  }
+  void Command(const idl::SslRobotCommand& c) { (c.team() == idl::TEAM_BLUE ? blue_ : yellow_)->Write(c); }
+  void CommandOnTopic(Team topic, const idl::SslRobotCommand& c) {
+    (topic == Team::kBlue ? blue_ : yellow_)->Write(c);
+  }
+
+  void Poll() {
+    if (state_->Take(&states_)) {
+      state_now_ = states_.back();
+      has_state_ = true;
+    }
+    std::vector<idl::Clock> clocks;
+    if (clock_->Take(&clocks)) clock_now_ = clocks.back();
+    std::vector<idl::CameraFrame> frames;
+    if (camera_->Take(&frames))
+      for (auto& f : frames) cameras_[f.camera_id()] = f;
+    std::vector<idl::SslField> fields;
+    if (field_->Take(&fields)) field_now_ = fields.back();
+  }
+  const idl::WorldState& state() const { return state_now_; }
+  const idl::Clock& clock() const { return clock_now_; }
+  std::map<uint32_t, idl::CameraFrame>& cameras() { return cameras_; }
+  const std::optional<idl::SslField>& field() const { return field_now_; }
+
+ private:
+  static dds::ParticipantOptions Named(dds::ParticipantOptions o) {
+    o.name = "client";
+    return o;
+  }
+  dds::Participant participant_;
+  std::unique_ptr<dds::Writer<idl::SslRobotCommandPubSubType>> blue_, yellow_;
+  std::unique_ptr<dds::Writer<idl::SimControlPubSubType>> control_;
+  std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> state_;
+  std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_;
+  std::unique_ptr<dds::Reader<idl::CameraFramePubSubType>> camera_;
+  std::unique_ptr<dds::Reader<idl::SslFieldPubSubType>> field_;
+  std::unique_ptr<dds::Reader<idl::SimControlReplyPubSubType>> reply_;
+  std::vector<idl::WorldState> states_;
+  idl::WorldState state_now_;
+  bool has_state_ = false;
+  idl::Clock clock_now_;
+  std::map<uint32_t, idl::CameraFrame> cameras_;
+  std::optional<idl::SslField> field_now_;
+  uint64_t request_id_ = 0;
+};
+
+idl::SslRobotCommand LocalVelocity(idl::Team team, int id, double forward, double left, double angular) {
+  idl::SslRobotCommand c;
+  c.team(team);
+  c.id(static_cast<uint8_t>(id));
+  c.move(idl::MOVE_LOCAL_VELOCITY);
+  idl::Vec3 v;
+  v.x(forward);
+  v.y(left);
+  v.z(angular);
+  c.velocity(v);
+  return c;
+}
+
+const idl::RobotState* FindRobot(const idl::WorldState& s, idl::Team team, int id) {
+  for (const auto& r : s.robots())
+    if (r.team() == team && r.id() == id) return &r;
+  return nullptr;
+}
+
+idl::SimControl Op(idl::ControlOp op) {
+  idl::SimControl c;
+  c.op(op);
+  return c;
+}
+
+TEST(SimDds, CommandMovesRobotAsSeenInWorldState) {
+  const auto dds = UniqueDds("sim");
+  SimUnderTest sim(test::OneRobot(), dds, TimeMode::kScaled, 2.0);
+  Client client(dds);
+  ASSERT_TRUE(client.WaitMatched());
+  // Drive forward at 1 m/s, re-sending at ~60 Hz like a team, for 1.5 s of sim time.
+  const auto cmd = LocalVelocity(idl::TEAM_BLUE, 0, 1.0, 0.0, 0.0);
+  int64_t t_start = -1;
+  double x_start = 0.0;
+  const bool reached = client.WaitState(
+      [&](const idl::WorldState& s) {
+        client.Command(cmd);
+        const idl::RobotState* r = FindRobot(s, idl::TEAM_BLUE, 0);
+        // Measure over the second half, after the 1/3 s ramp.
+        if (t_start < 0 && s.sim_time_ns() > 700'000'000) {
+          t_start = s.sim_time_ns();
+          x_start = r->position().x();
+        }
+        return t_start >= 0 && s.sim_time_ns() - t_start >= 700'000'000;
+      },
+      10s);
+  ASSERT_TRUE(reached);
+  const idl::RobotState* r = FindRobot(client.state(), idl::TEAM_BLUE, 0);
+  const double speed = (r->position().x() - x_start) / ((client.state().sim_time_ns() - t_start) * 1e-9);
+  EXPECT_NEAR(speed, 1.0, 0.05);
+  EXPECT_NEAR(r->linear_velocity().x(), 1.0, 0.05);
+  EXPECT_NEAR(r->position().y(), 0.0, 0.01);
+}
+
+TEST(SimDds, WatchdogStopsARobotWhoseCommandsStop) {
+  const auto dds = UniqueDds("sim");
+  SimUnderTest sim(test::OneRobot(), dds, TimeMode::kScaled, 2.0);
+  Client client(dds);
+  ASSERT_TRUE(client.WaitMatched());
+  const auto cmd = LocalVelocity(idl::TEAM_BLUE, 0, 1.0, 0.0, 0.0);
+  ASSERT_TRUE(client.WaitState([&](const idl::WorldState& s) {
+    client.Command(cmd);
+    return FindRobot(s, idl::TEAM_BLUE, 0)->linear_velocity().x() > 0.9;
+  }));
+  // Silence: the robot must stop by itself within timeout + braking time.
+  const int64_t silent_from = client.state().sim_time_ns();
+  ASSERT_TRUE(client.WaitState([&](const idl::WorldState& s) {
+    return s.sim_time_ns() - silent_from > 1'200'000'000;
+  }));
+  EXPECT_NEAR(FindRobot(client.state(), idl::TEAM_BLUE, 0)->linear_velocity().x(), 0.0, 0.01);
+}
+
+TEST(SimDds, ControlTeleportsPausesStepsAndResets) {
+  const auto dds = UniqueDds("sim");
+  SimUnderTest sim(test::OneRobot(), dds, TimeMode::kScaled, 2.0);
+  Client client(dds);
+  ASSERT_TRUE(client.WaitMatched());
+
+  auto pause = client.Control(Op(idl::OP_PAUSE));
+  ASSERT_TRUE(pause.has_value());
+  EXPECT_EQ(pause->result(), idl::RESULT_OK);
+  const uint64_t paused_frame = pause->frame();
+  std::this_thread::sleep_for(200ms);
+  client.Poll();
+  EXPECT_EQ(client.clock().frame(), paused_frame);  // time stood still
+  EXPECT_TRUE(client.clock().paused());
+
+  idl::SimControl tb = Op(idl::OP_TELEPORT_BALL);
+  tb.ball().position().x(1.0);
+  tb.ball().position().y(-2.0);
+  auto teleported = client.Control(tb);
+  ASSERT_TRUE(teleported.has_value());
+  EXPECT_EQ(teleported->result(), idl::RESULT_OK);
+  ASSERT_TRUE(client.WaitState([](const idl::WorldState& s) {
+    return std::abs(s.ball().position().x() - 1.0) < 1e-6 && std::abs(s.ball().position().y() + 2.0) < 1e-6;
+  }));
+
+  idl::SimControl tr = Op(idl::OP_TELEPORT_ROBOT);
+  tr.robot().team(idl::TEAM_BLUE);
+  tr.robot().id(0);
+  tr.robot().on_field(true);
+  tr.robot().position().x(-3.0);
+  tr.robot().position().y(1.5);
+  tr.robot().orientation(1.0);
+  ASSERT_EQ(client.Control(tr)->result(), idl::RESULT_OK);
+  ASSERT_TRUE(client.WaitState([](const idl::WorldState& s) {
+    const auto* r = FindRobot(s, idl::TEAM_BLUE, 0);
+    return std::abs(r->position().x() + 3.0) < 1e-6 && std::abs(r->yaw() - 1.0) < 1e-6;
+  }));
+
+  idl::SimControl outside = tb;
+  outside.ball().position().x(50.0);
+  auto refused = client.Control(outside);
+  ASSERT_TRUE(refused.has_value());
+  EXPECT_EQ(refused->result(), idl::RESULT_REJECTED);
+  EXPECT_NE(refused->reason().find("outside_field"), std::string::npos) << refused->reason();
+
+  idl::SimControl step = Op(idl::OP_STEP);
+  step.step_count(25);
+  auto stepped = client.Control(step);
+  ASSERT_TRUE(stepped.has_value());
+  EXPECT_EQ(stepped->result(), idl::RESULT_OK);
+  EXPECT_EQ(stepped->frame(), paused_frame + 25);
+
+  ASSERT_EQ(client.Control(Op(idl::OP_RESUME))->result(), idl::RESULT_OK);
+  ASSERT_TRUE(client.WaitState([&](const idl::WorldState& s) { return s.frame() > paused_frame + 100; }));
+
+  auto reset = client.Control(Op(idl::OP_RESET));
+  ASSERT_TRUE(reset.has_value());
+  EXPECT_EQ(reset->result(), idl::RESULT_OK);
+  EXPECT_EQ(reset->frame(), 0u);
+  ASSERT_TRUE(client.WaitState([](const idl::WorldState& s) {
+    const auto* r = FindRobot(s, idl::TEAM_BLUE, 0);
+    return s.frame() < 200 && std::abs(r->position().x()) < 1e-3;  // back at the scene's start
+  }));
+}
+
+TEST(SimDds, BadSamplesAreCountedAndMoveNothing) {
+  const auto dds = UniqueDds("sim");
+  SimUnderTest sim(test::OneRobot(), dds, TimeMode::kScaled, 2.0);
+  Client client(dds);
+  ASSERT_TRUE(client.WaitMatched());
+  auto nan = LocalVelocity(idl::TEAM_BLUE, 0, NAN, 0.0, 0.0);
+  auto huge = LocalVelocity(idl::TEAM_BLUE, 0, 1e9, 0.0, 0.0);
+  auto unknown = LocalVelocity(idl::TEAM_BLUE, 9, 1.0, 0.0, 0.0);
+  auto wrong_team = LocalVelocity(idl::TEAM_BLUE, 0, 1.0, 0.0, 0.0);  // sent on the yellow topic
+  auto bad_enum = LocalVelocity(idl::TEAM_BLUE, 0, 1.0, 0.0, 0.0);
+  bad_enum.move(static_cast<idl::MoveKind>(77));
+  const int64_t t0 = client.state().sim_time_ns();
+  ASSERT_TRUE(client.WaitState([&](const idl::WorldState& s) {
+    client.Command(nan);
+    client.Command(huge);
+    client.Command(unknown);
+    client.CommandOnTopic(Team::kYellow, wrong_team);
+    client.Command(bad_enum);
+    return s.sim_time_ns() - t0 > 500'000'000;
+  }));
+  const idl::RobotState* r = FindRobot(client.state(), idl::TEAM_BLUE, 0);
+  EXPECT_DOUBLE_EQ(r->position().x(), 0.0);
+  EXPECT_DOUBLE_EQ(r->position().y(), 0.0);
+  EXPECT_GT(sim.node().Rejected("command.not_finite"), 0u);
+  EXPECT_GT(sim.node().Rejected("command.out_of_range"), 0u);
+  EXPECT_GT(sim.node().Rejected("command.unknown_robot"), 0u);
+  EXPECT_GT(sim.node().Rejected("command.team_mismatch"), 0u);
+}
+
+TEST(SimDds, CamerasReportWhatEachCameraSees) {
+  const auto dds = UniqueDds("sim");
+  Scene scene = test::Teams(2);  // blue 0, 1 and yellow 0, 1
+  SimUnderTest sim(scene, dds, TimeMode::kScaled, 2.0);
+  Client client(dds);
+  ASSERT_TRUE(client.WaitMatched());
+  ASSERT_EQ(client.Control(Op(idl::OP_PAUSE))->result(), idl::RESULT_OK);
+  auto place = [&](idl::Team team, int id, double x, double y) {
+    idl::SimControl tr = Op(idl::OP_TELEPORT_ROBOT);
+    tr.robot().team(team);
+    tr.robot().id(static_cast<uint8_t>(id));
+    tr.robot().on_field(true);
+    tr.robot().position().x(x);
+    tr.robot().position().y(y);
+    ASSERT_EQ(client.Control(tr)->result(), idl::RESULT_OK);
+  };
+  place(idl::TEAM_BLUE, 0, 3.0, 2.0);  // camera 0 only
+  place(idl::TEAM_BLUE, 1, -3.0, -2.0);  // camera 2 only
+  place(idl::TEAM_YELLOW, 0, 0.05, 3.0);  // in the overlap of cameras 0 and 1
+  idl::SimControl off = Op(idl::OP_TELEPORT_ROBOT);
+  off.robot().team(idl::TEAM_YELLOW);
+  off.robot().id(1);
+  off.robot().on_field(false);  // off the field: no camera sees it
+  ASSERT_EQ(client.Control(off)->result(), idl::RESULT_OK);
+  idl::SimControl tb = Op(idl::OP_TELEPORT_BALL);
+  tb.ball().position().x(-2.0);
+  tb.ball().position().y(1.0);  // camera 1
+  ASSERT_EQ(client.Control(tb)->result(), idl::RESULT_OK);
+  idl::SimControl step = Op(idl::OP_STEP);
+  step.step_count(20);  // 40 ms: at least two camera frames
+  ASSERT_EQ(client.Control(step)->result(), idl::RESULT_OK);
+  std::this_thread::sleep_for(200ms);
+  client.Poll();
+  auto& cams = client.cameras();
+  ASSERT_EQ(cams.size(), 4u);
+  auto sees = [&](uint32_t cam, idl::Team team, int id) {
+    for (const auto& r : cams[cam].robots())
+      if (r.team() == team && r.id() == id) return true;
+    return false;
+  };
+  EXPECT_TRUE(sees(0, idl::TEAM_BLUE, 0));
+  EXPECT_FALSE(sees(1, idl::TEAM_BLUE, 0));
+  EXPECT_TRUE(sees(2, idl::TEAM_BLUE, 1));
+  EXPECT_TRUE(sees(0, idl::TEAM_YELLOW, 0));
+  EXPECT_TRUE(sees(1, idl::TEAM_YELLOW, 0));
+  EXPECT_FALSE(sees(2, idl::TEAM_YELLOW, 0));
+  for (uint32_t c = 0; c < 4; ++c) EXPECT_FALSE(sees(c, idl::TEAM_YELLOW, 1));
+  EXPECT_EQ(cams[1].balls().size(), 1u);
+  EXPECT_EQ(cams[0].balls().size(), 0u);
+  EXPECT_NEAR(cams[1].balls()[0].position().x(), -2.0, 1e-3);
+  EXPECT_EQ(cams[1].capture_time_ns(), cams[0].capture_time_ns());
+  // The latched field arrived too.
+  ASSERT_TRUE(client.field().has_value());
+  EXPECT_EQ(client.field()->cameras().size(), 4u);
+  EXPECT_DOUBLE_EQ(client.field()->field_length(), 12.0);
+}
+
+// The same scene and the same lockstep command stream, run twice over DDS,
+// give identical worlds.
+TEST(SimDds, LockstepRunsAreIdentical) {
+  auto run = [](const char* name) {
+    const auto dds = UniqueDds(name);
+    SimUnderTest sim(test::Teams(3), dds, TimeMode::kLockstep);
+    Client client(dds);
+    EXPECT_TRUE(client.WaitMatched());
+    for (int i = 0; i < 40; ++i) {
+      idl::SimControl step = Op(idl::OP_STEP);
+      step.step_count(8);
+      for (int id = 0; id < 3; ++id)
+        step.commands().push_back(LocalVelocity(idl::TEAM_YELLOW, id, std::sin(i * 0.3 + id), 0.5, 2.0));
+      auto reply = client.Control(step);
+      EXPECT_TRUE(reply.has_value() && reply->result() == idl::RESULT_OK);
+    }
+    EXPECT_TRUE(client.WaitState([](const idl::WorldState& s) { return s.frame() == 320; }));
+    return client.state();
+  };
+  const idl::WorldState a = run("a");
+  const idl::WorldState b = run("b");
+  ASSERT_EQ(a.frame(), 320u);
+  ASSERT_EQ(a.robots().size(), b.robots().size());
+  for (size_t i = 0; i < a.robots().size(); ++i) {
+    EXPECT_EQ(a.robots()[i].position().x(), b.robots()[i].position().x());
+    EXPECT_EQ(a.robots()[i].position().y(), b.robots()[i].position().y());
+    EXPECT_EQ(a.robots()[i].yaw(), b.robots()[i].yaw());
+  }
+  const idl::RobotState* moved = FindRobot(a, idl::TEAM_YELLOW, 1);
+  EXPECT_GT(std::abs(moved->position().y() - test::Teams(3).robots[4].pose.y), 0.1);
+}
+
+}  // namespace
+}  // namespace turf
