@@ -11,4 +11,8 @@ echo "turf-sim free-running (2 ms step), world state 100 Hz + cameras 60 Hz publ
 "$bin" --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a_2x16.yaml
 "$bin" --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a.yaml --subscribe
 "$bin" --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a_2x16.yaml --subscribe
-echo "RTF: simulated seconds per wall second. subscriber: world states / camera frames received."
+"$bin" --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a.yaml --drive
+"$bin" --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a_2x16.yaml --drive
+echo "RTF: simulated seconds per wall second; the physics loop is one thread. client process: a second"
+echo "process that receives world states / camera frames ('listen'), and also commands every robot at"
+echo "each world state ('drive'). sim CPU: user+sys of the simulator process (incl. Fast DDS threads)."

@@ -41,28 +41,22 @@ std::string RobotHullVertices(const RobotParams& r) {
   return v;
 }
 
-// Names of the walls and goal parts FieldGeoms makes.
-std::vector<std::string> StaticGeomNames() {
-  std::vector<std::string> names = {"wall_left", "wall_right", "wall_top", "wall_bottom"};
-  for (const char* side : {"left", "right"})
-    for (const char* part : {"post_pos", "post_neg", "back"}) names.push_back(fmt::format("goal_{}_{}", side, part));
-  return names;
-}
-
-// A ball contact as a damped spring in MuJoCo's direct form (solref = -k, -b)
-// that keeps `restitution` of the normal speed. Its half period spans several
-// steps so that the integration stays stable; constant impedance keeps k and b
-// as given.
-std::string BallPair(const std::string& geom, int condim, double friction, double restitution, double step) {
+// A ball contact as a damped spring that keeps `restitution` of the normal
+// speed, with a half period of several steps so that integration stays
+// stable. In MuJoCo's standard form (timeconst, dampratio) the spring is
+// k = 1 / (timeconst * dampratio)^2 and the damping b = 2 / timeconst; the
+// constant impedance (solimp) keeps them as given.
+struct BallSpring {
+  double timeconst;
+  double dampratio;
+};
+BallSpring BallContactSpring(double restitution, double step) {
   constexpr double kStepsPerContact = 6.0;
   const double omega = M_PI / (kStepsPerContact * step);
   const double zeta = DampingRatioForRestitution(restitution);
-  return fmt::format(
-      R"(    <pair geom1="{}" geom2="ball" condim="{}" friction="{:.6f} {:.6f} 0.005 0.0001 0.0001" )"
-      R"(solref="{:.3f} {:.4f}" solimp="0.99 0.99 0.001"/>)"
-      "\n",
-      geom, condim, friction, friction, -omega * omega, -2.0 * zeta * omega);
+  return {1.0 / (omega * zeta), zeta};
 }
+constexpr const char* kBallSolimp = "0.99 0.99 0.001";
 
 std::string FieldGeoms(const FieldParams& f) {
   std::string out;
@@ -148,11 +142,15 @@ std::string BuildMjcf(const Scene& s) {
   x += fmt::format(R"(      <inertial pos="0 0 0" mass="{}" diaginertia="{:.9g} {:.9g} {:.9g}"/>)"
                    "\n",
                    b.mass, inertia, inertia, inertia);
-  // The ball touches things only through the explicit pairs below.
+  // Against walls, goals and robots: MuJoCo's contacts (broadphase-filtered).
+  // The ball has no friction of its own (the other surface's counts, MuJoCo
+  // takes the larger) and its huge solmix makes its bounce win the mixing.
+  const BallSpring wall = BallContactSpring(b.wall_restitution, s.physics.step);
   x += fmt::format(
-      R"(      <geom name="ball" type="sphere" size="{}" contype="0" conaffinity="0" rgba="1 0.5 0 1"/>)"
+      R"(      <geom name="ball" type="sphere" size="{}" {} condim="3" friction="0 0 0" solmix="1e6" )"
+      R"(solref="{:.6f} {:.6f}" solimp="{}" rgba="1 0.5 0 1"/>)"
       "\n",
-      b.radius);
+      b.radius, kSolidContact, wall.timeconst, wall.dampratio, kBallSolimp);
   x += "    </body>\n";
 
   // Robots on planar joints: no floor contact, driven by forces on the joints.
@@ -184,17 +182,13 @@ std::string BuildMjcf(const Scene& s) {
   }
   x += "  </worldbody>\n";
 
-  // Every ball contact is an explicit pair, so its friction and bounce come
-  // from the scene and not from MuJoCo's mixing of two geoms' parameters. The
-  // carpet pair is normal-only: the ball model applies the carpet's friction
-  // (MuJoCo's soft friction cone makes a sliding ball hop).
+  // The carpet: an explicit, normal-only pair; the ball model applies the
+  // carpet's friction (MuJoCo's soft friction cone makes a sliding ball hop).
+  const BallSpring carpet = BallContactSpring(b.floor_restitution, s.physics.step);
   x += "  <contact>\n";
-  x += BallPair(kFloorGeom, 1, 0.0, b.floor_restitution, s.physics.step);
-  for (const std::string& wall : StaticGeomNames())
-    x += BallPair(wall, 3, s.field.friction, b.wall_restitution, s.physics.step);
-  for (Team team : {Team::kBlue, Team::kYellow})
-    for (int id = 0; id < s.robots_per_team; ++id)
-      x += BallPair(RobotBodyName(team, id), 3, r.friction, b.wall_restitution, s.physics.step);
+  x += fmt::format(R"(    <pair geom1="{}" geom2="ball" condim="1" solref="{:.6f} {:.6f}" solimp="{}"/>)"
+                   "\n",
+                   kFloorGeom, carpet.timeconst, carpet.dampratio, kBallSolimp);
   x += "  </contact>\n";
   x += "</mujoco>\n";
   return x;
