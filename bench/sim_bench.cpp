@@ -3,7 +3,6 @@
 // process (like a team stack) receives them; with --drive it also commands
 // every robot at each world state. Prints one table row; bench/run.sh runs the
 // standard set, one process each so peak memory is per configuration.
-#include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -11,6 +10,7 @@
 #include <turf/idl/SslVisionPubSubTypes.h>
 #include <turf/idl/WorldStatePubSubTypes.h>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -131,19 +131,19 @@ int main(int argc, char** argv) {
   }
   struct rusage usage {};
   getrusage(RUSAGE_SELF, &usage);
-  const double cpu = usage.ru_utime.tv_sec + usage.ru_utime.tv_usec * 1e-6 + usage.ru_stime.tv_sec +
-                     usage.ru_stime.tv_usec * 1e-6;
+  const double cpu =
+      usage.ru_utime.tv_sec + usage.ru_utime.tv_usec * 1e-6 + usage.ru_stime.tv_sec + usage.ru_stime.tv_usec * 1e-6;
   const auto stats = node.Stats();
   if (header) {
-    std::printf("| %-20s | %6s | %-22s | %6s | %7s | %6s | %8s | %9s |\n", "scene", "robots", "client process",
-                "sim s", "wall s", "RTF", "sim CPU", "peak MiB");
+    std::printf("| %-20s | %6s | %-22s | %6s | %7s | %6s | %8s | %9s |\n", "scene", "robots", "client process", "sim s",
+                "wall s", "RTF", "sim CPU", "peak MiB");
     std::printf("|%s|%s|%s|%s|%s|%s|%s|%s|\n", std::string(22, '-').c_str(), std::string(8, '-').c_str(),
                 std::string(24, '-').c_str(), std::string(8, '-').c_str(), std::string(9, '-').c_str(),
                 std::string(8, '-').c_str(), std::string(10, '-').c_str(), std::string(11, '-').c_str());
   }
   const std::string name = scene_path.substr(scene_path.find_last_of('/') + 1);
-  const std::string client = !subscribe ? "none"
-                                        : fmt::format("{} {}/{}", drive ? "drive" : "listen", got.states, got.frames);
+  const std::string client =
+      !subscribe ? "none" : fmt::format("{} {}/{}", drive ? "drive" : "listen", got.states, got.frames);
   std::printf("| %-20s | %6d | %-22s | %6.1f | %7.2f | %5.1fx | %7.2fs | %9.1f |\n", name.c_str(), on_field,
               client.c_str(), stats.sim_time_ns * 1e-9, wall, stats.sim_time_ns * 1e-9 / wall, cpu,
               usage.ru_maxrss / 1024.0);

@@ -10,8 +10,8 @@ Vec3 BallInRobotFrame(const RobotKinematics& robot, const Vec3& ball) {
   return {c * dx + s * dy, -s * dx + c * dy, ball.z};
 }
 
-bool BallAtFront(const RobotKinematics& robot, const Vec3& ball, const RobotParams& params,
-                 double ball_radius, double reach) {
+bool BallAtFront(const RobotKinematics& robot, const Vec3& ball, const RobotParams& params, double ball_radius,
+                 double reach) {
   const Vec3 b = BallInRobotFrame(robot, ball);
   const double half_face =
       std::sqrt(params.radius * params.radius - params.center_to_dribbler * params.center_to_dribbler);
@@ -35,8 +35,7 @@ Vec3 KickVelocity(const RobotKinematics& robot, KickKind kind, double speed, dou
   return v;
 }
 
-Vec3 DribblerForce(const RobotKinematics& robot, const BallState& ball, const RobotParams& params,
-                   double ball_radius) {
+Vec3 DribblerForce(const RobotKinematics& robot, const BallState& ball, const RobotParams& params, double ball_radius) {
   const double c = std::cos(robot.yaw), s = std::sin(robot.yaw);
   const double reach = params.center_to_dribbler + ball_radius;
   // Hold point and its velocity (the face moves with the body and its turn).

@@ -27,8 +27,8 @@ Vec3 BallInRobotFrame(const RobotKinematics& robot, const Vec3& ball);
 
 // True while the ball touches the front face (within `reach` of it), low
 // enough for the kicker to hit it.
-bool BallAtFront(const RobotKinematics& robot, const Vec3& ball, const RobotParams& params,
-                 double ball_radius, double reach);
+bool BallAtFront(const RobotKinematics& robot, const Vec3& ball, const RobotParams& params, double ball_radius,
+                 double reach);
 
 // The ball's velocity after a kick: the robot's own velocity plus `speed` along
 // the heading, raised by the chip angle; the total is clamped to the kicker's
@@ -38,7 +38,6 @@ Vec3 KickVelocity(const RobotKinematics& robot, KickKind kind, double speed, dou
 
 // The dribbler's pull on a captured ball (field frame, horizontal): a damped
 // spring to the hold point in front of the face, limited to max_force.
-Vec3 DribblerForce(const RobotKinematics& robot, const BallState& ball, const RobotParams& params,
-                   double ball_radius);
+Vec3 DribblerForce(const RobotKinematics& robot, const BallState& ball, const RobotParams& params, double ball_radius);
 
 }  // namespace turf

@@ -20,8 +20,7 @@ double BallSlipSpeed(const BallState& ball, double radius) {
   return std::hypot(cx, cy);
 }
 
-Wrench CarpetFriction(const BallState& ball, double normal_force, const BallParams& params, double inertia,
-                      double dt) {
+Wrench CarpetFriction(const BallState& ball, double normal_force, const BallParams& params, double inertia, double dt) {
   if (normal_force <= 0.0) return {};
   const double r = params.radius;
   const double sx = ball.velocity.x - r * ball.angular_velocity.y;

@@ -22,8 +22,7 @@ double BallSlipSpeed(const BallState& ball, double radius);
 
 // Coulomb friction of the carpet on a ball pressed down with `normal_force`
 // (N): opposes the contact point's slip, never reverses it within one step.
-Wrench CarpetFriction(const BallState& ball, double normal_force, const BallParams& params, double inertia,
-                      double dt);
+Wrench CarpetFriction(const BallState& ball, double normal_force, const BallParams& params, double inertia, double dt);
 
 // Force and torque that slow a rolling ball at acc_roll without making it slip:
 // both the linear and the angular speed drop together, in proportion to the

@@ -66,8 +66,8 @@ PlanarVelocity DesiredVelocity(const RobotCommand& command, double yaw, const Dr
   return v;
 }
 
-PlanarForce DriveForce(const PlanarVelocity& current, const PlanarVelocity& desired, double mass,
-                       double inertia, double dt, const DriveParams& drive) {
+PlanarForce DriveForce(const PlanarVelocity& current, const PlanarVelocity& desired, double mass, double inertia,
+                       double dt, const DriveParams& drive) {
   double dx = desired.x - current.x;
   double dy = desired.y - current.y;
   // Speeding up when the change points along the motion, braking otherwise.

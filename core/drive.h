@@ -34,7 +34,7 @@ PlanarVelocity DesiredVelocity(const RobotCommand& command, double yaw, const Dr
 
 // The force that brings `current` to `desired` in one step of `dt`, limited by
 // the traction (acceleration) limits: speeding up and braking differ.
-PlanarForce DriveForce(const PlanarVelocity& current, const PlanarVelocity& desired, double mass,
-                       double inertia, double dt, const DriveParams& drive);
+PlanarForce DriveForce(const PlanarVelocity& current, const PlanarVelocity& desired, double mass, double inertia,
+                       double dt, const DriveParams& drive);
 
 }  // namespace turf

@@ -35,8 +35,7 @@ InputError CheckCommand(const RobotCommand& c) {
   if (!finite) return InputError::kNotFinite;
   if (static_cast<int>(c.team) > 1 || static_cast<int>(c.move) > 3 || static_cast<int>(c.kick) > 2)
     return InputError::kOutOfRange;
-  if (std::hypot(c.velocity.x, c.velocity.y) > kMaxCommandSpeed ||
-      std::abs(c.velocity.z) > kMaxCommandAngularSpeed)
+  if (std::hypot(c.velocity.x, c.velocity.y) > kMaxCommandSpeed || std::abs(c.velocity.z) > kMaxCommandAngularSpeed)
     return InputError::kOutOfRange;
   for (double w : c.wheel_velocity)
     if (std::abs(w) > kMaxCommandSpeed) return InputError::kOutOfRange;
@@ -67,8 +66,8 @@ InputError CheckRobotTeleport(const RobotTeleport& t, const Scene& scene) {
   if (std::abs(t.x) > f.length / 2 + f.boundary_width_goal_line - r ||
       std::abs(t.y) > f.width / 2 + f.boundary_width - r)
     return InputError::kOutsideField;
-  if (std::hypot(t.velocity.x, t.velocity.y) > kMaxTeleportSpeed ||
-      std::abs(t.velocity.z) > kMaxCommandAngularSpeed || std::abs(t.orientation) > 1e6)
+  if (std::hypot(t.velocity.x, t.velocity.y) > kMaxTeleportSpeed || std::abs(t.velocity.z) > kMaxCommandAngularSpeed ||
+      std::abs(t.orientation) > 1e6)
     return InputError::kOutOfRange;
   return InputError::kOk;
 }

@@ -9,12 +9,12 @@
 
 namespace turf {
 
-inline constexpr double kMaxCommandSpeed = 20.0;  // m/s, also wheel rim speeds
+inline constexpr double kMaxCommandSpeed = 20.0;          // m/s, also wheel rim speeds
 inline constexpr double kMaxCommandAngularSpeed = 100.0;  // rad/s
-inline constexpr double kMaxKickSpeed = 30.0;  // m/s
-inline constexpr double kMaxDribblerSpeed = 100000.0;  // rpm
-inline constexpr double kMaxTeleportSpeed = 30.0;  // m/s
-inline constexpr double kMaxTeleportHeight = 10.0;  // m
+inline constexpr double kMaxKickSpeed = 30.0;             // m/s
+inline constexpr double kMaxDribblerSpeed = 100000.0;     // rpm
+inline constexpr double kMaxTeleportSpeed = 30.0;         // m/s
+inline constexpr double kMaxTeleportHeight = 10.0;        // m
 
 InputError CheckCommand(const RobotCommand& command);
 InputError CheckBallTeleport(const BallTeleport& teleport, const Scene& scene);

@@ -16,13 +16,11 @@ constexpr int kHullSegments = 24;
 // other through bit 1; the floor touches only the ball, through an explicit pair.
 constexpr const char* kSolidContact = R"(contype="2" conaffinity="2")";
 
-std::string Box(const char* name, double x, double y, double z, double hx, double hy, double hz,
-                double friction) {
-  return fmt::format(
-      R"(    <geom name="{}" type="box" pos="{:.6f} {:.6f} {:.6f}" size="{:.6f} {:.6f} {:.6f}" )"
-      R"(friction="{:.4f} 0.005 0.0001" {} rgba="0.8 0.8 0.8 1"/>)"
-      "\n",
-      name, x, y, z, hx, hy, hz, friction, kSolidContact);
+std::string Box(const char* name, double x, double y, double z, double hx, double hy, double hz, double friction) {
+  return fmt::format(R"(    <geom name="{}" type="box" pos="{:.6f} {:.6f} {:.6f}" size="{:.6f} {:.6f} {:.6f}" )"
+                     R"(friction="{:.4f} 0.005 0.0001" {} rgba="0.8 0.8 0.8 1"/>)"
+                     "\n",
+                     name, x, y, z, hx, hy, hz, friction, kSolidContact);
 }
 
 // A cylinder with its front cut flat at `center_to_dribbler`, as a convex hull.
@@ -77,12 +75,12 @@ std::string FieldGeoms(const FieldParams& f) {
     const double x_line = side * f.length / 2;
     const double x_mid = x_line + side * (f.goal_depth + gt) / 2;
     const double y_side = f.goal_width / 2 + gt / 2;
-    out += Box(fmt::format("goal_{}_post_pos", name).c_str(), x_mid, y_side, gh, (f.goal_depth + gt) / 2,
-               gt / 2, gh, f.friction);
-    out += Box(fmt::format("goal_{}_post_neg", name).c_str(), x_mid, -y_side, gh, (f.goal_depth + gt) / 2,
-               gt / 2, gh, f.friction);
-    out += Box(fmt::format("goal_{}_back", name).c_str(), x_line + side * (f.goal_depth + gt / 2), 0, gh,
-               gt / 2, f.goal_width / 2 + gt, gh, f.friction);
+    out += Box(fmt::format("goal_{}_post_pos", name).c_str(), x_mid, y_side, gh, (f.goal_depth + gt) / 2, gt / 2, gh,
+               f.friction);
+    out += Box(fmt::format("goal_{}_post_neg", name).c_str(), x_mid, -y_side, gh, (f.goal_depth + gt) / 2, gt / 2, gh,
+               f.friction);
+    out += Box(fmt::format("goal_{}_back", name).c_str(), x_line + side * (f.goal_depth + gt / 2), 0, gh, gt / 2,
+               f.goal_width / 2 + gt, gh, f.friction);
   }
   return out;
 }
@@ -115,10 +113,9 @@ std::string BuildMjcf(const Scene& s) {
                    s.name);
   x += R"(  <compiler autolimits="true" angle="radian"/>)"
        "\n";
-  x += fmt::format(
-      R"(  <option timestep="{}" iterations="{}" cone="elliptic" gravity="0 0 {}" integrator="Euler"/>)"
-      "\n",
-      s.physics.step, s.physics.solver_iterations, -kGravity);
+  x += fmt::format(R"(  <option timestep="{}" iterations="{}" cone="elliptic" gravity="0 0 {}" integrator="Euler"/>)"
+                   "\n",
+                   s.physics.step, s.physics.solver_iterations, -kGravity);
   x += fmt::format(R"(  <size nconmax="{}" njmax="{}"/>)"
                    "\n",
                    nconmax, 4 * nconmax);
@@ -146,11 +143,10 @@ std::string BuildMjcf(const Scene& s) {
   // The ball has no friction of its own (the other surface's counts, MuJoCo
   // takes the larger) and its huge solmix makes its bounce win the mixing.
   const BallSpring wall = BallContactSpring(b.wall_restitution, s.physics.step);
-  x += fmt::format(
-      R"(      <geom name="ball" type="sphere" size="{}" {} condim="3" friction="0 0 0" solmix="1e6" )"
-      R"(solref="{:.6f} {:.6f}" solimp="{}" rgba="1 0.5 0 1"/>)"
-      "\n",
-      b.radius, kSolidContact, wall.timeconst, wall.dampratio, kBallSolimp);
+  x += fmt::format(R"(      <geom name="ball" type="sphere" size="{}" {} condim="3" friction="0 0 0" solmix="1e6" )"
+                   R"(solref="{:.6f} {:.6f}" solimp="{}" rgba="1 0.5 0 1"/>)"
+                   "\n",
+                   b.radius, kSolidContact, wall.timeconst, wall.dampratio, kBallSolimp);
   x += "    </body>\n";
 
   // Robots on planar joints: no floor contact, driven by forces on the joints.

@@ -55,8 +55,7 @@ std::vector<std::string> ValidateScene(const Scene& s) {
   c.Range("field.length", f.length, 1, 100);
   c.Range("field.width", f.width, 1, 100);
   c.Range("field.boundary_width", f.boundary_width, 0.05, 10);
-  c.Range("field.boundary_width_goal_line", f.boundary_width_goal_line, f.goal_depth + f.goal_wall_thickness,
-          10);
+  c.Range("field.boundary_width_goal_line", f.boundary_width_goal_line, f.goal_depth + f.goal_wall_thickness, 10);
   c.Range("field.goal_width", f.goal_width, 0.1, f.width);
   c.Positive("field.goal_depth", f.goal_depth);
   c.Positive("field.goal_height", f.goal_height);
@@ -123,12 +122,12 @@ std::vector<std::string> ValidateScene(const Scene& s) {
       c.Fail(fmt::format("{}: id must be in [0, {})", who, s.robots_per_team));
     if (!seen.insert({static_cast<int>(rs.team), rs.id}).second) c.Fail(who + ": listed twice");
     const Pose2& p = rs.pose;
-    if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.theta)) ||
-        std::abs(p.x) > x_in - r.radius || std::abs(p.y) > y_in - r.radius)
+    if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.theta)) || std::abs(p.x) > x_in - r.radius ||
+        std::abs(p.y) > y_in - r.radius)
       c.Fail(who + ": start pose must be finite and inside the walls");
   }
-  if (!(std::isfinite(s.ball_start_x) && std::isfinite(s.ball_start_y)) ||
-      std::abs(s.ball_start_x) > x_in - b.radius || std::abs(s.ball_start_y) > y_in - b.radius)
+  if (!(std::isfinite(s.ball_start_x) && std::isfinite(s.ball_start_y)) || std::abs(s.ball_start_x) > x_in - b.radius ||
+      std::abs(s.ball_start_y) > y_in - b.radius)
     c.Fail("ball start must be finite and inside the walls");
   return c.Take();
 }

@@ -19,12 +19,12 @@ inline const char* TeamName(Team team) { return team == Team::kBlue ? "blue" : "
 
 struct FieldParams {
   Division division = Division::kA;
-  double length = 12.0;  // goal line to goal line
-  double width = 9.0;  // touch line to touch line
-  double boundary_width = 0.3;  // beyond the touch lines, to the wall
+  double length = 12.0;                   // goal line to goal line
+  double width = 9.0;                     // touch line to touch line
+  double boundary_width = 0.3;            // beyond the touch lines, to the wall
   double boundary_width_goal_line = 0.6;  // beyond the goal lines, to the wall
-  double goal_width = 1.8;  // inner
-  double goal_depth = 0.18;  // inner
+  double goal_width = 1.8;                // inner
+  double goal_depth = 0.18;               // inner
   double goal_height = 0.16;
   double goal_wall_thickness = 0.02;
   double penalty_area_depth = 1.8;
@@ -50,37 +50,36 @@ struct BallParams {
   double acc_roll = -0.4;
   double k_switch = 0.7;
   double floor_restitution = 0.5;  // vertical speed kept at a bounce
-  double wall_restitution = 0.6;  // against walls, goals and robots
+  double wall_restitution = 0.6;   // against walls, goals and robots
   // Published for team software's chip prediction (SSL_BallModelChipFixedLoss).
   double chip_damping_xy_first_hop = 0.75;
   double chip_damping_xy_other_hops = 0.95;
 };
 
 struct DriveParams {
-  double max_speed = 3.0;  // m/s
+  double max_speed = 3.0;           // m/s
   double max_angular_speed = 10.0;  // rad/s
-  double acc_speedup = 3.0;  // m/s^2, traction limit while speeding up
-  double acc_brake = 4.5;  // m/s^2, while slowing down
-  double acc_angular = 40.0;  // rad/s^2
+  double acc_speedup = 3.0;         // m/s^2, traction limit while speeding up
+  double acc_brake = 4.5;           // m/s^2, while slowing down
+  double acc_angular = 40.0;        // rad/s^2
   // Wheel positions, counter-clockwise from the robot's forward axis (rad), in
   // the order front_right, back_right, back_left, front_left.
-  std::array<double, 4> wheel_angles = {-1.0471975511965976, -2.356194490192345,
-                                        2.356194490192345, 1.0471975511965976};
+  std::array<double, 4> wheel_angles = {-1.0471975511965976, -2.356194490192345, 2.356194490192345, 1.0471975511965976};
   double wheel_distance = 0.08;  // robot centre to wheel contact
-  double wheel_radius = 0.027;  // to convert wheel rad/s to rim m/s
+  double wheel_radius = 0.027;   // to convert wheel rad/s to rim m/s
 };
 
 struct KickerParams {
-  double max_flat_speed = 6.5;  // m/s, the rules' limit
-  double max_chip_speed = 5.0;  // m/s along the launch direction
+  double max_flat_speed = 6.5;                     // m/s, the rules' limit
+  double max_chip_speed = 5.0;                     // m/s along the launch direction
   double default_chip_angle = 0.7853981633974483;  // rad (45 deg)
-  double reach = 0.01;  // ball may be this far off the face and still be kicked
+  double reach = 0.01;                             // ball may be this far off the face and still be kicked
 };
 
 struct DribblerParams {
-  double max_force = 1.0;  // N the dribbler can pull the ball with
-  double stiffness = 40.0;  // N/m towards the hold point
-  double damping = 2.0;  // N s/m relative to the hold point
+  double max_force = 1.0;           // N the dribbler can pull the ball with
+  double stiffness = 40.0;          // N/m towards the hold point
+  double damping = 2.0;             // N s/m relative to the hold point
   double capture_distance = 0.012;  // ball surface to face distance to grab it
 };
 
@@ -89,7 +88,7 @@ struct RobotParams {
   double height = 0.15;
   double mass = 2.5;
   double center_to_dribbler = 0.08;  // centre to the flat front face
-  double friction = 0.4;  // against the ball and other robots
+  double friction = 0.4;             // against the ball and other robots
   DriveParams drive;
   KickerParams kicker;
   DribblerParams dribbler;
@@ -110,8 +109,8 @@ struct RobotSetup {
 
 struct CameraParams {
   double rate_hz = 60.0;
-  double height = 4.0;  // above the field
-  double overlap = 0.2;  // width of the strip two neighbouring cameras share
+  double height = 4.0;          // above the field
+  double overlap = 0.2;         // width of the strip two neighbouring cameras share
   double focal_length = 390.0;  // pixels, for published calibrations
   int image_width = 780;
   int image_height = 580;
@@ -136,7 +135,7 @@ struct Scene {
   BallParams ball;
   RobotParams robot;
   int robots_per_team = kMaxRobotsPerTeam;  // ids 0..n-1 exist per team
-  std::vector<RobotSetup> robots;  // start poses; ids not listed start off the field
+  std::vector<RobotSetup> robots;           // start poses; ids not listed start off the field
   double ball_start_x = 0.0;
   double ball_start_y = 0.0;
   CameraParams cameras;

@@ -29,8 +29,8 @@ struct RobotCommand {
   // front_left; positive turns the robot counter-clockwise.
   std::array<double, 4> wheel_velocity = {0, 0, 0, 0};
   KickKind kick = KickKind::kNone;
-  double kick_speed = 0.0;  // m/s along the launch direction
-  double chip_angle = 0.0;  // rad; 0 = the scene's default
+  double kick_speed = 0.0;      // m/s along the launch direction
+  double chip_angle = 0.0;      // rad; 0 = the scene's default
   double dribbler_speed = 0.0;  // rpm; > 0 is on
 };
 
@@ -52,14 +52,7 @@ struct RobotTeleport {
 
 // Why an input was refused. Every refusal is one of these, so callers can
 // count them per kind and say why a robot did not move.
-enum class InputError : uint8_t {
-  kOk,
-  kNotFinite,
-  kOutOfRange,
-  kUnknownRobot,
-  kOutsideField,
-  kCount
-};
+enum class InputError : uint8_t { kOk, kNotFinite, kOutOfRange, kUnknownRobot, kOutsideField, kCount };
 const char* InputErrorName(InputError error);
 
 }  // namespace turf

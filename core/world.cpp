@@ -40,7 +40,6 @@ std::unique_ptr<mjModel_, World::MjDeleter> CompileModel(const Scene& scene);
 
 double WrapAngle(double a) { return std::remainder(a, 2.0 * M_PI); }
 
-
 }  // namespace
 
 World::World(Scene scene) : scene_(std::move(scene)) {

@@ -55,7 +55,7 @@ struct WorldSnapshot {
 // a log line.
 struct WorldHealth {
   uint64_t containment_corrections = 0;  // a body pushed back inside the walls
-  uint64_t instability_recoveries = 0;  // a non-finite step undone
+  uint64_t instability_recoveries = 0;   // a non-finite step undone
 };
 
 class World {

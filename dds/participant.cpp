@@ -1,7 +1,7 @@
 #include "dds/participant.h"
 
-#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <spdlog/spdlog.h>
+#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 
 #include <cstdlib>
 #include <filesystem>

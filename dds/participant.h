@@ -37,7 +37,7 @@ struct ParticipantOptions {
   int domain = 0;
   std::string name = "turf";
   std::string prefix = "turf";  // topic names: <prefix>/<suffix>
-  std::string qos_file;  // Fast DDS XML profiles; empty: built-in defaults
+  std::string qos_file;         // Fast DDS XML profiles; empty: built-in defaults
 };
 
 // The QoS profiles file shipped with turf, found next to the executable's

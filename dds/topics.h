@@ -21,9 +21,9 @@ enum class Topic {
 
 struct TopicInfo {
   Topic topic;
-  const char* suffix;  // full name: <prefix>/<suffix>
+  const char* suffix;   // full name: <prefix>/<suffix>
   const char* profile;  // data_writer / data_reader profile in the QoS file
-  const char* type;  // IDL type (turf::idl::...)
+  const char* type;     // IDL type (turf::idl::...)
   const char* what;
 };
 

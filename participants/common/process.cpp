@@ -2,10 +2,10 @@
 
 #include <spdlog/spdlog.h>
 
+#include <unistd.h>
 #include <atomic>
 #include <csignal>
 #include <cstdlib>
-#include <unistd.h>
 
 namespace turf {
 

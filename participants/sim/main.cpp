@@ -1,8 +1,8 @@
 // turf-sim: the physics participant. Loads a scene, steps the MuJoCo world and
 // publishes it on DDS; see sim_node.h for its topics.
-#include <CLI/CLI.hpp>
 #include <mujoco/mujoco.h>
 #include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
 
 #include <cmath>
 #include <string>

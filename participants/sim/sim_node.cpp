@@ -68,14 +68,13 @@ class SimNode::Impl {
         state_writer_(participant_.MakeWriter<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
         field_writer_(participant_.MakeWriter<idl::SslFieldPubSubType>(dds::Topic::kSslField)),
         camera_writer_(participant_.MakeWriter<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)),
-        feedback_writers_{
-            participant_.MakeWriter<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackBlue),
-            participant_.MakeWriter<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackYellow)},
+        feedback_writers_{participant_.MakeWriter<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackBlue),
+                          participant_.MakeWriter<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackYellow)},
         reply_writer_(participant_.MakeWriter<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
         command_readers_{participant_.MakeReader<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue,
-                                                                                  [this] { wakeup_.Notify(); }),
+                                                                                 [this] { wakeup_.Notify(); }),
                          participant_.MakeReader<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow,
-                                                                                  [this] { wakeup_.Notify(); })},
+                                                                                 [this] { wakeup_.Notify(); })},
         control_reader_(
             participant_.MakeReader<idl::SimControlPubSubType>(dds::Topic::kControl, [this] { wakeup_.Notify(); })),
         rejects_("input") {
@@ -117,9 +116,7 @@ class SimNode::Impl {
     ReportStatus();
   }
 
-  SimNodeStats Stats() const {
-    return {frame_.load(), time_ns_.load(), rejected_.load(), rtf_.load()};
-  }
+  SimNodeStats Stats() const { return {frame_.load(), time_ns_.load(), rejected_.load(), rtf_.load()}; }
   uint64_t Rejected(const std::string& kind) const {
     std::lock_guard<std::mutex> lock(rejects_mutex_);
     return rejects_.Count(kind);
@@ -155,11 +152,11 @@ class SimNode::Impl {
     if (control_reader_->Take(&control_inbox_)) {
       for (const idl::SimControl& c : control_inbox_) HandleControl(c);
     }
-    const uint64_t overflow = command_readers_[0]->Overflowed() + command_readers_[1]->Overflowed() +
-                              control_reader_->Overflowed();
+    const uint64_t overflow =
+        command_readers_[0]->Overflowed() + command_readers_[1]->Overflowed() + control_reader_->Overflowed();
     if (overflow > reported_overflow_) {
-      Reject("queue_overflow", fmt::format("{} samples arrived faster than the loop could take them",
-                                           overflow - reported_overflow_));
+      Reject("queue_overflow",
+             fmt::format("{} samples arrived faster than the loop could take them", overflow - reported_overflow_));
       reported_overflow_ = overflow;
     }
   }
@@ -169,8 +166,8 @@ class SimNode::Impl {
     RobotCommand c;
     InputError error = FromIdl(in, &c);
     if (error == InputError::kOk && c.team != topic_team) {
-      Reject("command.team_mismatch", fmt::format("a {} command on the {} command topic", TeamName(c.team),
-                                                  TeamName(topic_team)));
+      Reject("command.team_mismatch",
+             fmt::format("a {} command on the {} command topic", TeamName(c.team), TeamName(topic_team)));
       return false;
     }
     if (error == InputError::kOk) error = world_.SetCommand(c);
@@ -194,8 +191,7 @@ class SimNode::Impl {
         RobotTeleport t;
         InputError e = FromIdl(req.robot(), &t);
         if (e == InputError::kOk) e = world_.TeleportRobot(t);
-        if (e != InputError::kOk)
-          why = fmt::format("robot teleport refused: {}", InputErrorName(e));
+        if (e != InputError::kOk) why = fmt::format("robot teleport refused: {}", InputErrorName(e));
         break;
       }
       case idl::OP_PAUSE:
@@ -339,9 +335,10 @@ class SimNode::Impl {
     const Scene& s = world_.scene();
     int on_field[2] = {0, 0};
     for (const RobotSnapshot& r : snapshot_.robots) on_field[static_cast<int>(r.team)] += r.on_field;
-    spdlog::info("scene '{}': division {}, {} blue + {} yellow robots on the field ({} ids a team), step {} ms, seed {}",
-                 s.name, s.field.division == Division::kA ? "A" : "B", on_field[0], on_field[1], s.robots_per_team,
-                 s.physics.step * 1e3, s.seed);
+    spdlog::info(
+        "scene '{}': division {}, {} blue + {} yellow robots on the field ({} ids a team), step {} ms, seed {}", s.name,
+        s.field.division == Division::kA ? "A" : "B", on_field[0], on_field[1], s.robots_per_team, s.physics.step * 1e3,
+        s.seed);
     spdlog::info("DDS domain {}, QoS profiles {}", options_.domain, participant_.options().qos_file);
     auto name = [this](dds::Topic t) { return participant_.TopicName(t); };
     spdlog::info("publishing {} and {} at {:.0f} Hz of sim time", name(dds::Topic::kWorldState),

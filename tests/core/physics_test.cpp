@@ -373,8 +373,7 @@ TEST(Physics, ThirtyTwoRobotsStackedOnOneSpotStayFiniteAndInside) {
   World w(test::Teams(16));
   for (int team = 0; team < 2; ++team)
     for (int id = 0; id < 16; ++id)
-      ASSERT_EQ(w.TeleportRobot({static_cast<Team>(team), id, true, 0.0, 0.0, 0.1 * id, {0, 0, 0}}),
-                InputError::kOk);
+      ASSERT_EQ(w.TeleportRobot({static_cast<Team>(team), id, true, 0.0, 0.0, 0.1 * id, {0, 0, 0}}), InputError::kOk);
   ASSERT_EQ(w.TeleportBall({{0, 0, 0.0215}, {0, 0, 0}, false}), InputError::kOk);
   for (int i = 0; i < Steps(w, 3.0); ++i) {
     w.Step();

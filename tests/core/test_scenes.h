@@ -30,7 +30,9 @@ inline Scene Teams(int per_team) {
   for (int team = 0; team < 2; ++team) {
     for (int id = 0; id < per_team; ++id) {
       const double side = team == 0 ? -1.0 : 1.0;
-      s.robots.push_back({static_cast<Team>(team), id, true,
+      s.robots.push_back({static_cast<Team>(team),
+                          id,
+                          true,
                           {side * (1.0 + 0.5 * (id % 8)), -3.5 + 1.0 * (id / 8) + 0.45 * (id % 8), 0.0}});
     }
   }

@@ -111,9 +111,7 @@ class Client {
     return std::nullopt;
   }
   void Command(const idl::SslRobotCommand& c) { (c.team() == idl::TEAM_BLUE ? blue_ : yellow_)->Write(c); }
-  void CommandOnTopic(Team topic, const idl::SslRobotCommand& c) {
-    (topic == Team::kBlue ? blue_ : yellow_)->Write(c);
-  }
+  void CommandOnTopic(Team topic, const idl::SslRobotCommand& c) { (topic == Team::kBlue ? blue_ : yellow_)->Write(c); }
 
   void Poll() {
     if (state_->Take(&states_)) {
@@ -221,9 +219,8 @@ TEST(SimDds, WatchdogStopsARobotWhoseCommandsStop) {
   }));
   // Silence: the robot must stop by itself within timeout + braking time.
   const int64_t silent_from = client.state().sim_time_ns();
-  ASSERT_TRUE(client.WaitState([&](const idl::WorldState& s) {
-    return s.sim_time_ns() - silent_from > 1'200'000'000;
-  }));
+  ASSERT_TRUE(
+      client.WaitState([&](const idl::WorldState& s) { return s.sim_time_ns() - silent_from > 1'200'000'000; }));
   EXPECT_NEAR(FindRobot(client.state(), idl::TEAM_BLUE, 0)->linear_velocity().x(), 0.0, 0.01);
 }
 
@@ -337,8 +334,8 @@ TEST(SimDds, CamerasReportWhatEachCameraSees) {
     tr.robot().position().y(y);
     ASSERT_EQ(client.Control(tr)->result(), idl::RESULT_OK);
   };
-  place(idl::TEAM_BLUE, 0, 3.0, 2.0);  // camera 0 only
-  place(idl::TEAM_BLUE, 1, -3.0, -2.0);  // camera 2 only
+  place(idl::TEAM_BLUE, 0, 3.0, 2.0);     // camera 0 only
+  place(idl::TEAM_BLUE, 1, -3.0, -2.0);   // camera 2 only
   place(idl::TEAM_YELLOW, 0, 0.05, 3.0);  // in the overlap of cameras 0 and 1
   idl::SimControl off = Op(idl::OP_TELEPORT_ROBOT);
   off.robot().team(idl::TEAM_YELLOW);
