@@ -29,7 +29,9 @@ std::vector<WorldSnapshot> RunScript(const Scene& scene, int steps) {
         EXPECT_EQ(w.SetCommand(c), InputError::kOk);
       }
     }
-    if (i == 300) EXPECT_EQ(w.TeleportBall({{-2.0, 0.5, 0.0215}, {3.0, -1.0, 0.0}, false}), InputError::kOk);
+    if (i == 300) {
+      EXPECT_EQ(w.TeleportBall({{-2.0, 0.5, 0.0215}, {3.0, -1.0, 0.0}, false}), InputError::kOk);
+    }
     w.Step();
     if (i % 50 == 0) out.push_back(w.Snapshot());
   }
@@ -67,7 +69,9 @@ TEST(Determinism, ResetReplaysIdentically) {
     c.move = MoveKind::kGlobalVelocity;
     c.velocity = {1.0, 0.5, 2.0};
     for (int i = 0; i < 1000; ++i) {
-      if (i % 8 == 0) EXPECT_EQ(w.SetCommand(c), InputError::kOk);
+      if (i % 8 == 0) {
+        EXPECT_EQ(w.SetCommand(c), InputError::kOk);
+      }
       w.Step();
     }
     return w.Snapshot();
