@@ -61,7 +61,9 @@ CameraFrame Detect(const CameraSpec& camera, const WorldSnapshot& world, double 
 }
 
 SslCameraSystem::SslCameraSystem(const Scene& scene)
-    : cameras_(CameraLayout(scene)), robot_height_(scene.robot.height), period_ns_(1e9 / scene.cameras.rate_hz) {}
+    : cameras_(CameraLayout(scene)), robot_height_(scene.robot.height), period_ns_(1e9 / scene.cameras.rate_hz) {
+  Reset();
+}
 
 void SslCameraSystem::Capture(const WorldSnapshot& world, std::vector<CameraFrame>* out) {
   out->clear();
@@ -71,12 +73,12 @@ void SslCameraSystem::Capture(const WorldSnapshot& world, std::vector<CameraFram
     out->back().frame_number = captures_;
   }
   // Schedule from the ideal grid, not from now, so the rate does not drift.
-  next_capture_ns_ = std::llround(static_cast<double>(captures_) * period_ns_);
+  next_capture_ns_ = std::llround(static_cast<double>(captures_ + 1) * period_ns_);
 }
 
 void SslCameraSystem::Reset() {
   captures_ = 0;
-  next_capture_ns_ = 0;
+  next_capture_ns_ = std::llround(period_ns_);
 }
 
 }  // namespace turf

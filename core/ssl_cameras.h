@@ -56,7 +56,8 @@ class SslCameraSystem {
   explicit SslCameraSystem(const Scene& scene);
   const std::vector<CameraSpec>& cameras() const { return cameras_; }
   // True when a capture falls due at `time_ns` (the first step at or after the
-  // scheduled exposure).
+  // scheduled exposure). The first exposure ends one frame period after the
+  // start, so no frame is ever stamped with time 0.
   bool Due(int64_t time_ns) const { return time_ns >= next_capture_ns_; }
   // Captures every camera into `out` (cleared first) and schedules the next.
   void Capture(const WorldSnapshot& world, std::vector<CameraFrame>* out);
@@ -67,7 +68,7 @@ class SslCameraSystem {
   double robot_height_ = 0.0;
   double period_ns_ = 0.0;
   uint64_t captures_ = 0;
-  int64_t next_capture_ns_ = 0;
+  int64_t next_capture_ns_ = 0;  // set by Reset()
 };
 
 }  // namespace turf

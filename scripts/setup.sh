@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages turf needs. The one place that lists them
 # (docker/ uses this script too). Idempotent: installs only what is missing.
+# clang + libclang-rt are for the libFuzzer targets (tests/fuzz.cmake).
 set -euo pipefail
 
 PACKAGES=(
@@ -10,6 +11,7 @@ PACKAGES=(
   libeigen3-dev libfmt-dev libspdlog-dev libyaml-cpp-dev libcli11-dev
   libprotobuf-dev protobuf-compiler
   libgtest-dev
+  clang libclang-rt-14-dev
 )
 
 missing=()

@@ -1,0 +1,35 @@
+# turf_fuzz(<name> SOURCES <files> [INCLUDES <dirs>] [LIBS <libs>] [DEPENDS <targets>])
+# Builds a libFuzzer target with clang (ASan + UBSan) from the listed sources
+# and registers ctest `fuzz_<name>`, which fuzzes for TURF_FUZZ_SECONDS (10 s).
+# Seeds: tests/fuzz/seeds/<name>/ (read only); new inputs go to the build tree.
+# Without clang the test is registered and reports itself skipped.
+# Longer runs on demand: build/tests/fuzz_<name> -max_total_time=600 <corpus dirs>
+find_program(TURF_CLANGXX NAMES clang++-14 clang++)
+set(TURF_FUZZ_SECONDS 10 CACHE STRING "seconds each fuzz test runs in ctest")
+
+function(turf_fuzz name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;INCLUDES;LIBS;DEPENDS" ${ARGN})
+  if(NOT TURF_CLANGXX)
+    add_test(NAME fuzz_${name} COMMAND ${CMAKE_COMMAND} -E echo "clang++ not found: fuzz_${name} skipped")
+    set_tests_properties(fuzz_${name} PROPERTIES SKIP_REGULAR_EXPRESSION "skipped")
+    return()
+  endif()
+  set(bin ${CMAKE_BINARY_DIR}/tests/fuzz_${name})
+  set(flags -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined)
+  set(includes "")
+  foreach(dir ${ARG_INCLUDES} ${PROJECT_SOURCE_DIR})
+    list(APPEND includes -I${dir})
+  endforeach()
+  add_custom_command(
+    OUTPUT ${bin}
+    COMMAND ${TURF_CLANGXX} ${flags} ${includes} ${ARG_SOURCES} -o ${bin} ${ARG_LIBS}
+    DEPENDS ${ARG_SOURCES} ${ARG_DEPENDS}
+    COMMENT "clang libFuzzer target fuzz_${name}"
+    VERBATIM)
+  add_custom_target(fuzz_${name}_build ALL DEPENDS ${bin})
+  set(corpus ${CMAKE_BINARY_DIR}/tests/fuzz_corpus/${name})
+  set(seeds ${PROJECT_SOURCE_DIR}/tests/fuzz/seeds/${name})
+  file(MAKE_DIRECTORY ${corpus} ${seeds})
+  add_test(NAME fuzz_${name}
+           COMMAND ${bin} -max_total_time=${TURF_FUZZ_SECONDS} -max_len=65536 -rss_limit_mb=2048 ${corpus} ${seeds})
+endfunction()
