@@ -126,6 +126,15 @@ idl::SslField FieldToIdl(const Scene& scene, const std::vector<CameraSpec>& came
   out.chip_damping_xy_other_hops(b.chip_damping_xy_other_hops);
   out.chip_damping_z(b.floor_restitution);
   out.camera_rate_hz(scene.cameras.rate_hz);
+  const RobotParams& r = scene.robot;
+  out.robots_per_team(static_cast<uint8_t>(scene.robots_per_team));
+  out.robot_height(r.height);
+  out.center_to_dribbler(r.center_to_dribbler);
+  out.wheel_radius(r.drive.wheel_radius);
+  out.wheel_angles(r.drive.wheel_angles);
+  out.max_flat_kick_speed(r.kicker.max_flat_speed);
+  out.max_chip_kick_speed(r.kicker.max_chip_speed);
+  out.default_chip_angle(r.kicker.default_chip_angle);
   for (const CameraSpec& c : cameras) {
     idl::CameraInfo info;
     info.id(static_cast<uint32_t>(c.id));

@@ -373,6 +373,8 @@ TEST(SimDds, CamerasReportWhatEachCameraSees) {
   ASSERT_TRUE(client.field().has_value());
   EXPECT_EQ(client.field()->cameras().size(), 4u);
   EXPECT_DOUBLE_EQ(client.field()->field_length(), 12.0);
+  EXPECT_EQ(client.field()->robots_per_team(), 2);
+  EXPECT_DOUBLE_EQ(client.field()->max_flat_kick_speed(), 6.5);
 }
 
 // The same scene and the same lockstep command stream, run twice over DDS,
