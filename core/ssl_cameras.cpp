@@ -1,6 +1,8 @@
 #include "core/ssl_cameras.h"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace turf {
 
@@ -42,9 +44,24 @@ std::vector<CameraSpec> CameraLayout(const Scene& scene) {
 }
 
 namespace {
+
 bool Sees(const CameraSpec& c, double x, double y) {
   return x >= c.min_x && x <= c.max_x && y >= c.min_y && y <= c.max_y;
 }
+
+// Distance from p to the segment ab, in the plane.
+double SegmentDistance(double px, double py, double ax, double ay, double bx, double by) {
+  const double dx = bx - ax, dy = by - ay;
+  const double len2 = dx * dx + dy * dy;
+  const double t = len2 > 0 ? std::clamp(((px - ax) * dx + (py - ay) * dy) / len2, 0.0, 1.0) : 0.0;
+  return std::hypot(px - (ax + t * dx), py - (ay + t * dy));
+}
+
+float Confidence(double spread, Rng& rng) {
+  if (spread <= 0.0) return 1.0f;
+  return static_cast<float>(std::max(0.05, 1.0 - spread * std::abs(rng.Normal())));
+}
+
 }  // namespace
 
 CameraFrame Detect(const CameraSpec& camera, const WorldSnapshot& world, double robot_height) {
@@ -60,25 +77,106 @@ CameraFrame Detect(const CameraSpec& camera, const WorldSnapshot& world, double 
   return frame;
 }
 
+bool BallOccluded(const CameraSpec& camera, const Vec3& ball, const WorldSnapshot& world, double robot_radius,
+                  double robot_height) {
+  const Vec3& c = camera.position;
+  if (ball.z >= robot_height || c.z <= robot_height) return false;
+  // The part of the sight line below the robots' tops, seen from above.
+  const double t = (c.z - robot_height) / (c.z - ball.z);
+  const double ax = c.x + t * (ball.x - c.x), ay = c.y + t * (ball.y - c.y);
+  for (const RobotSnapshot& r : world.robots) {
+    if (r.on_field && SegmentDistance(r.x, r.y, ax, ay, ball.x, ball.y) < robot_radius) return true;
+  }
+  return false;
+}
+
+void ApplyValueModel(const CameraSpec& camera, const CameraRealism& realism, const WorldSnapshot& world,
+                     const RobotParams& robot, Rng& rng, CameraFrame* frame) {
+  // A fixed number of draws per object, whatever happens to it, so that one
+  // object's fate never shifts another's noise.
+  std::vector<DetectedBall> balls;
+  for (DetectedBall b : frame->balls) {
+    const bool vanished = rng.Bernoulli(realism.ball_vanish);
+    const double nx = rng.Normal(0.0, realism.ball_position_stddev);
+    const double ny = rng.Normal(0.0, realism.ball_position_stddev);
+    const float confidence = Confidence(realism.confidence_spread, rng);
+    if (vanished) continue;
+    if (realism.ball_occlusion && BallOccluded(camera, b.position, world, robot.radius, robot.height)) continue;
+    b.position.x += nx;
+    b.position.y += ny;
+    b.confidence = confidence;
+    balls.push_back(b);
+  }
+  frame->balls = std::move(balls);
+  std::vector<DetectedRobot> robots;
+  for (DetectedRobot r : frame->robots) {
+    const bool vanished = rng.Bernoulli(realism.robot_vanish);
+    const double nx = rng.Normal(0.0, realism.robot_position_stddev);
+    const double ny = rng.Normal(0.0, realism.robot_position_stddev);
+    const double nphi = rng.Normal(0.0, realism.robot_orientation_stddev);
+    const float confidence = Confidence(realism.confidence_spread, rng);
+    if (vanished) continue;
+    r.x += nx;
+    r.y += ny;
+    r.orientation = std::remainder(r.orientation + nphi, 2.0 * M_PI);
+    r.confidence = confidence;
+    robots.push_back(r);
+  }
+  frame->robots = std::move(robots);
+}
+
 SslCameraSystem::SslCameraSystem(const Scene& scene)
-    : cameras_(CameraLayout(scene)), robot_height_(scene.robot.height), period_ns_(1e9 / scene.cameras.rate_hz) {
+    : scene_(scene), cameras_(CameraLayout(scene)), period_ns_(1e9 / scene.cameras.rate_hz) {
   Reset();
 }
 
-void SslCameraSystem::Capture(const WorldSnapshot& world, std::vector<CameraFrame>* out) {
-  out->clear();
+void SslCameraSystem::SetRealism(const CameraRealism& realism) {
+  realism_ = realism;
+  for (Stream& s : streams_) s.link.SetParams(realism.link);
+}
+
+void SslCameraSystem::Capture(const WorldSnapshot& world) {
   ++captures_;
-  for (const CameraSpec& c : cameras_) {
-    out->push_back(Detect(c, world, robot_height_));
-    out->back().frame_number = captures_;
+  const int64_t processing_ns = std::llround(realism_.processing_delay * 1e9);
+  for (size_t i = 0; i < cameras_.size(); ++i) {
+    Stream& s = streams_[i];
+    CameraFrame frame = Detect(cameras_[i], world, scene_.robot.height);
+    frame.frame_number = captures_;
+    ApplyValueModel(cameras_[i], realism_, world, scene_.robot, s.values, &frame);
+    frame.sent_time_ns = frame.capture_time_ns + processing_ns;
+    ++s.counters.captured;
+    const std::optional<int64_t> arrival = s.link.Transmit(frame.sent_time_ns);
+    if (!arrival) {
+      ++s.counters.lost;
+      continue;
+    }
+    // Keep the queue ordered by arrival (links of different cameras interleave).
+    auto it = std::upper_bound(pending_.begin(), pending_.end(), *arrival,
+                               [](int64_t t, const Pending& p) { return t < p.arrival_ns; });
+    pending_.insert(it, Pending{*arrival, std::move(frame)});
   }
   // Schedule from the ideal grid, not from now, so the rate does not drift.
   next_capture_ns_ = std::llround(static_cast<double>(captures_ + 1) * period_ns_);
 }
 
+void SslCameraSystem::Release(int64_t now_ns, std::vector<CameraFrame>* out) {
+  out->clear();
+  while (!pending_.empty() && pending_.front().arrival_ns <= now_ns) {
+    out->push_back(std::move(pending_.front().frame));
+    pending_.pop_front();
+  }
+}
+
 void SslCameraSystem::Reset() {
   captures_ = 0;
   next_capture_ns_ = std::llround(period_ns_);
+  pending_.clear();
+  streams_.clear();
+  for (const CameraSpec& c : cameras_) {
+    const std::string name = "camera/" + std::to_string(c.id);
+    streams_.push_back(Stream{Rng(StreamSeed(scene_.seed, name + "/values")),
+                              Link(realism_.link, StreamSeed(scene_.seed, name + "/link")), {}});
+  }
 }
 
 }  // namespace turf

@@ -1,12 +1,18 @@
 // SSL-Vision-like cameras: where they hang, which part of the field each one
-// reports, and what each reports in a captured frame. Ideal for now: exact
-// positions, every object in the camera's area, capture and send at once.
+// reports, and what each reports of a captured frame, through the camera's
+// value model (occlusion, vanishing, noise, confidence) and its link
+// (processing delay, latency, jitter, loss). With ideal realism a frame is
+// exact and released at its capture time.
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <vector>
 
+#include "core/link_model.h"
+#include "core/rng.h"
 #include "core/scene.h"
+#include "core/sensor_realism.h"
 #include "core/types.h"
 #include "core/world.h"
 
@@ -14,7 +20,7 @@ namespace turf {
 
 struct CameraSpec {
   int id = 0;
-  Vec3 position;                                              // optical centre, field frame
+  Vec3 position;  // optical centre, field frame
   double min_x = 0.0, max_x = 0.0, min_y = 0.0, max_y = 0.0;  // reported area
 };
 
@@ -40,32 +46,65 @@ struct DetectedRobot {
 
 struct CameraFrame {
   int camera_id = 0;
-  uint64_t frame_number = 0;  // per camera, from 1
+  uint64_t frame_number = 0;  // per camera, from 1; a lost frame leaves a gap
   int64_t capture_time_ns = 0;
-  int64_t sent_time_ns = 0;
+  int64_t sent_time_ns = 0;  // left the vision system (capture + processing)
   std::vector<DetectedBall> balls;
   std::vector<DetectedRobot> robots;
 };
 
-// What one camera reports of a world snapshot.
+// What one camera reports of a world snapshot, exactly.
 CameraFrame Detect(const CameraSpec& camera, const WorldSnapshot& world, double robot_height);
 
-// Captures all cameras together at the scene's camera rate, in simulation time.
+// True if a robot stands between the camera and the ball's centre.
+bool BallOccluded(const CameraSpec& camera, const Vec3& ball, const WorldSnapshot& world, double robot_radius,
+                  double robot_height);
+
+// The camera's value model applied to its exact frame, drawing from `rng`.
+void ApplyValueModel(const CameraSpec& camera, const CameraRealism& realism, const WorldSnapshot& world,
+                     const RobotParams& robot, Rng& rng, CameraFrame* frame);
+
+struct CameraCounters {
+  uint64_t captured = 0;
+  uint64_t lost = 0;  // by the link model
+};
+
+// Captures all cameras together at the scene's camera rate (simulation time)
+// and releases each frame when its modelled arrival time has come.
 class SslCameraSystem {
  public:
   explicit SslCameraSystem(const Scene& scene);
   const std::vector<CameraSpec>& cameras() const { return cameras_; }
+  void SetRealism(const CameraRealism& realism);
+  const CameraRealism& realism() const { return realism_; }
   // True when a capture falls due at `time_ns` (the first step at or after the
   // scheduled exposure). The first exposure ends one frame period after the
   // start, so no frame is ever stamped with time 0.
   bool Due(int64_t time_ns) const { return time_ns >= next_capture_ns_; }
-  // Captures every camera into `out` (cleared first) and schedules the next.
-  void Capture(const WorldSnapshot& world, std::vector<CameraFrame>* out);
+  // Captures every camera and schedules the next capture.
+  void Capture(const WorldSnapshot& world);
+  // Moves the frames that have arrived by `now_ns` into `out` (cleared first),
+  // oldest first.
+  void Release(int64_t now_ns, std::vector<CameraFrame>* out);
+  const CameraCounters& counters(int camera) const { return streams_[camera].counters; }
   void Reset();
 
  private:
+  struct Stream {
+    Rng values;
+    Link link;
+    CameraCounters counters;
+  };
+  struct Pending {
+    int64_t arrival_ns;
+    CameraFrame frame;
+  };
+
+  Scene scene_;
   std::vector<CameraSpec> cameras_;
-  double robot_height_ = 0.0;
+  CameraRealism realism_;
+  std::vector<Stream> streams_;
+  std::deque<Pending> pending_;  // ordered by arrival
   double period_ns_ = 0.0;
   uint64_t captures_ = 0;
   int64_t next_capture_ns_ = 0;  // set by Reset()

@@ -291,12 +291,11 @@ class SimNode::Impl {
     time_ns_.store(world_.time_ns());
     const bool steps_done = !pending_replies_.empty() && world_.frame() >= pending_replies_.front().done_at_frame;
     if (world_.frame() % state_every_ == 0 || steps_done) PublishState();
-    if (cameras_.Due(world_.time_ns())) {
-      cameras_.Capture(snapshot_, &camera_frames_);
-      for (const CameraFrame& f : camera_frames_) {
-        ToIdl(f, &camera_sample_);
-        camera_writer_->Write(camera_sample_);
-      }
+    if (cameras_.Due(world_.time_ns())) cameras_.Capture(snapshot_);
+    cameras_.Release(world_.time_ns(), &camera_frames_);
+    for (const CameraFrame& f : camera_frames_) {
+      ToIdl(f, &camera_sample_);
+      camera_writer_->Write(camera_sample_);
     }
     PublishFeedback();
     while (!pending_replies_.empty() && world_.frame() >= pending_replies_.front().done_at_frame) {

@@ -84,7 +84,8 @@ TEST(Cameras, CaptureAtTheConfiguredRateOnTheSimulationClock) {
   for (int64_t t = 0; t < 10'000'000'000; t += step) {
     s.time_ns = t;
     if (cams.Due(t)) {
-      cams.Capture(s, &frames);
+      cams.Capture(s);
+      cams.Release(t, &frames);
       ++captures;
       ASSERT_EQ(frames.size(), 4u);
       EXPECT_EQ(frames[0].frame_number, static_cast<uint64_t>(captures));

@@ -1,0 +1,66 @@
+// A modelled link: what happens to a sample between its source and the
+// network, in simulation time. Fixed latency plus jitter, and loss that is
+// either independent (Bernoulli) or bursty (a Gilbert-Elliott chain). A link
+// keeps order: a sample never arrives before the one sent before it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "core/rng.h"
+
+namespace turf {
+
+enum class JitterKind : uint8_t { kGaussian, kUniform, kExponential };
+
+// Two-state loss: in "good" samples are lost with loss_good, in "bad" with
+// loss_bad; after each sample the state flips with the given probabilities.
+// Mean burst (bad-state) length is 1 / p_bad_to_good samples.
+struct GilbertElliott {
+  bool enabled = false;
+  double p_good_to_bad = 0.0;
+  double p_bad_to_good = 1.0;
+  double loss_good = 0.0;
+  double loss_bad = 1.0;
+};
+
+struct LinkParams {
+  double latency = 0.0;  // s, fixed part of the delay
+  double jitter = 0.0;  // s: stddev (Gaussian), half width (uniform), mean (exponential)
+  JitterKind jitter_kind = JitterKind::kGaussian;
+  double loss = 0.0;  // independent loss probability (when burst loss is off)
+  GilbertElliott burst;
+};
+
+// Why link parameters are unusable; empty when they are fine.
+const char* CheckLinkParams(const LinkParams& params);
+
+struct LinkCounters {
+  uint64_t sent = 0;
+  uint64_t lost = 0;
+};
+
+class Link {
+ public:
+  Link(const LinkParams& params, uint64_t seed);
+  // Changes the model; the random stream and the order guarantee go on.
+  void SetParams(const LinkParams& params) { params_ = params; }
+  const LinkParams& params() const { return params_; }
+  // The fate of a sample sent at `send_ns`: nullopt if lost, else its arrival.
+  std::optional<int64_t> Transmit(int64_t send_ns);
+  const LinkCounters& counters() const { return counters_; }
+  // Restarts the stream from `seed` (a world reset).
+  void Reset(uint64_t seed);
+
+ private:
+  bool Lost();
+  double Delay();
+
+  LinkParams params_;
+  Rng rng_;
+  bool bad_ = false;
+  int64_t last_arrival_ns_ = INT64_MIN;
+  LinkCounters counters_;
+};
+
+}  // namespace turf
