@@ -11,6 +11,7 @@
 #include <system_error>
 #include <utility>
 
+#include "config/realism_yaml.h"
 #include "config/yaml_reader.h"
 
 namespace turf {
@@ -210,6 +211,17 @@ void ReadScene(MapReader m, Scene* s, std::vector<RobotSource>* sources, Errors*
   m.Int("robots_per_team", &s->robots_per_team);  // before teams: ids are checked against it
   ReadTeams(m.Map("teams"), s, sources, errors);
   ReadCameras(m.Map("cameras"), &s->cameras);
+  // realism: a preset name (configs/realism/<name>.yaml) or a map.
+  if (m.Has("realism")) {
+    const YAML::Node node = m.Child("realism");
+    if (node.IsScalar()) {
+      RealismLoadResult preset = LoadRealism(node.as<std::string>());
+      for (const std::string& e : preset.errors) errors->push_back("realism: " + e);
+      if (preset.realism) s->realism = *preset.realism;
+    } else {
+      ReadRealism(m.Map("realism"), &s->realism);
+    }
+  }
   m.Finish();
 }
 

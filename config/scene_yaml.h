@@ -18,6 +18,8 @@
 //       ids 0..robots_per_team-1 exist; ids not listed start off the field;
 //       x and y are required unless on_field is false
 //   cameras: {rate_hz, height, overlap, focal_length, image_width, image_height}
+//   realism: ideal|realistic|harsh (a preset in configs/realism/) or a map
+//       as in config/realism_yaml.h
 #pragma once
 
 #include <optional>

@@ -112,6 +112,7 @@ std::vector<std::string> ValidateScene(const Scene& s) {
   c.Range("cameras.image_width", s.cameras.image_width, 1, 100000);
   c.Range("cameras.image_height", s.cameras.image_height, 1, 100000);
 
+  if (const char* e = CheckRealism(s.realism); *e != '\0') c.Fail(std::string("realism: ") + e);
   c.Range("robots_per_team", s.robots_per_team, 0, kMaxRobotsPerTeam);
   const double x_in = f.length / 2 + f.boundary_width_goal_line;
   const double y_in = f.width / 2 + f.boundary_width;

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/sensor_realism.h"
+
 namespace turf {
 
 enum class Division : uint8_t { kA = 1, kB = 2 };
@@ -139,6 +141,7 @@ struct Scene {
   double ball_start_x = 0.0;
   double ball_start_y = 0.0;
   CameraParams cameras;
+  SensorRealism realism;  // ideal unless the scene names a preset or sets values
 };
 
 // Why a scene cannot be built; empty when it can. Checks ranges and that the

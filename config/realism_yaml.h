@@ -1,0 +1,52 @@
+// Sensor realism from YAML: the presets in configs/realism/ (ideal, realistic,
+// harsh), a scene's `realism:` section, and run-time changes sent to turf-sim.
+// Untrusted input: every problem is an error naming its key; never throws.
+//
+// Schema (every key optional, absent = ideal; SI units):
+//   camera:  {robot_position_stddev, robot_orientation_stddev, ball_position_stddev,
+//             robot_vanish, ball_vanish, ball_occlusion, confidence_spread,
+//             processing_delay, link: LINK}
+//   command: LINK                      a team's radio link to its robots
+//   encoder: {resolution, noise_stddev}
+//   imu:     {gyro_bias, gyro_noise_stddev, accel_bias, accel_noise_stddev}
+//   LINK:    {latency, jitter, jitter_kind: gaussian|uniform|exponential, loss,
+//             burst: {p_good_to_bad, p_bad_to_good, loss_good, loss_bad}}
+//             (burst present: Gilbert-Elliott loss replaces `loss`)
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/sensor_realism.h"
+
+namespace YAML {
+class Node;
+}
+
+namespace turf {
+
+struct RealismLoadResult {
+  std::optional<SensorRealism> realism;
+  std::vector<std::string> errors;
+};
+
+// The directory of the shipped presets.
+std::string DefaultRealismDir();
+
+// YAML text of a realism map.
+RealismLoadResult ParseRealismYaml(const std::string& yaml_text);
+
+// `spec` is a preset name (looked up as <dir>/<spec>.yaml), a path to a YAML
+// file (unless `allow_paths` is false, as for requests from the network), or
+// YAML text itself (if it contains a ':' or '{').
+RealismLoadResult LoadRealism(const std::string& spec, const std::string& dir = DefaultRealismDir(),
+                              bool allow_paths = true);
+
+namespace yaml {
+class MapReader;
+}
+// For the scene compiler: reads a realism map.
+void ReadRealism(yaml::MapReader m, SensorRealism* realism);
+
+}  // namespace turf
