@@ -144,10 +144,10 @@ void SslCameraSystem::Capture(const WorldSnapshot& world) {
     frame.frame_number = captures_;
     ApplyValueModel(cameras_[i], realism_, world, scene_.robot, s.values, &frame);
     frame.sent_time_ns = frame.capture_time_ns + processing_ns;
-    ++s.counters.captured;
+    s.stats.Sent();
     const std::optional<int64_t> arrival = s.link.Transmit(frame.sent_time_ns);
     if (!arrival) {
-      ++s.counters.lost;
+      s.stats.Lost();
       continue;
     }
     // Keep the queue ordered by arrival (links of different cameras interleave).
@@ -162,6 +162,8 @@ void SslCameraSystem::Capture(const WorldSnapshot& world) {
 void SslCameraSystem::Release(int64_t now_ns, std::vector<CameraFrame>* out) {
   out->clear();
   while (!pending_.empty() && pending_.front().arrival_ns <= now_ns) {
+    const CameraFrame& f = pending_.front().frame;
+    streams_[f.camera_id].stats.Delivered((now_ns - f.capture_time_ns) * 1e-9);
     out->push_back(std::move(pending_.front().frame));
     pending_.pop_front();
   }

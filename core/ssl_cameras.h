@@ -13,6 +13,7 @@
 #include "core/rng.h"
 #include "core/scene.h"
 #include "core/sensor_realism.h"
+#include "core/stream_stats.h"
 #include "core/types.h"
 #include "core/world.h"
 
@@ -64,11 +65,6 @@ bool BallOccluded(const CameraSpec& camera, const Vec3& ball, const WorldSnapsho
 void ApplyValueModel(const CameraSpec& camera, const CameraRealism& realism, const WorldSnapshot& world,
                      const RobotParams& robot, Rng& rng, CameraFrame* frame);
 
-struct CameraCounters {
-  uint64_t captured = 0;
-  uint64_t lost = 0;  // by the link model
-};
-
 // Captures all cameras together at the scene's camera rate (simulation time)
 // and releases each frame when its modelled arrival time has come.
 class SslCameraSystem {
@@ -86,14 +82,15 @@ class SslCameraSystem {
   // Moves the frames that have arrived by `now_ns` into `out` (cleared first),
   // oldest first.
   void Release(int64_t now_ns, std::vector<CameraFrame>* out);
-  const CameraCounters& counters(int camera) const { return streams_[camera].counters; }
+  // What each camera's stream achieved since the last call (sent = captured).
+  StreamWindow TakeStats(int camera) { return streams_[camera].stats.Take(); }
   void Reset();
 
  private:
   struct Stream {
     Rng values;
     Link link;
-    CameraCounters counters;
+    StreamStats stats;
   };
   struct Pending {
     int64_t arrival_ns;

@@ -53,6 +53,13 @@ class Writer {
   Writer(const Writer&) = delete;
   Writer& operator=(const Writer&) = delete;
   bool Write(const Sample& sample) { return writer_->write(const_cast<Sample*>(&sample)); }
+  // With an explicit source timestamp (ns since the Unix epoch, wall clock).
+  bool Write(const Sample& sample, int64_t source_ns) {
+    eprosima::fastrtps::Time_t t(static_cast<int32_t>(source_ns / 1000000000),
+                                 static_cast<uint32_t>(source_ns % 1000000000));
+    return writer_->write_w_timestamp(const_cast<Sample*>(&sample), fdds::HANDLE_NIL, t) ==
+           ReturnCode::RETCODE_OK;
+  }
   // Number of readers currently matched.
   int Matched() const {
     fdds::PublicationMatchedStatus status;

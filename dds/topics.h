@@ -17,6 +17,7 @@ enum class Topic {
   kSslFeedbackYellow,
   kControl,
   kControlReply,
+  kStats,
 };
 
 struct TopicInfo {
@@ -39,6 +40,7 @@ inline constexpr TopicInfo kTopics[] = {
      "yellow ball contact, kicks"},
     {Topic::kControl, "control", "turf.control", "SimControl", "teleport, pause, step, reset, time mode"},
     {Topic::kControlReply, "control_reply", "turf.control", "SimControlReply", "what a control request did"},
+    {Topic::kStats, "stats", "turf.state", "SensorStats", "rate, loss and latency of each modelled stream"},
 };
 
 const TopicInfo& Info(Topic topic);

@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 #include <turf/idl/ClockPubSubTypes.h>
+#include <turf/idl/SensorStatsPubSubTypes.h>
 #include <turf/idl/SimControlPubSubTypes.h>
 #include <turf/idl/SslRobotPubSubTypes.h>
 #include <turf/idl/SslVisionPubSubTypes.h>
@@ -14,7 +15,12 @@
 #include <mutex>
 #include <thread>
 
+#include "config/realism_yaml.h"
+#include "core/input_limits.h"
+#include "core/link_model.h"
+#include "core/rng.h"
 #include "core/ssl_cameras.h"
+#include "core/stream_stats.h"
 #include "core/world.h"
 #include "dds/participant.h"
 #include "participants/common/process.h"
@@ -55,6 +61,22 @@ struct PendingStep {
   idl::SimControl request;
 };
 
+// A team's command on its modelled radio link, due to reach the robot.
+struct PendingCommand {
+  int64_t due_ns;
+  int64_t sent_ns;
+  RobotCommand command;
+};
+
+constexpr int64_t kStatsWindowNs = 1'000'000'000;
+
+int64_t UnixNowNs() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+std::string CommandStreamName(int team) { return std::string("ssl/command/") + TeamName(static_cast<Team>(team)); }
+
 }  // namespace
 
 class SimNode::Impl {
@@ -71,6 +93,7 @@ class SimNode::Impl {
         feedback_writers_{participant_.MakeWriter<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackBlue),
                           participant_.MakeWriter<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackYellow)},
         reply_writer_(participant_.MakeWriter<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
+        stats_writer_(participant_.MakeWriter<idl::SensorStatsPubSubType>(dds::Topic::kStats)),
         command_readers_{participant_.MakeReader<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue,
                                                                                  [this] { wakeup_.Notify(); }),
                          participant_.MakeReader<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow,
@@ -85,6 +108,9 @@ class SimNode::Impl {
     state_every_ = std::max<int64_t>(1, std::llround(1.0 / (s.rates.world_state_hz * s.physics.step)));
     world_.Snapshot(&snapshot_);
     published_feedback_ = snapshot_.robots;
+    for (int t = 0; t < kTeamCount; ++t)
+      command_links_.emplace_back(s.realism.command, StreamSeed(s.seed, CommandStreamName(t)));
+    SetRealism(s.realism);
   }
 
   void Run(const std::function<bool()>& stop) {
@@ -108,6 +134,7 @@ class SimNode::Impl {
         continue;
       }
       if (pending_steps_ == 0) Pace();
+      ApplyDueCommands();
       world_.Step();
       if (pending_steps_ > 0) --pending_steps_;
       AfterStep();
@@ -170,11 +197,50 @@ class SimNode::Impl {
              fmt::format("a {} command on the {} command topic", TeamName(c.team), TeamName(topic_team)));
       return false;
     }
-    if (error == InputError::kOk) error = world_.SetCommand(c);
-    if (error == InputError::kOk) return true;
-    Reject(fmt::format("command.{}", InputErrorName(error)),
-           fmt::format("{} robot {}", TeamName(topic_team), static_cast<int>(in.id())));
-    return false;
+    if (error == InputError::kOk && world_.RobotIndex(c.team, c.id) < 0) error = InputError::kUnknownRobot;
+    if (error == InputError::kOk) error = CheckCommand(c);
+    if (error != InputError::kOk) {
+      Reject(fmt::format("command.{}", InputErrorName(error)),
+             fmt::format("{} robot {}", TeamName(topic_team), static_cast<int>(in.id())));
+      return false;
+    }
+    // Valid: now it travels the team's modelled radio link (which may lose it).
+    const int t = static_cast<int>(c.team);
+    command_stats_[t].Sent();
+    const std::optional<int64_t> due = command_links_[t].Transmit(world_.time_ns());
+    if (!due) {
+      command_stats_[t].Lost();
+      return true;
+    }
+    pending_commands_[t].push_back({*due, world_.time_ns(), c});
+    return true;
+  }
+
+  // Commands whose modelled radio delay has passed reach their robots.
+  void ApplyDueCommands() {
+    for (int t = 0; t < kTeamCount; ++t) {
+      auto& queue = pending_commands_[t];
+      while (!queue.empty() && queue.front().due_ns <= world_.time_ns()) {
+        world_.SetCommand(queue.front().command);  // validated on arrival
+        command_stats_[t].Delivered((world_.time_ns() - queue.front().sent_ns) * 1e-9);
+        queue.pop_front();
+      }
+    }
+  }
+
+  void SetRealism(const SensorRealism& realism) {
+    realism_ = realism;
+    cameras_.SetRealism(realism.camera);
+    for (Link& link : command_links_) link.SetParams(realism.command);
+  }
+
+  std::string ChangeRealism(const std::string& spec) {
+    // From the network: preset names and YAML text only, never file paths.
+    const RealismLoadResult loaded = LoadRealism(spec, realism_dir_, /*allow_paths=*/false);
+    if (!loaded.realism) return loaded.errors.empty() ? "invalid realism" : loaded.errors.front();
+    SetRealism(*loaded.realism);
+    spdlog::info("sensor realism changed ({})", spec.size() < 40 ? spec : spec.substr(0, 40) + "...");
+    return "";
   }
 
   void HandleControl(const idl::SimControl& req) {
@@ -209,6 +275,9 @@ class SimNode::Impl {
         break;
       case idl::OP_SET_TIME_MODE:
         why = SetTimeMode(req.time_mode(), req.speed());
+        break;
+      case idl::OP_SET_REALISM:
+        why = ChangeRealism(req.realism());
         break;
       default:
         why = fmt::format("unknown op {}", static_cast<int>(req.op()));
@@ -263,6 +332,10 @@ class SimNode::Impl {
   void ResetWorld() {
     world_.Reset();
     cameras_.Reset();
+    for (int t = 0; t < kTeamCount; ++t) {
+      command_links_[t].Reset(StreamSeed(world_.scene().seed, CommandStreamName(t)));
+      pending_commands_[t].clear();
+    }
     pending_steps_ = 0;
     for (const PendingStep& p : pending_replies_) Reply(p.request, "cancelled by a reset");
     pending_replies_.clear();
@@ -293,10 +366,17 @@ class SimNode::Impl {
     if (world_.frame() % state_every_ == 0 || steps_done) PublishState();
     if (cameras_.Due(world_.time_ns())) cameras_.Capture(snapshot_);
     cameras_.Release(world_.time_ns(), &camera_frames_);
-    for (const CameraFrame& f : camera_frames_) {
-      ToIdl(f, &camera_sample_);
-      camera_writer_->Write(camera_sample_);
+    if (!camera_frames_.empty()) {
+      // Source timestamp: the wall time the simulation was at the capture.
+      const int64_t wall_now = UnixNowNs();
+      const double per_sim_ns = (mode_ == TimeMode::kRealtime || mode_ == TimeMode::kScaled) ? 1.0 / speed_ : 0.0;
+      for (const CameraFrame& f : camera_frames_) {
+        ToIdl(f, &camera_sample_);
+        const int64_t age = std::llround((world_.time_ns() - f.capture_time_ns) * per_sim_ns);
+        camera_writer_->Write(camera_sample_, wall_now - age);
+      }
     }
+    if (world_.time_ns() >= next_stats_ns_) PublishStats();
     PublishFeedback();
     while (!pending_replies_.empty() && world_.frame() >= pending_replies_.front().done_at_frame) {
       Reply(pending_replies_.front().request, "");
@@ -318,6 +398,29 @@ class SimNode::Impl {
     clock.real_time_factor(pacer_.real_time_factor());
     clock_writer_->Write(clock);
     rtf_.store(pacer_.real_time_factor());
+  }
+
+  void PublishStats() {
+    idl::SensorStats out;
+    out.sim_time_ns(world_.time_ns());
+    out.window_s(kStatsWindowNs * 1e-9);
+    auto add = [&](const std::string& name, const StreamWindow& w) {
+      idl::StreamStats s;
+      s.name(name);
+      s.rate_hz(w.delivered / out.window_s());
+      s.sent(w.sent);
+      s.lost(w.lost);
+      s.loss_ratio(w.sent > 0 ? static_cast<double>(w.lost) / w.sent : 0.0);
+      s.latency_mean(w.latency_mean);
+      s.latency_stddev(w.latency_stddev);
+      out.streams().push_back(s);
+    };
+    for (size_t c = 0; c < cameras_.cameras().size(); ++c)
+      add(fmt::format("ssl/camera/{}", c), cameras_.TakeStats(static_cast<int>(c)));
+    for (int t = 0; t < kTeamCount; ++t) add(CommandStreamName(t), command_stats_[t].Take());
+    stats_writer_->Write(out);
+    last_stats_ = out;
+    next_stats_ns_ = world_.time_ns() + kStatsWindowNs;
   }
 
   void PublishFeedback() {
@@ -344,8 +447,16 @@ class SimNode::Impl {
                  name(dds::Topic::kClock), s.rates.world_state_hz);
     spdlog::info("publishing {} ({} cameras at {:.0f} Hz), {} (latched)", name(dds::Topic::kSslCamera),
                  cameras_.cameras().size(), s.cameras.rate_hz, name(dds::Topic::kSslField));
-    spdlog::info("publishing {} and {} on change, {}", name(dds::Topic::kSslFeedbackBlue),
-                 name(dds::Topic::kSslFeedbackYellow), name(dds::Topic::kControlReply));
+    spdlog::info("publishing {} and {} on change, {}, {} every second of sim time",
+                 name(dds::Topic::kSslFeedbackBlue), name(dds::Topic::kSslFeedbackYellow),
+                 name(dds::Topic::kControlReply), name(dds::Topic::kStats));
+    const CameraRealism& c = realism_.camera;
+    spdlog::info("sensor realism: camera noise {:.1f} mm / {:.3f} rad, vanish {:.1f}%/{:.1f}%, occlusion {}, "
+                 "delay {:.1f} ms + link {:.1f} ms, link loss {:.1f}%{}; command link {:.1f} ms, loss {:.1f}%{}",
+                 c.robot_position_stddev * 1e3, c.robot_orientation_stddev, c.robot_vanish * 100, c.ball_vanish * 100,
+                 c.ball_occlusion ? "on" : "off", c.processing_delay * 1e3, c.link.latency * 1e3, c.link.loss * 100,
+                 c.link.burst.enabled ? " (bursts)" : "", realism_.command.latency * 1e3, realism_.command.loss * 100,
+                 realism_.command.burst.enabled ? " (bursts)" : "");
     spdlog::info("subscribing {}, {}, {}; command timeout {} s", name(dds::Topic::kSslCommandBlue),
                  name(dds::Topic::kSslCommandYellow), name(dds::Topic::kControl), s.rates.command_timeout);
     spdlog::info("time: {}{}{}", TimeModeName(mode_), mode_ == TimeMode::kScaled ? fmt::format(" x{}", speed_) : "",
@@ -357,6 +468,13 @@ class SimNode::Impl {
     spdlog::info("t={:.1f}s frame={} rtf={:.2f} refused={} containment={} recoveries={}", world_.time_ns() * 1e-9,
                  world_.frame(), pacer_.real_time_factor(), rejected_.load(), h.containment_corrections,
                  h.instability_recoveries);
+    std::string streams;
+    for (const idl::StreamStats& st : last_stats_.streams()) {
+      if (st.sent() == 0) continue;
+      streams += fmt::format(" {} {:.0f}/s loss {:.1f}% latency {:.1f}+-{:.1f}ms;", st.name(), st.rate_hz(),
+                             100.0 * st.loss_ratio(), st.latency_mean() * 1e3, st.latency_stddev() * 1e3);
+    }
+    if (!streams.empty()) spdlog::info("streams (last second of sim time):{}", streams);
   }
 
   SimNodeOptions options_;
@@ -371,6 +489,7 @@ class SimNode::Impl {
   std::unique_ptr<dds::Writer<idl::CameraFramePubSubType>> camera_writer_;
   std::unique_ptr<dds::Writer<idl::SslRobotFeedbackPubSubType>> feedback_writers_[kTeamCount];
   std::unique_ptr<dds::Writer<idl::SimControlReplyPubSubType>> reply_writer_;
+  std::unique_ptr<dds::Writer<idl::SensorStatsPubSubType>> stats_writer_;
   std::unique_ptr<dds::Reader<idl::SslRobotCommandPubSubType>> command_readers_[kTeamCount];
   std::unique_ptr<dds::Reader<idl::SimControlPubSubType>> control_reader_;
 
@@ -381,6 +500,14 @@ class SimNode::Impl {
   uint64_t pending_steps_ = 0;
   std::deque<PendingStep> pending_replies_;
   uint64_t reported_overflow_ = 0;
+
+  SensorRealism realism_;
+  std::string realism_dir_ = DefaultRealismDir();
+  std::vector<Link> command_links_;
+  std::deque<PendingCommand> pending_commands_[kTeamCount];
+  StreamStats command_stats_[kTeamCount];
+  int64_t next_stats_ns_ = kStatsWindowNs;
+  idl::SensorStats last_stats_;
 
   WorldSnapshot snapshot_;
   std::vector<RobotSnapshot> published_feedback_;

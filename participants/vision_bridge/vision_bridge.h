@@ -1,0 +1,75 @@
+// turf-vision-bridge's node: turf's SSL camera topics out as SSL-Vision UDP.
+//
+// Subscribes (topic names <prefix>/..., QoS profiles in configs/qos/turf_qos.xml):
+//   ssl/camera   CameraFrame  one per camera per capture (60 Hz of sim time)
+//   ssl/field    SslField     latched: field, ball model, cameras
+//   world_state  WorldState   only with `tracked` (100 Hz of sim time)
+// Sends (UDP, multicast or unicast):
+//   address:port                  one SSL_WrapperPacket with the detection per
+//                                 camera frame; a geometry-only wrapper once the
+//                                 field is known and every `geometry_every`
+//                                 capture rounds (default 224.5.23.2:10020)
+//   tracked_address:tracked_port  one TrackerWrapperPacket per world state
+//                                 (default 224.5.23.2:10010, only with `tracked`)
+// Times are Unix seconds by default, simulation seconds with ClockMode::kSim
+// (bridges/ssl_vision/timestamps.h); the cameras of one capture round share
+// one wall-clock reading, so they carry the same t_capture. Every DDS sample is untrusted: one that
+// fails the codec's checks is dropped, counted per kind and logged at a
+// limited rate. Nothing is sent until turf-sim is there.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "bridges/ssl_vision/timestamps.h"
+
+namespace turf {
+
+struct VisionBridgeOptions {
+  int domain = 0;
+  std::string prefix = "turf";
+  std::string qos_file;  // empty: the shipped profiles
+  std::string name = "turf-vision-bridge";
+  std::string address = "224.5.23.2";  // multicast group or unicast address
+  uint16_t port = 10020;
+  std::string interface_ip;  // multicast interface address; empty: the system's choice
+  int ttl = 1;               // multicast hops
+  int geometry_every = 120;  // capture rounds between geometry packets; 0: only when the field changes
+  vision::ClockMode clock = vision::ClockMode::kUnix;
+  bool tracked = false;
+  std::string tracked_address = "224.5.23.2";
+  uint16_t tracked_port = 10010;
+  std::string tracked_uuid;  // empty: a random one per run
+};
+
+struct VisionBridgeStats {
+  uint64_t detections_sent = 0;
+  uint64_t geometry_sent = 0;
+  uint64_t tracked_sent = 0;
+  uint64_t rejected = 0;     // dropped samples of every kind
+  uint64_t send_errors = 0;  // datagrams the socket refused
+};
+
+class VisionBridge {
+ public:
+  // Throws std::invalid_argument for a bad address or option, std::runtime_error
+  // if the socket or the DDS participant cannot be created.
+  explicit VisionBridge(VisionBridgeOptions options);
+  ~VisionBridge();
+  VisionBridge(const VisionBridge&) = delete;
+  VisionBridge& operator=(const VisionBridge&) = delete;
+
+  // Runs until `stop()` answers true (checked at least every 50 ms).
+  void Run(const std::function<bool()>& stop);
+  VisionBridgeStats Stats() const;
+  // Drops of one kind, e.g. "camera.not_finite", "field.non_positive_size".
+  uint64_t Rejected(const std::string& kind) const;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace turf
