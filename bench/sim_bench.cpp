@@ -92,7 +92,8 @@ int main(int argc, char** argv) {
   }
   int on_field = 0;
   for (const auto& r : loaded.scene->robots) on_field += r.on_field;
-  turf::dds::ParticipantOptions dds{200 + static_cast<int>(getpid() % 30), "bench", "bench" + std::to_string(getpid()),
+  // Domains <= 99 keep Fast DDS ports out of the ephemeral range (tests/test_domain.h).
+  turf::dds::ParticipantOptions dds{1 + static_cast<int>(getpid() % 99), "bench", "bench" + std::to_string(getpid()),
                                     ""};
 
   int pipe_fd[2] = {-1, -1};

@@ -96,6 +96,12 @@ class Reader {
     pending_.store(false, std::memory_order_release);
     return !out->empty();
   }
+  // Instances whose Deadline QoS period passed without a sample, so far.
+  int DeadlinesMissed() const {
+    fdds::RequestedDeadlineMissedStatus status;
+    reader_->get_requested_deadline_missed_status(status);
+    return status.total_count;
+  }
   // Samples dropped because the owner did not drain the queue in time.
   uint64_t Overflowed() const { return overflowed_.load(); }
   int Matched() const {

@@ -1,6 +1,7 @@
 // turf-vision-bridge in-process: turf-sim's node and the bridge on threads of
 // their own, each test on its own DDS domain and topic prefix, sending unicast
 // to a UDP port the test picked free. Assertions are on the decoded packets.
+#include "tests/test_domain.h"
 #include <gtest/gtest.h>
 #include <turf/idl/SimControlPubSubTypes.h>
 #include <turf/idl/SslVisionPubSubTypes.h>
@@ -32,7 +33,7 @@ int g_test_counter = 0;
 dds::ParticipantOptions UniqueDds() {
   ++g_test_counter;
   dds::ParticipantOptions o;
-  o.domain = 140 + static_cast<int>(getpid() % 90);
+  o.domain = turf::test::TestDomain();
   o.prefix = "vision" + std::to_string(getpid()) + "_" + std::to_string(g_test_counter);
   o.name = "test";
   o.qos_file = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";

@@ -1,0 +1,80 @@
+// turf-grsim-bridge: lets team software that speaks grSim's UDP protocol drive
+// turf-sim. The codec is bridges/grsim/; this is the socket and DDS plumbing.
+//
+// UDP (wire facts: shared/protocols/grsim.md):
+//   listens  <listen>:<port> (0.0.0.0:20011)   grSim_Packet: commands, replacement
+//   sends    <sender ip>:<blue/yellow status port> (30011 / 30012)   Robots_Status,
+//            to the address that last sent that team's commands, only when a
+//            robot's infrared / flat_kick / chip_kick changes (as grSim does)
+// DDS (topic names <prefix>/..., QoS profile in brackets, configs/qos/turf_qos.xml):
+//   publishes   ssl/command/blue, .../yellow [turf.command]  SslRobotCommand: each decoded robot
+//                                                            command, on its team's topic
+//               control [turf.control]                       SimControl: a teleport per replaced
+//                                                            robot, then the ball
+//   subscribes  ssl/feedback/blue, .../yellow [turf.feedback] SslRobotFeedback -> robot status
+//               ssl/field [turf.field, latched]              SslField: robots per team, wheel radius,
+//                                                            kick limits (before it: the options)
+//               control_reply [turf.control]                 SimControlReply: refused teleports are logged
+// Rates: one command sample per robot per datagram (a team's frame, ~60 Hz); a
+// control request per replacement; status on change. No watchdog here: teams
+// are independent, and turf-sim's watchdog is per robot.
+// Flags (main.cpp, --help): --listen, --port, --blue-status-port,
+// --yellow-status-port, --domain, --prefix, --qos, --robots-per-team,
+// --wheel-radius, --wheel-order, --dribbler-rpm, --max-datagram, --log-level.
+// A refused datagram (see GrsimError) is dropped whole, counted per kind and
+// logged at a limited rate; turf-sim never hears of it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "bridges/grsim/grsim_codec.h"
+
+namespace turf {
+
+struct GrsimBridgeOptions {
+  int domain = 0;
+  std::string prefix = "turf";
+  std::string qos_file;                    // empty: the shipped profiles
+  std::string name = "turf-grsim-bridge";  // DDS participant, and `client` of control requests
+  std::string listen_ip = "0.0.0.0";
+  uint16_t port = 20011;  // 0: any free port (see GrsimBridge::port())
+  uint16_t blue_status_port = 30011;
+  uint16_t yellow_status_port = 30012;
+  grsim::GrsimCodecConfig codec;  // until ssl/field arrives
+};
+
+struct GrsimBridgeStats {
+  uint64_t datagrams = 0;       // received
+  uint64_t refused = 0;         // datagrams refused, every kind
+  uint64_t commands = 0;        // robot commands published
+  uint64_t controls = 0;        // teleport requests published
+  uint64_t status_packets = 0;  // Robots_Status sent
+  bool sim_present = false;     // turf-sim's command and control readers are matched
+  bool field_known = false;     // ssl/field arrived
+};
+
+class GrsimBridge {
+ public:
+  // Binds the socket and creates the DDS entities. Throws std::invalid_argument
+  // for bad options, std::runtime_error for the socket or DDS.
+  explicit GrsimBridge(GrsimBridgeOptions options);
+  ~GrsimBridge();
+  GrsimBridge(const GrsimBridge&) = delete;
+  GrsimBridge& operator=(const GrsimBridge&) = delete;
+
+  // Runs until `stop()` answers true (checked at least every 10 ms).
+  void Run(const std::function<bool()>& stop);
+  uint16_t port() const;  // the UDP port it listens on
+  GrsimBridgeStats Stats() const;
+  // Refusals of one kind: a GrsimErrorName, or "control_rejected" (turf-sim refused a teleport).
+  uint64_t Rejected(const std::string& kind) const;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace turf

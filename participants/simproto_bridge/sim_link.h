@@ -1,0 +1,69 @@
+// The simulation-protocol bridge's DDS side: what turf-sim said last, robot
+// commands and control requests out, control replies matched to their
+// requests. Thread-safe: the bridge's port threads share one SimLink.
+//
+// Writes: ssl/command/blue, ssl/command/yellow (SslRobotCommand), control (SimControl).
+// Reads:  control_reply (SimControlReply), ssl/feedback/<team> (SslRobotFeedback),
+//         ssl/field (SslField, latched), clock (Clock), world_state (WorldState),
+//         ssl/camera (CameraFrame; the newest kMaxBufferedFrames kept for sync mode).
+#pragma once
+
+#include <turf/idl/Clock.h>
+#include <turf/idl/SimControl.h>
+#include <turf/idl/SslRobot.h>
+#include <turf/idl/SslVision.h>
+#include <turf/idl/WorldState.h>
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bridges/ssl_simulation/robot_control.h"
+#include "dds/participant.h"
+
+namespace turf {
+
+class SimLink {
+ public:
+  static constexpr size_t kMaxBufferedFrames = 4096;
+
+  // What turf-sim said last; each part is empty until it first arrives.
+  struct View {
+    std::optional<idl::SslField> field;
+    std::optional<idl::WorldState> world;
+    std::optional<idl::Clock> clock;
+    simproto::ContactMap contacts;
+  };
+
+  // Throws std::runtime_error if the DDS entities cannot be created.
+  explicit SimLink(const dds::ParticipantOptions& options);
+  ~SimLink();
+  SimLink(const SimLink&) = delete;
+  SimLink& operator=(const SimLink&) = delete;
+
+  std::string TopicName(dds::Topic topic) const;
+  const dds::ParticipantOptions& options() const;
+  View Now();
+  // Publishes on the topic of the command's team.
+  void Command(const idl::SslRobotCommand& command);
+  // Sends the requests in order (numbering them, as client `name`) and waits
+  // for every reply until `timeout`; a missing reply is nullopt.
+  std::vector<std::optional<idl::SimControlReply>> Control(std::vector<idl::SimControl> requests,
+                                                           std::chrono::milliseconds timeout);
+  // Camera frames are numbered in arrival order. FrameCursor() is the number
+  // received so far; FramesSince(c) returns those received after cursor `c`
+  // (the newest kMaxBufferedFrames at most).
+  uint64_t FrameCursor();
+  std::vector<idl::CameraFrame> FramesSince(uint64_t cursor);
+  // DDS samples turf-sim's writers could not hand over in time (reader queues full).
+  uint64_t Overflowed() const;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace turf

@@ -1,0 +1,293 @@
+#include "participants/simproto_bridge/simproto_bridge.h"
+
+#include <spdlog/spdlog.h>
+
+#include <atomic>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "bridges/ssl_simulation/errors.h"
+#include "bridges/ssl_simulation/robot_control.h"
+#include "bridges/ssl_simulation/simulator_command.h"
+#include "bridges/ssl_simulation/sync.h"
+#include "participants/common/process.h"
+#include "participants/common/udp.h"
+#include "participants/simproto_bridge/sim_link.h"
+
+namespace turf {
+
+namespace {
+
+using namespace std::chrono_literals;
+namespace sp = simproto;
+
+constexpr size_t kReceiveBytes = 65536;  // any UDP datagram; the codec refuses what is too large
+
+enum class Kind { kControl, kBlue, kYellow, kSync };
+constexpr const char* kKindNames[] = {"control", "blue", "yellow", "sync"};
+constexpr const char* kKindMessages[] = {"SimulatorCommand -> SimulatorResponse",
+                                         "RobotControl (blue robots) -> RobotControlResponse",
+                                         "RobotControl (yellow robots) -> RobotControlResponse",
+                                         "SimulationSyncRequest -> SimulationSyncResponse (ids 16..31: yellow)"};
+
+const char* Name(Kind kind) { return kKindNames[static_cast<int>(kind)]; }
+
+const char* TimeModeName(idl::TimeMode mode) {
+  switch (mode) {
+    case idl::TIME_REALTIME:
+      return "realtime";
+    case idl::TIME_SCALED:
+      return "scaled";
+    case idl::TIME_FREE_RUNNING:
+      return "free-running";
+    case idl::TIME_LOCKSTEP:
+      return "lockstep";
+  }
+  return "unknown";
+}
+
+const sp::SimError kNotAvailable{sp::kSimNotAvailable, "turf-sim has not been seen yet (field, world state, clock)"};
+
+}  // namespace
+
+class SimprotoBridge::Impl {
+ public:
+  explicit Impl(SimprotoBridgeOptions options)
+      : options_(std::move(options)),
+        link_({options_.domain, options_.name, options_.prefix, options_.qos_file}),
+        rejects_("datagram") {
+    if (!MakeEndpoint(options_.listen, 0))
+      throw std::invalid_argument("--listen is not an IPv4 address: " + options_.listen);
+    const uint16_t ports[] = {options_.control_port, options_.blue_port, options_.yellow_port, options_.sync_port};
+    for (int k = 0; k < 4; ++k) {
+      if (ports[k] == 0) continue;
+      std::string error;
+      std::optional<UdpSocket> s = UdpSocket::Bind(options_.listen, ports[k], false, &error);
+      if (!s) throw std::runtime_error(std::string("cannot bind the ") + kKindNames[k] + " port: " + error);
+      sockets_.push_back({static_cast<Kind>(k), std::move(*s)});
+    }
+  }
+
+  void Run(const std::function<bool()>& stop) {
+    ReportStartup();
+    std::vector<std::thread> threads;
+    for (Socket& s : sockets_) threads.emplace_back([this, &s] { Serve(s); });
+    bool seen = false;
+    auto next_status = std::chrono::steady_clock::now() + 10s;
+    SimprotoBridgeStats last{};
+    while (!stop()) {
+      std::this_thread::sleep_for(50ms);
+      if (!seen) seen = ReportSim();
+      if (std::chrono::steady_clock::now() >= next_status) {
+        next_status += 10s;
+        const SimprotoBridgeStats s = Stats();
+        if (s.datagrams != last.datagrams)
+          spdlog::info("datagrams={} answered={} commands={} requests={} refused={}", s.datagrams, s.answered,
+                       s.commands, s.requests, s.rejected);
+        last = s;
+      }
+    }
+    stopping_.store(true);
+    for (std::thread& t : threads) t.join();
+  }
+
+  SimprotoBridgeStats Stats() const {
+    std::lock_guard<std::mutex> lock(rejects_mutex_);
+    return {datagrams_.load(), answered_.load(), commands_.load(), requests_.load(), rejects_.Total()};
+  }
+
+  uint64_t Rejected(const std::string& kind) const {
+    std::lock_guard<std::mutex> lock(rejects_mutex_);
+    return rejects_.Count(kind);
+  }
+
+ private:
+  struct Socket {
+    Kind kind;
+    UdpSocket socket;
+  };
+
+  void Serve(Socket& s) {
+    while (!stopping_.load()) {
+      std::optional<Datagram> d = s.socket.Receive(kReceiveBytes, 50ms);
+      if (!d) continue;
+      ++datagrams_;
+      std::vector<uint8_t> answer;
+      switch (s.kind) {
+        case Kind::kControl:
+          answer = HandleControl(*d);
+          break;
+        case Kind::kBlue:
+          answer = HandleTeam(sp::Port::kBlue, Kind::kBlue, *d);
+          break;
+        case Kind::kYellow:
+          answer = HandleTeam(sp::Port::kYellow, Kind::kYellow, *d);
+          break;
+        case Kind::kSync:
+          answer = HandleSync(*d);
+          break;
+      }
+      std::string error;
+      if (s.socket.SendTo(answer, d->from, &error))
+        ++answered_;
+      else
+        Reject(fmt::format("{}.send_failed", Name(s.kind)), error);
+    }
+  }
+
+  // --- Ports ---
+
+  std::vector<uint8_t> HandleTeam(sp::Port port, Kind kind, const Datagram& d) {
+    const SimLink::View view = link_.Now();
+    if (!view.field) {
+      Reject(fmt::format("{}.sim_not_available", Name(kind)), "from " + d.from.ToString());
+      return sp::EncodeRobotControlResponse({}, {}, {kNotAvailable});
+    }
+    const sp::RobotControlDecode decoded =
+        sp::DecodeRobotControl(d.bytes.data(), d.bytes.size(), port, view.field->robots_per_team());
+    if (!Accepted(kind, decoded.error, decoded.errors, d)) return sp::EncodeRobotControlResponse(decoded, {});
+    for (const idl::SslRobotCommand& c : decoded.commands) link_.Command(c);
+    commands_ += decoded.commands.size();
+    return sp::EncodeRobotControlResponse(decoded, view.contacts);
+  }
+
+  std::vector<uint8_t> HandleControl(const Datagram& d) {
+    const SimLink::View view = link_.Now();
+    if (!view.field || !view.world) {
+      Reject("control.sim_not_available", "from " + d.from.ToString());
+      return sp::EncodeSimulatorResponse({kNotAvailable});
+    }
+    const sp::ControlContext context{&*view.field, &*view.world, false};
+    const sp::SimulatorCommandDecode decoded = sp::DecodeSimulatorCommand(d.bytes.data(), d.bytes.size(), context);
+    if (!Accepted(Kind::kControl, decoded.error, decoded.errors, d)) return sp::EncodeSimulatorResponse(decoded.errors);
+    std::vector<sp::SimError> errors = decoded.errors;
+    SendRequests(Kind::kControl, decoded.requests, &errors);
+    return sp::EncodeSimulatorResponse(errors);
+  }
+
+  std::vector<uint8_t> HandleSync(const Datagram& d) {
+    const SimLink::View view = link_.Now();
+    if (!view.field || !view.world || !view.clock) {
+      Reject("sync.sim_not_available", "from " + d.from.ToString());
+      return sp::EncodeSyncResponse({}, view.field.value_or(idl::SslField()), {}, {}, {kNotAvailable});
+    }
+    const idl::SslField& field = *view.field;
+    const sp::ControlContext context{&field, &*view.world, true};
+    const sp::SyncDecode request = sp::DecodeSyncRequest(d.bytes.data(), d.bytes.size(), context, view.clock->step_s());
+    if (!Accepted(Kind::kSync, request.error, request.errors, d))
+      return sp::EncodeSyncResponse({}, field, request, {}, {});
+
+    std::vector<sp::SimError> errors;
+    auto answer = [&](const std::vector<idl::CameraFrame>& frames) {
+      return sp::EncodeSyncResponse(frames, field, request, link_.Now().contacts, errors);
+    };
+    if (view.clock->mode() != idl::TIME_LOCKSTEP) {
+      idl::SimControl lockstep;
+      lockstep.op(idl::OP_SET_TIME_MODE);
+      lockstep.time_mode(idl::TIME_LOCKSTEP);
+      if (!SendRequests(Kind::kSync, {lockstep}, &errors)) return answer({});
+      spdlog::info("sync request from {}: turf-sim switched to lockstep", d.from.ToString());
+    }
+    if (!SendRequests(Kind::kSync, request.command.requests, &errors)) return answer({});
+
+    idl::SimControl step;
+    step.op(idl::OP_STEP);
+    step.step_count(request.step_count);
+    step.commands(request.robots.commands);
+    // turf-sim publishes a step's frames before its reply, on one participant:
+    // the frames that arrive between here and the reply are the step's.
+    const uint64_t cursor = link_.FrameCursor();
+    if (!SendRequests(Kind::kSync, {step}, &errors)) return answer({});
+    commands_ += request.robots.commands.size();
+    return answer(link_.FramesSince(cursor));
+  }
+
+  // --- Helpers ---
+
+  // Counts and logs what the codec refused or left out; false if the datagram is refused as a whole.
+  bool Accepted(Kind kind, sp::DecodeError error, const std::vector<sp::SimError>& errors, const Datagram& d) {
+    if (error != sp::DecodeError::kOk) {
+      Reject(fmt::format("{}.{}", Name(kind), sp::DecodeErrorName(error)),
+             fmt::format("from {}: {}", d.from.ToString(), errors.empty() ? "" : errors.front().message));
+      return false;
+    }
+    for (const sp::SimError& e : errors)
+      Reject(fmt::format("{}.unsupported", Name(kind)),
+             fmt::format("from {}: {}: {}", d.from.ToString(), e.code, e.message));
+    return true;
+  }
+
+  // Sends the requests and waits for their replies; each refusal or missing
+  // reply becomes an error. False if any request did not succeed.
+  bool SendRequests(Kind kind, const std::vector<idl::SimControl>& requests, std::vector<sp::SimError>* errors) {
+    if (requests.empty()) return true;
+    requests_ += requests.size();
+    const auto replies = link_.Control(requests, options_.reply_timeout);
+    bool ok = true;
+    for (const auto& r : replies) {
+      if (!r) {
+        errors->push_back(
+            {sp::kNoReply, fmt::format("turf-sim did not answer within {} ms", options_.reply_timeout.count())});
+        Reject(fmt::format("{}.no_reply", Name(kind)), errors->back().message);
+        ok = false;
+      } else if (r->result() != idl::RESULT_OK) {
+        errors->push_back(sp::RejectedBySim(*r));
+        Reject(fmt::format("{}.rejected_by_sim", Name(kind)), errors->back().message);
+        ok = false;
+      }
+    }
+    return ok;
+  }
+
+  void Reject(const std::string& kind, const std::string& detail) {
+    std::lock_guard<std::mutex> lock(rejects_mutex_);
+    rejects_.Reject(kind, detail);
+  }
+
+  // Logs turf-sim's arrival once; true once it has.
+  bool ReportSim() {
+    const SimLink::View view = link_.Now();
+    if (!view.field || !view.world || !view.clock) return false;
+    const idl::SslField& f = *view.field;
+    spdlog::info("turf-sim is there: division {}, {} robots a team, {} cameras at {:.0f} Hz, step {} ms, time mode {}",
+                 f.division() == 1 ? "A" : "B", static_cast<int>(f.robots_per_team()), f.cameras().size(),
+                 f.camera_rate_hz(), view.clock->step_s() * 1e3, TimeModeName(view.clock->mode()));
+    return true;
+  }
+
+  void ReportStartup() const {
+    for (const Socket& s : sockets_)
+      spdlog::info("{} port {}:{}: {}", Name(s.kind), options_.listen, s.socket.LocalPort(),
+                   kKindMessages[static_cast<int>(s.kind)]);
+    auto name = [this](dds::Topic t) { return link_.TopicName(t); };
+    spdlog::info("DDS domain {}, QoS profiles {}", options_.domain, link_.options().qos_file);
+    spdlog::info("publishing {}, {}, {}", name(dds::Topic::kSslCommandBlue), name(dds::Topic::kSslCommandYellow),
+                 name(dds::Topic::kControl));
+    spdlog::info("subscribing {}, {}, {}, {}, {}, {}, {}", name(dds::Topic::kControlReply),
+                 name(dds::Topic::kSslFeedbackBlue), name(dds::Topic::kSslFeedbackYellow), name(dds::Topic::kSslField),
+                 name(dds::Topic::kClock), name(dds::Topic::kWorldState), name(dds::Topic::kSslCamera));
+    spdlog::info("waiting for turf-sim; until then every datagram is answered with {}", sp::kSimNotAvailable);
+  }
+
+  SimprotoBridgeOptions options_;
+  SimLink link_;
+  std::vector<Socket> sockets_;
+  std::atomic<bool> stopping_{false};
+  std::atomic<uint64_t> datagrams_{0};
+  std::atomic<uint64_t> answered_{0};
+  std::atomic<uint64_t> commands_{0};
+  std::atomic<uint64_t> requests_{0};
+  mutable std::mutex rejects_mutex_;
+  RejectLog rejects_;
+};
+
+SimprotoBridge::SimprotoBridge(SimprotoBridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
+SimprotoBridge::~SimprotoBridge() = default;
+void SimprotoBridge::Run(const std::function<bool()>& stop) { impl_->Run(stop); }
+SimprotoBridgeStats SimprotoBridge::Stats() const { return impl_->Stats(); }
+uint64_t SimprotoBridge::Rejected(const std::string& kind) const { return impl_->Rejected(kind); }
+
+}  // namespace turf

@@ -1,0 +1,82 @@
+// turf-simproto-bridge's node: the SSL simulation protocol (UDP, protobuf) in
+// front of turf-sim (DDS). Codecs: bridges/ssl_simulation/.
+//
+// UDP ports (answers go back to the sender's address and port; 0 disables one):
+//   control 10300  SimulatorCommand -> SimulatorResponse, after turf-sim replied
+//                  to every request it became (errors name each refused or
+//                  unsupported part; empty errors: all done)
+//   blue    10301  RobotControl -> RobotControlResponse: commands for blue only
+//   yellow  10302  RobotControl -> RobotControlResponse: commands for yellow only
+//   sync    10303  SimulationSyncRequest -> SimulationSyncResponse (turf's choice
+//                  of port: the draft names none). Ids 0..15 blue, 16..31 yellow.
+//                  Switches turf-sim to lockstep if it is not, applies the
+//                  command, then ONE step request carrying the robot commands;
+//                  answers after turf-sim's reply with the detections of the
+//                  frames turf-sim released during the step (ideal cameras:
+//                  those captured in (t_before, t_after]). One request at a time.
+// Writes (topic names <prefix>/..., QoS profiles in configs/qos/turf_qos.xml):
+//   ssl/command/blue, ssl/command/yellow  SslRobotCommand  one per commanded robot
+//   control                               SimControl       teleports, time mode, pause/resume, step
+// Reads:
+//   control_reply  SimControlReply   matched to our requests by client name and id
+//   ssl/feedback/<team>  SslRobotFeedback  ball contact for the responses
+//   ssl/field      SslField          latched: robots_per_team, walls, cameras
+//   clock          Clock             physics step and time mode (sync mode)
+//   world_state    WorldState        current poses, for teleports with absent fields
+//   ssl/camera     CameraFrame       detections for sync responses
+// Until turf-sim's field and world state have arrived, every datagram is
+// answered with TURF_SIM_NOT_AVAILABLE. Bad datagrams are counted per kind
+// ("<port>.<error>", e.g. "blue.not_finite"), logged at a limited rate and
+// answered with SimulatorErrors; they never move a robot.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace turf {
+
+struct SimprotoBridgeOptions {
+  int domain = 0;
+  std::string prefix = "turf";
+  std::string qos_file;  // empty: the shipped profiles
+  std::string name = "turf-simproto-bridge";
+  std::string listen = "0.0.0.0";  // IPv4 address the ports bind to
+  uint16_t control_port = 10300;
+  uint16_t blue_port = 10301;
+  uint16_t yellow_port = 10302;
+  uint16_t sync_port = 10303;
+  std::chrono::milliseconds reply_timeout{2000};  // for turf-sim's control replies
+};
+
+struct SimprotoBridgeStats {
+  uint64_t datagrams = 0;  // received on every port
+  uint64_t answered = 0;   // responses sent
+  uint64_t commands = 0;   // robot commands published (team ports and sync steps)
+  uint64_t requests = 0;   // control requests sent to turf-sim
+  uint64_t rejected = 0;   // refusals of every kind
+};
+
+class SimprotoBridge {
+ public:
+  // Throws std::invalid_argument for a bad address, std::runtime_error if a
+  // port cannot be bound or the DDS participant cannot be created.
+  explicit SimprotoBridge(SimprotoBridgeOptions options);
+  ~SimprotoBridge();
+  SimprotoBridge(const SimprotoBridge&) = delete;
+  SimprotoBridge& operator=(const SimprotoBridge&) = delete;
+
+  // Serves every port until `stop()` answers true (checked every 50 ms).
+  void Run(const std::function<bool()>& stop);
+  SimprotoBridgeStats Stats() const;
+  // Refusals of one kind, e.g. "blue.unknown_robot", "control.unsupported".
+  uint64_t Rejected(const std::string& kind) const;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace turf

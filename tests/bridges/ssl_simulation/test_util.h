@@ -1,0 +1,78 @@
+// Shared test inputs for the SSL simulation protocol codec: a division A field
+// as turf-sim publishes it, a world state, and byte helpers.
+#pragma once
+
+#include <turf/idl/SslVision.h>
+#include <turf/idl/WorldState.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace turf::simproto::test {
+
+inline idl::SslField DivAField(int robots_per_team = 6) {
+  idl::SslField f;
+  f.division(1);
+  f.field_length(12.0);
+  f.field_width(9.0);
+  f.boundary_width(0.3);
+  f.boundary_width_goal_line(0.6);
+  f.ball_radius(0.0215);
+  f.max_robot_radius(0.09);
+  f.robot_height(0.15);
+  f.camera_rate_hz(60.0);
+  f.robots_per_team(static_cast<uint8_t>(robots_per_team));
+  for (uint32_t id = 0; id < 4; ++id) {
+    idl::CameraInfo c;
+    c.id(id);
+    c.focal_length(500.0);
+    c.image_width(780);
+    c.image_height(580);
+    idl::Vec3 p;
+    p.x(id == 0 || id == 3 ? 3.0 : -3.0);
+    p.y(id < 2 ? 2.25 : -2.25);
+    p.z(4.0);
+    c.position(p);
+    f.cameras().push_back(c);
+  }
+  return f;
+}
+
+inline idl::RobotState Robot(idl::Team team, int id, bool on_field, double x, double y, double yaw) {
+  idl::RobotState r;
+  r.team(team);
+  r.id(static_cast<uint8_t>(id));
+  r.on_field(on_field);
+  r.position().x(x);
+  r.position().y(y);
+  r.yaw(yaw);
+  return r;
+}
+
+// Ball at (0.5, -0.5) on the ground; blue 0 at (1, 1), blue 1 off the field,
+// yellow 2 at (-2, 0.5) facing +y.
+inline idl::WorldState World() {
+  idl::WorldState w;
+  w.sim_time_ns(1'000'000'000);
+  w.frame(500);
+  w.ball().position().x(0.5);
+  w.ball().position().y(-0.5);
+  w.ball().position().z(0.0215);
+  w.robots().push_back(Robot(idl::TEAM_BLUE, 0, true, 1.0, 1.0, 0.25));
+  w.robots().push_back(Robot(idl::TEAM_BLUE, 1, false, 0.0, 0.0, 0.0));
+  w.robots().push_back(Robot(idl::TEAM_YELLOW, 2, true, -2.0, 0.5, 1.5707963));
+  return w;
+}
+
+inline std::vector<uint8_t> Bytes(const std::string& s) { return std::vector<uint8_t>(s.begin(), s.end()); }
+
+// Also messages that lack required fields (to test their refusal).
+template <class Message>
+std::vector<uint8_t> Serialize(const Message& m) {
+  std::vector<uint8_t> out(m.ByteSizeLong());
+  m.SerializePartialToArray(out.data(), static_cast<int>(out.size()));
+  return out;
+}
+
+}  // namespace turf::simproto::test

@@ -1,0 +1,200 @@
+// In-process harness for turf-sim over DDS: the simulator's node on a thread
+// and a client participant, each test on its own domain and topic prefix.
+#pragma once
+
+#include "tests/test_domain.h"
+#include <gtest/gtest.h>
+#include <turf/idl/ClockPubSubTypes.h>
+#include <turf/idl/SensorStatsPubSubTypes.h>
+#include <turf/idl/SimControlPubSubTypes.h>
+#include <turf/idl/SslRobotPubSubTypes.h>
+#include <turf/idl/SslVisionPubSubTypes.h>
+#include <turf/idl/WorldStatePubSubTypes.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <optional>
+#include <thread>
+
+#include "dds/participant.h"
+#include "participants/sim/sim_node.h"
+#include "tests/core/test_scenes.h"
+
+namespace turf::test {
+
+using namespace std::chrono_literals;
+using Clock = std::chrono::steady_clock;
+
+
+inline dds::ParticipantOptions UniqueDds(const char* name) {
+  static int g_test_counter = 0;
+  ++g_test_counter;
+  dds::ParticipantOptions o;
+  o.domain = TestDomain();
+  o.prefix = "test" + std::to_string(getpid()) + "_" + std::to_string(g_test_counter);
+  o.name = name;
+  o.qos_file = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
+  return o;
+}
+
+// turf-sim's node on a thread of its own.
+class SimUnderTest {
+ public:
+  SimUnderTest(Scene scene, const dds::ParticipantOptions& dds, TimeMode mode, double speed = 1.0) {
+    SimNodeOptions o;
+    o.domain = dds.domain;
+    o.prefix = dds.prefix;
+    o.qos_file = dds.qos_file;
+    o.mode = mode;
+    o.speed = speed;
+    node_ = std::make_unique<SimNode>(std::move(scene), o);
+    thread_ = std::thread([this] { node_->Run([this] { return stop_.load(); }); });
+  }
+  ~SimUnderTest() {
+    stop_ = true;
+    thread_.join();
+  }
+  SimNode& node() { return *node_; }
+
+ private:
+  std::unique_ptr<SimNode> node_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+// What a team stack or a test harness would be: a plain DDS participant.
+class Client {
+ public:
+  explicit Client(const dds::ParticipantOptions& o)
+      : participant_(Named(o)),
+        blue_(participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue)),
+        yellow_(participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow)),
+        control_(participant_.MakeWriter<idl::SimControlPubSubType>(dds::Topic::kControl)),
+        state_(participant_.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
+        clock_(participant_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock)),
+        camera_(participant_.MakeReader<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)),
+        field_(participant_.MakeReader<idl::SslFieldPubSubType>(dds::Topic::kSslField)),
+        reply_(participant_.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
+        stats_(participant_.MakeReader<idl::SensorStatsPubSubType>(dds::Topic::kStats)),
+        all_frames_(participant_.MakeReader<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)) {}
+
+  // Polls until `done` holds for the newest world state, or the timeout.
+  bool WaitState(const std::function<bool(const idl::WorldState&)>& done, std::chrono::milliseconds timeout = 5s) {
+    const auto end = Clock::now() + timeout;
+    while (Clock::now() < end) {
+      Poll();
+      if (has_state_ && done(state_now_)) return true;
+      std::this_thread::sleep_for(2ms);
+    }
+    return false;
+  }
+  bool WaitMatched(std::chrono::milliseconds timeout = 5s) {
+    const auto end = Clock::now() + timeout;
+    while (Clock::now() < end) {
+      if (blue_->Matched() > 0 && yellow_->Matched() > 0 && control_->Matched() > 0 && state_->Matched() > 0 &&
+          reply_->Matched() > 0 && all_frames_->Matched() > 0)
+        return WaitState([](const idl::WorldState&) { return true; });
+      std::this_thread::sleep_for(5ms);
+    }
+    return false;
+  }
+  // Sends a control request and waits for its reply.
+  std::optional<idl::SimControlReply> Control(idl::SimControl req, std::chrono::milliseconds timeout = 5s) {
+    req.client("test");
+    req.request_id(++request_id_);
+    control_->Write(req);
+    const auto end = Clock::now() + timeout;
+    while (Clock::now() < end) {
+      std::vector<idl::SimControlReply> replies;
+      reply_->Take(&replies);
+      for (const auto& r : replies)
+        if (r.request_id() == request_id_) return r;
+      std::this_thread::sleep_for(1ms);
+    }
+    return std::nullopt;
+  }
+  void Command(const idl::SslRobotCommand& c) { (c.team() == idl::TEAM_BLUE ? blue_ : yellow_)->Write(c); }
+  void CommandOnTopic(Team topic, const idl::SslRobotCommand& c) { (topic == Team::kBlue ? blue_ : yellow_)->Write(c); }
+
+  void Poll() {
+    if (state_->Take(&states_)) {
+      state_now_ = states_.back();
+      has_state_ = true;
+    }
+    std::vector<idl::Clock> clocks;
+    if (clock_->Take(&clocks)) clock_now_ = clocks.back();
+    std::vector<idl::CameraFrame> frames;
+    if (camera_->Take(&frames))
+      for (auto& f : frames) cameras_[f.camera_id()] = f;
+    std::vector<idl::SslField> fields;
+    if (field_->Take(&fields)) field_now_ = fields.back();
+    std::vector<idl::SensorStats> stats;
+    if (stats_->Take(&stats)) stats_now_ = stats.back();
+    std::vector<idl::CameraFrame> all;
+    if (all_frames_->Take(&all)) frame_log_.insert(frame_log_.end(), all.begin(), all.end());
+  }
+  const std::optional<idl::SensorStats>& stats() const { return stats_now_; }
+  int CameraDeadlinesMissed() const { return all_frames_->DeadlinesMissed(); }
+  // Every camera frame received, in arrival order.
+  const std::vector<idl::CameraFrame>& frame_log() const { return frame_log_; }
+  const idl::WorldState& state() const { return state_now_; }
+  const idl::Clock& clock() const { return clock_now_; }
+  std::map<uint32_t, idl::CameraFrame>& cameras() { return cameras_; }
+  const std::optional<idl::SslField>& field() const { return field_now_; }
+
+ private:
+  static dds::ParticipantOptions Named(dds::ParticipantOptions o) {
+    o.name = "client";
+    return o;
+  }
+  dds::Participant participant_;
+  std::unique_ptr<dds::Writer<idl::SslRobotCommandPubSubType>> blue_, yellow_;
+  std::unique_ptr<dds::Writer<idl::SimControlPubSubType>> control_;
+  std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> state_;
+  std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_;
+  std::unique_ptr<dds::Reader<idl::CameraFramePubSubType>> camera_;
+  std::unique_ptr<dds::Reader<idl::SslFieldPubSubType>> field_;
+  std::unique_ptr<dds::Reader<idl::SimControlReplyPubSubType>> reply_;
+  std::unique_ptr<dds::Reader<idl::SensorStatsPubSubType>> stats_;
+  std::unique_ptr<dds::Reader<idl::CameraFramePubSubType>> all_frames_;
+  std::optional<idl::SensorStats> stats_now_;
+  std::vector<idl::CameraFrame> frame_log_;
+  std::vector<idl::WorldState> states_;
+  idl::WorldState state_now_;
+  bool has_state_ = false;
+  idl::Clock clock_now_;
+  std::map<uint32_t, idl::CameraFrame> cameras_;
+  std::optional<idl::SslField> field_now_;
+  uint64_t request_id_ = 0;
+};
+
+inline idl::SslRobotCommand LocalVelocity(idl::Team team, int id, double forward, double left, double angular) {
+  idl::SslRobotCommand c;
+  c.team(team);
+  c.id(static_cast<uint8_t>(id));
+  c.move(idl::MOVE_LOCAL_VELOCITY);
+  idl::Vec3 v;
+  v.x(forward);
+  v.y(left);
+  v.z(angular);
+  c.velocity(v);
+  return c;
+}
+
+inline const idl::RobotState* FindRobot(const idl::WorldState& s, idl::Team team, int id) {
+  for (const auto& r : s.robots())
+    if (r.team() == team && r.id() == id) return &r;
+  return nullptr;
+}
+
+inline idl::SimControl Op(idl::ControlOp op) {
+  idl::SimControl c;
+  c.op(op);
+  return c;
+}
+
+}  // namespace turf::test
