@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "config/realism_yaml.h"
 #include "config/scene_yaml.h"
 #include "participants/common/process.h"
 #include "participants/sim/sim_node.h"
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
   std::string speed = "1";
   bool lockstep = false;
   std::string log_level = "info";
+  std::string realism;
   app.add_option("-s,--scene", scene_path, "scene file (YAML)")->capture_default_str();
   app.add_option("-d,--domain", options.domain, "DDS domain id")->capture_default_str()->check(CLI::Range(0, 232));
   app.add_option("-p,--prefix", options.prefix, "topic name prefix (two matches on one network: use two)")
@@ -32,6 +34,9 @@ int main(int argc, char** argv) {
   app.add_option("--speed", speed, "multiple of real time, or 'max' to run free")->capture_default_str();
   app.add_flag("--lockstep", lockstep, "advance only on STEP control requests");
   app.add_flag("--paused", options.start_paused, "start paused");
+  app.add_option("--realism", realism,
+                 "sensor realism: a preset (ideal, realistic, harsh in configs/realism/) or a YAML file; "
+                 "overrides the scene's");
   app.add_option("--duration", options.duration, "stop after this many simulated seconds (0: run until Ctrl-C)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error")->capture_default_str();
@@ -62,6 +67,16 @@ int main(int argc, char** argv) {
     return 2;
   }
   spdlog::info("scene file {}", scene_path);
+  if (!realism.empty()) {
+    const turf::RealismLoadResult r = turf::LoadRealism(realism);
+    if (!r.realism) {
+      spdlog::error("cannot load realism '{}':", realism);
+      for (const std::string& e : r.errors) spdlog::error("  {}", e);
+      return 2;
+    }
+    loaded.scene->realism = *r.realism;
+    spdlog::info("sensor realism from '{}'", realism);
+  }
   mju_user_warning = MujocoWarning;
   turf::InstallStopSignals();
   try {
