@@ -24,6 +24,7 @@
 #include "core/world.h"
 #include "dds/participant.h"
 #include "participants/common/process.h"
+#include "participants/common/wakeup.h"
 #include "participants/sim/convert.h"
 
 namespace turf {
@@ -32,29 +33,6 @@ namespace {
 
 constexpr double kMaxSpeed = 1000.0;  // multiples of real time a client may ask for
 constexpr uint32_t kMaxStepRequest = 1000000;
-
-// Wakes the loop when a sample arrives while it waits (paused, lockstep).
-class Wakeup {
- public:
-  void Notify() {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      flag_ = true;
-    }
-    cv_.notify_one();
-  }
-  template <class TimePoint>
-  void WaitUntil(TimePoint deadline) {
-    std::unique_lock<std::mutex> lock(mutex_);
-    cv_.wait_until(lock, deadline, [this] { return flag_; });
-    flag_ = false;
-  }
-
- private:
-  std::mutex mutex_;
-  std::condition_variable cv_;
-  bool flag_ = false;
-};
 
 struct PendingStep {
   uint64_t done_at_frame;

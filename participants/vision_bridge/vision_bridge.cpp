@@ -17,6 +17,7 @@
 #include "bridges/ssl_vision/tracked.h"
 #include "dds/participant.h"
 #include "participants/common/process.h"
+#include "participants/common/wakeup.h"
 #include "participants/common/udp.h"
 
 namespace turf {
@@ -44,27 +45,6 @@ std::string RandomUuid() {
   return fmt::format("{:08x}-{:04x}-{:04x}-{:04x}-{:012x}", hi >> 32, (hi >> 16) & 0xFFFF, hi & 0xFFFF, lo >> 48,
                      lo & 0xFFFFFFFFFFFFull);
 }
-
-class Wakeup {
- public:
-  void Notify() {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      flag_ = true;
-    }
-    cv_.notify_one();
-  }
-  void WaitFor(std::chrono::milliseconds timeout) {
-    std::unique_lock<std::mutex> lock(mutex_);
-    cv_.wait_for(lock, timeout, [this] { return flag_; });
-    flag_ = false;
-  }
-
- private:
-  std::mutex mutex_;
-  std::condition_variable cv_;
-  bool flag_ = false;
-};
 
 }  // namespace
 
