@@ -93,7 +93,7 @@ void ReadRealism(MapReader m, SensorRealism* r) {
 
 std::string DefaultRealismDir() { return TURF_REALISM_DIR; }
 
-RealismLoadResult ParseRealismYaml(const std::string& yaml_text) {
+RealismLoadResult ParseRealismYaml(const std::string& yaml_text, const SensorRealism& base) {
   RealismLoadResult result;
   if (yaml_text.size() > kMaxRealismBytes) {
     result.errors.push_back("realism text too large");
@@ -105,7 +105,7 @@ RealismLoadResult ParseRealismYaml(const std::string& yaml_text) {
       result.errors.push_back("expected a map of realism settings");
       return result;
     }
-    SensorRealism realism;
+    SensorRealism realism = base;
     ReadRealism(MapReader(root, "", &result.errors), &realism);
     if (const char* e = CheckRealism(realism); *e != '\0') result.errors.push_back(e);
     if (result.errors.empty()) result.realism = realism;
@@ -117,8 +117,9 @@ RealismLoadResult ParseRealismYaml(const std::string& yaml_text) {
   return result;
 }
 
-RealismLoadResult LoadRealism(const std::string& spec, const std::string& dir, bool allow_paths) {
-  if (spec.find(':') != std::string::npos || spec.find('{') != std::string::npos) return ParseRealismYaml(spec);
+RealismLoadResult LoadRealism(const std::string& spec, const std::string& dir, bool allow_paths,
+                              const SensorRealism& base) {
+  if (spec.find(':') != std::string::npos || spec.find('{') != std::string::npos) return ParseRealismYaml(spec, base);
   const bool is_path =
       spec.find('/') != std::string::npos || (spec.size() > 5 && spec.substr(spec.size() - 5) == ".yaml");
   if (is_path && !allow_paths) return {std::nullopt, {"a realism file path is not accepted here; name a preset"}};

@@ -34,14 +34,16 @@ struct RealismLoadResult {
 // The directory of the shipped presets.
 std::string DefaultRealismDir();
 
-// YAML text of a realism map.
-RealismLoadResult ParseRealismYaml(const std::string& yaml_text);
+// YAML text of a realism map; keys it leaves out keep their value in `base`.
+RealismLoadResult ParseRealismYaml(const std::string& yaml_text, const SensorRealism& base = {});
 
 // `spec` is a preset name (looked up as <dir>/<spec>.yaml), a path to a YAML
 // file (unless `allow_paths` is false, as for requests from the network), or
-// YAML text itself (if it contains a ':' or '{').
+// YAML text itself (if it contains a ':' or '{'). Presets and files are whole
+// descriptions (absent keys are ideal); YAML text changes `base` only where it
+// names a key.
 RealismLoadResult LoadRealism(const std::string& spec, const std::string& dir = DefaultRealismDir(),
-                              bool allow_paths = true);
+                              bool allow_paths = true, const SensorRealism& base = {});
 
 namespace yaml {
 class MapReader;

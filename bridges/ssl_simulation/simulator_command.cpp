@@ -1,5 +1,7 @@
 #include "bridges/ssl_simulation/simulator_command.h"
 
+#include "bridges/ssl_simulation/realism.h"
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -204,14 +206,18 @@ void ConvertSpeed(float speed, const ControlContext& ctx, Problems* p, std::vect
   out->push_back(Request(idl::OP_RESUME));  // speed 0 paused; any other speed runs
 }
 
-void ConvertConfig(const ws::SimulatorConfig& config, Problems* p) {
+void ConvertConfig(const ws::SimulatorConfig& config, Problems* p, std::vector<idl::SimControl>* out) {
   const std::string immutable = "turf's scene is immutable at run time (it comes from the --scene file of turf-sim)";
   if (config.has_geometry()) p->AddUnsupported(kUnsupportedGeometry, "config.geometry: " + immutable);
   if (config.robot_specs_size() > 0) p->AddUnsupported(kUnsupportedRobotSpecs, "config.robot_specs: " + immutable);
-  if (config.has_realism_config())
-    p->AddUnsupported(kUnsupportedRealism,
-                      "config.realism_config: turf's sensor realism (noise, latency, loss) is not set at "
-                      "run time through this protocol");
+  if (config.has_realism_config()) {
+    const std::string yaml = RealismYaml(config.realism_config(), p);
+    if (!yaml.empty()) {
+      idl::SimControl c = Request(idl::OP_SET_REALISM);
+      c.realism(yaml);
+      out->push_back(c);
+    }
+  }
   if (config.has_vision_port())
     p->AddUnsupported(kUnsupportedVisionPort,
                       "config.vision_port: the SSL-Vision bridge's port is set by its "
@@ -236,7 +242,7 @@ SimulatorCommandDecode ConvertSimulatorCommand(const ws::SimulatorCommand& messa
     out.requests.insert(out.requests.end(), robots.begin(), robots.end());
     if (control.has_simulation_speed()) ConvertSpeed(control.simulation_speed(), ctx, &p, &out.requests);
   }
-  if (message.has_config()) ConvertConfig(message.config(), &p);
+  if (message.has_config()) ConvertConfig(message.config(), &p, &out.requests);
   ReportUnknownFields(message, &p.errors());
   out.error = p.error();
   out.errors = std::move(p.errors());

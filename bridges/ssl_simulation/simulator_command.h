@@ -20,9 +20,11 @@
 // radially out to that distance, with zero velocity, before the ball arrives.
 // by_force (ball or robot): turf has no force-driven placement; that teleport
 // is not done and TURF_UNSUPPORTED_BY_FORCE says so.
-// config (geometry, robot_specs, realism_config, vision_port): turf's scene is
-// immutable at run time; each present part gets its TURF_UNSUPPORTED_CONFIG_*
-// error and changes nothing. The rest of the command still applies.
+// config.realism_config: ER-Force's realism knobs -> OP_SET_REALISM (see
+// realism.h); knobs turf does not model are named in errors.
+// config (geometry, robot_specs, vision_port): turf's scene is immutable at run
+// time; each present part gets its TURF_UNSUPPORTED_CONFIG_* error and changes
+// nothing. The rest of the command still applies.
 // NaN, infinity, a value past the sanity limits, a target beyond the walls or
 // an unknown robot anywhere refuses the whole command: no request at all.
 #pragma once

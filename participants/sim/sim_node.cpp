@@ -214,7 +214,7 @@ class SimNode::Impl {
 
   std::string ChangeRealism(const std::string& spec) {
     // From the network: preset names and YAML text only, never file paths.
-    const RealismLoadResult loaded = LoadRealism(spec, realism_dir_, /*allow_paths=*/false);
+    const RealismLoadResult loaded = LoadRealism(spec, realism_dir_, /*allow_paths=*/false, realism_);
     if (!loaded.realism) return loaded.errors.empty() ? "invalid realism" : loaded.errors.front();
     SetRealism(*loaded.realism);
     spdlog::info("sensor realism changed ({})", spec.size() < 40 ? spec : spec.substr(0, 40) + "...");

@@ -48,6 +48,18 @@ TEST(RealismYaml, InlineTextAndEveryKey) {
   EXPECT_DOUBLE_EQ(r.realism->imu.gyro_noise_stddev, 0.1);
 }
 
+TEST(RealismYaml, TextChangesOnlyWhatItNames) {
+  const SensorRealism base = *LoadRealism("realistic").realism;
+  const RealismLoadResult r = LoadRealism("camera: {ball_vanish: 0.5}", DefaultRealismDir(), false, base);
+  ASSERT_TRUE(r.realism.has_value());
+  EXPECT_DOUBLE_EQ(r.realism->camera.ball_vanish, 0.5);
+  EXPECT_DOUBLE_EQ(r.realism->camera.robot_position_stddev, base.camera.robot_position_stddev);
+  EXPECT_TRUE(r.realism->command.burst.enabled);
+  // A preset replaces everything.
+  const RealismLoadResult ideal = LoadRealism("ideal", DefaultRealismDir(), false, base);
+  EXPECT_EQ(ideal.realism->camera.robot_position_stddev, 0.0);
+}
+
 TEST(RealismYaml, BadInputIsRefusedWithTheKey) {
   struct Case {
     const char* text;

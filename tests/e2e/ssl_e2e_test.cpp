@@ -86,6 +86,7 @@ class VisionClient {
       ++frames;
       cameras[d.camera_id()] = d.frame_number();
       if (d.t_sent() < d.t_capture() || d.t_capture() <= 0) ++bad_times;
+      send_delays.push_back(d.t_sent() - d.t_capture());
       for (const auto& r : d.robots_blue()) robots[{0, r.robot_id()}] = {r.x(), r.y(), r.orientation(), d.t_capture()};
       for (const auto& r : d.robots_yellow())
         robots[{1, r.robot_id()}] = {r.x(), r.y(), r.orientation(), d.t_capture()};
@@ -106,6 +107,7 @@ class VisionClient {
   std::optional<team::vision::SSL_GeometryData> geometry;
   Seen ball;
   std::vector<Seen> ball_track;
+  std::vector<double> send_delays;  // t_sent - t_capture of every detection
   int frames = 0, unparseable = 0, bad_times = 0;
 
  private:
@@ -362,6 +364,48 @@ TEST(SslEndToEnd, SimulationProtocolMovesOnlyItsOwnTeam) {
     }
   }
   EXPECT_TRUE(feedback);
+}
+
+TEST(SslEndToEnd, ErForceRealismKnobsChangeTheVisionStream) {
+  Match m;
+  VisionClient v(m.vision_port);
+  WaitForVision(m, v);
+  Udp team;
+  team::simulation::RealismConfigErForce knobs;
+  knobs.set_vision_processing_time(20'000'000);  // ns
+  knobs.set_stddev_robot_p(0.01f);  // m
+  team::simulation::SimulatorCommand cmd;
+  auto* any = cmd.mutable_config()->mutable_realism_config()->add_custom();
+  any->set_type_url("type.googleapis.com/sslsim.RealismConfigErForce");
+  any->set_value(knobs.SerializeAsString());
+  team.Send(cmd.SerializeAsString(), m.control_port);
+  team::simulation::SimulatorResponse response;
+  bool answered = false;
+  for (int i = 0; i < 100 && !answered; ++i)
+    if (auto bytes = team.Receive()) answered = response.ParseFromString(*bytes);
+  ASSERT_TRUE(answered);
+  EXPECT_EQ(response.errors_size(), 0) << response.errors(0).code() << ": " << response.errors(0).message();
+  // Now every detection left the vision system 20 ms after its capture, and
+  // standing robots jitter by about a centimetre.
+  v.robots.clear();
+  v.send_delays.clear();
+  std::vector<double> xs;
+  const auto end = Clock::now() + 2s;
+  int delayed = 0, frames = 0;
+  while (Clock::now() < end) {
+    v.Drain(50ms);
+    if (auto r = v.Robot(0, 10)) xs.push_back(r->x);
+  }
+  for (double dt : v.send_delays) {
+    ++frames;
+    delayed += std::abs(dt - 0.020) < 0.0005;
+  }
+  ASSERT_GT(frames, 100);
+  EXPECT_GT(delayed, frames * 9 / 10);
+  double mean = 0, ss = 0;
+  for (double x : xs) mean += x / xs.size();
+  for (double x : xs) ss += (x - mean) * (x - mean);
+  EXPECT_GT(std::sqrt(ss / xs.size()), 3.0);  // mm
 }
 
 TEST(SslEndToEnd, BadDatagramsChangeNothing) {

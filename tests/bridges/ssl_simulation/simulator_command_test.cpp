@@ -245,6 +245,38 @@ TEST_F(SimulatorCommandCodec, SimulationSpeed) {
   EXPECT_EQ(d.errors[0].code, kUnsupportedSyncSpeed);
 }
 
+TEST_F(SimulatorCommandCodec, ErForceRealismKnobsBecomeARealismRequest) {
+  ws::SimulatorCommand c;
+  ws::RealismConfigErForce e;
+  e.set_stddev_robot_p(0.002f);
+  e.set_stddev_ball_p(0.003f);
+  e.set_missing_ball_detections(0.05f);
+  e.set_vision_delay(35'000'000);  // ns
+  e.set_vision_processing_time(10'000'000);
+  e.set_robot_command_loss(0.1f);
+  e.set_enable_invisible_ball(true);
+  e.set_camera_overlap(0.3f);  // not modelled: named
+  auto* any = c.mutable_config()->mutable_realism_config()->add_custom();
+  any->set_type_url("type.googleapis.com/sslsim.RealismConfigErForce");  // ER-Force's package, not ours
+  any->set_value(e.SerializeAsString());
+  const SimulatorCommandDecode d = Convert(c);
+  ASSERT_EQ(d.error, DecodeError::kOk);
+  ASSERT_EQ(d.requests.size(), 1u);
+  EXPECT_EQ(d.requests[0].op(), idl::OP_SET_REALISM);
+  const std::string& yaml = d.requests[0].realism();
+  for (const char* part : {"robot_position_stddev: 0.002", "ball_position_stddev: 0.003", "ball_vanish: 0.05",
+                           "processing_delay: 0.01", "link: {latency: 0.035}", "ball_occlusion: true",
+                           "command: {loss: 0.1"})
+    EXPECT_NE(yaml.find(part), std::string::npos) << part << " in\n" << yaml;
+  ASSERT_EQ(d.errors.size(), 1u);
+  EXPECT_EQ(d.errors[0].code, kUnsupportedRealism);
+  EXPECT_NE(d.errors[0].message.find("camera_overlap"), std::string::npos);
+  // A NaN knob refuses the whole command.
+  e.set_stddev_robot_p(NAN);
+  any->set_value(e.SerializeAsString());
+  EXPECT_EQ(Convert(c).error, DecodeError::kNotFinite);
+}
+
 TEST_F(SimulatorCommandCodec, UnsupportedConfigIsNamedAndTheRestApplies) {
   ws::SimulatorCommand c;
   c.mutable_control()->mutable_teleport_ball()->set_x(1.0f);
@@ -253,7 +285,7 @@ TEST_F(SimulatorCommandCodec, UnsupportedConfigIsNamedAndTheRestApplies) {
   ws::RobotSpecs* spec = config->add_robot_specs();
   spec->mutable_id()->set_id(0);
   spec->set_radius(0.08f);
-  config->mutable_realism_config();
+  config->mutable_realism_config()->add_custom()->set_type_url("type.googleapis.com/other.RealismConfigOther");
   config->set_vision_port(10006);
   const SimulatorCommandDecode d = Convert(c);
   EXPECT_EQ(d.error, DecodeError::kOk);
