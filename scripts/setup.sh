@@ -12,6 +12,7 @@ PACKAGES=(
   libprotobuf-dev protobuf-compiler
   libgtest-dev
   clang libclang-rt-14-dev
+  libboost-dev nlohmann-json3-dev chromium chromium-driver  # turf-viewer (Boost.Beast, JSON) and its browser test
 )
 
 missing=()
