@@ -18,6 +18,10 @@ enum class Topic {
   kControl,
   kControlReply,
   kStats,
+  kRobotJointState,
+  kRobotImu,
+  kRobotForce,
+  kRobotJointCommand,
 };
 
 struct TopicInfo {
@@ -41,6 +45,12 @@ inline constexpr TopicInfo kTopics[] = {
     {Topic::kControl, "control", "turf.control", "SimControl", "teleport, pause, step, reset, time mode"},
     {Topic::kControlReply, "control_reply", "turf.control", "SimControlReply", "what a control request did"},
     {Topic::kStats, "stats", "turf.state", "SensorStats", "rate, loss and latency of each modelled stream"},
+    {Topic::kRobotJointState, "robots/joint_state", "turf.state", "JointState",
+     "legged robots' joints, keyed by robot"},
+    {Topic::kRobotImu, "robots/imu", "turf.state", "ImuState", "legged robots' gyro, accelerometer, orientation"},
+    {Topic::kRobotForce, "robots/force", "turf.state", "ForceState", "legged robots' touch and force sensors"},
+    {Topic::kRobotJointCommand, "robots/joint_command", "turf.command", "JointCommand",
+     "legged robots' joint targets, keyed by robot"},
 };
 
 const TopicInfo& Info(Topic topic);

@@ -7,10 +7,11 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake ninja-build ccache pkg-config
   libfastrtps-dev libfastcdr-dev fastddsgen default-jre-headless fastdds-tools
-  libmujoco-dev libqhull-dev
+  libmujoco-dev libqhull-dev libtinyxml2-dev  # tinyxml2: composing robot MJCF files (core/legged)
   libeigen3-dev libfmt-dev libspdlog-dev libyaml-cpp-dev libcli11-dev
   libprotobuf-dev protobuf-compiler
   libgtest-dev
+  iproute2 nftables  # multi-host tests: network namespaces, veth, multicast blocked (tests/multihost)
   clang libclang-rt-14-dev
   libboost-dev nlohmann-json3-dev chromium chromium-driver  # turf-viewer (Boost.Beast, JSON) and its browser test
 )

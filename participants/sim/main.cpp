@@ -7,14 +7,37 @@
 #include <cmath>
 #include <string>
 
+#include "config/legged_scene_yaml.h"
 #include "config/realism_yaml.h"
 #include "config/scene_yaml.h"
 #include "participants/common/process.h"
+#include "participants/sim/legged_node.h"
 #include "participants/sim/sim_node.h"
 
 namespace {
 
 void MujocoWarning(const char* message) { spdlog::warn("MuJoCo: {}", message); }
+
+// Scenes with `kind: legged`: any MJCF robots on joint topics (legged_node.h).
+int RunLegged(const std::string& scene_path, const turf::SimNodeOptions& options) {
+  turf::LeggedSceneLoadResult loaded = turf::LoadLeggedSceneFile(scene_path);
+  if (!loaded.scene) {
+    spdlog::error("cannot load legged scene {}:", scene_path);
+    for (const std::string& e : loaded.errors) spdlog::error("  {}", e);
+    return 2;
+  }
+  spdlog::info("legged scene file {}", scene_path);
+  turf::InstallStopSignals();
+  try {
+    turf::LeggedNode node(std::move(*loaded.scene), options);
+    node.Run([] { return turf::StopRequested(); });
+  } catch (const std::exception& e) {
+    spdlog::critical("{}", e.what());
+    return 1;
+  }
+  spdlog::info("stopped cleanly");
+  return 0;
+}
 
 }  // namespace
 
@@ -60,6 +83,8 @@ int main(int argc, char** argv) {
     options.mode = options.speed == 1.0 ? turf::TimeMode::kRealtime : turf::TimeMode::kScaled;
   }
 
+  mju_user_warning = MujocoWarning;
+  if (turf::IsLeggedSceneFile(scene_path)) return RunLegged(scene_path, options);
   turf::SceneLoadResult loaded = turf::LoadSceneFile(scene_path);
   if (!loaded.scene) {
     spdlog::error("cannot load scene {}:", scene_path);

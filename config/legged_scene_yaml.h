@@ -1,0 +1,46 @@
+// Legged scene files (configs/scenes/*.yaml with `kind: legged`) to a
+// validated turf::LeggedScene. Input is untrusted; every problem comes back as
+// an error naming its key path (and line), never as an exception.
+//
+// Schema (absent keys keep the defaults of core/legged/legged_scene.h; SI
+// units, angles in degrees in keys ending in _deg):
+//   kind: legged                      (required: tells turf-sim which world to run)
+//   name: simspark-3d   seed: 1   ground_friction: 1.0
+//   physics: {step, solver_iterations}
+//   rates: {joint_state_hz}
+//   field: {length, width, goal_width, goal_depth, goal_height, goal_wall,
+//           ball_radius, ball_mass, ball_start: [x, y], wall_distance}
+//       present = the RoboCup 3D soccer field with goals and ball
+//   robots:                            one entry per placed robot
+//     - name: nao_1                    unique; prefixes its joints on the topics
+//       id: 1
+//       model: ../robots/nao.xml       MJCF file, relative to the scene file
+//       x: -2.0   y: 0.0   yaw_deg: -90
+//       motors: {max_torque, max_speed, velocity_kp, velocity_kd, position_kp,
+//                position_kd, max_reference_lead}
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/legged/legged_scene.h"
+
+namespace turf {
+
+struct LeggedSceneLoadResult {
+  std::optional<LeggedScene> scene;  // set only when there are no errors
+  std::vector<std::string> errors;
+};
+
+// True if the YAML file's top level says `kind: legged` (false for SSL
+// scenes, unreadable files and anything else).
+bool IsLeggedSceneFile(const std::string& path);
+
+// Parses YAML text; robot model paths are relative to `base_dir`. Never throws.
+LeggedSceneLoadResult ParseLeggedSceneYaml(const std::string& yaml_text, const std::string& base_dir);
+
+// Reads a scene file and the robot files it names. Never throws.
+LeggedSceneLoadResult LoadLeggedSceneFile(const std::string& path);
+
+}  // namespace turf

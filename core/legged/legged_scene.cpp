@@ -1,0 +1,52 @@
+#include "core/legged/legged_scene.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <set>
+
+namespace turf {
+
+namespace {
+
+bool Positive(double v) { return std::isfinite(v) && v > 0.0; }
+bool NonNegative(double v) { return std::isfinite(v) && v >= 0.0; }
+
+}  // namespace
+
+std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
+  std::vector<std::string> e;
+  if (!(s.physics.step > 0.0 && s.physics.step <= 0.02)) e.push_back("physics.step must be in (0, 0.02] s");
+  if (s.physics.solver_iterations < 1 || s.physics.solver_iterations > 1000)
+    e.push_back("physics.solver_iterations must be 1..1000");
+  if (!Positive(s.rates.joint_state_hz) || s.rates.joint_state_hz * s.physics.step > 1.0)
+    e.push_back("rates.joint_state_hz must be positive and at most 1/physics.step");
+  if (!Positive(s.ground_friction)) e.push_back("ground_friction must be positive");
+  if (s.field.enabled) {
+    const Field3d& f = s.field;
+    for (double v : {f.length, f.width, f.goal_width, f.goal_depth, f.goal_height, f.goal_wall, f.ball_radius,
+                     f.ball_mass, f.wall_distance}) {
+      if (!Positive(v)) e.push_back("field: every size and the ball's mass must be positive");
+    }
+    if (!(std::isfinite(f.ball_x) && std::isfinite(f.ball_y))) e.push_back("field: ball start must be finite");
+  }
+  if (s.robots.empty()) e.push_back("robots: at least one robot");
+  std::set<std::string> names;
+  for (const LeggedRobot& r : s.robots) {
+    const std::string where = fmt::format("robots.{}", r.name);
+    if (r.name.empty() || r.name.find_first_of("/ \t\"<>&") != std::string::npos)
+      e.push_back(fmt::format("{}: name must be non-empty without '/', spaces or XML characters", where));
+    if (!names.insert(r.name).second) e.push_back(fmt::format("{}: duplicate name", where));
+    if (r.model_xml.empty()) e.push_back(fmt::format("{}: no model", where));
+    if (!(std::isfinite(r.x) && std::isfinite(r.y) && std::isfinite(r.yaw)))
+      e.push_back(fmt::format("{}: pose must be finite", where));
+    const MotorParams& m = r.motors;
+    if (!Positive(m.max_torque) || !Positive(m.max_speed) || !NonNegative(m.velocity_kp) ||
+        !NonNegative(m.velocity_kd) || !NonNegative(m.position_kp) || !NonNegative(m.position_kd) ||
+        !NonNegative(m.max_reference_lead))
+      e.push_back(fmt::format("{}: motor limits must be positive and gains non-negative", where));
+  }
+  return e;
+}
+
+}  // namespace turf

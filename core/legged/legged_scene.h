@@ -1,0 +1,79 @@
+// A legged scene: any MJCF robots placed on a ground (optionally the RoboCup
+// 3D soccer field and ball). Plain typed data with defaults; filled by
+// config/legged_scene_yaml.* and checked by ValidateLeggedScene. The robot
+// models arrive as MJCF text: core never opens files.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace turf {
+
+struct LeggedPhysics {
+  double step = 0.002;  // s
+  int solver_iterations = 50;
+};
+
+struct LeggedRates {
+  double joint_state_hz = 50.0;  // joints, IMU, force sensors (SimSpark's cycle is 50 Hz)
+};
+
+// Joint servos (per robot). Velocity mode is SimSpark's hinge motor: the
+// target velocity is integrated into a reference angle that a PD holds, so a
+// zero velocity holds the joint still like ODE's motor; torques saturate at
+// max_torque. Position mode uses the command's gains, or these defaults.
+struct MotorParams {
+  double max_torque = 10.0;    // N m, SimSpark's motor FMax
+  double max_speed = 6.1395;   // rad/s, |target velocity| is clamped to it
+  double velocity_kp = 200.0;  // N m / rad, reference-angle tracking of velocity mode
+  double velocity_kd = 2.0;    // N m s / rad
+  double position_kp = 50.0;   // default gains of position mode
+  double position_kd = 1.0;
+  // How far the reference angle may run ahead of a blocked joint.
+  double max_reference_lead = 0.05;  // rad
+};
+
+// One placement of a robot model.
+struct LeggedRobot {
+  std::string name;       // unique; prefixes every named element ("nao_1/lj4")
+  int id = 0;             // free number (e.g. a SimSpark unum)
+  std::string model;      // label of the model (e.g. its file name), for logs
+  std::string model_xml;  // the robot's MJCF text
+  double x = 0.0;         // ground point under the robot's model origin, m
+  double y = 0.0;
+  double yaw = 0.0;  // rad about z
+  MotorParams motors;
+};
+
+// The RoboCup 3D soccer field (SimSpark), see shared/protocols/simspark.md.
+struct Field3d {
+  bool enabled = false;
+  double length = 30.0;
+  double width = 20.0;
+  double goal_width = 2.1;
+  double goal_depth = 0.6;
+  double goal_height = 0.8;
+  double goal_wall = 0.04;
+  double ball_radius = 0.042;
+  double ball_mass = 0.026;
+  double ball_x = 0.0;
+  double ball_y = 0.0;
+  double wall_distance = 25.0;  // |x|, |y| of the outer walls' centres
+};
+
+struct LeggedScene {
+  std::string name = "legged";
+  uint64_t seed = 1;
+  LeggedPhysics physics;
+  LeggedRates rates;
+  Field3d field;
+  double ground_friction = 1.0;
+  std::vector<LeggedRobot> robots;
+};
+
+// Problems with the values (not with the MJCF text, which the world compiles);
+// empty when valid.
+std::vector<std::string> ValidateLeggedScene(const LeggedScene& scene);
+
+}  // namespace turf

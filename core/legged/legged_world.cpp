@@ -1,0 +1,384 @@
+#include "core/legged/legged_world.h"
+
+#include <fmt/format.h>
+#include <mujoco/mujoco.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/legged/legged_mjcf.h"
+
+namespace turf {
+
+namespace {
+
+constexpr int kErrorSize = 1000;
+
+// The model from MJCF text, through MuJoCo's virtual file system.
+mjModel* CompileMjcf(const std::string& xml) {
+  auto vfs = std::make_unique<mjVFS>();  // ~2 MB: never on the stack
+  mj_defaultVFS(vfs.get());
+  constexpr const char* kFile = "legged_scene.xml";
+  if (mj_makeEmptyFileVFS(vfs.get(), kFile, static_cast<int>(xml.size())) != 0)
+    throw std::invalid_argument("MuJoCo VFS is full");
+  std::copy(xml.begin(), xml.end(), static_cast<char*>(vfs->filedata[vfs->nfile - 1]));
+  char error[kErrorSize] = {0};
+  mjModel* m = mj_loadXML(kFile, vfs.get(), error, kErrorSize);
+  mj_deleteVFS(vfs.get());
+  if (m == nullptr) throw std::invalid_argument(fmt::format("MuJoCo cannot compile the legged scene: {}", error));
+  return m;
+}
+
+bool StartsWith(const char* s, const std::string& prefix) {
+  return s != nullptr && std::string(s).compare(0, prefix.size(), prefix) == 0;
+}
+
+}  // namespace
+
+struct LeggedWorld::JointSlot {
+  std::string name;  // without the robot prefix
+  int qpos = 0;
+  int dof = 0;
+  bool limited = false;
+  double lo = 0.0;
+  double hi = 0.0;
+  JointCommand command;    // the holding command (joint name unused)
+  double reference = 0.0;  // velocity mode: integrated target angle
+  double effort = 0.0;
+};
+
+struct LeggedWorld::SensorRef {
+  std::string name;
+  int adr = 0;
+  int dim = 0;
+  int site = -1;  // touch sensors: their site
+};
+
+struct LeggedWorld::RobotSlot {
+  const LeggedRobot* spec = nullptr;
+  int base_body = -1;
+  std::vector<JointSlot> joints;
+  int gyro = -1;  // sensordata addresses, -1 if absent
+  int accelerometer = -1;
+  int orientation = -1;
+  std::vector<SensorRef> forces;
+};
+
+void LeggedWorld::MjDeleter::operator()(mjModel_* m) const { mj_deleteModel(m); }
+void LeggedWorld::MjDeleter::operator()(mjData_* d) const { mj_deleteData(d); }
+
+const char* JointCommandErrorName(JointCommandError error) {
+  switch (error) {
+    case JointCommandError::kOk:
+      return "ok";
+    case JointCommandError::kUnknownRobot:
+      return "unknown_robot";
+    case JointCommandError::kUnknownJoint:
+      return "unknown_joint";
+    case JointCommandError::kNotFinite:
+      return "not_finite";
+    case JointCommandError::kOutOfRange:
+      return "out_of_range";
+    case JointCommandError::kCount:
+      break;
+  }
+  return "?";
+}
+
+LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
+  const std::vector<std::string> problems = ValidateLeggedScene(scene_);
+  if (!problems.empty()) throw std::invalid_argument("invalid legged scene: " + problems.front());
+  LeggedMjcf composed = ComposeLeggedMjcf(scene_);
+  if (!composed.errors.empty()) throw std::invalid_argument(composed.errors.front());
+  mjcf_ = std::move(composed.xml);
+  model_.reset(CompileMjcf(mjcf_));
+  data_.reset(mj_makeData(model_.get()));
+  const mjModel* m = model_.get();
+  step_ns_ = std::llround(m->opt.timestep * 1e9);
+  ball_body_ = scene_.field.enabled ? mj_name2id(m, mjOBJ_BODY, kLeggedBall) : -1;
+  if (ball_body_ >= 0) ball_qvel_ = m->jnt_dofadr[m->body_jntadr[ball_body_]];
+
+  for (const LeggedRobot& spec : scene_.robots) {
+    RobotSlot slot;
+    slot.spec = &spec;
+    const std::string prefix = LeggedElementName(spec.name, "");
+    for (int b = 1; b < m->nbody && slot.base_body < 0; ++b) {
+      if (m->body_parentid[b] == 0 && StartsWith(mj_id2name(m, mjOBJ_BODY, b), prefix)) slot.base_body = b;
+    }
+    if (slot.base_body < 0) throw std::invalid_argument(fmt::format("robot {} has no body", spec.name));
+    for (int j = 0; j < m->njnt; ++j) {
+      const char* name = mj_id2name(m, mjOBJ_JOINT, j);
+      if (!StartsWith(name, prefix)) continue;
+      if (m->jnt_type[j] != mjJNT_HINGE && m->jnt_type[j] != mjJNT_SLIDE) continue;
+      JointSlot js;
+      js.name = std::string(name).substr(prefix.size());
+      js.qpos = m->jnt_qposadr[j];
+      js.dof = m->jnt_dofadr[j];
+      js.limited = m->jnt_limited[j] != 0;
+      js.lo = m->jnt_range[2 * j];
+      js.hi = m->jnt_range[2 * j + 1];
+      slot.joints.push_back(js);
+    }
+    for (int s = 0; s < m->nsensor; ++s) {
+      const char* name = mj_id2name(m, mjOBJ_SENSOR, s);
+      if (!StartsWith(name, prefix)) continue;
+      const int adr = m->sensor_adr[s];
+      switch (m->sensor_type[s]) {
+        case mjSENS_GYRO:
+          if (slot.gyro < 0) slot.gyro = adr;
+          break;
+        case mjSENS_ACCELEROMETER:
+          if (slot.accelerometer < 0) slot.accelerometer = adr;
+          break;
+        case mjSENS_FRAMEQUAT:
+          if (slot.orientation < 0) slot.orientation = adr;
+          break;
+        case mjSENS_TOUCH:
+        case mjSENS_FORCE:
+        case mjSENS_TORQUE:
+          slot.forces.push_back({std::string(name).substr(prefix.size()), adr, m->sensor_dim[s],
+                                 m->sensor_type[s] == mjSENS_TOUCH ? m->sensor_objid[s] : -1});
+          break;
+        default:
+          break;
+      }
+    }
+    robots_.push_back(std::move(slot));
+  }
+  Reset();
+}
+
+LeggedWorld::~LeggedWorld() = default;
+
+void LeggedWorld::ResetCommands() {
+  for (RobotSlot& r : robots_) {
+    for (JointSlot& j : r.joints) {
+      j.command = JointCommand{};
+      j.reference = data_->qpos[j.qpos];
+      j.effort = 0.0;
+    }
+  }
+}
+
+void LeggedWorld::Reset() {
+  mj_resetData(model_.get(), data_.get());
+  frame_ = 0;
+  mj_forward(model_.get(), data_.get());
+  ResetCommands();
+  last_good_qpos_.assign(data_->qpos, data_->qpos + model_->nq);
+  last_good_qvel_.assign(data_->qvel, data_->qvel + model_->nv);
+}
+
+int LeggedWorld::RobotCount() const { return static_cast<int>(robots_.size()); }
+
+int LeggedWorld::RobotIndex(const std::string& name) const {
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    if (robots_[i].spec->name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+int LeggedWorld::JointIndex(int robot, const std::string& joint) const {
+  if (robot < 0 || robot >= RobotCount()) return -1;
+  const std::vector<JointSlot>& joints = robots_[robot].joints;
+  for (size_t i = 0; i < joints.size(); ++i) {
+    if (joints[i].name == joint) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+JointCommandError LeggedWorld::CheckJointCommand(int robot, const JointCommand& c) const {
+  if (robot < 0 || robot >= RobotCount()) return JointCommandError::kUnknownRobot;
+  const int index = JointIndex(robot, c.joint);
+  if (index < 0) return JointCommandError::kUnknownJoint;
+  if (!std::isfinite(c.value) || !std::isfinite(c.kp) || !std::isfinite(c.kd)) return JointCommandError::kNotFinite;
+  const JointSlot& j = robots_[robot].joints[index];
+  const MotorParams& motors = robots_[robot].spec->motors;
+  switch (c.mode) {
+    case JointMode::kVelocity:
+      return std::abs(c.value) > motors.max_speed ? JointCommandError::kOutOfRange : JointCommandError::kOk;
+    case JointMode::kPosition:
+      return j.limited && (c.value < j.lo || c.value > j.hi) ? JointCommandError::kOutOfRange : JointCommandError::kOk;
+    case JointMode::kTorque:
+      return std::abs(c.value) > motors.max_torque ? JointCommandError::kOutOfRange : JointCommandError::kOk;
+  }
+  return JointCommandError::kOutOfRange;
+}
+
+JointCommandError LeggedWorld::CheckJointCommands(int robot, const std::vector<JointCommand>& commands) const {
+  if (robot < 0 || robot >= RobotCount()) return JointCommandError::kUnknownRobot;
+  for (const JointCommand& c : commands) {
+    const JointCommandError e = CheckJointCommand(robot, c);
+    if (e != JointCommandError::kOk) return e;
+  }
+  return JointCommandError::kOk;
+}
+
+JointCommandError LeggedWorld::SetJointCommand(int robot, const JointCommand& c) {
+  const JointCommandError error = CheckJointCommand(robot, c);
+  if (error != JointCommandError::kOk) return error;
+  JointSlot& j = robots_[robot].joints[JointIndex(robot, c.joint)];
+  // A switch into velocity mode starts holding from where the joint is.
+  if (c.mode == JointMode::kVelocity && j.command.mode != JointMode::kVelocity) j.reference = data_->qpos[j.qpos];
+  j.command = c;
+  return JointCommandError::kOk;
+}
+
+// Stage 1: each joint's command becomes a torque, saturated at max_torque.
+void LeggedWorld::StageServos() {
+  const double dt = model_->opt.timestep;
+  for (RobotSlot& r : robots_) {
+    const MotorParams& m = r.spec->motors;
+    for (JointSlot& j : r.joints) {
+      const double q = data_->qpos[j.qpos];
+      const double qd = data_->qvel[j.dof];
+      double torque = 0.0;
+      switch (j.command.mode) {
+        case JointMode::kVelocity: {
+          const double v = j.command.value;
+          double ref = j.reference + v * dt;
+          if (j.limited) ref = std::clamp(ref, j.lo, j.hi);
+          ref = std::clamp(ref, q - m.max_reference_lead, q + m.max_reference_lead);
+          j.reference = ref;
+          torque = m.velocity_kp * (ref - q) + m.velocity_kd * (v - qd);
+          break;
+        }
+        case JointMode::kPosition: {
+          const double kp = j.command.kp >= 0 ? j.command.kp : m.position_kp;
+          const double kd = j.command.kd >= 0 ? j.command.kd : m.position_kd;
+          torque = kp * (j.command.value - q) - kd * qd;
+          break;
+        }
+        case JointMode::kTorque:
+          torque = j.command.value;
+          break;
+      }
+      j.effort = std::clamp(torque, -m.max_torque, m.max_torque);
+      data_->qfrc_applied[j.dof] = j.effort;
+    }
+  }
+}
+
+// Stage 2: one MuJoCo step; false if it produced a non-finite state.
+bool LeggedWorld::StagePhysics() {
+  mj_step(model_.get(), data_.get());
+  for (int i = 0; i < model_->nq; ++i) {
+    if (!std::isfinite(data_->qpos[i])) return false;
+  }
+  for (int i = 0; i < model_->nv; ++i) {
+    if (!std::isfinite(data_->qvel[i])) return false;
+  }
+  return true;
+}
+
+void LeggedWorld::Step() {
+  StageServos();
+  if (StagePhysics()) {
+    last_good_qpos_.assign(data_->qpos, data_->qpos + model_->nq);
+    last_good_qvel_.assign(data_->qvel, data_->qvel + model_->nv);
+  } else {
+    // Stage 3: undo a step that blew up, at rest, and hold every joint there.
+    ++health_.instability_recoveries;
+    std::copy(last_good_qpos_.begin(), last_good_qpos_.end(), data_->qpos);
+    std::fill(data_->qvel, data_->qvel + model_->nv, 0.0);
+    mj_forward(model_.get(), data_.get());
+    ResetCommands();
+  }
+  ++frame_;
+}
+
+void LeggedWorld::ContactWrench(int site, ForceReading* out) const {
+  out->contact = false;
+  out->force = {0, 0, 0};
+  out->point = {0, 0, 0};
+  if (site < 0) return;
+  const mjModel* m = model_.get();
+  const mjData* d = data_.get();
+  const int body = m->site_bodyid[site];
+  double force[3] = {0, 0, 0};
+  double point[3] = {0, 0, 0};
+  double weight = 0.0;
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& c = d->contact[i];
+    const int b1 = m->geom_bodyid[c.geom1];
+    const int b2 = m->geom_bodyid[c.geom2];
+    if (b1 != body && b2 != body) continue;
+    mjtNum local[6];
+    mj_contactForce(m, d, i, local);
+    // The contact frame's rows are its axes in world; the force acts from
+    // geom1 on geom2, so the body as geom1 feels the opposite.
+    const double sign = b2 == body ? 1.0 : -1.0;
+    double world[3];
+    mju_mulMatTVec(world, c.frame, local, 3, 3);
+    for (int k = 0; k < 3; ++k) {
+      force[k] += sign * world[k];
+      point[k] += std::abs(local[0]) * c.pos[k];
+    }
+    weight += std::abs(local[0]);
+    out->contact = true;
+  }
+  if (!out->contact) return;
+  const double* r = d->site_xmat + 9 * site;  // site to world, row-major
+  const double* origin = d->site_xpos + 3 * site;
+  double rel[3];
+  for (int k = 0; k < 3; ++k) rel[k] = weight > 0 ? point[k] / weight - origin[k] : 0.0;
+  for (int k = 0; k < 3; ++k) {
+    out->force[k] = r[k] * force[0] + r[3 + k] * force[1] + r[6 + k] * force[2];
+    out->point[k] = weight > 0 ? r[k] * rel[0] + r[3 + k] * rel[1] + r[6 + k] * rel[2] : 0.0;
+  }
+}
+
+LeggedWorldState LeggedWorld::State() const {
+  LeggedWorldState out;
+  State(&out);
+  return out;
+}
+
+void LeggedWorld::State(LeggedWorldState* out) const {
+  const mjData* d = data_.get();
+  out->time_ns = time_ns();
+  out->frame = frame_;
+  out->robots.resize(robots_.size());
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    const RobotSlot& r = robots_[i];
+    LeggedRobotState& s = out->robots[i];
+    s.name = r.spec->name;
+    s.id = r.spec->id;
+    for (int k = 0; k < 3; ++k) s.base_position[k] = d->xpos[3 * r.base_body + k];
+    for (int k = 0; k < 4; ++k) s.base_orientation[k] = d->xquat[4 * r.base_body + k];
+    const size_t n = r.joints.size();
+    s.joint_names.resize(n);
+    s.joint_positions.resize(n);
+    s.joint_velocities.resize(n);
+    s.joint_efforts.resize(n);
+    for (size_t j = 0; j < n; ++j) {
+      s.joint_names[j] = r.joints[j].name;
+      s.joint_positions[j] = d->qpos[r.joints[j].qpos];
+      s.joint_velocities[j] = d->qvel[r.joints[j].dof];
+      s.joint_efforts[j] = r.joints[j].effort;
+    }
+    s.has_imu = r.gyro >= 0 || r.accelerometer >= 0;
+    for (int k = 0; k < 3; ++k) {
+      s.gyro[k] = r.gyro >= 0 ? d->sensordata[r.gyro + k] : 0.0;
+      s.accelerometer[k] = r.accelerometer >= 0 ? d->sensordata[r.accelerometer + k] : 0.0;
+    }
+    for (int k = 0; k < 4; ++k)
+      s.orientation[k] = r.orientation >= 0 ? d->sensordata[r.orientation + k] : s.base_orientation[k];
+    s.forces.resize(r.forces.size());
+    for (size_t f = 0; f < r.forces.size(); ++f) {
+      s.forces[f].name = r.forces[f].name;
+      s.forces[f].values.assign(d->sensordata + r.forces[f].adr, d->sensordata + r.forces[f].adr + r.forces[f].dim);
+      ContactWrench(r.forces[f].site, &s.forces[f]);
+    }
+  }
+  out->has_ball = ball_body_ >= 0;
+  if (out->has_ball) {
+    for (int k = 0; k < 3; ++k) {
+      out->ball_position[k] = d->xpos[3 * ball_body_ + k];
+      out->ball_velocity[k] = d->qvel[ball_qvel_ + k];
+    }
+  }
+}
+
+}  // namespace turf

@@ -1,0 +1,154 @@
+// A legged world: the immutable model (scene + MuJoCo model composed from the
+// robot files) and the mutable state (MuJoCo data, each joint's command and
+// servo reference).
+//
+// A step runs in named stages; inputs enter only between steps:
+//   inputs   SetJointCommand / Reset (validated; a refused input changes nothing)
+//   Step():  1 servos (commands -> joint torques, saturated)  2 physics (mj_step)
+//            3 health (a non-finite state is undone)
+//   outputs  State() and the accessors (read-only)
+// Sensor values are MuJoCo's, computed at the start of the last mj_step (or by
+// Reset). Time is the step counter times the scene's step, never a wall clock.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/legged/legged_scene.h"
+
+struct mjModel_;
+struct mjData_;
+
+namespace turf {
+
+enum class JointMode : uint8_t { kVelocity, kPosition, kTorque };
+
+// A command for one joint; it holds until the next command for that joint
+// (SimSpark's hinge effectors behave so). At start every joint is in velocity
+// mode with target 0: it holds its angle.
+struct JointCommand {
+  std::string joint;  // the model's name, without the robot prefix ("rlj4")
+  JointMode mode = JointMode::kVelocity;
+  double value = 0.0;  // rad/s, rad, or N m (m/s, m, N for slide joints)
+  double kp = -1.0;    // position mode: gains; negative = the robot's defaults
+  double kd = -1.0;
+};
+
+enum class JointCommandError : uint8_t {
+  kOk,
+  kUnknownRobot,
+  kUnknownJoint,
+  kNotFinite,
+  kOutOfRange,  // beyond max speed, max torque or the joint's range; negative gains
+  kCount
+};
+const char* JointCommandErrorName(JointCommandError error);
+
+struct ForceReading {
+  std::string name;            // the sensor's name in the robot file ("lf")
+  std::vector<double> values;  // touch: 1 value (N); force/torque: 3 (sensor frame)
+  // Touch sensors only: every contact on the site's body, summed, in the
+  // site's frame (SimSpark's FRP): the force on the body, and the contact
+  // point weighted by normal force. contact is false when nothing touches.
+  bool contact = false;
+  std::array<double, 3> force{};
+  std::array<double, 3> point{};
+};
+
+struct LeggedRobotState {
+  std::string name;
+  int id = 0;
+  std::array<double, 3> base_position{};     // the robot's root body, world frame
+  std::array<double, 4> base_orientation{};  // w, x, y, z
+  std::vector<std::string> joint_names;      // hinge and slide joints, model order
+  std::vector<double> joint_positions;
+  std::vector<double> joint_velocities;
+  std::vector<double> joint_efforts;              // torque applied by the servo in the last step
+  bool has_imu = false;                           // the model has a gyro or an accelerometer
+  std::array<double, 3> gyro{};                   // rad/s, sensor frame
+  std::array<double, 3> accelerometer{};          // m/s^2, proper acceleration, sensor frame
+  std::array<double, 4> orientation{1, 0, 0, 0};  // framequat sensor, or the base's
+  std::vector<ForceReading> forces;
+};
+
+struct LeggedWorldState {
+  int64_t time_ns = 0;
+  uint64_t frame = 0;
+  std::vector<LeggedRobotState> robots;
+  bool has_ball = false;
+  std::array<double, 3> ball_position{};
+  std::array<double, 3> ball_velocity{};
+};
+
+struct LeggedHealth {
+  uint64_t instability_recoveries = 0;  // a non-finite step undone
+};
+
+class LeggedWorld {
+ public:
+  struct MjDeleter {
+    void operator()(mjModel_* m) const;
+    void operator()(mjData_* d) const;
+  };
+
+  // Throws std::invalid_argument if the scene is invalid or MuJoCo cannot
+  // compile the composed model; a constructed world is always usable.
+  explicit LeggedWorld(LeggedScene scene);
+  ~LeggedWorld();
+  LeggedWorld(const LeggedWorld&) = delete;
+  LeggedWorld& operator=(const LeggedWorld&) = delete;
+
+  const LeggedScene& scene() const { return scene_; }
+  const std::string& mjcf() const { return mjcf_; }
+
+  // --- Inputs ---
+  JointCommandError SetJointCommand(int robot, const JointCommand& command);
+  // What SetJointCommand would answer, changing nothing; for all-or-nothing
+  // batches (the first error, kOk when every command is valid).
+  JointCommandError CheckJointCommand(int robot, const JointCommand& command) const;
+  JointCommandError CheckJointCommands(int robot, const std::vector<JointCommand>& commands) const;
+  // Back to the scene's start: time 0, start poses, every joint holding.
+  void Reset();
+
+  // --- One physics step through all stages ---
+  void Step();
+
+  // --- Outputs ---
+  int RobotIndex(const std::string& name) const;  // -1 if unknown
+  int RobotCount() const;
+  int JointIndex(int robot, const std::string& joint) const;  // -1 if unknown
+  int64_t time_ns() const { return static_cast<int64_t>(frame_) * step_ns_; }
+  uint64_t frame() const { return frame_; }
+  int64_t step_ns() const { return step_ns_; }
+  const LeggedHealth& health() const { return health_; }
+  LeggedWorldState State() const;
+  void State(LeggedWorldState* out) const;  // reuses out's storage
+
+ private:
+  struct JointSlot;
+  struct SensorRef;
+  struct RobotSlot;
+
+  void StageServos();
+  bool StagePhysics();
+  void ResetCommands();
+  void ContactWrench(int site, ForceReading* out) const;
+
+  LeggedScene scene_;
+  std::string mjcf_;
+  std::unique_ptr<mjModel_, MjDeleter> model_;
+  std::unique_ptr<mjData_, MjDeleter> data_;
+  std::vector<RobotSlot> robots_;
+  int ball_body_ = -1;
+  int ball_qvel_ = -1;
+  int64_t step_ns_ = 0;
+  uint64_t frame_ = 0;
+  std::vector<double> last_good_qpos_;
+  std::vector<double> last_good_qvel_;
+  LeggedHealth health_;
+};
+
+}  // namespace turf

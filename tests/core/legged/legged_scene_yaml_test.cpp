@@ -1,0 +1,62 @@
+// Legged scene files: the shipped scenes load, and bad input is refused with
+// errors that name the key.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "config/legged_scene_yaml.h"
+#include "core/legged/legged_world.h"
+
+namespace turf {
+namespace {
+
+const std::string kScenes = std::string(TURF_SOURCE_DIR) + "/configs/scenes/";
+
+bool HasError(const LeggedSceneLoadResult& r, const std::string& part) {
+  for (const std::string& e : r.errors) {
+    if (e.find(part) != std::string::npos) return true;
+  }
+  return false;
+}
+
+TEST(LeggedSceneYamlTest, SimSpark3dSceneLoadsAndBuilds) {
+  ASSERT_TRUE(IsLeggedSceneFile(kScenes + "simspark_3d.yaml"));
+  EXPECT_FALSE(IsLeggedSceneFile(kScenes + "ssl_div_a.yaml"));
+  LeggedSceneLoadResult r = LoadLeggedSceneFile(kScenes + "simspark_3d.yaml");
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_TRUE(r.scene->field.enabled);
+  ASSERT_EQ(r.scene->robots.size(), 2u);
+  EXPECT_NEAR(r.scene->robots[0].yaw, -M_PI / 2, 1e-12);
+  LeggedWorld w(std::move(*r.scene));
+  const LeggedWorldState s = w.State();
+  EXPECT_TRUE(s.has_ball);
+  EXPECT_NEAR(s.ball_position[2], 0.042, 1e-9);
+  EXPECT_NEAR(s.robots[0].base_position[0], -14.2, 1e-9);
+}
+
+TEST(LeggedSceneYamlTest, ExampleSceneLoads) {
+  LeggedSceneLoadResult r = LoadLeggedSceneFile(kScenes + "legged_example.yaml");
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_EQ(r.scene->robots[0].motors.velocity_kp, 200.0);
+}
+
+TEST(LeggedSceneYamlTest, RefusesBadInput) {
+  const std::string dir = std::string(TURF_SOURCE_DIR) + "/configs/scenes";
+  EXPECT_TRUE(HasError(ParseLeggedSceneYaml("kind: ssl\nrobots: []\n", dir), "kind"));
+  EXPECT_TRUE(
+      HasError(ParseLeggedSceneYaml("kind: legged\nrobots:\n  - {name: a, model: nope.xml}\n", dir), "nope.xml"));
+  EXPECT_TRUE(HasError(ParseLeggedSceneYaml("kind: legged\nrobots:\n  - {name: a, model: ../robots/nao.xml, "
+                                            "colour: red}\n",
+                                            dir),
+                       "colour"));
+  EXPECT_TRUE(HasError(ParseLeggedSceneYaml("kind: legged\nrobots:\n  - {name: a, model: ../robots/nao.xml, "
+                                            "x: .nan}\n",
+                                            dir),
+                       "robots[0].x"));
+  EXPECT_FALSE(ParseLeggedSceneYaml("kind: legged\n", dir).errors.empty());  // no robots
+  EXPECT_FALSE(ParseLeggedSceneYaml("[", dir).errors.empty());
+}
+
+}  // namespace
+}  // namespace turf

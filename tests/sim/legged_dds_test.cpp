@@ -1,0 +1,247 @@
+// turf-sim's legged node over DDS, in process: joint state / IMU / force out,
+// joint commands in, refusals counted, pause/step/reset and lockstep.
+#include <gtest/gtest.h>
+#include <turf/idl/ClockPubSubTypes.h>
+#include <turf/idl/JointsPubSubTypes.h>
+#include <turf/idl/SimControlPubSubTypes.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <thread>
+
+#include "config/legged_scene_yaml.h"
+#include "dds/participant.h"
+#include "participants/sim/legged_node.h"
+#include "tests/test_domain.h"
+
+namespace turf {
+namespace {
+
+using namespace std::chrono_literals;
+using Clock = std::chrono::steady_clock;
+
+dds::ParticipantOptions UniqueDds(const char* name) {
+  static int counter = 0;
+  dds::ParticipantOptions o;
+  o.domain = test::TestDomain(7);
+  o.prefix = "legged" + std::to_string(getpid()) + "_" + std::to_string(++counter);
+  o.name = name;
+  o.qos_file = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
+  return o;
+}
+
+LeggedScene SimSparkScene() {
+  LeggedSceneLoadResult r = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/simspark_3d.yaml");
+  if (!r.scene) throw std::runtime_error(r.errors.front());
+  return std::move(*r.scene);
+}
+
+class NodeUnderTest {
+ public:
+  NodeUnderTest(const dds::ParticipantOptions& dds, TimeMode mode) {
+    SimNodeOptions o;
+    o.domain = dds.domain;
+    o.prefix = dds.prefix;
+    o.qos_file = dds.qos_file;
+    o.mode = mode;
+    node_ = std::make_unique<LeggedNode>(SimSparkScene(), o);
+    thread_ = std::thread([this] { node_->Run([this] { return stop_.load(); }); });
+  }
+  ~NodeUnderTest() {
+    stop_ = true;
+    thread_.join();
+  }
+  LeggedNode& node() { return *node_; }
+
+ private:
+  std::unique_ptr<LeggedNode> node_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+class Client {
+ public:
+  explicit Client(dds::ParticipantOptions o)
+      : participant_((o.name = "client", o)),
+        command_(participant_.MakeWriter<idl::JointCommandPubSubType>(dds::Topic::kRobotJointCommand)),
+        control_(participant_.MakeWriter<idl::SimControlPubSubType>(dds::Topic::kControl)),
+        joint_reader_(participant_.MakeReader<idl::JointStatePubSubType>(dds::Topic::kRobotJointState)),
+        imu_(participant_.MakeReader<idl::ImuStatePubSubType>(dds::Topic::kRobotImu)),
+        force_(participant_.MakeReader<idl::ForceStatePubSubType>(dds::Topic::kRobotForce)),
+        reply_(participant_.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)) {}
+
+  bool WaitMatched() {
+    const auto end = Clock::now() + 5s;
+    while (Clock::now() < end) {
+      Poll();
+      if (command_->Matched() > 0 && control_->Matched() > 0 && reply_->Matched() > 0 && joints.count("nao_1") &&
+          imu_now_.count("nao_1") && force_now_.count("nao_1"))
+        return true;
+      std::this_thread::sleep_for(5ms);
+    }
+    return false;
+  }
+  void Poll() {
+    std::vector<idl::JointState> js;
+    if (joint_reader_->Take(&js))
+      for (auto& j : js) joints[j.robot()] = j;
+    std::vector<idl::ImuState> imu;
+    if (imu_->Take(&imu))
+      for (auto& i : imu) imu_now_[i.robot()] = i;
+    std::vector<idl::ForceState> f;
+    if (force_->Take(&f))
+      for (auto& x : f) force_now_[x.robot()] = x;
+  }
+  // Polls until `done` holds, or 5 s.
+  bool WaitFor(const std::function<bool()>& done) {
+    const auto end = Clock::now() + 5s;
+    while (Clock::now() < end) {
+      Poll();
+      if (done()) return true;
+      std::this_thread::sleep_for(2ms);
+    }
+    return false;
+  }
+  std::optional<idl::SimControlReply> Control(idl::ControlOp op, uint32_t steps = 0) {
+    idl::SimControl req;
+    req.client("test");
+    req.request_id(++request_id_);
+    req.op(op);
+    req.step_count(steps);
+    if (op == idl::OP_SET_TIME_MODE) req.time_mode(idl::TIME_LOCKSTEP);
+    control_->Write(req);
+    const auto end = Clock::now() + 5s;
+    while (Clock::now() < end) {
+      std::vector<idl::SimControlReply> replies;
+      reply_->Take(&replies);
+      for (const auto& r : replies)
+        if (r.request_id() == request_id_) return r;
+      std::this_thread::sleep_for(1ms);
+    }
+    return std::nullopt;
+  }
+  void Command(const std::string& robot, const std::string& joint, idl::JointMode mode, double value) {
+    idl::JointCommand c;
+    c.robot(robot);
+    idl::JointTarget t;
+    t.name(joint);
+    t.mode(mode);
+    t.value(value);
+    t.kp(-1);
+    t.kd(-1);
+    c.joints().push_back(t);
+    command_->Write(c);
+  }
+  double Angle(const std::string& robot, const std::string& joint) {
+    const idl::JointState& s = joints.at(robot);
+    for (size_t i = 0; i < s.name().size(); ++i)
+      if (s.name()[i] == joint) return s.position()[i];
+    return NAN;
+  }
+  std::map<std::string, idl::JointState> joints;
+  std::map<std::string, idl::ImuState> imu_now_;
+  std::map<std::string, idl::ForceState> force_now_;
+
+ private:
+  dds::Participant participant_;
+  std::unique_ptr<dds::Writer<idl::JointCommandPubSubType>> command_;
+  std::unique_ptr<dds::Writer<idl::SimControlPubSubType>> control_;
+  std::unique_ptr<dds::Reader<idl::JointStatePubSubType>> joint_reader_;
+  std::unique_ptr<dds::Reader<idl::ImuStatePubSubType>> imu_;
+  std::unique_ptr<dds::Reader<idl::ForceStatePubSubType>> force_;
+  std::unique_ptr<dds::Reader<idl::SimControlReplyPubSubType>> reply_;
+  uint64_t request_id_ = 0;
+};
+
+TEST(LeggedDdsTest, PublishesEveryRobotsJointsImuAndForces) {
+  const auto dds = UniqueDds("sim");
+  NodeUnderTest sim(dds, TimeMode::kFreeRunning);
+  Client client(dds);
+  ASSERT_TRUE(client.WaitMatched());
+  ASSERT_TRUE(client.WaitFor([&] {
+    return client.joints.count("nao_2") && client.joints["nao_1"].sim_time_ns() > 500'000'000 &&
+           client.force_now_.count("nao_1") && client.force_now_["nao_1"].sensors().size() == 2 &&
+           client.force_now_["nao_1"].sensors()[0].values()[0] > 10.0;
+  }));
+  const idl::JointState& j = client.joints["nao_1"];
+  EXPECT_EQ(j.name().size(), 22u);
+  EXPECT_EQ(j.position().size(), 22u);
+  EXPECT_EQ(j.id(), 1);
+  const idl::ImuState& imu = client.imu_now_["nao_1"];
+  EXPECT_TRUE(imu.valid());
+  EXPECT_NEAR(imu.linear_acceleration().z(), 9.81, 0.5);
+  EXPECT_NEAR(imu.base_position().x(), -14.2, 0.05);
+  const idl::ForceReading& rf = client.force_now_["nao_1"].sensors()[0];
+  EXPECT_EQ(rf.name(), "rf");
+  EXPECT_TRUE(rf.contact());
+  EXPECT_NEAR(rf.force().z(), 4.6071 * 9.81 / 2, 5.0);
+  EXPECT_NEAR(rf.point().z(), -0.01, 0.003);
+}
+
+TEST(LeggedDdsTest, JointCommandMovesTheJointAndBadOnesAreCounted) {
+  const auto dds = UniqueDds("sim");
+  NodeUnderTest sim(dds, TimeMode::kFreeRunning);
+  Client client(dds);
+  ASSERT_TRUE(client.WaitMatched());
+  client.Command("nao_2", "hj1", idl::JOINT_POSITION, 0.8);
+  ASSERT_TRUE(client.WaitFor([&] { return std::abs(client.Angle("nao_2", "hj1") - 0.8) < 0.02; }));
+  EXPECT_NEAR(client.Angle("nao_1", "hj1"), 0.0, 0.01);  // the other robot is untouched
+  client.Command("nao_9", "hj1", idl::JOINT_VELOCITY, 1.0);
+  client.Command("nao_1", "he1", idl::JOINT_VELOCITY, 1.0);
+  client.Command("nao_1", "hj1", idl::JOINT_VELOCITY, NAN);
+  client.Command("nao_1", "hj1", idl::JOINT_VELOCITY, 7.0);
+  ASSERT_TRUE(client.WaitFor([&] { return sim.node().Stats().rejected >= 4; }));
+  EXPECT_EQ(sim.node().Rejected("joint_command.unknown_robot"), 1u);
+  EXPECT_EQ(sim.node().Rejected("joint_command.unknown_joint"), 1u);
+  EXPECT_EQ(sim.node().Rejected("joint_command.not_finite"), 1u);
+  EXPECT_EQ(sim.node().Rejected("joint_command.out_of_range"), 1u);
+}
+
+TEST(LeggedDdsTest, LockstepStepsExactlyAndResetRestarts) {
+  const auto dds = UniqueDds("sim");
+  NodeUnderTest sim(dds, TimeMode::kLockstep);
+  Client client(dds);
+  ASSERT_TRUE(client.WaitMatched());
+  EXPECT_EQ(client.joints["nao_1"].frame(), 0u);
+  client.Command("nao_1", "hj1", idl::JOINT_VELOCITY, 1.0);
+  ASSERT_TRUE(client.WaitFor([&] { return sim.node().Stats().rejected == 0; }));
+  std::this_thread::sleep_for(100ms);                    // the command is taken before the step request
+  const auto reply = client.Control(idl::OP_STEP, 250);  // 0.5 s
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->result(), idl::RESULT_OK);
+  EXPECT_EQ(reply->frame(), 250u);
+  ASSERT_TRUE(client.WaitFor([&] { return client.joints["nao_1"].frame() == 250u; }));
+  EXPECT_NEAR(client.Angle("nao_1", "hj1"), 0.5, 0.03);
+  std::this_thread::sleep_for(100ms);
+  EXPECT_EQ(sim.node().Stats().frame, 250u);  // lockstep: nothing moves without STEP
+  const auto reset = client.Control(idl::OP_RESET);
+  ASSERT_TRUE(reset);
+  EXPECT_EQ(reset->frame(), 0u);
+  ASSERT_TRUE(client.WaitFor([&] { return client.joints["nao_1"].frame() == 0u; }));
+  EXPECT_NEAR(client.Angle("nao_1", "hj1"), 0.0, 1e-9);
+  const auto teleport = client.Control(idl::OP_TELEPORT_BALL);
+  ASSERT_TRUE(teleport);
+  EXPECT_EQ(teleport->result(), idl::RESULT_REJECTED);
+}
+
+TEST(LeggedDdsTest, PauseStopsTimeAndStepAdvancesIt) {
+  const auto dds = UniqueDds("sim");
+  NodeUnderTest sim(dds, TimeMode::kRealtime);
+  Client client(dds);
+  ASSERT_TRUE(client.WaitMatched());
+  ASSERT_TRUE(client.Control(idl::OP_PAUSE));
+  const uint64_t frame = sim.node().Stats().frame;
+  std::this_thread::sleep_for(100ms);
+  EXPECT_EQ(sim.node().Stats().frame, frame);
+  const auto reply = client.Control(idl::OP_STEP, 10);
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->frame(), frame + 10);
+  ASSERT_TRUE(client.Control(idl::OP_RESUME));
+  ASSERT_TRUE(client.WaitFor([&] { return sim.node().Stats().frame > frame + 50; }));
+}
+
+}  // namespace
+}  // namespace turf
