@@ -143,8 +143,10 @@ class Match {
                                 dds));
     vision = std::make_unique<ChildProcess>(
         prefix + "_vision", Args("participants/vision_bridge/turf-vision-bridge",
+                                 // Simulation-time stamps: speeds measured from the stream stay
+                                 // right when a loaded machine runs the simulation slower than real time.
                                  {"--address", "127.0.0.1", "--port", std::to_string(vision_port),
-                                  "--geometry-every", "30"},
+                                  "--geometry-every", "30", "--clock", "sim"},
                                  dds));
     simproto = std::make_unique<ChildProcess>(
         prefix + "_simproto",
