@@ -1,3 +1,4 @@
+#include "config/text_file.h"
 #include "config/legged_scene_yaml.h"
 
 #include <fmt/format.h>
@@ -21,25 +22,6 @@ using yaml::MapReader;
 constexpr uintmax_t kMaxSceneBytes = 1 << 20;
 constexpr uintmax_t kMaxModelBytes = 16 << 20;
 
-bool ReadText(const std::string& path, uintmax_t max_bytes, std::string* text, std::string* error) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    *error = "no such file";
-    return false;
-  }
-  const uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec || size > max_bytes) {
-    *error = ec ? fmt::format("cannot read: {}", ec.message()) : fmt::format("too large ({} bytes)", size);
-    return false;
-  }
-  std::ifstream file(path, std::ios::binary);
-  text->assign(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
-  if (!file.is_open() || file.bad()) {
-    *error = "cannot read the file";
-    return false;
-  }
-  return true;
-}
 
 void ReadMotors(MapReader m, MotorParams* p) {
   m.Number("max_torque", &p->max_torque);
@@ -81,7 +63,7 @@ void ReadRobot(MapReader m, const std::string& base_dir, std::map<std::string, s
     if (it == models->end()) {
       std::string text;
       std::string error;
-      if (!ReadText(path, kMaxModelBytes, &text, &error)) {
+      if (!ReadTextFile(path, kMaxModelBytes, &text, &error)) {
         m.Fail("model", fmt::format("{}: {}", path, error));
         text.clear();
       }
@@ -159,7 +141,7 @@ bool IsLeggedSceneFile(const std::string& path) {
   try {
     std::string text;
     std::string error;
-    if (!ReadText(path, kMaxSceneBytes, &text, &error)) return false;
+    if (!ReadTextFile(path, kMaxSceneBytes, &text, &error)) return false;
     const YAML::Node root = YAML::Load(text);
     return root.IsMap() && root["kind"] && root["kind"].IsScalar() && root["kind"].Scalar() == "legged";
   } catch (const std::exception&) {
@@ -182,7 +164,7 @@ LeggedSceneLoadResult LoadLeggedSceneFile(const std::string& path) {
   std::string text;
   std::string error;
   try {
-    if (ReadText(path, kMaxSceneBytes, &text, &error)) {
+    if (ReadTextFile(path, kMaxSceneBytes, &text, &error)) {
       result = ParseLeggedSceneYaml(text, std::filesystem::path(path).parent_path().string());
     } else {
       result.errors.push_back(error);

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "config/text_file.h"
 #include "config/yaml_reader.h"
 
 namespace turf {
@@ -58,20 +59,6 @@ void ReadCamera(MapReader m, CameraRealism* c) {
   m.Finish();
 }
 
-bool ReadText(const std::string& path, std::string* text, std::string* error) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    *error = path + ": no such file";
-    return false;
-  }
-  if (std::filesystem::file_size(path, ec) > kMaxRealismBytes) {
-    *error = path + ": too large for a realism file";
-    return false;
-  }
-  std::ifstream in(path, std::ios::binary);
-  text->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return true;
-}
 
 }  // namespace
 
@@ -128,7 +115,7 @@ RealismLoadResult LoadRealism(const std::string& spec, const std::string& dir, b
   if (!is_path && !plain_name) return {std::nullopt, {fmt::format("not a realism preset name: \"{}\"", spec)}};
   const std::string path = is_path ? spec : dir + "/" + spec + ".yaml";
   std::string text, error;
-  if (!ReadText(path, &text, &error)) return {std::nullopt, {error}};
+  if (!ReadTextFile(path, kMaxRealismBytes, &text, &error)) return {std::nullopt, {path + ": " + error}};
   RealismLoadResult result = ParseRealismYaml(text);
   for (std::string& e : result.errors) e = path + ": " + e;
   return result;

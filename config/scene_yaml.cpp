@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "config/realism_yaml.h"
+#include "config/text_file.h"
 #include "config/yaml_reader.h"
 
 namespace turf {
@@ -272,43 +273,6 @@ SceneLoadResult ParseSceneYaml(const std::string& yaml_text) {
 
 namespace {
 
-// The file's text, or an error message.
-bool ReadFile(const std::string& path, std::string* text, std::string* error) {
-  std::error_code ec;
-  const std::filesystem::file_status status = std::filesystem::status(path, ec);
-  if (status.type() == std::filesystem::file_type::not_found) {
-    *error = "no such file";
-    return false;
-  }
-  if (ec) {
-    *error = fmt::format("cannot read: {}", ec.message());
-    return false;
-  }
-  if (!std::filesystem::is_regular_file(status)) {
-    *error = "not a regular file";
-    return false;
-  }
-  const uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec) {
-    *error = fmt::format("cannot read: {}", ec.message());
-    return false;
-  }
-  if (size > kMaxFileBytes) {
-    *error = fmt::format("too large for a scene file ({} bytes)", size);
-    return false;
-  }
-  std::ifstream file(path, std::ios::binary);
-  if (!file.is_open()) {
-    *error = "cannot open the file";
-    return false;
-  }
-  text->assign(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
-  if (file.bad()) {
-    *error = "cannot read the file";
-    return false;
-  }
-  return true;
-}
 
 }  // namespace
 
@@ -317,7 +281,7 @@ SceneLoadResult LoadSceneFile(const std::string& path) {
   std::string text;
   std::string error;
   try {
-    if (ReadFile(path, &text, &error)) {
+    if (ReadTextFile(path, kMaxFileBytes, &text, &error)) {
       result = ParseSceneYaml(text);
     } else {
       result.errors.push_back(error);
