@@ -1,0 +1,82 @@
+#include "participants/viewer/http_rules.h"
+
+namespace turf::viewer {
+
+namespace {
+
+bool SegmentChar(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '_' || c == '-';
+}
+
+bool EndsWith(std::string_view s, std::string_view suffix) {
+  return s.size() >= suffix.size() && s.substr(s.size() - suffix.size()) == suffix;
+}
+
+// "host:port" -> "host" ("[::1]:8080" -> "[::1]").
+std::string_view HostName(std::string_view host) {
+  if (!host.empty() && host.front() == '[') {
+    const size_t close = host.find(']');
+    return close == std::string_view::npos ? host : host.substr(0, close + 1);
+  }
+  const size_t colon = host.rfind(':');
+  return colon == std::string_view::npos ? host : host.substr(0, colon);
+}
+
+}  // namespace
+
+std::optional<std::string> StaticFile(std::string_view target) {
+  const size_t query = target.find('?');
+  if (query != std::string_view::npos) target = target.substr(0, query);
+  if (target.empty() || target.front() != '/' || target.size() > 200) return std::nullopt;
+  if (target == "/") return std::string("index.html");
+  std::string out;
+  int depth = 0;
+  size_t start = 1;
+  while (start <= target.size()) {
+    size_t end = target.find('/', start);
+    if (end == std::string_view::npos) end = target.size();
+    const std::string_view segment = target.substr(start, end - start);
+    if (segment.empty() || segment.front() == '.' || ++depth > 4) return std::nullopt;
+    for (char c : segment)
+      if (!SegmentChar(c)) return std::nullopt;
+    if (!out.empty()) out += '/';
+    out += segment;
+    start = end + 1;
+  }
+  return out;
+}
+
+std::string ContentType(std::string_view path) {
+  if (EndsWith(path, ".html")) return "text/html; charset=utf-8";
+  if (EndsWith(path, ".js")) return "text/javascript; charset=utf-8";
+  if (EndsWith(path, ".css")) return "text/css; charset=utf-8";
+  if (EndsWith(path, ".json")) return "application/json";
+  if (EndsWith(path, ".svg")) return "image/svg+xml";
+  if (EndsWith(path, ".png")) return "image/png";
+  if (EndsWith(path, ".ico")) return "image/x-icon";
+  return "application/octet-stream";
+}
+
+bool UpgradeAllowed(std::string_view host, std::string_view origin, bool loopback_only) {
+  if (host.empty()) return false;
+  if (loopback_only) {
+    const std::string_view name = HostName(host);
+    if (name != "127.0.0.1" && name != "localhost" && name != "[::1]") return false;
+  }
+  if (origin.empty()) return true;
+  const size_t scheme = origin.find("://");
+  if (scheme == std::string_view::npos) return false;
+  const std::string_view kind = origin.substr(0, scheme);
+  if (kind != "http" && kind != "https") return false;
+  return origin.substr(scheme + 3) == host;
+}
+
+bool RateLimit::Allow(std::chrono::steady_clock::time_point now) {
+  if (now - window_start_ >= std::chrono::seconds(1)) {
+    window_start_ = now;
+    count_ = 0;
+  }
+  return ++count_ <= per_second_;
+}
+
+}  // namespace turf::viewer

@@ -1,0 +1,350 @@
+#include "participants/viewer/page_request.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <initializer_list>
+
+#include "core/input_limits.h"
+
+namespace turf::viewer {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kPresets[] = {"ideal", "realistic", "harsh"};
+
+// Reads the keys of one message object; the first problem wins and sticks.
+class Fields {
+ public:
+  explicit Fields(const json& object, PageRequest* out) : object_(object), out_(out) {}
+
+  bool ok() const { return out_->error == PageError::kOk; }
+  bool Fail(PageError error, std::string detail) {
+    if (ok()) {
+      out_->error = error;
+      out_->detail = std::move(detail);
+    }
+    return false;
+  }
+
+  // Refuses any key not in `allowed`.
+  bool OnlyKeys(std::initializer_list<const char*> allowed) {
+    for (const auto& item : object_.items()) {
+      bool known = false;
+      for (const char* a : allowed) known = known || item.key() == a;
+      if (!known)
+        return Fail(PageError::kUnknownKey, fmt::format("'{}' does not take '{}'", out_->op, Clip(item.key())));
+    }
+    return ok();
+  }
+  bool Has(const char* key) const { return object_.contains(key); }
+
+  // A finite number in [lo, hi]; `fallback` if absent and not required.
+  double Number(const char* key, double lo, double hi, std::optional<double> fallback = std::nullopt) {
+    const auto it = object_.find(key);
+    if (it == object_.end()) {
+      if (fallback) return *fallback;
+      Fail(PageError::kMissingField, fmt::format("'{}' needs '{}'", out_->op, key));
+      return 0.0;
+    }
+    if (!it->is_number()) {
+      Fail(PageError::kWrongType, fmt::format("'{}' must be a number", key));
+      return 0.0;
+    }
+    const double v = it->get<double>();
+    if (!std::isfinite(v)) {
+      Fail(PageError::kNotFinite, fmt::format("'{}' is not finite", key));
+      return 0.0;
+    }
+    if (v < lo || v > hi) {
+      Fail(PageError::kOutOfRange, fmt::format("'{}' = {} is outside [{}, {}]", key, v, lo, hi));
+      return 0.0;
+    }
+    return v;
+  }
+  // A whole number in [lo, hi].
+  int64_t Integer(const char* key, int64_t lo, int64_t hi, std::optional<int64_t> fallback = std::nullopt) {
+    const auto it = object_.find(key);
+    if (it == object_.end()) {
+      if (fallback) return *fallback;
+      Fail(PageError::kMissingField, fmt::format("'{}' needs '{}'", out_->op, key));
+      return 0;
+    }
+    if (!it->is_number_integer()) {
+      Fail(PageError::kWrongType, fmt::format("'{}' must be a whole number", key));
+      return 0;
+    }
+    // Unsigned first: 2^64-1 must not wrap to -1.
+    const bool in_range = it->is_number_unsigned() ? it->get<uint64_t>() <= static_cast<uint64_t>(hi)
+                                                   : it->get<int64_t>() >= lo && it->get<int64_t>() <= hi;
+    if (!in_range) {
+      Fail(PageError::kOutOfRange, fmt::format("'{}' is outside [{}, {}]", key, lo, hi));
+      return 0;
+    }
+    const int64_t v = it->get<int64_t>();
+    if (v < lo) Fail(PageError::kOutOfRange, fmt::format("'{}' is outside [{}, {}]", key, lo, hi));
+    return v;
+  }
+  std::string String(const char* key) {
+    const auto it = object_.find(key);
+    if (it == object_.end()) {
+      Fail(PageError::kMissingField, fmt::format("'{}' needs '{}'", out_->op, key));
+      return "";
+    }
+    if (!it->is_string()) {
+      Fail(PageError::kWrongType, fmt::format("'{}' must be a string", key));
+      return "";
+    }
+    return it->get<std::string>();
+  }
+  bool Bool(const char* key) {
+    const auto it = object_.find(key);
+    if (it == object_.end()) return Fail(PageError::kMissingField, fmt::format("'{}' needs '{}'", out_->op, key));
+    if (!it->is_boolean()) return Fail(PageError::kWrongType, fmt::format("'{}' must be true or false", key));
+    return it->get<bool>();
+  }
+
+  // Keys and strings from the page go into logs: keep them short and printable.
+  static std::string Clip(const std::string& s) {
+    std::string out;
+    for (char c : s.substr(0, 32)) out += (c >= 0x20 && c < 0x7f) ? c : '?';
+    return s.size() > 32 ? out + "..." : out;
+  }
+
+ private:
+  const json& object_;
+  PageRequest* out_;
+};
+
+idl::Vec3 V3(double x, double y, double z) {
+  idl::Vec3 v;
+  v.x(x);
+  v.y(y);
+  v.z(z);
+  return v;
+}
+
+// Half extents of the walled area for a body of radius r (turf-sim's rule).
+struct Bounds {
+  double x, y;
+};
+Bounds Inside(const idl::SslField& f, double r) {
+  return {f.field_length() / 2 + f.boundary_width_goal_line() - r, f.field_width() / 2 + f.boundary_width() - r};
+}
+
+void TeleportBall(Fields& in, const std::optional<idl::SslField>& field, PageRequest* out) {
+  if (!in.OnlyKeys({"op", "x", "y", "z", "vx", "vy", "vz"})) return;
+  const double big = 1e3;  // numbers past any field: out of range before the wall check
+  const double x = in.Number("x", -big, big);
+  const double y = in.Number("y", -big, big);
+  const double z = in.Number("z", -big, big, 0.0);
+  const double vx = in.Number("vx", -kMaxTeleportSpeed, kMaxTeleportSpeed, 0.0);
+  const double vy = in.Number("vy", -kMaxTeleportSpeed, kMaxTeleportSpeed, 0.0);
+  const double vz = in.Number("vz", -kMaxTeleportSpeed, kMaxTeleportSpeed, 0.0);
+  if (!in.ok()) return;
+  if (!field) {
+    in.Fail(PageError::kNoField, "the field is not known yet");
+    return;
+  }
+  const Bounds b = Inside(*field, field->ball_radius());
+  if (std::abs(x) > b.x || std::abs(y) > b.y || z < 0 || z > kMaxTeleportHeight) {
+    in.Fail(PageError::kOutsideField, fmt::format("ball at ({:.3f}, {:.3f}, {:.3f}) is outside the walls", x, y, z));
+    return;
+  }
+  if (std::sqrt(vx * vx + vy * vy + vz * vz) > kMaxTeleportSpeed) {
+    in.Fail(PageError::kOutOfRange, fmt::format("ball speed is above {} m/s", kMaxTeleportSpeed));
+    return;
+  }
+  out->control.op(idl::OP_TELEPORT_BALL);
+  out->control.ball().position(V3(x, y, std::max(z, field->ball_radius())));
+  out->control.ball().velocity(V3(vx, vy, vz));
+  out->control.ball().roll(z <= field->ball_radius() && vz == 0.0);
+}
+
+void TeleportRobot(Fields& in, const std::optional<idl::SslField>& field, PageRequest* out) {
+  const bool on_field = in.Bool("on_field");
+  if (!in.ok()) return;
+  if (!(on_field ? in.OnlyKeys({"op", "team", "id", "on_field", "x", "y", "yaw"})
+                 : in.OnlyKeys({"op", "team", "id", "on_field"})))
+    return;
+  const std::string team = in.String("team");
+  const int64_t id = in.Integer("id", 0, 255);
+  if (!in.ok()) return;
+  if (team != "blue" && team != "yellow") {
+    in.Fail(PageError::kUnknownTeam, fmt::format("team '{}' is not blue or yellow", Fields::Clip(team)));
+    return;
+  }
+  const double big = 1e3;
+  const double x = on_field ? in.Number("x", -big, big) : 0.0;
+  const double y = on_field ? in.Number("y", -big, big) : 0.0;
+  const double yaw = on_field ? in.Number("yaw", -kMaxYaw, kMaxYaw) : 0.0;
+  if (!in.ok()) return;
+  if (!field) {
+    in.Fail(PageError::kNoField, "the field is not known yet");
+    return;
+  }
+  if (id >= field->robots_per_team()) {
+    in.Fail(PageError::kUnknownRobot, fmt::format("{} robot {} does not exist (ids 0..{})", team, id,
+                                                  static_cast<int>(field->robots_per_team()) - 1));
+    return;
+  }
+  const Bounds b = Inside(*field, field->max_robot_radius());
+  if (on_field && (std::abs(x) > b.x || std::abs(y) > b.y)) {
+    in.Fail(PageError::kOutsideField, fmt::format("robot at ({:.3f}, {:.3f}) is outside the walls", x, y));
+    return;
+  }
+  idl::RobotTeleport& r = out->control.robot();
+  out->control.op(idl::OP_TELEPORT_ROBOT);
+  r.team(team == "blue" ? idl::TEAM_BLUE : idl::TEAM_YELLOW);
+  r.id(static_cast<uint8_t>(id));
+  r.on_field(on_field);
+  r.position().x(x);
+  r.position().y(y);
+  r.orientation(std::remainder(yaw, 2 * M_PI));
+  r.velocity(V3(0, 0, 0));
+}
+
+void Step(Fields& in, PageRequest* out) {
+  if (!in.OnlyKeys({"op", "count"})) return;
+  const int64_t count = in.Integer("count", 1, kMaxStepCount, 1);
+  if (!in.ok()) return;
+  out->control.op(idl::OP_STEP);
+  out->control.step_count(static_cast<uint32_t>(count));
+}
+
+void TimeMode(Fields& in, PageRequest* out) {
+  if (!in.OnlyKeys({"op", "mode", "speed"})) return;
+  const std::string mode = in.String("mode");
+  if (!in.ok()) return;
+  idl::TimeMode m;
+  if (mode == "realtime") {
+    m = idl::TIME_REALTIME;
+  } else if (mode == "scaled") {
+    m = idl::TIME_SCALED;
+  } else if (mode == "free") {
+    m = idl::TIME_FREE_RUNNING;
+  } else if (mode == "lockstep") {
+    m = idl::TIME_LOCKSTEP;
+  } else {
+    in.Fail(PageError::kUnknownMode,
+            fmt::format("time mode '{}' is not realtime, scaled, free or lockstep", Fields::Clip(mode)));
+    return;
+  }
+  double speed = 1.0;
+  if (m == idl::TIME_SCALED) {
+    speed = in.Number("speed", 0.0, kMaxSpeed);
+    if (in.ok() && speed <= 0.0) in.Fail(PageError::kOutOfRange, "'speed' must be above 0");
+  } else if (in.Has("speed")) {
+    in.Fail(PageError::kUnknownKey, fmt::format("time mode '{}' takes no 'speed'", mode));
+  }
+  if (!in.ok()) return;
+  out->control.op(idl::OP_SET_TIME_MODE);
+  out->control.time_mode(m);
+  out->control.speed(speed);
+}
+
+void Realism(Fields& in, PageRequest* out) {
+  if (!in.OnlyKeys({"op", "preset"})) return;
+  const std::string preset = in.String("preset");
+  if (!in.ok()) return;
+  for (const char* p : kPresets) {
+    if (preset != p) continue;
+    out->control.op(idl::OP_SET_REALISM);
+    out->control.realism(preset);
+    return;
+  }
+  in.Fail(PageError::kUnknownPreset,
+          fmt::format("realism preset '{}' is not ideal, realistic or harsh", Fields::Clip(preset)));
+}
+
+}  // namespace
+
+const char* PageErrorName(PageError error) {
+  switch (error) {
+    case PageError::kOk:
+      return "ok";
+    case PageError::kTooLarge:
+      return "too_large";
+    case PageError::kNotJson:
+      return "not_json";
+    case PageError::kNotObject:
+      return "not_object";
+    case PageError::kUnknownOp:
+      return "unknown_op";
+    case PageError::kUnknownKey:
+      return "unknown_key";
+    case PageError::kMissingField:
+      return "missing_field";
+    case PageError::kWrongType:
+      return "wrong_type";
+    case PageError::kNotFinite:
+      return "not_finite";
+    case PageError::kOutOfRange:
+      return "out_of_range";
+    case PageError::kUnknownTeam:
+      return "unknown_team";
+    case PageError::kUnknownRobot:
+      return "unknown_robot";
+    case PageError::kOutsideField:
+      return "outside_field";
+    case PageError::kNoField:
+      return "no_field";
+    case PageError::kUnknownPreset:
+      return "unknown_preset";
+    case PageError::kUnknownMode:
+      return "unknown_mode";
+  }
+  return "unknown";
+}
+
+PageRequest ParsePageRequest(std::string_view text, const std::optional<idl::SslField>& field) {
+  PageRequest out;
+  if (text.size() > kMaxPageMessage) {
+    out.error = PageError::kTooLarge;
+    out.detail = fmt::format("{} bytes (at most {})", text.size(), kMaxPageMessage);
+    return out;
+  }
+  // No exceptions: a parse error gives a discarded value.
+  const json message = json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
+  if (message.is_discarded()) {
+    out.error = PageError::kNotJson;
+    out.detail = "not valid JSON";
+    return out;
+  }
+  if (!message.is_object()) {
+    out.error = PageError::kNotObject;
+    out.detail = "a message must be a JSON object";
+    return out;
+  }
+  const auto op = message.find("op");
+  if (op == message.end() || !op->is_string()) {
+    out.error = PageError::kUnknownOp;
+    out.detail = "'op' must be a string";
+    return out;
+  }
+  out.op = Fields::Clip(op->get<std::string>());
+  Fields in(message, &out);
+  const std::string& name = op->get_ref<const std::string&>();
+  if (name == "teleport_ball") {
+    TeleportBall(in, field, &out);
+  } else if (name == "teleport_robot") {
+    TeleportRobot(in, field, &out);
+  } else if (name == "step") {
+    Step(in, &out);
+  } else if (name == "time_mode") {
+    TimeMode(in, &out);
+  } else if (name == "realism") {
+    Realism(in, &out);
+  } else if (name == "pause" || name == "resume" || name == "reset") {
+    if (in.OnlyKeys({"op"}))
+      out.control.op(name == "pause" ? idl::OP_PAUSE : name == "resume" ? idl::OP_RESUME : idl::OP_RESET);
+  } else {
+    in.Fail(PageError::kUnknownOp, fmt::format("unknown op '{}'", out.op));
+  }
+  return out;
+}
+
+}  // namespace turf::viewer

@@ -1,0 +1,69 @@
+// Messages from the viewer's web page, decoded into turf SimControl requests.
+// Pure: no sockets, no DDS. The page is untrusted (anything that can reach the
+// port can send anything), so every message is checked and a bad one is refused
+// with a named error; a refused message produces no request.
+//
+// Protocol (one JSON object per WebSocket text message, at most
+// kMaxPageMessage bytes; every key not listed is refused):
+//   {"op":"teleport_ball", "x":m, "y":m, ["z":m, "vx","vy","vz":m/s]}
+//   {"op":"teleport_robot", "team":"blue"|"yellow", "id":n, "on_field":true,
+//    "x":m, "y":m, "yaw":rad}                  place (and orient) a robot
+//   {"op":"teleport_robot", "team":..., "id":n, "on_field":false}   take it off
+//   {"op":"pause"} {"op":"resume"} {"op":"reset"}
+//   {"op":"step", ["count":1..kMaxStepCount]}  needs a paused simulation
+//   {"op":"time_mode", "mode":"realtime"|"scaled"|"free"|"lockstep",
+//    ["speed":(0, kMaxSpeed], for "scaled" only]}
+//   {"op":"realism", "preset":"ideal"|"realistic"|"harsh"}  (presets only:
+//    the page can never send YAML or a path)
+// Positions must be inside the field's walls (as turf-sim checks them), so the
+// field (SslField) must be known before a teleport is accepted.
+#pragma once
+
+#include <turf/idl/SimControl.h>
+#include <turf/idl/SslVision.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace turf::viewer {
+
+inline constexpr size_t kMaxPageMessage = 4096;  // bytes
+inline constexpr uint32_t kMaxStepCount = 1000;  // physics steps per request
+inline constexpr double kMaxSpeed = 100.0;       // multiples of real time
+inline constexpr double kMaxYaw = 100.0;         // rad, before normalising
+
+enum class PageError {
+  kOk,
+  kTooLarge,       // more than kMaxPageMessage bytes
+  kNotJson,        // not parseable (also numbers JSON cannot hold, e.g. 1e999)
+  kNotObject,      // valid JSON but not an object
+  kUnknownOp,      // "op" missing, not a string, or not in the list
+  kUnknownKey,     // a key the op does not take
+  kMissingField,   // a key the op needs
+  kWrongType,      // e.g. a string where a number belongs
+  kNotFinite,      // a number that is not finite
+  kOutOfRange,     // e.g. step count 0, speed 1e6, robot id 300
+  kUnknownTeam,    // team not "blue" or "yellow"
+  kUnknownRobot,   // id not below the field's robots_per_team
+  kOutsideField,   // beyond the walls (or too high for the ball)
+  kNoField,        // a teleport before the field is known
+  kUnknownPreset,  // realism preset not in the list
+  kUnknownMode,    // time mode not in the list
+};
+
+const char* PageErrorName(PageError error);
+
+struct PageRequest {
+  PageError error = PageError::kOk;
+  std::string detail;       // for the log and the page: what was wrong
+  std::string op;           // the page's op name, when known
+  idl::SimControl control;  // valid only when error == kOk; client and request_id unset
+};
+
+// Decodes one page message. `field` bounds teleports (nullopt: none allowed).
+PageRequest ParsePageRequest(std::string_view text, const std::optional<idl::SslField>& field);
+
+}  // namespace turf::viewer

@@ -1,0 +1,55 @@
+// turf's DDS samples as the JSON messages the viewer's page reads. Pure
+// functions; SI units (m, rad, s), numbers rounded to what a screen can show
+// (0.1 mm, 1e-4 rad) to keep a 60 Hz stream small.
+//
+// Messages (every one has "type"):
+//   hello   {version, prefix, presets[], max_message}           once per page
+//   field   {division, length, width, boundary, boundary_goal, goal_width,
+//            goal_depth, penalty_depth, penalty_width, center_radius, line,
+//            ball_radius, robot_radius, robot_height, robots_per_team,
+//            cameras:[{id, min:[x,y], max:[x,y]}]}
+//   state   {t, frame, ball:{p:[x,y,z], v:[x,y,z]},
+//            robots:[{team, id, on, p:[x,y], yaw, v:[x,y,w]}],
+//            clock:{paused, mode, speed, rtf} (absent before the first Clock),
+//            detections:[{camera, t, balls:[[x,y,z,conf]],
+//                         robots:[{team, id, p:[x,y], yaw, conf}]}],
+//            viewer:{refused, control}}  control: turf-sim reads our requests
+//   stats   {t, window, streams:[{name, rate, sent, lost, loss, latency, jitter}]}
+//   reply   {op, ok, reason, t}                     turf-sim's answer to our request
+//   refused {kind, detail}                          to the page whose message was refused
+#pragma once
+
+#include <turf/idl/Clock.h>
+#include <turf/idl/SensorStats.h>
+#include <turf/idl/SimControl.h>
+#include <turf/idl/SslVision.h>
+#include <turf/idl/WorldState.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace turf::viewer {
+
+inline constexpr int kProtocolVersion = 1;
+
+std::string HelloJson(const std::string& prefix);
+std::string FieldJson(const idl::SslField& field);
+// The viewer's own condition, shown with every state.
+struct ViewerInfo {
+  uint64_t refused = 0;  // page messages refused so far
+  bool control = false;  // a turf-sim control reader is matched: page actions can take effect
+};
+
+// `frames`: the newest frame of each camera to show with this state.
+std::string StateJson(const idl::WorldState& state, const std::optional<idl::Clock>& clock,
+                      const std::vector<const idl::CameraFrame*>& frames, const ViewerInfo& viewer);
+std::string StatsJson(const idl::SensorStats& stats);
+std::string ReplyJson(const idl::SimControlReply& reply);
+std::string RefusedJson(const std::string& kind, const std::string& detail);
+
+const char* OpName(idl::ControlOp op);
+const char* TimeModeName(idl::TimeMode mode);
+
+}  // namespace turf::viewer

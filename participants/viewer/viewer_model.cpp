@@ -1,0 +1,139 @@
+#include "participants/viewer/viewer_model.h"
+
+#include <cmath>
+#include <initializer_list>
+#include <vector>
+
+#include "participants/viewer/viewer_json.h"
+
+namespace turf::viewer {
+
+namespace {
+
+bool Finite(std::initializer_list<double> values) {
+  for (double v : values)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+bool Finite(const idl::Vec3& v) { return Finite({v.x(), v.y(), v.z()}); }
+bool Finite(const idl::Vec2& v) { return Finite({v.x(), v.y()}); }
+bool KnownTeam(idl::Team t) { return t == idl::TEAM_BLUE || t == idl::TEAM_YELLOW; }
+
+// A size the page can draw: positive and below a kilometre.
+bool Size(double v) { return std::isfinite(v) && v > 0.0 && v < 1000.0; }
+bool NonNegative(double v) { return std::isfinite(v) && v >= 0.0 && v < 1000.0; }
+
+}  // namespace
+
+const char* SampleErrorName(SampleError error) {
+  switch (error) {
+    case SampleError::kOk:
+      return "ok";
+    case SampleError::kNotFinite:
+      return "not_finite";
+    case SampleError::kUnknownEnum:
+      return "unknown_enum";
+    case SampleError::kTooMany:
+      return "too_many";
+    case SampleError::kBadSize:
+      return "bad_size";
+  }
+  return "unknown";
+}
+
+ViewerModel::ViewerModel(std::string client, std::string prefix)
+    : client_(std::move(client)), prefix_(std::move(prefix)) {}
+
+SampleError ViewerModel::OnWorldState(const idl::WorldState& s) {
+  if (s.robots().size() > kMaxRobots) return SampleError::kTooMany;
+  const idl::BallState& b = s.ball();
+  if (!Finite(b.position()) || !Finite(b.velocity())) return SampleError::kNotFinite;
+  for (const idl::RobotState& r : s.robots()) {
+    if (!KnownTeam(r.team())) return SampleError::kUnknownEnum;
+    if (!Finite(r.position()) || !Finite(r.linear_velocity()) || !Finite(r.angular_velocity()) || !Finite({r.yaw()}))
+      return SampleError::kNotFinite;
+  }
+  state_ = s;
+  return SampleError::kOk;
+}
+
+SampleError ViewerModel::OnClock(const idl::Clock& c) {
+  if (!Finite({c.speed(), c.real_time_factor(), c.step_s()})) return SampleError::kNotFinite;
+  if (c.mode() > idl::TIME_LOCKSTEP) return SampleError::kUnknownEnum;
+  clock_ = c;
+  return SampleError::kOk;
+}
+
+SampleError ViewerModel::OnField(const idl::SslField& f) {
+  if (f.cameras().size() > kMaxCameras) return SampleError::kTooMany;
+  if (!Finite({f.field_length(), f.field_width(), f.boundary_width(), f.boundary_width_goal_line(), f.goal_width(),
+               f.goal_depth(), f.penalty_area_depth(), f.penalty_area_width(), f.center_circle_radius(),
+               f.line_thickness(), f.ball_radius(), f.max_robot_radius(), f.robot_height()}))
+    return SampleError::kNotFinite;
+  if (!Size(f.field_length()) || !Size(f.field_width()) || !Size(f.ball_radius()) || !Size(f.max_robot_radius()) ||
+      !NonNegative(f.boundary_width()) || !NonNegative(f.boundary_width_goal_line()) || !NonNegative(f.goal_width()) ||
+      !NonNegative(f.goal_depth()) || !NonNegative(f.penalty_area_depth()) || !NonNegative(f.penalty_area_width()) ||
+      !NonNegative(f.center_circle_radius()) || !NonNegative(f.line_thickness()) || !NonNegative(f.robot_height()))
+    return SampleError::kBadSize;
+  for (const idl::CameraInfo& c : f.cameras())
+    if (!Finite(c.area_min()) || !Finite(c.area_max())) return SampleError::kNotFinite;
+  field_ = f;
+  return SampleError::kOk;
+}
+
+SampleError ViewerModel::OnCamera(const idl::CameraFrame& f) {
+  if (f.balls().size() > kMaxRobots || f.robots().size() > kMaxRobots) return SampleError::kTooMany;
+  for (const idl::DetectedBall& b : f.balls())
+    if (!Finite(b.position()) || !Finite({b.confidence()})) return SampleError::kNotFinite;
+  for (const idl::DetectedRobot& r : f.robots()) {
+    if (!KnownTeam(r.team())) return SampleError::kUnknownEnum;
+    if (!Finite(r.position()) || !Finite({r.orientation(), r.confidence()})) return SampleError::kNotFinite;
+  }
+  if (frames_.count(f.camera_id()) == 0 && frames_.size() >= kMaxCameras) return SampleError::kTooMany;
+  frames_[f.camera_id()] = f;
+  return SampleError::kOk;
+}
+
+SampleError ViewerModel::OnStats(const idl::SensorStats& s) {
+  if (s.streams().size() > kMaxStreams) return SampleError::kTooMany;
+  if (!Finite({s.window_s()})) return SampleError::kNotFinite;
+  for (const idl::StreamStats& st : s.streams()) {
+    if (!Finite({st.rate_hz(), st.loss_ratio(), st.latency_mean(), st.latency_stddev()}))
+      return SampleError::kNotFinite;
+    if (st.name().size() > 128) return SampleError::kBadSize;
+  }
+  stats_ = s;
+  return SampleError::kOk;
+}
+
+PageRequest ViewerModel::OnPageMessage(std::string_view text) {
+  PageRequest r = ParsePageRequest(text, field_);
+  if (r.error != PageError::kOk) {
+    ++refused_pages_;
+    return r;
+  }
+  r.control.client(client_);
+  r.control.request_id(next_request_id_++);
+  return r;
+}
+
+std::string ViewerModel::Hello() const { return HelloJson(prefix_); }
+
+std::string ViewerModel::Field() const { return field_ ? FieldJson(*field_) : std::string(); }
+
+std::string ViewerModel::State() const {
+  if (!state_) return {};
+  // What the cameras saw lately: frames from the last kMaxFrameAgeNs of sim
+  // time (none from the future, as after a reset).
+  std::vector<const idl::CameraFrame*> recent;
+  const int64_t now = state_->sim_time_ns();
+  for (const auto& [id, frame] : frames_) {
+    const int64_t age = now - frame.capture_time_ns();
+    if (age >= 0 && age <= kMaxFrameAgeNs) recent.push_back(&frame);
+  }
+  return StateJson(*state_, clock_, recent, {refused_pages_, control_matched_});
+}
+
+std::string ViewerModel::Stats() const { return stats_ ? StatsJson(*stats_) : std::string(); }
+
+}  // namespace turf::viewer

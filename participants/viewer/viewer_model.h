@@ -1,0 +1,79 @@
+// What turf-viewer knows and shows, apart from DDS and sockets: the newest
+// world state, clock, field, camera frames and sensor statistics in; the JSON
+// the page reads out (viewer_json.h); page messages in, as validated
+// SimControl requests out (page_request.h). Single-threaded: its owner
+// serialises the calls.
+//
+// DDS samples are untrusted too: one with a non-finite number, an unknown enum,
+// or more entries than a match can have is refused with a named error and
+// changes nothing.
+#pragma once
+
+#include <turf/idl/Clock.h>
+#include <turf/idl/SensorStats.h>
+#include <turf/idl/SimControl.h>
+#include <turf/idl/SslVision.h>
+#include <turf/idl/WorldState.h>
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "participants/viewer/page_request.h"
+
+namespace turf::viewer {
+
+inline constexpr size_t kMaxRobots = 64;                // per world state or camera frame
+inline constexpr size_t kMaxCameras = 32;               // distinct camera ids kept
+inline constexpr size_t kMaxStreams = 64;               // per SensorStats
+inline constexpr int64_t kMaxFrameAgeNs = 250'000'000;  // camera frames shown with a state
+
+enum class SampleError { kOk, kNotFinite, kUnknownEnum, kTooMany, kBadSize };
+const char* SampleErrorName(SampleError error);
+
+class ViewerModel {
+ public:
+  // `client`: the name our control requests carry, to pick out our replies.
+  ViewerModel(std::string client, std::string prefix);
+
+  SampleError OnWorldState(const idl::WorldState& state);
+  SampleError OnClock(const idl::Clock& clock);
+  SampleError OnField(const idl::SslField& field);
+  SampleError OnCamera(const idl::CameraFrame& frame);
+  SampleError OnStats(const idl::SensorStats& stats);
+  // Whether a reply answers one of our requests (others are not shown).
+  bool IsOurs(const idl::SimControlReply& reply) const { return reply.client() == client_; }
+
+  // A page message as a request ready to write (client and request_id set),
+  // or the error; a refusal is counted in refused_pages().
+  PageRequest OnPageMessage(std::string_view text);
+  void CountRefusedPage() { ++refused_pages_; }  // refused before parsing (size, binary)
+  // Whether turf-sim's control reader is matched (shown to the page).
+  void SetControlMatched(bool matched) { control_matched_ = matched; }
+
+  bool has_state() const { return state_.has_value(); }
+  bool has_field() const { return field_.has_value(); }
+  const std::optional<idl::SslField>& field() const { return field_; }
+  uint64_t refused_pages() const { return refused_pages_; }
+
+  std::string Hello() const;
+  std::string Field() const;  // empty before the field is known
+  std::string State() const;  // empty before the first world state
+  std::string Stats() const;  // empty before the first statistics
+
+ private:
+  std::string client_;
+  std::string prefix_;
+  uint64_t next_request_id_ = 1;
+  uint64_t refused_pages_ = 0;
+  bool control_matched_ = false;
+  std::optional<idl::WorldState> state_;
+  std::optional<idl::Clock> clock_;
+  std::optional<idl::SslField> field_;
+  std::optional<idl::SensorStats> stats_;
+  std::map<uint32_t, idl::CameraFrame> frames_;  // newest per camera
+};
+
+}  // namespace turf::viewer

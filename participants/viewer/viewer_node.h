@@ -1,0 +1,72 @@
+// turf-viewer's node: turf's topics to the web page, the page's controls back
+// to turf-sim.
+//
+// Subscribes (topic names <prefix>/..., QoS profiles in configs/qos/turf_qos.xml):
+//   world_state    WorldState       100 Hz of sim time: ground truth
+//   clock          Clock            with every world state: time, paused, speed, rtf
+//   ssl/field      SslField         latched: what the page draws to scale
+//   ssl/camera     CameraFrame      60 Hz per camera: what the cameras report
+//   stats          SensorStats      every second of sim time: per-stream rate, loss, latency
+//   control_reply  SimControlReply  answers to our requests (others' are ignored)
+// Publishes:
+//   control        SimControl       one per accepted page message (teleport, pause,
+//                                   resume, step, reset, time mode, realism preset)
+// Serves (web_server.h): the page at http://<listen>:<port>/, its WebSocket at /ws;
+// state messages to every page at up to `rate_hz` (the newest state wins).
+// Page messages are untrusted (page_request.h): a refused one is counted per
+// kind ("page.<error>"), logged at a limited rate, answered with a "refused"
+// message to that page, and sends nothing to turf-sim.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace turf {
+
+struct ViewerOptions {
+  int domain = 0;
+  std::string prefix = "turf";
+  std::string qos_file;  // empty: the shipped profiles
+  std::string name = "turf-viewer";
+  std::string listen = "127.0.0.1";
+  uint16_t port = 8080;   // 0: any free port (see ViewerNode::port())
+  std::string web_root;   // must hold index.html
+  double rate_hz = 60.0;  // state messages to the pages, at most
+};
+
+struct ViewerStats {
+  uint64_t pages = 0;            // open now
+  bool control_matched = false;  // turf-sim's control reader is there: page actions can take effect
+  uint64_t states_received = 0;  // world states taken from DDS
+  uint64_t states_pushed = 0;    // state messages published to the pages
+  uint64_t controls_sent = 0;    // SimControl requests written
+  uint64_t replies = 0;          // answers to our requests
+  uint64_t refused = 0;          // page messages and DDS samples of every kind
+  uint64_t frames_dropped = 0;   // state messages slow pages skipped
+};
+
+class ViewerNode {
+ public:
+  // Throws std::invalid_argument for a bad option (address, web root, rate),
+  // std::runtime_error if the port cannot be bound or DDS fails.
+  explicit ViewerNode(ViewerOptions options);
+  ~ViewerNode();
+  ViewerNode(const ViewerNode&) = delete;
+  ViewerNode& operator=(const ViewerNode&) = delete;
+
+  // Runs until `stop()` answers true (checked at least every 50 ms).
+  void Run(const std::function<bool()>& stop);
+  uint16_t port() const;
+  std::string Url() const;
+  ViewerStats Stats() const;
+  // Refusals of one kind, e.g. "page.not_json", "page.rate_limited", "world_state.not_finite".
+  uint64_t Rejected(const std::string& kind) const;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace turf

@@ -1,0 +1,106 @@
+// The connections of web_server.cpp (internal): one HttpSession per TCP
+// connection, which becomes a PageSession when the page opens its WebSocket.
+// Everything here runs on the server's one I/O thread.
+#pragma once
+
+#include <boost/asio.hpp>
+#include <boost/beast.hpp>
+
+#include <atomic>
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "participants/viewer/http_rules.h"
+#include "participants/viewer/web_server.h"
+
+namespace turf::viewer::web {
+
+namespace asio = boost::asio;
+namespace beast = boost::beast;
+namespace http = beast::http;
+namespace websocket = beast::websocket;
+using tcp = asio::ip::tcp;
+using Message = std::shared_ptr<const std::string>;
+
+class PageSession;
+
+// What the sessions share with the server; outlives every session.
+struct Shared {
+  WebServerOptions options;
+  WebServerHandlers handlers;
+  bool loopback_only = true;
+  uint64_t next_client = 1;
+  size_t connections = 0;
+  std::map<uint64_t, std::weak_ptr<PageSession>> pages;
+  std::optional<Message> latest[3];  // kField, kStats, kState
+  std::atomic<uint64_t> page_count{0}, http_requests{0}, messages_sent{0}, frames_dropped{0}, events_dropped{0};
+
+  void Refuse(uint64_t client, const std::string& kind, const std::string& detail) {
+    if (handlers.on_refused) handlers.on_refused(client, kind, detail);
+  }
+};
+
+// Counts an open connection for as long as it lives.
+class ConnectionSlot {
+ public:
+  explicit ConnectionSlot(std::shared_ptr<Shared> shared) : shared_(std::move(shared)) { ++shared_->connections; }
+  ~ConnectionSlot() { --shared_->connections; }
+  ConnectionSlot(const ConnectionSlot&) = delete;
+  ConnectionSlot& operator=(const ConnectionSlot&) = delete;
+  Shared& shared() { return *shared_; }
+  const std::shared_ptr<Shared>& ptr() const { return shared_; }
+
+ private:
+  std::shared_ptr<Shared> shared_;
+};
+
+class HttpSession : public std::enable_shared_from_this<HttpSession> {
+ public:
+  HttpSession(tcp::socket socket, std::shared_ptr<Shared> shared);
+  void Start() { Read(); }
+
+ private:
+  void Read();
+  void OnRead(beast::error_code ec);
+  void Upgrade(http::request<http::string_body> request);
+  void Respond(http::response<http::string_body> response);
+  http::response<http::string_body> StaticResponse(const http::request<http::string_body>& request);
+
+  beast::tcp_stream stream_;
+  beast::flat_buffer buffer_;
+  std::optional<http::request_parser<http::string_body>> parser_;
+  std::shared_ptr<http::response<http::string_body>> response_;
+  ConnectionSlot slot_;
+};
+
+class PageSession : public std::enable_shared_from_this<PageSession> {
+ public:
+  PageSession(beast::tcp_stream stream, std::shared_ptr<Shared> shared);
+  ~PageSession();
+  void Start(http::request<http::string_body> request);
+  void Enqueue(Channel channel, const Message& message);
+  uint64_t id() const { return id_; }
+
+ private:
+  void OnAccept(beast::error_code ec);
+  void Read();
+  void OnRead(beast::error_code ec);
+  void WriteNext();
+
+  websocket::stream<beast::tcp_stream> ws_;
+  beast::flat_buffer buffer_;
+  ConnectionSlot slot_;
+  uint64_t id_;
+  bool open_ = false;
+  bool writing_ = false;
+  std::optional<Message> state_;  // newest state not yet sent
+  std::deque<Message> queue_;     // field, stats, events
+  Message in_flight_;
+  RateLimit rate_;
+};
+
+}  // namespace turf::viewer::web

@@ -1,0 +1,101 @@
+// DDS samples for the viewer's unit tests, built in code.
+#pragma once
+
+#include <turf/idl/Clock.h>
+#include <turf/idl/SensorStats.h>
+#include <turf/idl/SslVision.h>
+#include <turf/idl/WorldState.h>
+
+namespace turf::test {
+
+// Division B: 9 x 6 m, boundary 0.3 m, ball 21.5 mm, robot 90 mm, 6 ids a team.
+inline idl::SslField DivBField() {
+  idl::SslField f;
+  f.division(2);
+  f.field_length(9.0);
+  f.field_width(6.0);
+  f.boundary_width(0.3);
+  f.boundary_width_goal_line(0.3);
+  f.goal_width(1.0);
+  f.goal_depth(0.18);
+  f.goal_height(0.155);
+  f.penalty_area_depth(1.0);
+  f.penalty_area_width(2.0);
+  f.center_circle_radius(0.5);
+  f.line_thickness(0.01);
+  f.ball_radius(0.0215);
+  f.max_robot_radius(0.09);
+  f.robot_height(0.15);
+  f.robots_per_team(6);
+  idl::CameraInfo c;
+  c.id(0);
+  c.area_min().x(-4.8);
+  c.area_min().y(-3.3);
+  c.area_max().x(0.1);
+  c.area_max().y(3.3);
+  f.cameras().push_back(c);
+  return f;
+}
+
+inline idl::RobotState Robot(idl::Team team, int id, double x, double y, double yaw, bool on = true) {
+  idl::RobotState r;
+  r.team(team);
+  r.id(static_cast<uint8_t>(id));
+  r.on_field(on);
+  r.position().x(x);
+  r.position().y(y);
+  r.yaw(yaw);
+  r.orientation().w(1.0);
+  return r;
+}
+
+// t = 1.5 s: ball in flight at (1, -0.5, 0.3), blue 0 and yellow 3 on the field, yellow 5 off.
+inline idl::WorldState SampleState() {
+  idl::WorldState s;
+  s.sim_time_ns(1'500'000'000);
+  s.frame(750);
+  s.ball().position().x(1.0);
+  s.ball().position().y(-0.5);
+  s.ball().position().z(0.3);
+  s.ball().velocity().x(2.0);
+  s.robots().push_back(Robot(idl::TEAM_BLUE, 0, -1.25, 0.5, 0.7853981633974483));
+  s.robots().push_back(Robot(idl::TEAM_YELLOW, 3, 2.0, -1.0, 3.14159));
+  s.robots().push_back(Robot(idl::TEAM_YELLOW, 5, 0.0, 0.0, 0.0, false));
+  return s;
+}
+
+inline idl::Clock SampleClock(bool paused) {
+  idl::Clock c;
+  c.sim_time_ns(1'500'000'000);
+  c.frame(750);
+  c.step_s(0.002);
+  c.paused(paused);
+  c.mode(idl::TIME_SCALED);
+  c.speed(2.0);
+  c.real_time_factor(1.98);
+  return c;
+}
+
+inline idl::CameraFrame SampleFrame(uint32_t camera, int64_t capture_ns) {
+  idl::CameraFrame f;
+  f.camera_id(camera);
+  f.frame_number(10);
+  f.capture_time_ns(capture_ns);
+  f.sent_time_ns(capture_ns + 1'000'000);
+  idl::DetectedBall b;
+  b.position().x(1.01);
+  b.position().y(-0.49);
+  b.confidence(0.9f);
+  f.balls().push_back(b);
+  idl::DetectedRobot r;
+  r.team(idl::TEAM_BLUE);
+  r.id(0);
+  r.position().x(-1.26);
+  r.position().y(0.51);
+  r.orientation(0.78);
+  r.confidence(0.95f);
+  f.robots().push_back(r);
+  return f;
+}
+
+}  // namespace turf::test
