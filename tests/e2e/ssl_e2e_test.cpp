@@ -383,7 +383,9 @@ TEST(SslEndToEnd, ErForceRealismKnobsChangeTheVisionStream) {
   team.Send(cmd.SerializeAsString(), m.control_port);
   team::simulation::SimulatorResponse response;
   bool answered = false;
-  for (int i = 0; i < 100 && !answered; ++i)
+  // The bridge answers after turf-sim replied (up to its 2 s reply timeout).
+  const auto answer_by = Clock::now() + 5s;
+  while (Clock::now() < answer_by && !answered)
     if (auto bytes = team.Receive()) answered = response.ParseFromString(*bytes);
   ASSERT_TRUE(answered);
   EXPECT_EQ(response.errors_size(), 0) << response.errors(0).code() << ": " << response.errors(0).message();

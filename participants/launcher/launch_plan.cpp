@@ -1,0 +1,199 @@
+#include "participants/launcher/launch_plan.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include "config/realism_yaml.h"
+#include "participants/launcher/programs.h"
+
+namespace turf::launch {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool Executable(const fs::path& p) { return fs::is_regular_file(p) && access(p.c_str(), X_OK) == 0; }
+
+// Looks in --bin-dir, then next to `turf` and its sibling build directories,
+// then on PATH. Empty if not found.
+std::string FindBinary(const Program& program, const std::string& bin_dir, const std::string& self_dir) {
+  std::vector<fs::path> candidates;
+  const std::string binary(program.binary);
+  const std::string build_dir(program.build_dir);
+  for (const std::string& dir : {bin_dir, self_dir}) {
+    if (dir.empty()) continue;
+    candidates.push_back(fs::path(dir) / binary);
+    if (!build_dir.empty()) {
+      candidates.push_back(fs::path(dir) / build_dir / binary);
+      candidates.push_back(fs::path(dir) / ".." / build_dir / binary);
+    }
+    if (dir == bin_dir) break;  // an explicit --bin-dir is not second-guessed, except for system tools
+  }
+  for (const fs::path& c : candidates) {
+    if (Executable(c)) return c.lexically_normal().string();
+  }
+  if (!bin_dir.empty() && !build_dir.empty()) return "";
+  std::stringstream path(std::getenv("PATH") != nullptr ? std::getenv("PATH") : "/usr/bin:/bin");
+  for (std::string dir; std::getline(path, dir, ':');) {
+    if (!dir.empty() && Executable(fs::path(dir) / binary)) return (fs::path(dir) / binary).string();
+  }
+  return "";
+}
+
+void SetFlag(std::vector<Flag>* flags, Flag flag) {
+  auto it = std::find_if(flags->begin(), flags->end(), [&flag](const Flag& f) { return f.name == flag.name; });
+  if (it != flags->end()) flags->erase(it);
+  if (!(flag.bare && flag.value == "false")) flags->push_back(std::move(flag));
+}
+
+// --set PROCESS.FLAG=VALUE
+void ApplySet(const std::string& set, LaunchProfile* profile, std::vector<std::string>* errors) {
+  const size_t dot = set.find('.');
+  const size_t eq = set.find('=');
+  if (dot == std::string::npos || eq == std::string::npos || dot > eq) {
+    errors->push_back(fmt::format("--set {}: expected PROCESS.FLAG=VALUE (e.g. vision.port=10006)", set));
+    return;
+  }
+  const std::string process = set.substr(0, dot);
+  const std::string name = set.substr(dot + 1, eq - dot - 1);
+  const std::string value = set.substr(eq + 1);
+  ProcessSpec* spec = process == "sim" ? &profile->sim : nullptr;
+  for (ProcessSpec& b : profile->bridges) {
+    if (b.name == process) spec = &b;
+  }
+  if (spec == nullptr) {
+    errors->push_back(fmt::format("--set {}: the profile runs no process named '{}'", set, process));
+    return;
+  }
+  if (!ValidFlagName(name) || name == "domain" || name == "prefix" || name == "qos" ||
+      (process == "sim" && (name == "scene" || name == "realism"))) {
+    errors->push_back(
+        fmt::format("--set {}: '{}' is not a flag --set may change (use --domain, --prefix, --realism)", set, name));
+    return;
+  }
+  const bool is_switch = value == "true" || value == "false";
+  SetFlag(&spec->flags, Flag{name, value, is_switch});
+}
+
+void AddFlags(const std::vector<Flag>& flags, std::vector<std::string>* argv) {
+  for (const Flag& f : flags) {
+    argv->push_back("--" + f.name);
+    if (!f.bare) argv->push_back(f.value);
+  }
+}
+
+}  // namespace
+
+LaunchPlan BuildPlan(LaunchProfile profile, const LaunchOverrides& o, const std::string& self_dir) {
+  LaunchPlan plan;
+  std::vector<std::string>& errors = plan.errors;
+  if (o.domain) {
+    if (*o.domain < 0 || *o.domain > 232) errors.push_back("--domain: must be 0..232");
+    profile.domain = *o.domain;
+  }
+  if (o.prefix) {
+    if (!ValidPrefix(*o.prefix)) errors.push_back("--prefix: letters, digits, '_', '-' and '/' only, not empty");
+    profile.prefix = *o.prefix;
+  }
+  if (o.realism) {
+    const RealismLoadResult r = LoadRealism(*o.realism);
+    if (!r.realism) errors.push_back(fmt::format("--realism {}: {}", *o.realism, fmt::join(r.errors, "; ")));
+    profile.realism = *o.realism;
+  }
+  if (o.discovery_server) {
+    std::string host;
+    int port = 0;
+    if (!ParseHostPort(*o.discovery_server, &host, &port))
+      errors.push_back(fmt::format("--discovery-server {}: expected HOST:PORT", *o.discovery_server));
+    profile.discovery.server = *o.discovery_server;
+  }
+  if (o.start_discovery_server) {
+    if (profile.discovery.server.empty()) errors.push_back("--start-discovery-server needs --discovery-server");
+    profile.discovery.start = true;
+  }
+  for (const std::string& set : o.sets) ApplySet(set, &profile, &errors);
+
+  std::vector<ProcessSpec> specs;
+  if (profile.discovery.start) {
+    std::string host;
+    int port = 0;
+    ParseHostPort(profile.discovery.server, &host, &port);
+    specs.push_back({"discovery", {{"i", "0", false}, {"l", host, false}, {"p", std::to_string(port), false}}});
+  }
+  specs.push_back(profile.sim);
+  specs.insert(specs.end(), profile.bridges.begin(), profile.bridges.end());
+
+  std::set<std::string> only(o.only.begin(), o.only.end());
+  for (const std::string& name : only) {
+    const bool known =
+        std::any_of(specs.begin(), specs.end(), [&name](const ProcessSpec& s) { return s.name == name; });
+    if (!known) {
+      std::vector<std::string> names;
+      for (const ProcessSpec& s : specs) names.push_back(s.name);
+      errors.push_back(fmt::format("--only {}: the profile runs no such process ({})", name, fmt::join(names, ", ")));
+    }
+  }
+
+  for (const ProcessSpec& spec : specs) {
+    if (!only.empty() && only.count(spec.name) == 0) continue;
+    const Program* program = FindProgram(spec.name);
+    ProcessCommand command{spec.name, {}, {}};
+    const std::string binary = FindBinary(*program, o.bin_dir, self_dir);
+    if (binary.empty()) {
+      errors.push_back(fmt::format(
+          "{}: cannot find {} ({})", spec.name, program->binary,
+          program->build_dir.empty() ? "install it; Debian: fastdds-tools" : "build turf, or give --bin-dir"));
+    }
+    command.argv.push_back(binary.empty() ? std::string(program->binary) : binary);
+    if (spec.name == "discovery") {
+      // Stopped last, so the others' goodbyes still reach their peers through it.
+      command.stop_last = true;
+      for (const Flag& f : spec.flags) command.argv.insert(command.argv.end(), {"-" + f.name, f.value});
+      plan.commands.push_back(command);
+      continue;
+    }
+    if (spec.name == "sim") {
+      command.argv.insert(command.argv.end(), {"--scene", profile.scene});
+      if (!profile.realism.empty()) command.argv.insert(command.argv.end(), {"--realism", profile.realism});
+    }
+    command.argv.insert(command.argv.end(), {"--domain", std::to_string(profile.domain), "--prefix", profile.prefix});
+    if (!profile.qos.empty()) command.argv.insert(command.argv.end(), {"--qos", profile.qos});
+    AddFlags(spec.flags, &command.argv);
+    if (!profile.discovery.server.empty()) command.env.emplace_back("ROS_DISCOVERY_SERVER", profile.discovery.server);
+    plan.commands.push_back(command);
+  }
+  plan.domain = profile.domain;
+  plan.prefix = profile.prefix;
+  plan.discovery_server = profile.discovery.server;
+  return plan;
+}
+
+std::string ShellLine(const ProcessCommand& command) {
+  auto quote = [](const std::string& s) {
+    const bool plain = !s.empty() && s.find_first_not_of(
+                                         "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                         "0123456789_-./:=,@%+") == std::string::npos;
+    if (plain) return s;
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+  };
+  std::vector<std::string> words;
+  for (const auto& [name, value] : command.env) words.push_back(name + "=" + quote(value));
+  for (const std::string& a : command.argv) words.push_back(quote(a));
+  return fmt::format("{}", fmt::join(words, " "));
+}
+
+std::string SelfDir() {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string() : self.parent_path().string();
+}
+
+}  // namespace turf::launch

@@ -1,0 +1,34 @@
+// The programs `turf launch` knows: a profile's process names, the executable
+// each runs and where the build tree puts it. The one list of them (profiles,
+// the launcher, tests and docker/compose.yaml are checked against it).
+#pragma once
+
+#include <string_view>
+
+namespace turf::launch {
+
+struct Program {
+  std::string_view name;       // in profiles, --only, --set and log prefixes
+  std::string_view binary;     // executable name
+  std::string_view build_dir;  // under <build>/participants/; empty: a system tool found on PATH
+};
+
+inline constexpr Program kPrograms[] = {
+    {"discovery", "fast-discovery-server", ""},  // Fast DDS discovery server (Debian: fastdds-tools)
+    {"sim", "turf-sim", "sim"},
+    {"grsim", "turf-grsim-bridge", "grsim_bridge"},
+    {"vision", "turf-vision-bridge", "vision_bridge"},
+    {"simproto", "turf-simproto-bridge", "simproto_bridge"},
+};
+
+// Bridges a profile may list under `bridges:` (every program but discovery and sim).
+inline bool IsBridge(std::string_view name) { return name != "discovery" && name != "sim"; }
+
+inline const Program* FindProgram(std::string_view name) {
+  for (const Program& p : kPrograms) {
+    if (p.name == name) return &p;
+  }
+  return nullptr;
+}
+
+}  // namespace turf::launch

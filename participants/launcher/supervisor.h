@@ -1,0 +1,39 @@
+// Runs a launch plan's processes and keeps them running.
+//
+// - Each process starts with its argv and environment, in its own process
+//   group (a terminal's Ctrl-C reaches only `turf`, which then stops the
+//   children once, cleanly) and with SIGTERM as its parent-death signal (if
+//   `turf` itself is killed, the children stop too).
+// - Every line a process prints (stdout and stderr) is printed prefixed with
+//   its name: "vision   | ...".
+// - A process that crashes (killed by a signal, or a non-zero exit) is
+//   restarted after a backoff that doubles with each quick crash (one within
+//   `stable_after` of its start) up to `backoff_max`; after `max_restarts`
+//   quick crashes in a row `turf` gives up: it stops the others and exits 1.
+// - A process that exits with status 0 ends the launch: the others are stopped
+//   and `turf` exits 0 (e.g. turf-sim --duration).
+// - SIGINT/SIGTERM stop every process with SIGTERM (a stop_last one, the
+//   discovery server, once the others are gone), then SIGKILL after the grace
+//   period; a second signal sends SIGKILL at once. Exit status 0 when all
+//   stopped within the grace period, 1 otherwise.
+#pragma once
+
+#include <chrono>
+#include <cstdio>
+#include <vector>
+
+#include "participants/launcher/launch_plan.h"
+#include "participants/launcher/launch_profile.h"
+
+namespace turf::launch {
+
+struct SupervisorOptions {
+  RestartPolicy restart;
+  std::chrono::milliseconds grace{5000};
+};
+
+// Runs until stopped; returns the exit status for `turf`. Installs its own
+// handling of SIGINT, SIGTERM and SIGCHLD for the duration.
+int Supervise(const std::vector<ProcessCommand>& commands, const SupervisorOptions& options);
+
+}  // namespace turf::launch

@@ -1,0 +1,109 @@
+// `turf` as a user runs it: --help, `turf launch <profile> --print` (one shell
+// line per process, with flags every program accepts) and profile errors.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/multihost/support/netns.h"
+#include "tests/multihost/support/process.h"
+
+namespace turf::test {
+namespace {
+
+std::string Turf() { return Built("participants/launcher/turf"); }
+
+std::vector<std::string> Lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> Words(const std::string& line) {
+  std::vector<std::string> words;
+  std::istringstream in(line);
+  for (std::string w; in >> w;) words.push_back(w);
+  return words;
+}
+
+TEST(LaunchCli, HelpNamesTheSubcommandAndItsOptions) {
+  std::string out;
+  EXPECT_EQ(RunCommand({Turf(), "--help"}, &out), 0);
+  EXPECT_NE(out.find("launch"), std::string::npos) << out;
+  EXPECT_EQ(RunCommand({Turf(), "launch", "--help"}, &out), 0);
+  for (const char* option : {"--print", "--domain", "--prefix", "--discovery-server", "--start-discovery-server",
+                             "--only", "--set", "--bin-dir"})
+    EXPECT_NE(out.find(option), std::string::npos) << option;
+  EXPECT_NE(RunCommand({Turf()}, &out), 0) << "a subcommand is required";
+}
+
+// Each printed line runs a built program with options it knows.
+void ExpectRunnable(const std::vector<std::string>& lines) {
+  for (const std::string& line : lines) {
+    std::vector<std::string> words = Words(line);
+    while (!words.empty() && words[0].find('=') != std::string::npos) words.erase(words.begin());
+    ASSERT_FALSE(words.empty()) << line;
+    ASSERT_EQ(access(words[0].c_str(), X_OK), 0) << words[0];
+    std::string help;
+    const bool system_tool = words[0].rfind(TURF_BINARY_DIR, 0) != 0;
+    RunCommand({words[0], system_tool ? "-h" : "--help"}, &help);
+    for (size_t i = 1; i < words.size(); ++i) {
+      if (words[i][0] != '-') continue;
+      const std::regex known("(^|[\\s,])" + words[i] + "[\\s=]");
+      EXPECT_TRUE(std::regex_search(help, known)) << words[0] << " does not know " << words[i];
+    }
+  }
+}
+
+TEST(LaunchCli, PrintGivesOneRunnableLinePerProcess) {
+  for (const char* profile : {"ssl_div_a", "ssl_div_b"}) {
+    std::string out;
+    ASSERT_EQ(RunCommand({Turf(), "launch", profile, "--print"}, &out), 0) << out;
+    const std::vector<std::string> lines = Lines(out);
+    ASSERT_EQ(lines.size(), 4u) << out;
+    EXPECT_NE(lines[0].find("/turf-sim --scene "), std::string::npos) << lines[0];
+    EXPECT_NE(lines[0].find(std::string("configs/scenes/") + profile + ".yaml"), std::string::npos) << lines[0];
+    for (const std::string& line : lines) EXPECT_NE(line.find(" --domain 0 --prefix turf"), std::string::npos);
+    ExpectRunnable(lines);
+  }
+}
+
+TEST(LaunchCli, PrintWithOverridesAndADiscoveryServer) {
+  std::string out;
+  ASSERT_EQ(RunCommand({Turf(), "launch", "ssl_div_a", "--print", "--domain", "42", "--prefix", "field2",
+                        "--discovery-server", "192.168.7.1:11811", "--start-discovery-server", "--only",
+                        "discovery,sim,vision", "--set", "vision.port=10006"},
+                       &out),
+            0)
+      << out;
+  const std::vector<std::string> lines = Lines(out);
+  ASSERT_EQ(lines.size(), 3u) << out;
+  EXPECT_NE(lines[0].find("fast-discovery-server -i 0 -l 192.168.7.1 -p 11811"), std::string::npos) << lines[0];
+  for (size_t i = 1; i < lines.size(); ++i) {
+    EXPECT_EQ(lines[i].rfind("ROS_DISCOVERY_SERVER=192.168.7.1:11811 ", 0), 0u) << lines[i];
+    EXPECT_NE(lines[i].find(" --domain 42 --prefix field2"), std::string::npos) << lines[i];
+  }
+  EXPECT_NE(lines[2].find("--port 10006"), std::string::npos) << lines[2];
+  ExpectRunnable(lines);
+}
+
+TEST(LaunchCli, ProfileErrorsNameTheKeyAndExitWith2) {
+  const std::string path = std::string(TURF_BINARY_DIR) + "/tests/bad_profile_" + std::to_string(getpid()) + ".yaml";
+  std::ofstream(path) << "scene: " << TURF_SOURCE_DIR << "/configs/scenes/ssl_div_a.yaml\ndomian: 3\n";
+  std::string out;
+  EXPECT_EQ(RunCommand({Turf(), "launch", path, "--print"}, &out), 2);
+  EXPECT_NE(out.find("domian: unknown key (did you mean domain?)"), std::string::npos) << out;
+  EXPECT_EQ(RunCommand({Turf(), "launch", "ssl_div_a", "--print", "--set", "radio.port=1"}, &out), 2);
+  EXPECT_NE(out.find("no process named 'radio'"), std::string::npos) << out;
+  EXPECT_EQ(RunCommand({Turf(), "launch", "no_such_league"}, &out), 2);
+  EXPECT_NE(out.find("ssl_div_a"), std::string::npos) << out;
+  std::remove(path.c_str());
+}
+
+}  // namespace
+}  // namespace turf::test

@@ -1,0 +1,195 @@
+// League launch profiles: the shipped ones load, bad ones fail with errors
+// that name the key, and plans carry the overrides into every command.
+#include "participants/launcher/launch_profile.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "participants/launcher/launch_plan.h"
+#include "participants/launcher/programs.h"
+
+namespace turf::launch {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kScenes = std::string(TURF_SOURCE_DIR) + "/configs/scenes";
+// Where `turf` is, so that plans find the executables next to it.
+const std::string kLauncherDir = std::string(TURF_BINARY_DIR) + "/participants/launcher";
+
+ProfileLoadResult Parse(const std::string& text) { return ParseLaunchProfile(text, kScenes); }
+
+// The single error of `text`, which must contain `key` and `what`.
+void ExpectError(const std::string& text, const std::string& key, const std::string& what) {
+  const ProfileLoadResult r = Parse(text);
+  EXPECT_FALSE(r.profile.has_value()) << text;
+  ASSERT_EQ(r.errors.size(), 1u) << text << "\n" << (r.errors.empty() ? "" : r.errors[0]);
+  EXPECT_EQ(r.errors[0].rfind(key + ":", 0), 0u) << r.errors[0];
+  EXPECT_NE(r.errors[0].find(what), std::string::npos) << r.errors[0];
+}
+
+std::string Args(const ProcessCommand& c) {
+  std::string s;
+  for (size_t i = 1; i < c.argv.size(); ++i) s += c.argv[i] + " ";
+  return s;
+}
+
+TEST(LaunchProfile, ShippedProfilesLoad) {
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(DefaultProfileDir())) {
+    if (entry.path().extension() != ".yaml") continue;
+    ++count;
+    const ProfileLoadResult r = LoadLaunchProfile(entry.path().string(), DefaultProfileDir());
+    ASSERT_TRUE(r.profile.has_value()) << entry.path() << ": " << (r.errors.empty() ? "" : r.errors[0]);
+    EXPECT_EQ(r.profile->name, entry.path().stem().string());
+    EXPECT_TRUE(fs::is_regular_file(r.profile->scene));
+    EXPECT_FALSE(r.profile->realism.empty()) << "a league profile names its realism preset";
+    EXPECT_FALSE(r.profile->bridges.empty());
+  }
+  EXPECT_GE(count, 2);
+  const ProfileLoadResult a = LoadLaunchProfile("ssl_div_a", DefaultProfileDir());
+  ASSERT_TRUE(a.profile.has_value());
+  EXPECT_EQ(fs::path(a.profile->scene).filename(), "ssl_div_a.yaml");
+  ASSERT_EQ(a.profile->bridges.size(), 3u);
+  EXPECT_EQ(a.profile->bridges[0].name, "grsim");
+  EXPECT_EQ(a.profile->bridges[1].name, "vision");
+  EXPECT_EQ(a.profile->bridges[2].name, "simproto");
+  const ProfileLoadResult b = LoadLaunchProfile("ssl_div_b", DefaultProfileDir());
+  ASSERT_TRUE(b.profile.has_value());
+  EXPECT_EQ(fs::path(b.profile->scene).filename(), "ssl_div_b.yaml");
+}
+
+TEST(LaunchProfile, UnknownProfileNamesTheKnownOnes) {
+  const ProfileLoadResult r = LoadLaunchProfile("ssl_div_z", DefaultProfileDir());
+  ASSERT_EQ(r.errors.size(), 1u);
+  EXPECT_NE(r.errors[0].find("ssl_div_a"), std::string::npos) << r.errors[0];
+}
+
+TEST(LaunchProfile, FlagsKeepTheirOrderAndForm) {
+  const ProfileLoadResult r = Parse(
+      "scene: ssl_div_b.yaml\n"
+      "sim: {speed: max, paused: true, lockstep: false}\n"
+      "bridges:\n"
+      "  vision: {tracked: true, port: 10006, address: '224.5.23.2'}\n"
+      "  grsim: {wheel-order: [4, 3, 2, 1]}\n");
+  ASSERT_TRUE(r.profile.has_value()) << r.errors[0];
+  const LaunchProfile& p = *r.profile;
+  EXPECT_EQ(p.domain, 0);
+  EXPECT_EQ(p.prefix, "turf");
+  ASSERT_EQ(p.sim.flags.size(), 2u);  // lockstep: false is left out
+  EXPECT_EQ(p.sim.flags[1].name, "paused");
+  EXPECT_TRUE(p.sim.flags[1].bare);
+  ASSERT_EQ(p.bridges.size(), 2u);
+  EXPECT_EQ(p.bridges[0].name, "vision");
+  EXPECT_EQ(p.bridges[0].flags[2].value, "224.5.23.2");
+  EXPECT_EQ(p.bridges[1].flags[0].value, "4,3,2,1");
+}
+
+TEST(LaunchProfile, ErrorsNameTheKey) {
+  ExpectError("bridges: {}\n", "scene", "missing");
+  ExpectError("scene: nowhere.yaml\n", "scene", "no such file");
+  ExpectError("scene: ssl_div_a.yaml\ndomain: 300\n", "domain", "0..232");
+  ExpectError("scene: ssl_div_a.yaml\ndomain: two\n", "domain", "integer");
+  ExpectError("scene: ssl_div_a.yaml\nprefix: 'a b'\n", "prefix", "letters");
+  ExpectError("scene: ssl_div_a.yaml\nrealism: lifelike\n", "realism", "preset");
+  ExpectError("scene: ssl_div_a.yaml\nbridges: {grsm: {}}\n", "bridges.grsm", "unknown key");
+  ExpectError("scene: ssl_div_a.yaml\nbridges: {sim: {}}\n", "bridges.sim", "unknown key");
+  ExpectError("scene: ssl_div_a.yaml\nbridges: {grsim: {domain: 3}}\n", "bridges.grsim.domain", "top-level");
+  ExpectError("scene: ssl_div_a.yaml\nsim: {scene: x.yaml}\n", "sim.scene", "top-level");
+  ExpectError("scene: ssl_div_a.yaml\nsim: {Speed: 2}\n", "sim.Speed", "not a flag name");
+  ExpectError("scene: ssl_div_a.yaml\nsim: {speed: {x: 1}}\n", "sim.speed", "expected a value");
+  ExpectError("scene: ssl_div_a.yaml\nbridges: {vision: 3}\n", "bridges.vision", "expected a map");
+  ExpectError("scene: ssl_div_a.yaml\ndiscovery: {server: 10.0.0.1}\n", "discovery.server", "HOST:PORT");
+  ExpectError("scene: ssl_div_a.yaml\ndiscovery: {start: true}\n", "discovery.start", "needs discovery.server");
+  ExpectError("scene: ssl_div_a.yaml\nrestart: {max_restart: 3}\n", "restart.max_restart", "max_restarts");
+  ExpectError("scene: ssl_div_a.yaml\nstop_grace: 0\n", "stop_grace", "> 0");
+  ExpectError("scene: ssl_div_a.yaml\nbrigdes: {}\n", "brigdes", "did you mean bridges");
+}
+
+TEST(LaunchProfile, HostPort) {
+  std::string host;
+  int port = 0;
+  EXPECT_TRUE(ParseHostPort("192.168.1.10:11811", &host, &port));
+  EXPECT_EQ(host, "192.168.1.10");
+  EXPECT_EQ(port, 11811);
+  EXPECT_TRUE(ParseHostPort("discovery:11811", &host, &port));
+  for (const char* bad : {"1.2.3:11811", "1.2.3.4", ":11811", "1.2.3.4:0", "1.2.3.4:70000", "a b:1", "h:x"})
+    EXPECT_FALSE(ParseHostPort(bad, &host, &port)) << bad;
+}
+
+TEST(LaunchPlan, OverridesReachEveryProcess) {
+  const ProfileLoadResult r = LoadLaunchProfile("ssl_div_a", DefaultProfileDir());
+  ASSERT_TRUE(r.profile.has_value());
+  LaunchOverrides o;
+  o.domain = 17;
+  o.prefix = "match2";
+  o.realism = "ideal";
+  o.discovery_server = "10.1.2.3:11811";
+  o.start_discovery_server = true;
+  o.sets = {"vision.port=10006", "sim.speed=max", "vision.tracked=true"};
+  const LaunchPlan plan = BuildPlan(*r.profile, o, kLauncherDir);
+  ASSERT_TRUE(plan.errors.empty()) << plan.errors[0];
+  ASSERT_EQ(plan.commands.size(), 5u);
+  EXPECT_EQ(plan.commands[0].name, "discovery");
+  EXPECT_EQ(Args(plan.commands[0]), "-i 0 -l 10.1.2.3 -p 11811 ");
+  EXPECT_TRUE(plan.commands[0].stop_last) << "the discovery server goes last";
+  EXPECT_TRUE(plan.commands[0].env.empty());
+  for (size_t i = 1; i < plan.commands.size(); ++i) {
+    const ProcessCommand& c = plan.commands[i];
+    EXPECT_NE(Args(c).find("--domain 17 --prefix match2 "), std::string::npos) << Args(c);
+    ASSERT_EQ(c.env.size(), 1u);
+    EXPECT_EQ(c.env[0].first, "ROS_DISCOVERY_SERVER");
+    EXPECT_EQ(c.env[0].second, "10.1.2.3:11811");
+  }
+  EXPECT_NE(Args(plan.commands[1]).find("--realism ideal"), std::string::npos);
+  EXPECT_NE(Args(plan.commands[1]).find("--speed max"), std::string::npos);
+  EXPECT_NE(Args(plan.commands[3]).find("--port 10006 --tracked"), std::string::npos) << Args(plan.commands[3]);
+}
+
+TEST(LaunchPlan, OnlyAndBadOverrides) {
+  const ProfileLoadResult r = LoadLaunchProfile("ssl_div_b", DefaultProfileDir());
+  ASSERT_TRUE(r.profile.has_value());
+  LaunchOverrides o;
+  o.only = {"vision", "grsim"};
+  LaunchPlan plan = BuildPlan(*r.profile, o, kLauncherDir);
+  ASSERT_TRUE(plan.errors.empty()) << plan.errors[0];
+  ASSERT_EQ(plan.commands.size(), 2u);
+  EXPECT_EQ(plan.commands[0].name, "grsim");  // profile order, not --only order
+  EXPECT_TRUE(plan.commands[0].env.empty());
+
+  LaunchOverrides bad;
+  bad.only = {"viewer"};
+  bad.sets = {"vision.domain=3", "vision", "tracker.port=1"};
+  bad.domain = 999;
+  bad.start_discovery_server = true;
+  plan = BuildPlan(*r.profile, bad, kLauncherDir);
+  EXPECT_EQ(plan.errors.size(), 6u);
+}
+
+TEST(LaunchPlan, BinariesAreFoundInTheBuildTree) {
+  const ProfileLoadResult r = LoadLaunchProfile("ssl_div_a", DefaultProfileDir());
+  ASSERT_TRUE(r.profile.has_value());
+  // As `turf` finds them next to itself: <build>/participants/launcher/../<dir>/<binary>.
+  const LaunchPlan plan = BuildPlan(*r.profile, {}, kLauncherDir);
+  ASSERT_TRUE(plan.errors.empty()) << plan.errors[0];
+  for (const ProcessCommand& c : plan.commands) {
+    const Program* program = FindProgram(c.name);
+    ASSERT_NE(program, nullptr);
+    EXPECT_EQ(c.argv[0], std::string(TURF_BINARY_DIR) + "/participants/" + std::string(program->build_dir) + "/" +
+                             std::string(program->binary));
+  }
+  LaunchOverrides o;
+  o.bin_dir = "/nonexistent";
+  EXPECT_EQ(BuildPlan(*r.profile, o, kLauncherDir).errors.size(), 4u);
+}
+
+TEST(LaunchPlan, ShellLineQuotes) {
+  const ProcessCommand c{"sim", {"/opt/turf bin/turf-sim", "--prefix", "it's", "--speed", "1"}, {{"A", "x y"}}};
+  EXPECT_EQ(ShellLine(c), "A='x y' '/opt/turf bin/turf-sim' --prefix 'it'\\''s' --speed 1");
+}
+
+}  // namespace
+}  // namespace turf::launch

@@ -1,0 +1,159 @@
+// `turf launch` supervising real processes: a crashed bridge is restarted and
+// the match resumes; Ctrl-C stops everything cleanly; a process that keeps
+// crashing makes it give up; a clean exit ends the launch; and two launches on
+// other domains or prefixes do not see each other.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <memory>
+#include <regex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tests/multihost/support/process.h"
+#include "tests/multihost/support/ssl_client.h"
+#include "tests/test_domain.h"
+
+namespace turf::test {
+namespace {
+
+using namespace std::chrono_literals;
+
+// A division B match on loopback: turf-sim, grSim and vision bridges on ports
+// of its own; `extra` is appended to the profile.
+struct Launch {
+  Launch(const std::string& name, int domain, const std::string& prefix, const std::string& extra = "",
+         std::vector<std::string> args = {}) {
+    grsim_port = FreePort();
+    vision_port = FreePort();
+    path = LogDir() + "/" + name + "_" + std::to_string(getpid()) + ".yaml";
+    std::ofstream(path) << "scene: " << TURF_SOURCE_DIR << "/configs/scenes/ssl_div_b.yaml\n"
+                        << "realism: ideal\ndomain: " << domain << "\nprefix: " << prefix << "\n"
+                        << "bridges:\n"
+                        << "  grsim: {listen: 127.0.0.1, port: " << grsim_port << ", blue-status-port: " << FreePort()
+                        << ", yellow-status-port: " << FreePort() << "}\n"
+                        << "  vision: {address: 127.0.0.1, port: " << vision_port << ", geometry-every: 30}\n"
+                        << extra;
+    args.insert(args.begin(), {Built("participants/launcher/turf"), "launch", path});
+    turf = std::make_unique<Process>(name, args);
+  }
+  // The pid `turf` logged for a process's latest start.
+  pid_t ChildPid(const std::string& process) const {
+    const std::string log = turf->Log();
+    const std::regex started("started " + process + " \\(pid ([0-9]+)\\)");
+    pid_t pid = -1;
+    for (std::sregex_iterator it(log.begin(), log.end(), started), end; it != end; ++it) pid = std::stoi((*it)[1]);
+    return pid;
+  }
+  int grsim_port, vision_port;
+  std::string path;
+  std::unique_ptr<Process> turf;
+};
+
+bool Alive(pid_t pid) { return pid > 0 && kill(pid, 0) == 0; }
+
+template <class F>
+bool WaitFor(F done, std::chrono::milliseconds timeout) {
+  const auto end = SteadyClock::now() + timeout;
+  while (!done()) {
+    if (SteadyClock::now() > end) return false;
+    std::this_thread::sleep_for(20ms);
+  }
+  return true;
+}
+
+TEST(LaunchSupervisor, RestartsACrashedBridgeAndStopsCleanlyOnCtrlC) {
+  Launch launch("launch_restart", TestDomain(), "lr" + std::to_string(getpid()), "restart: {backoff_initial: 0.2}\n");
+  VisionClient client("127.0.0.1", launch.vision_port);
+  UdpSocket team;
+  ASSERT_TRUE(client.WaitForStream(2, 15s)) << launch.turf->Log();
+  const pid_t sim = launch.ChildPid("sim"), grsim = launch.ChildPid("grsim"), vision = launch.ChildPid("vision");
+  ASSERT_TRUE(Alive(sim) && Alive(grsim) && Alive(vision));
+
+  kill(vision, SIGKILL);
+  const auto killed = SteadyClock::now();
+  ASSERT_TRUE(WaitFor([&] { return launch.ChildPid("vision") != vision; }, 5s)) << launch.turf->Log();
+  client.Drain(100ms);
+  const auto resumed = client.UntilDetection(5s);
+  ASSERT_TRUE(resumed.has_value()) << launch.turf->Log();
+  const auto since_kill = std::chrono::duration_cast<std::chrono::milliseconds>(SteadyClock::now() - killed);
+  RecordProperty("vision_after_kill_ms", static_cast<int>(since_kill.count()));
+  std::printf("vision resumed %lld ms after the kill (0.2 s backoff included)\n",
+              static_cast<long long>(since_kill.count()));
+  EXPECT_NE(launch.turf->Log().find("vision crashed (killed by signal 9"), std::string::npos);
+  EXPECT_EQ(launch.ChildPid("sim"), sim) << "only the crashed process restarts";
+  EXPECT_GT(DriveBlueRobot(team, "127.0.0.1", launch.grsim_port, client, 1, -3.0, 2.0, 600ms).value_or(0), 0.2);
+
+  // Output lines carry the process name.
+  const std::string log = launch.turf->Log();
+  EXPECT_NE(log.find("\nsim    | "), std::string::npos);
+  EXPECT_NE(log.find("\nvision | "), std::string::npos);
+
+  const pid_t new_vision = launch.ChildPid("vision");
+  launch.turf->Signal(SIGINT);
+  const auto status = launch.turf->Wait(10s);
+  ASSERT_TRUE(status.has_value()) << launch.turf->Log();
+  EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << launch.turf->Log();
+  for (pid_t pid : {sim, grsim, new_vision}) EXPECT_FALSE(Alive(pid)) << pid;
+  EXPECT_NE(launch.turf->Log().find("sim stopped (exit status 0)"), std::string::npos);
+}
+
+TEST(LaunchSupervisor, GivesUpWhenAProcessKeepsCrashing) {
+  // The vision bridge refuses its address at once: it can never run.
+  Launch launch("launch_crashloop", TestDomain(), "lc" + std::to_string(getpid()),
+                "restart: {max_restarts: 2, backoff_initial: 0.1, backoff_max: 0.2}\n",
+                {"--set", "vision.address=not-an-address"});
+  const auto status = launch.turf->Wait(20s);
+  ASSERT_TRUE(status.has_value()) << launch.turf->Log();
+  EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 1) << launch.turf->Log();
+  const std::string log = launch.turf->Log();
+  EXPECT_NE(log.find("vision crashed (exit status 2"), std::string::npos) << log;
+  EXPECT_NE(log.find("restart 2 of 2 in 0.20 s"), std::string::npos) << log;
+  EXPECT_NE(log.find("3 times in a row: giving up"), std::string::npos) << log;
+  EXPECT_NE(log.find("sim stopped (exit status 0)"), std::string::npos) << log;
+}
+
+TEST(LaunchSupervisor, ACleanExitEndsTheLaunch) {
+  Launch launch("launch_duration", TestDomain(), "ld" + std::to_string(getpid()), "sim: {speed: 4, duration: 2}\n");
+  const auto status = launch.turf->Wait(20s);
+  ASSERT_TRUE(status.has_value()) << launch.turf->Log();
+  EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << launch.turf->Log();
+  const std::string log = launch.turf->Log();
+  EXPECT_NE(log.find("sim exited cleanly"), std::string::npos) << log;
+  EXPECT_NE(log.find("vision stopped (exit status 0)"), std::string::npos) << log;
+}
+
+// Three matches at once: two on the same prefix in other domains, two in the
+// same domain with other prefixes. A robot driven in one moves in no other.
+TEST(LaunchSupervisor, MatchesOnOtherDomainsOrPrefixesDoNotSeeEachOther) {
+  const int domain = TestDomain(), other_domain = TestDomain(50);
+  const std::string prefix = "lm" + std::to_string(getpid());
+  Launch a("launch_match_a", domain, prefix);
+  Launch b("launch_match_b", other_domain, prefix);
+  Launch c("launch_match_c", domain, prefix + "_c");
+  VisionClient va("127.0.0.1", a.vision_port), vb("127.0.0.1", b.vision_port), vc("127.0.0.1", c.vision_port);
+  for (VisionClient* v : {&va, &vb, &vc}) ASSERT_TRUE(v->WaitForStream(2, 20s)) << a.turf->Log();
+  vb.Drain(100ms);
+  vc.Drain(100ms);
+  const auto b_before = vb.Robot(false, 3), c_before = vc.Robot(false, 3);
+  ASSERT_TRUE(b_before && c_before);
+  UdpSocket team;
+  EXPECT_GT(DriveBlueRobot(team, "127.0.0.1", a.grsim_port, va, 3, -3.0, 2.0, 800ms).value_or(0), 0.3);
+  vb.Drain(200ms);
+  vc.Drain(200ms);
+  for (const auto& [v, before] : {std::pair{&vb, b_before}, std::pair{&vc, c_before}}) {
+    const auto after = v->Robot(false, 3);
+    ASSERT_TRUE(after.has_value());
+    EXPECT_NEAR(after->x, before->x, 2.0);
+    EXPECT_NEAR(after->y, before->y, 2.0);
+    EXPECT_GT(after->t, before->t) << "that match kept running";
+  }
+}
+
+}  // namespace
+}  // namespace turf::test

@@ -1,0 +1,151 @@
+// turf across two hosts, for real: two network namespaces joined by a veth
+// pair (support/netns.h). turf-sim runs in one, the SSL bridges and a test
+// client that speaks grSim and SSL-Vision in the other; the only way between
+// them is the link. Every test checks the full path: a grSim command sent in
+// the bridge host moves a robot in the vision stream received there.
+// Needs root (skipped otherwise, with the reason).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "tests/multihost/support/match.h"
+#include "tests/multihost/support/netns.h"
+#include "tests/multihost/support/ssl_client.h"
+#include "tests/test_domain.h"
+
+namespace turf::test {
+namespace {
+
+using namespace std::chrono_literals;
+
+class MultiHost : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const std::string why = TwoHosts::Unavailable();
+    if (!why.empty()) GTEST_SKIP() << why;
+    hosts = std::make_unique<TwoHosts>();
+    ASSERT_TRUE(hosts->error().empty()) << hosts->error();
+    prefix = "mh" + std::to_string(getpid());
+  }
+
+  // The team's sockets, made inside the bridge host.
+  std::unique_ptr<VisionClient> Vision(int port) {
+    return hosts->InNamespace(hosts->bridge_ns(), [&] { return std::make_unique<VisionClient>("127.0.0.1", port); });
+  }
+  std::unique_ptr<UdpSocket> Team() {
+    return hosts->InNamespace(hosts->bridge_ns(), [] { return std::make_unique<UdpSocket>(); });
+  }
+
+  std::unique_ptr<TwoHosts> hosts;  // outlives the processes of the test body
+  std::string prefix;
+};
+
+// Default (multicast) discovery across the link.
+TEST_F(MultiHost, GrsimCommandMovesRobotInVisionAcrossTheLink) {
+  Match match({TestDomain(), prefix, hosts.get(), {}, "ssl_div_a"});
+  auto vision_client = Vision(match.vision_port);
+  auto team = Team();
+  ASSERT_TRUE(vision_client->ok() && team->ok());
+  auto sim = match.Sim();
+  auto grsim = match.Grsim();
+  auto vision = match.Vision();
+  const auto start = SteadyClock::now();
+  ASSERT_TRUE(vision_client->WaitForStream(4, 15s)) << vision->Log() << sim->Log();
+  const auto first = std::chrono::duration_cast<std::chrono::milliseconds>(SteadyClock::now() - start);
+  RecordProperty("vision_after_start_ms", static_cast<int>(first.count()));
+  const auto moved = DriveBlueRobot(*team, "127.0.0.1", match.grsim_port, *vision_client, 3, -3.0, 2.0, 1000ms);
+  ASSERT_TRUE(moved.has_value());
+  EXPECT_GT(*moved, 0.5) << grsim->Log();
+  EXPECT_TRUE(sim->Running() && grsim->Running() && vision->Running());
+}
+
+// Multicast dropped on the link (nftables in both namespaces): nothing is
+// found without a discovery server; with `turf launch --discovery-server` on
+// both hosts (and --start-discovery-server on the sim host) the match runs.
+TEST_F(MultiHost, DiscoveryServerWorksWithMulticastBlocked) {
+  ASSERT_TRUE(hosts->BlockMulticast()) << hosts->error();
+  const int domain = TestDomain();
+  {
+    Match plain({domain, prefix + "_plain", hosts.get(), {}, "ssl_div_a"});
+    auto vision_client = Vision(plain.vision_port);
+    auto sim = plain.Sim();
+    auto vision = plain.Vision();
+    EXPECT_FALSE(vision_client->UntilDetection(4s).has_value()) << "multicast discovery crossed a blocked link";
+  }
+  EXPECT_GT(hosts->DroppedMulticast(), 0) << "the nftables rules saw no multicast";
+
+  // A profile as a team would write one; the bridges' UDP stays on 127.0.0.1.
+  const int grsim_port = FreePort(), vision_port = FreePort();
+  const std::string profile = LogDir() + "/" + prefix + ".yaml";
+  std::ofstream(profile) << "name: multihost\n"
+                         << "scene: " << TURF_SOURCE_DIR << "/configs/scenes/ssl_div_a.yaml\n"
+                         << "realism: ideal\ndomain: " << domain << "\nprefix: " << prefix << "\n"
+                         << "bridges:\n"
+                         << "  grsim: {listen: 127.0.0.1, port: " << grsim_port << "}\n"
+                         << "  vision: {address: 127.0.0.1, port: " << vision_port << "}\n";
+  const std::string server = hosts->sim_ip() + ":11811";
+  const std::string turf = Built("participants/launcher/turf");
+  Process sim_host("launch_sim_host",
+                   hosts->In(hosts->sim_ns(), {turf, "launch", profile, "--only", "discovery,sim", "--discovery-server",
+                                               server, "--start-discovery-server"}));
+  Process bridge_host(
+      "launch_bridge_host",
+      hosts->In(hosts->bridge_ns(), {turf, "launch", profile, "--only", "grsim,vision", "--discovery-server", server}));
+  auto vision_client = Vision(vision_port);
+  auto team = Team();
+  const auto start = SteadyClock::now();
+  ASSERT_TRUE(vision_client->WaitForStream(4, 15s)) << bridge_host.Log() << sim_host.Log();
+  const auto first = std::chrono::duration_cast<std::chrono::milliseconds>(SteadyClock::now() - start);
+  RecordProperty("vision_after_start_ms", static_cast<int>(first.count()));
+  const auto moved = DriveBlueRobot(*team, "127.0.0.1", grsim_port, *vision_client, 3, -3.0, 2.0, 1000ms);
+  ASSERT_TRUE(moved.has_value());
+  EXPECT_GT(*moved, 0.5) << bridge_host.Log();
+  EXPECT_NE(sim_host.Log().find("ROS_DISCOVERY_SERVER=" + server), std::string::npos);
+  // Both launches stop cleanly on SIGINT (Ctrl-C).
+  for (Process* p : {&bridge_host, &sim_host}) {
+    p->Signal(SIGINT);
+    const auto status = p->Wait(10s);
+    ASSERT_TRUE(status.has_value()) << p->Log();
+    EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << p->Log();
+  }
+}
+
+// The link goes down for 3 s and comes back: vision resumes and commands move
+// robots again, with every process as it was.
+TEST_F(MultiHost, LinkDownForThreeSecondsBothSidesRecover) {
+  Match match({TestDomain(), prefix, hosts.get(), {}, "ssl_div_b"});
+  auto vision_client = Vision(match.vision_port);
+  auto team = Team();
+  auto sim = match.Sim();
+  auto grsim = match.Grsim();
+  auto vision = match.Vision();
+  ASSERT_TRUE(vision_client->WaitForStream(2, 15s)) << vision->Log();
+  const auto before = DriveBlueRobot(*team, "127.0.0.1", match.grsim_port, *vision_client, 1, -3.0, 2.0, 600ms);
+  ASSERT_TRUE(before.has_value());
+  ASSERT_GT(*before, 0.2);
+
+  ASSERT_TRUE(hosts->SetLink(false)) << hosts->error();
+  const auto down = SteadyClock::now();
+  vision_client->Drain(3000ms);
+  ASSERT_TRUE(hosts->SetLink(true)) << hosts->error();
+  // The stream really stopped: the link is the only way.
+  ASSERT_TRUE(vision_client->last_detection.has_value());
+  EXPECT_LT(*vision_client->last_detection - down, 300ms);
+
+  const auto resumed = vision_client->UntilDetection(10s);
+  ASSERT_TRUE(resumed.has_value()) << vision->Log();
+  RecordProperty("vision_after_link_up_ms", static_cast<int>(resumed->count()));
+  std::printf("vision resumed %lld ms after the link came back\n", static_cast<long long>(resumed->count()));
+  const auto after = DriveBlueRobot(*team, "127.0.0.1", match.grsim_port, *vision_client, 1, -3.0, 2.0, 600ms);
+  ASSERT_TRUE(after.has_value());
+  EXPECT_GT(*after, 0.2) << grsim->Log();
+  EXPECT_TRUE(sim->Running() && grsim->Running() && vision->Running());
+}
+
+}  // namespace
+}  // namespace turf::test

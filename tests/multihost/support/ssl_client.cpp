@@ -1,0 +1,147 @@
+#include "tests/multihost/support/ssl_client.h"
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include "tests/e2e/proto/team_grsim.pb.h"
+#include "tests/e2e/proto/team_vision.pb.h"
+
+namespace turf::test {
+
+namespace {
+
+sockaddr_in Address(const std::string& ip, int port) {
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  inet_pton(AF_INET, ip.c_str(), &a.sin_addr);
+  a.sin_port = htons(static_cast<uint16_t>(port));
+  return a;
+}
+
+}  // namespace
+
+UdpSocket::UdpSocket(const std::string& ip, int port) {
+  fd_ = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  const sockaddr_in a = Address(ip, port);
+  if (fd_ >= 0 && bind(fd_, reinterpret_cast<const sockaddr*>(&a), sizeof(a)) != 0) {
+    close(fd_);
+    fd_ = -1;
+    return;
+  }
+  timeval tv{0, 20000};
+  setsockopt(fd_, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof(tv));
+}
+
+UdpSocket::~UdpSocket() {
+  if (fd_ >= 0) close(fd_);
+}
+
+void UdpSocket::Send(const std::string& bytes, const std::string& ip, int port) {
+  const sockaddr_in a = Address(ip, port);
+  sendto(fd_, bytes.data(), bytes.size(), 0, reinterpret_cast<const sockaddr*>(&a), sizeof(a));
+}
+
+std::optional<std::string> UdpSocket::Receive() {
+  char buf[65536];
+  const ssize_t n = recv(fd_, buf, sizeof(buf), 0);
+  if (n < 0) return std::nullopt;
+  return std::string(buf, static_cast<size_t>(n));
+}
+
+bool VisionClient::ReadOne() {
+  const auto bytes = socket_.Receive();
+  if (!bytes) return false;
+  team::vision::SSL_WrapperPacket p;
+  if (!p.ParseFromString(*bytes)) return true;
+  if (p.has_geometry()) geometry = true;
+  if (!p.has_detection()) return true;
+  const auto& d = p.detection();
+  ++detections;
+  last_detection = SteadyClock::now();
+  cameras[d.camera_id()] = d.frame_number();
+  for (const auto& r : d.robots_blue()) robots_[{false, r.robot_id()}] = {r.x(), r.y(), d.t_capture()};
+  for (const auto& r : d.robots_yellow()) robots_[{true, r.robot_id()}] = {r.x(), r.y(), d.t_capture()};
+  return true;
+}
+
+void VisionClient::Drain(std::chrono::milliseconds duration) {
+  const auto end = SteadyClock::now() + duration;
+  while (SteadyClock::now() < end) ReadOne();
+}
+
+std::optional<std::chrono::milliseconds> VisionClient::UntilDetection(std::chrono::milliseconds timeout) {
+  const auto start = SteadyClock::now();
+  const int before = detections;
+  while (SteadyClock::now() - start < timeout) {
+    ReadOne();
+    if (detections > before) return std::chrono::duration_cast<std::chrono::milliseconds>(*last_detection - start);
+  }
+  return std::nullopt;
+}
+
+bool VisionClient::WaitForStream(size_t n, std::chrono::milliseconds timeout) {
+  const auto end = SteadyClock::now() + timeout;
+  while (SteadyClock::now() < end && (cameras.size() < n || !geometry)) ReadOne();
+  return cameras.size() >= n && geometry;
+}
+
+std::optional<Seen> VisionClient::Robot(bool yellow, uint32_t id) const {
+  auto it = robots_.find({yellow, id});
+  if (it == robots_.end()) return std::nullopt;
+  return it->second;
+}
+
+std::string GrsimMove(bool yellow, int id, double forward, double left, double angular) {
+  team::grsim::grSim_Packet p;
+  auto* c = p.mutable_commands();
+  c->set_timestamp(0);
+  c->set_isteamyellow(yellow);
+  auto* r = c->add_robot_commands();
+  r->set_id(static_cast<uint32_t>(id));
+  r->set_kickspeedx(0);
+  r->set_kickspeedz(0);
+  r->set_veltangent(static_cast<float>(forward));
+  r->set_velnormal(static_cast<float>(left));
+  r->set_velangular(static_cast<float>(angular));
+  r->set_spinner(false);
+  r->set_wheelsspeed(false);
+  return p.SerializeAsString();
+}
+
+std::string GrsimPlace(bool yellow, int id, double x, double y, double dir_deg) {
+  team::grsim::grSim_Packet p;
+  auto* r = p.mutable_replacement()->add_robots();
+  r->set_x(x);
+  r->set_y(y);
+  r->set_dir(dir_deg);
+  r->set_id(static_cast<uint32_t>(id));
+  r->set_yellowteam(yellow);
+  r->set_turnon(true);
+  return p.SerializeAsString();
+}
+
+void KeepSending(UdpSocket& team, const std::string& packet, const std::string& ip, int port, VisionClient& vision,
+                 std::chrono::milliseconds duration) {
+  const auto end = SteadyClock::now() + duration;
+  while (SteadyClock::now() < end) {
+    team.Send(packet, ip, port);
+    vision.Drain(std::chrono::milliseconds(16));
+  }
+}
+
+std::optional<double> DriveBlueRobot(UdpSocket& team, const std::string& ip, int port, VisionClient& vision, int id,
+                                     double x, double y, std::chrono::milliseconds drive) {
+  using std::chrono::milliseconds;
+  KeepSending(team, GrsimPlace(false, id, x, y, 0.0), ip, port, vision, milliseconds(300));
+  KeepSending(team, GrsimMove(false, id, 0.0, 0.0, 0.0), ip, port, vision, milliseconds(100));
+  const auto before = vision.Robot(false, static_cast<uint32_t>(id));
+  KeepSending(team, GrsimMove(false, id, 1.0, 0.0, 0.0), ip, port, vision, drive);
+  const auto after = vision.Robot(false, static_cast<uint32_t>(id));
+  KeepSending(team, GrsimMove(false, id, 0.0, 0.0, 0.0), ip, port, vision, milliseconds(50));
+  if (!before || !after) return std::nullopt;
+  return (after->x - before->x) / 1000.0;
+}
+
+}  // namespace turf::test

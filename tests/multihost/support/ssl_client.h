@@ -1,0 +1,76 @@
+// What an SSL team's software does, for the multi-host, fault and launch
+// tests: sends grSim packets and decodes the SSL-Vision stream, with the test
+// client's own protos (tests/e2e/proto), over plain UDP sockets on an address
+// of the caller's choice (127.0.0.1: unicast within one host).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+
+namespace turf::test {
+
+using SteadyClock = std::chrono::steady_clock;
+
+// A UDP socket bound to ip:port (port 0: any), made in the calling thread's
+// network namespace; receives with a 20 ms timeout.
+class UdpSocket {
+ public:
+  explicit UdpSocket(const std::string& ip = "127.0.0.1", int port = 0);
+  ~UdpSocket();
+  UdpSocket(const UdpSocket&) = delete;
+  UdpSocket& operator=(const UdpSocket&) = delete;
+  bool ok() const { return fd_ >= 0; }
+  void Send(const std::string& bytes, const std::string& ip, int port);
+  std::optional<std::string> Receive();
+
+ private:
+  int fd_ = -1;
+};
+
+struct Seen {
+  double x = 0, y = 0, t = 0;  // mm, mm, t_capture
+};
+
+// The SSL-Vision stream as a team decodes it.
+class VisionClient {
+ public:
+  explicit VisionClient(const std::string& ip, int port) : socket_(ip, port) {}
+  bool ok() const { return socket_.ok(); }
+  // Reads everything that arrives for `duration`.
+  void Drain(std::chrono::milliseconds duration);
+  // Reads until a detection arrives; the time it took, or nullopt after `timeout`.
+  std::optional<std::chrono::milliseconds> UntilDetection(std::chrono::milliseconds timeout);
+  // Reads until every one of `cameras` cameras and geometry were seen.
+  bool WaitForStream(size_t cameras, std::chrono::milliseconds timeout);
+  std::optional<Seen> Robot(bool yellow, uint32_t id) const;
+
+  int detections = 0;
+  bool geometry = false;
+  std::map<uint32_t, uint32_t> cameras;  // camera id -> last frame number
+  std::optional<SteadyClock::time_point> last_detection;
+
+ private:
+  bool ReadOne();  // false if nothing arrived within the socket timeout
+  UdpSocket socket_;
+  std::map<std::pair<bool, uint32_t>, Seen> robots_;
+};
+
+// grSim packets: a local-velocity command for one robot, and a replacement.
+std::string GrsimMove(bool yellow, int id, double forward, double left, double angular);
+std::string GrsimPlace(bool yellow, int id, double x, double y, double dir_deg);
+
+// Sends `packet` at ~60 Hz to ip:port for `duration` while draining vision.
+void KeepSending(UdpSocket& team, const std::string& packet, const std::string& ip, int port, VisionClient& vision,
+                 std::chrono::milliseconds duration);
+
+// Places robot `id` of blue at (x, y) facing +x, drives it forward at 1 m/s for
+// `drive` and returns how far it moved in x (m) in the vision stream; nullopt
+// if it was never seen.
+std::optional<double> DriveBlueRobot(UdpSocket& team, const std::string& ip, int port, VisionClient& vision, int id,
+                                     double x, double y, std::chrono::milliseconds drive);
+
+}  // namespace turf::test
