@@ -88,37 +88,36 @@ void AddFlags(const std::vector<Flag>& flags, std::vector<std::string>* argv) {
   }
 }
 
-}  // namespace
-
-LaunchPlan BuildPlan(LaunchProfile profile, const LaunchOverrides& o, const std::string& self_dir) {
-  LaunchPlan plan;
-  std::vector<std::string>& errors = plan.errors;
+void ApplyOverrides(const LaunchOverrides& o, LaunchProfile* profile, std::vector<std::string>* errors) {
   if (o.domain) {
-    if (*o.domain < 0 || *o.domain > 232) errors.push_back("--domain: must be 0..232");
-    profile.domain = *o.domain;
+    if (*o.domain < 0 || *o.domain > 232) errors->push_back("--domain: must be 0..232");
+    profile->domain = *o.domain;
   }
   if (o.prefix) {
-    if (!ValidPrefix(*o.prefix)) errors.push_back("--prefix: letters, digits, '_', '-' and '/' only, not empty");
-    profile.prefix = *o.prefix;
+    if (!ValidPrefix(*o.prefix)) errors->push_back("--prefix: letters, digits, '_', '-' and '/' only, not empty");
+    profile->prefix = *o.prefix;
   }
   if (o.realism) {
     const RealismLoadResult r = LoadRealism(*o.realism);
-    if (!r.realism) errors.push_back(fmt::format("--realism {}: {}", *o.realism, fmt::join(r.errors, "; ")));
-    profile.realism = *o.realism;
+    if (!r.realism) errors->push_back(fmt::format("--realism {}: {}", *o.realism, fmt::join(r.errors, "; ")));
+    profile->realism = *o.realism;
   }
   if (o.discovery_server) {
     std::string host;
     int port = 0;
     if (!ParseHostPort(*o.discovery_server, &host, &port))
-      errors.push_back(fmt::format("--discovery-server {}: expected HOST:PORT", *o.discovery_server));
-    profile.discovery.server = *o.discovery_server;
+      errors->push_back(fmt::format("--discovery-server {}: expected HOST:PORT", *o.discovery_server));
+    profile->discovery.server = *o.discovery_server;
   }
   if (o.start_discovery_server) {
-    if (profile.discovery.server.empty()) errors.push_back("--start-discovery-server needs --discovery-server");
-    profile.discovery.start = true;
+    if (profile->discovery.server.empty()) errors->push_back("--start-discovery-server needs --discovery-server");
+    profile->discovery.start = true;
   }
-  for (const std::string& set : o.sets) ApplySet(set, &profile, &errors);
+  for (const std::string& set : o.sets) ApplySet(set, profile, errors);
+}
 
+// The processes of the profile, in start order.
+std::vector<ProcessSpec> Specs(const LaunchProfile& profile) {
   std::vector<ProcessSpec> specs;
   if (profile.discovery.start) {
     std::string host;
@@ -128,45 +127,56 @@ LaunchPlan BuildPlan(LaunchProfile profile, const LaunchOverrides& o, const std:
   }
   specs.push_back(profile.sim);
   specs.insert(specs.end(), profile.bridges.begin(), profile.bridges.end());
+  return specs;
+}
 
+ProcessCommand MakeCommand(const ProcessSpec& spec, const LaunchProfile& profile, const std::string& binary) {
+  ProcessCommand command{spec.name, {binary}, {}};
+  if (spec.name == "discovery") {
+    // Stopped last, so the others' goodbyes still reach their peers through it.
+    command.stop_last = true;
+    for (const Flag& f : spec.flags) command.argv.insert(command.argv.end(), {"-" + f.name, f.value});
+    return command;
+  }
+  if (spec.name == "sim") {
+    command.argv.insert(command.argv.end(), {"--scene", profile.scene});
+    if (!profile.realism.empty()) command.argv.insert(command.argv.end(), {"--realism", profile.realism});
+  }
+  command.argv.insert(command.argv.end(), {"--domain", std::to_string(profile.domain), "--prefix", profile.prefix});
+  if (!profile.qos.empty()) command.argv.insert(command.argv.end(), {"--qos", profile.qos});
+  AddFlags(spec.flags, &command.argv);
+  if (!profile.discovery.server.empty()) command.env.emplace_back("ROS_DISCOVERY_SERVER", profile.discovery.server);
+  return command;
+}
+
+}  // namespace
+
+LaunchPlan BuildPlan(LaunchProfile profile, const LaunchOverrides& o, const std::string& self_dir) {
+  LaunchPlan plan;
+  ApplyOverrides(o, &profile, &plan.errors);
+  const std::vector<ProcessSpec> specs = Specs(profile);
   std::set<std::string> only(o.only.begin(), o.only.end());
+  // Asked for on this command line: runs here, whatever --only says.
+  if (o.start_discovery_server && !only.empty()) only.insert("discovery");
   for (const std::string& name : only) {
-    const bool known =
-        std::any_of(specs.begin(), specs.end(), [&name](const ProcessSpec& s) { return s.name == name; });
-    if (!known) {
+    if (std::none_of(specs.begin(), specs.end(), [&name](const ProcessSpec& s) { return s.name == name; })) {
       std::vector<std::string> names;
       for (const ProcessSpec& s : specs) names.push_back(s.name);
-      errors.push_back(fmt::format("--only {}: the profile runs no such process ({})", name, fmt::join(names, ", ")));
+      plan.errors.push_back(
+          fmt::format("--only {}: the profile runs no such process ({})", name, fmt::join(names, ", ")));
     }
   }
-
   for (const ProcessSpec& spec : specs) {
     if (!only.empty() && only.count(spec.name) == 0) continue;
     const Program* program = FindProgram(spec.name);
-    ProcessCommand command{spec.name, {}, {}};
-    const std::string binary = FindBinary(*program, o.bin_dir, self_dir);
+    std::string binary = FindBinary(*program, o.bin_dir, self_dir);
     if (binary.empty()) {
-      errors.push_back(fmt::format(
+      plan.errors.push_back(fmt::format(
           "{}: cannot find {} ({})", spec.name, program->binary,
           program->build_dir.empty() ? "install it; Debian: fastdds-tools" : "build turf, or give --bin-dir"));
+      binary = program->binary;
     }
-    command.argv.push_back(binary.empty() ? std::string(program->binary) : binary);
-    if (spec.name == "discovery") {
-      // Stopped last, so the others' goodbyes still reach their peers through it.
-      command.stop_last = true;
-      for (const Flag& f : spec.flags) command.argv.insert(command.argv.end(), {"-" + f.name, f.value});
-      plan.commands.push_back(command);
-      continue;
-    }
-    if (spec.name == "sim") {
-      command.argv.insert(command.argv.end(), {"--scene", profile.scene});
-      if (!profile.realism.empty()) command.argv.insert(command.argv.end(), {"--realism", profile.realism});
-    }
-    command.argv.insert(command.argv.end(), {"--domain", std::to_string(profile.domain), "--prefix", profile.prefix});
-    if (!profile.qos.empty()) command.argv.insert(command.argv.end(), {"--qos", profile.qos});
-    AddFlags(spec.flags, &command.argv);
-    if (!profile.discovery.server.empty()) command.env.emplace_back("ROS_DISCOVERY_SERVER", profile.discovery.server);
-    plan.commands.push_back(command);
+    plan.commands.push_back(MakeCommand(spec, profile, binary));
   }
   plan.domain = profile.domain;
   plan.prefix = profile.prefix;

@@ -17,10 +17,10 @@ struct LaunchOverrides {
   std::optional<std::string> prefix;
   std::optional<std::string> realism;
   std::optional<std::string> discovery_server;  // HOST:PORT
-  bool start_discovery_server = false;
-  std::vector<std::string> sets;  // "PROCESS.FLAG=VALUE" (VALUE true/false: a switch)
-  std::vector<std::string> only;  // process names to run; empty: all
-  std::string bin_dir;            // where the turf executables are; empty: next to `turf`, then PATH
+  bool start_discovery_server = false;          // also with --only: this host runs the server
+  std::vector<std::string> sets;                // "PROCESS.FLAG=VALUE" (VALUE true/false: a switch)
+  std::vector<std::string> only;                // process names to run here; empty: all
+  std::string bin_dir;                          // where the turf executables are; empty: next to `turf`, then PATH
 };
 
 struct ProcessCommand {

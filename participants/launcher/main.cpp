@@ -47,7 +47,8 @@ int main(int argc, char** argv) {
       "--discovery-server", discovery_server,
       "HOST:PORT of a Fast DDS discovery server: every process gets ROS_DISCOVERY_SERVER (no multicast needed)");
   launch->add_flag("--start-discovery-server", overrides.start_discovery_server,
-                   "also run fast-discovery-server on the --discovery-server address (on the host that has it)");
+                   "also run fast-discovery-server on the --discovery-server address (on the host that has it; "
+                   "even with --only)");
   launch->add_option("--only", overrides.only, "run only these processes (discovery, sim, grsim, vision, simproto)")
       ->delimiter(',');
   launch->add_option("--set", overrides.sets, "PROCESS.FLAG=VALUE: change one process's flag (repeatable)");

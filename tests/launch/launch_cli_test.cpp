@@ -92,6 +92,21 @@ TEST(LaunchCli, PrintWithOverridesAndADiscoveryServer) {
   ExpectRunnable(lines);
 }
 
+// The physics host of a split match: --start-discovery-server runs the server
+// there even with --only sim.
+TEST(LaunchCli, StartDiscoveryServerRunsItWhateverOnlySays) {
+  std::string out;
+  ASSERT_EQ(RunCommand({Turf(), "launch", "ssl_div_b", "--print", "--only", "sim", "--discovery-server",
+                        "10.0.0.1:11811", "--start-discovery-server"},
+                       &out),
+            0)
+      << out;
+  const std::vector<std::string> lines = Lines(out);
+  ASSERT_EQ(lines.size(), 2u) << out;
+  EXPECT_NE(lines[0].find("fast-discovery-server"), std::string::npos);
+  EXPECT_NE(lines[1].find("turf-sim"), std::string::npos);
+}
+
 TEST(LaunchCli, ProfileErrorsNameTheKeyAndExitWith2) {
   const std::string path = std::string(TURF_BINARY_DIR) + "/tests/bad_profile_" + std::to_string(getpid()) + ".yaml";
   std::ofstream(path) << "scene: " << TURF_SOURCE_DIR << "/configs/scenes/ssl_div_a.yaml\ndomian: 3\n";

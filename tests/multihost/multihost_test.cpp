@@ -91,8 +91,8 @@ TEST_F(MultiHost, DiscoveryServerWorksWithMulticastBlocked) {
   const std::string server = hosts->sim_ip() + ":11811";
   const std::string turf = Built("participants/launcher/turf");
   Process sim_host("launch_sim_host",
-                   hosts->In(hosts->sim_ns(), {turf, "launch", profile, "--only", "discovery,sim", "--discovery-server",
-                                               server, "--start-discovery-server"}));
+                   hosts->In(hosts->sim_ns(), {turf, "launch", profile, "--only", "sim", "--discovery-server", server,
+                                               "--start-discovery-server"}));
   Process bridge_host(
       "launch_bridge_host",
       hosts->In(hosts->bridge_ns(), {turf, "launch", profile, "--only", "grsim,vision", "--discovery-server", server}));
