@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <map>
 #include <condition_variable>
 #include <mutex>
 #include <optional>
@@ -176,15 +177,27 @@ class VisionBridge::Impl {
       // A new capture time starts a round: geometry goes out ahead of its
       // frames, and the round's cameras share one wall-clock reading, so frames
       // captured together carry the same t_capture (as the sim captured them).
-      if (!last_capture_ns_ || *last_capture_ns_ != frame.capture_time_ns()) {
-        last_capture_ns_ = frame.capture_time_ns();
-        round_unix_now_ = UnixNow();
-        ++rounds_since_geometry_;
-        if (field_ && options_.geometry_every > 0 && rounds_since_geometry_ >= options_.geometry_every) SendGeometry();
+      // Rounds are remembered by capture time, not by arrival order: a reader
+      // that fell behind takes several rounds' frames camera by camera.
+      // A jump back by more than a second is a reset of the simulation: a new timeline.
+      if (last_capture_ns_ && frame.capture_time_ns() + 1'000'000'000 < *last_capture_ns_) {
+        round_unix_now_.clear();
+        last_capture_ns_.reset();
+      }
+      auto round = round_unix_now_.find(frame.capture_time_ns());
+      if (round == round_unix_now_.end()) {
+        round = round_unix_now_.emplace(frame.capture_time_ns(), UnixNow()).first;
+        if (round_unix_now_.size() > kRememberedRounds) round_unix_now_.erase(round_unix_now_.begin());
+        if (!last_capture_ns_ || frame.capture_time_ns() > *last_capture_ns_) {
+          last_capture_ns_ = frame.capture_time_ns();
+          ++rounds_since_geometry_;
+          if (field_ && options_.geometry_every > 0 && rounds_since_geometry_ >= options_.geometry_every)
+            SendGeometry();
+        }
       }
       vision::FrameTimes times{};
       const vision::VisionError te =
-          wire_clock_.ForFrame(frame.capture_time_ns(), frame.sent_time_ns(), round_unix_now_, &times);
+          wire_clock_.ForFrame(frame.capture_time_ns(), frame.sent_time_ns(), round->second, &times);
       if (te != vision::VisionError::kOk) {
         Reject(fmt::format("camera.{}", vision::VisionErrorName(te)),
                fmt::format("camera {} captured at {} ns, sent at {} ns", frame.camera_id(), frame.capture_time_ns(),
@@ -272,7 +285,8 @@ class VisionBridge::Impl {
   std::optional<idl::SslField> field_;
   std::vector<uint8_t> geometry_bytes_;
   std::optional<int64_t> last_capture_ns_;
-  double round_unix_now_ = 0.0;
+  static constexpr size_t kRememberedRounds = 32;
+  std::map<int64_t, double> round_unix_now_;  // capture time (sim ns) -> wall-clock reading
   int rounds_since_geometry_ = 0;
   bool receiving_ = false;
   uint64_t reported_overflow_ = 0;
