@@ -225,6 +225,21 @@ void WaitForVision(Match& m, VisionClient& v) {
   ASSERT_TRUE(v.geometry.has_value());
 }
 
+// Sends a command at ~60 Hz until the robot's vision stamps (simulation time)
+// have advanced by `sim_seconds` from now: waits hold on a slow machine.
+std::optional<Seen> KeepFor(Udp& team, const std::string& packet, int port, VisionClient& v, int team_id, int id,
+                            double sim_seconds) {
+  const auto start = v.Robot(team_id, id);
+  const auto end = Clock::now() + 20s;
+  while (Clock::now() < end) {
+    team.Send(packet, port);
+    v.Drain(16ms);
+    const auto now = v.Robot(team_id, id);
+    if (start && now && now->t - start->t >= sim_seconds) return now;
+  }
+  return std::nullopt;
+}
+
 // Sends a command repeatedly at ~60 Hz (as a team does) while draining vision.
 void Keep(Udp& team, const std::string& packet, int port, VisionClient& v, std::chrono::milliseconds duration) {
   const auto end = Clock::now() + duration;
@@ -241,10 +256,9 @@ TEST(SslEndToEnd, GrsimCommandMovesRobotAtCommandedSpeedInVision) {
   Udp team;
   // A free lane of the kick-off formation: y = 2 m, from x = -3 m towards the halfway line.
   Keep(team, GrsimPlace(false, 3, -3.0, 2.0, 0.0), m.grsim_port, v, 300ms);
-  Keep(team, GrsimMove(false, 3, 1.0, 0.0, 0.0), m.grsim_port, v, 800ms);  // through the ramp
-  const auto a = v.Robot(0, 3);
-  Keep(team, GrsimMove(false, 3, 1.0, 0.0, 0.0), m.grsim_port, v, 1000ms);
-  const auto b = v.Robot(0, 3);
+  // Through the 1/3 s ramp, then measure over 0.8 s, all in simulation time.
+  const auto a = KeepFor(team, GrsimMove(false, 3, 1.0, 0.0, 0.0), m.grsim_port, v, 0, 3, 0.6);
+  const auto b = KeepFor(team, GrsimMove(false, 3, 1.0, 0.0, 0.0), m.grsim_port, v, 0, 3, 0.8);
   ASSERT_TRUE(a && b);
   const double speed = (b->x - a->x) / 1000.0 / (b->t - a->t);
   EXPECT_NEAR(speed, 1.0, 0.05);
@@ -283,9 +297,13 @@ TEST(SslEndToEnd, KickGivesTheBallTheCommandedSpeed) {
   size_t i = 0;
   while (i + 1 < v.ball_track.size() && v.ball_track[i + 1].x - v.ball_track[i].x < 1.0) ++i;
   size_t j = i + 1;
-  while (j < v.ball_track.size() && v.ball_track[j].t - v.ball_track[i].t < 0.1) ++j;
+  while (j < v.ball_track.size() && v.ball_track[j].t - v.ball_track[i].t < 0.05) ++j;
   ASSERT_LT(j, v.ball_track.size()) << "the ball never moved";
-  const double speed = (v.ball_track[j].x - v.ball_track[i].x) / 1000.0 / (v.ball_track[j].t - v.ball_track[i].t);
+  // The mean speed over [t_i, t_j] plus the sliding deceleration (the scene's
+  // 3 m/s^2) over half the window is the speed at t_i, however many frames a
+  // loaded machine dropped in between.
+  const double dt = v.ball_track[j].t - v.ball_track[i].t;
+  const double speed = (v.ball_track[j].x - v.ball_track[i].x) / 1000.0 / dt + 3.0 * dt / 2;
   EXPECT_NEAR(speed, 4.0, 0.3);
 }
 
@@ -341,15 +359,17 @@ TEST(SslEndToEnd, SimulationProtocolMovesOnlyItsOwnTeam) {
     t->set_present(true);
   }
   team.Send(cmd.SerializeAsString(), m.control_port);
-  v.Drain(500ms);
+  const auto placed_by = Clock::now() + 5s;
+  do {
+    v.Drain(50ms);
+  } while (Clock::now() < placed_by && !(v.Robot(1, 2) && std::abs(v.Robot(1, 2)->x + 3000.0) < 5.0));
+  v.Drain(100ms);
   const auto yellow_before = v.Robot(1, 2);
   ASSERT_TRUE(yellow_before);
   EXPECT_NEAR(yellow_before->x, -3000.0, 5.0);
   // The blue port commands blue 2 only.
-  Keep(team, SimprotoMove(2, 1.0), m.blue_port, v, 800ms);
-  const auto a = v.Robot(0, 2);
-  Keep(team, SimprotoMove(2, 1.0), m.blue_port, v, 1000ms);
-  const auto b = v.Robot(0, 2);
+  const auto a = KeepFor(team, SimprotoMove(2, 1.0), m.blue_port, v, 0, 2, 0.6);
+  const auto b = KeepFor(team, SimprotoMove(2, 1.0), m.blue_port, v, 0, 2, 0.8);
   ASSERT_TRUE(a && b);
   EXPECT_NEAR((b->x - a->x) / 1000.0 / (b->t - a->t), 1.0, 0.05);
   const auto yellow_after = v.Robot(1, 2);
@@ -394,9 +414,10 @@ TEST(SslEndToEnd, ErForceRealismKnobsChangeTheVisionStream) {
   v.robots.clear();
   v.send_delays.clear();
   std::vector<double> xs;
-  const auto end = Clock::now() + 2s;
+  // 400 detections (about 0.4 s of simulation time), however fast the machine.
+  const auto end = Clock::now() + 20s;
   int delayed = 0, frames = 0;
-  while (Clock::now() < end) {
+  while (Clock::now() < end && v.send_delays.size() < 400) {
     v.Drain(50ms);
     if (auto r = v.Robot(0, 10)) xs.push_back(r->x);
   }
