@@ -22,6 +22,8 @@ enum class Topic {
   kRobotImu,
   kRobotForce,
   kRobotJointCommand,
+  kRobotLinks,
+  kLeggedScene,
 };
 
 struct TopicInfo {
@@ -51,6 +53,9 @@ inline constexpr TopicInfo kTopics[] = {
     {Topic::kRobotForce, "robots/force", "turf.state", "ForceState", "legged robots' touch and force sensors"},
     {Topic::kRobotJointCommand, "robots/joint_command", "turf.command", "JointCommand",
      "legged robots' joint targets, keyed by robot"},
+    {Topic::kRobotLinks, "robots/links", "turf.state", "LinkState", "legged robots' body poses, keyed by robot"},
+    {Topic::kLeggedScene, "legged/scene", "turf.field", "LeggedSceneInfo",
+     "legged scene: robots' shapes, 3D field size (latched)"},
 };
 
 const TopicInfo& Info(Topic topic);

@@ -58,6 +58,10 @@ struct LeggedWorld::SensorRef {
 struct LeggedWorld::RobotSlot {
   const LeggedRobot* spec = nullptr;
   int base_body = -1;
+  int root_qpos = -1;  // the base's free joint, -1 if the robot is fixed to the world
+  int root_dof = -1;
+  std::vector<int> bodies;              // every body of the robot
+  std::vector<std::string> body_names;  // without the robot prefix
   std::vector<JointSlot> joints;
   int gyro = -1;  // sensordata addresses, -1 if absent
   int accelerometer = -1;
@@ -107,6 +111,16 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
       if (m->body_parentid[b] == 0 && StartsWith(mj_id2name(m, mjOBJ_BODY, b), prefix)) slot.base_body = b;
     }
     if (slot.base_body < 0) throw std::invalid_argument(fmt::format("robot {} has no body", spec.name));
+    const int root_joint = m->body_jntadr[slot.base_body];
+    if (root_joint >= 0 && m->jnt_type[root_joint] == mjJNT_FREE) {
+      slot.root_qpos = m->jnt_qposadr[root_joint];
+      slot.root_dof = m->jnt_dofadr[root_joint];
+    }
+    for (int b = 1; b < m->nbody; ++b) {
+      if (m->body_rootid[b] != slot.base_body) continue;
+      slot.bodies.push_back(b);
+      slot.body_names.push_back(std::string(mj_id2name(m, mjOBJ_BODY, b)).substr(prefix.size()));
+    }
     for (int j = 0; j < m->njnt; ++j) {
       const char* name = mj_id2name(m, mjOBJ_JOINT, j);
       if (!StartsWith(name, prefix)) continue;
@@ -152,13 +166,117 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
 LeggedWorld::~LeggedWorld() = default;
 
 void LeggedWorld::ResetCommands() {
-  for (RobotSlot& r : robots_) {
-    for (JointSlot& j : r.joints) {
-      j.command = JointCommand{};
-      j.reference = data_->qpos[j.qpos];
-      j.effort = 0.0;
+  for (RobotSlot& r : robots_) ResetCommands(&r);
+}
+
+void LeggedWorld::ResetCommands(RobotSlot* r) {
+  for (JointSlot& j : r->joints) {
+    j.command = JointCommand{};
+    j.reference = data_->qpos[j.qpos];
+    j.effort = 0.0;
+  }
+}
+
+void LeggedWorld::AcceptState() {
+  last_good_qpos_.assign(data_->qpos, data_->qpos + model_->nq);
+  last_good_qvel_.assign(data_->qvel, data_->qvel + model_->nv);
+}
+
+const char* PlacementErrorName(PlacementError error) {
+  switch (error) {
+    case PlacementError::kOk:
+      return "ok";
+    case PlacementError::kUnknownRobot:
+      return "unknown_robot";
+    case PlacementError::kNotFinite:
+      return "not_finite";
+    case PlacementError::kNoBall:
+      return "no_ball";
+  }
+  return "?";
+}
+
+PlacementError LeggedWorld::PlaceRobot(int robot, const RobotPlacement& p) {
+  if (robot < 0 || robot >= RobotCount() || robots_[robot].root_qpos < 0) return PlacementError::kUnknownRobot;
+  double norm = 0.0;
+  for (double v : p.position)
+    if (!std::isfinite(v)) return PlacementError::kNotFinite;
+  for (double v : p.orientation) {
+    if (!std::isfinite(v)) return PlacementError::kNotFinite;
+    norm += v * v;
+  }
+  if (norm < 1e-12) return PlacementError::kNotFinite;
+  RobotSlot& r = robots_[robot];
+  const mjModel* m = model_.get();
+  mjData* d = data_.get();
+  for (int k = 0; k < 3; ++k) d->qpos[r.root_qpos + k] = p.position[k];
+  for (int k = 0; k < 4; ++k) d->qpos[r.root_qpos + 3 + k] = p.orientation[k] / std::sqrt(norm);
+  for (int k = 0; k < 6; ++k) d->qvel[r.root_dof + k] = 0.0;
+  for (JointSlot& j : r.joints) {
+    if (p.reset_joints) d->qpos[j.qpos] = m->qpos0[j.qpos];
+    d->qvel[j.dof] = 0.0;
+    j.reference = d->qpos[j.qpos];
+  }
+  if (p.reset_joints) ResetCommands(&r);
+  mj_forward(m, d);
+  AcceptState();
+  return PlacementError::kOk;
+}
+
+PlacementError LeggedWorld::PlaceBall(const std::array<double, 3>& position, const std::array<double, 3>& velocity) {
+  if (ball_body_ < 0) return PlacementError::kNoBall;
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(position[k]) || !std::isfinite(velocity[k])) return PlacementError::kNotFinite;
+  const mjModel* m = model_.get();
+  mjData* d = data_.get();
+  const int qpos = m->jnt_qposadr[m->body_jntadr[ball_body_]];
+  for (int k = 0; k < 3; ++k) d->qpos[qpos + k] = position[k];
+  for (int k = 0; k < 3; ++k) {
+    d->qvel[ball_qvel_ + k] = velocity[k];
+    d->qvel[ball_qvel_ + 3 + k] = 0.0;
+  }
+  mj_forward(m, d);
+  AcceptState();
+  return PlacementError::kOk;
+}
+
+std::vector<LeggedGeom> LeggedWorld::RobotGeoms(int robot) const {
+  std::vector<LeggedGeom> out;
+  if (robot < 0 || robot >= RobotCount()) return out;
+  const mjModel* m = model_.get();
+  const RobotSlot& r = robots_[robot];
+  for (size_t i = 0; i < r.bodies.size(); ++i) {
+    const int b = r.bodies[i];
+    for (int g = m->body_geomadr[b]; g >= 0 && g < m->body_geomadr[b] + m->body_geomnum[b]; ++g) {
+      LeggedGeom geom;
+      geom.body = r.body_names[i];
+      switch (m->geom_type[g]) {
+        case mjGEOM_BOX:
+          geom.shape = LeggedGeom::Shape::kBox;
+          break;
+        case mjGEOM_SPHERE:
+          geom.shape = LeggedGeom::Shape::kSphere;
+          break;
+        case mjGEOM_CAPSULE:
+          geom.shape = LeggedGeom::Shape::kCapsule;
+          break;
+        case mjGEOM_CYLINDER:
+          geom.shape = LeggedGeom::Shape::kCylinder;
+          break;
+        case mjGEOM_ELLIPSOID:
+          geom.shape = LeggedGeom::Shape::kEllipsoid;
+          break;
+        default:
+          geom.shape = LeggedGeom::Shape::kOther;
+          break;
+      }
+      for (int k = 0; k < 3; ++k) geom.size[k] = m->geom_size[3 * g + k];
+      for (int k = 0; k < 3; ++k) geom.position[k] = m->geom_pos[3 * g + k];
+      for (int k = 0; k < 4; ++k) geom.orientation[k] = m->geom_quat[4 * g + k];
+      out.push_back(geom);
     }
   }
+  return out;
 }
 
 void LeggedWorld::Reset() {
@@ -166,8 +284,7 @@ void LeggedWorld::Reset() {
   frame_ = 0;
   mj_forward(model_.get(), data_.get());
   ResetCommands();
-  last_good_qpos_.assign(data_->qpos, data_->qpos + model_->nq);
-  last_good_qvel_.assign(data_->qvel, data_->qvel + model_->nv);
+  AcceptState();
 }
 
 int LeggedWorld::RobotCount() const { return static_cast<int>(robots_.size()); }
@@ -275,8 +392,7 @@ bool LeggedWorld::StagePhysics() {
 void LeggedWorld::Step() {
   StageServos();
   if (StagePhysics()) {
-    last_good_qpos_.assign(data_->qpos, data_->qpos + model_->nq);
-    last_good_qvel_.assign(data_->qvel, data_->qvel + model_->nv);
+    AcceptState();
   } else {
     // Stage 3: undo a step that blew up, at rest, and hold every joint there.
     ++health_.instability_recoveries;
@@ -370,6 +486,13 @@ void LeggedWorld::State(LeggedWorldState* out) const {
       s.forces[f].name = r.forces[f].name;
       s.forces[f].values.assign(d->sensordata + r.forces[f].adr, d->sensordata + r.forces[f].adr + r.forces[f].dim);
       ContactWrench(r.forces[f].site, &s.forces[f]);
+    }
+    s.links.resize(r.bodies.size());
+    for (size_t b = 0; b < r.bodies.size(); ++b) {
+      LinkPose& link = s.links[b];
+      link.name = r.body_names[b];
+      for (int k = 0; k < 3; ++k) link.position[k] = d->xpos[3 * r.bodies[b] + k];
+      for (int k = 0; k < 4; ++k) link.orientation[k] = d->xquat[4 * r.bodies[b] + k];
     }
   }
   out->has_ball = ball_body_ >= 0;

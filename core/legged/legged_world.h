@@ -47,6 +47,16 @@ enum class JointCommandError : uint8_t {
 };
 const char* JointCommandErrorName(JointCommandError error);
 
+// Where a robot's root body goes (a SimSpark beam, a trainer's move, parking).
+struct RobotPlacement {
+  std::array<double, 3> position{};               // root body origin, world frame
+  std::array<double, 4> orientation{1, 0, 0, 0};  // w, x, y, z (normalised by the world)
+  bool reset_joints = false;                      // joints back to the model's zero pose, each holding there
+};
+
+enum class PlacementError : uint8_t { kOk, kUnknownRobot, kNotFinite, kNoBall };
+const char* PlacementErrorName(PlacementError error);
+
 struct ForceReading {
   std::string name;            // the sensor's name in the robot file ("lf")
   std::vector<double> values;  // touch: 1 value (N); force/torque: 3 (sensor frame)
@@ -56,6 +66,22 @@ struct ForceReading {
   bool contact = false;
   std::array<double, 3> force{};
   std::array<double, 3> point{};
+};
+
+// A body's pose in the world frame (for vision models and viewers).
+struct LinkPose {
+  std::string name;  // the robot file's body name ("head", "rfoot")
+  std::array<double, 3> position{};
+  std::array<double, 4> orientation{1, 0, 0, 0};  // w, x, y, z: world <- body
+};
+
+// A robot's collision and visual shapes, for drawing (static: the model's).
+struct LeggedGeom {
+  std::string body;  // the body it is fixed to (robot file name)
+  enum class Shape : uint8_t { kBox, kSphere, kCapsule, kCylinder, kEllipsoid, kOther } shape = Shape::kOther;
+  std::array<double, 3> size{};                   // MuJoCo's geom size (half sizes, radius, half length)
+  std::array<double, 3> position{};               // in the body frame
+  std::array<double, 4> orientation{1, 0, 0, 0};  // body <- geom
 };
 
 struct LeggedRobotState {
@@ -72,6 +98,7 @@ struct LeggedRobotState {
   std::array<double, 3> accelerometer{};          // m/s^2, proper acceleration, sensor frame
   std::array<double, 4> orientation{1, 0, 0, 0};  // framequat sensor, or the base's
   std::vector<ForceReading> forces;
+  std::vector<LinkPose> links;  // every body of the robot, model order
 };
 
 struct LeggedWorldState {
@@ -110,6 +137,11 @@ class LeggedWorld {
   // batches (the first error, kOk when every command is valid).
   JointCommandError CheckJointCommand(int robot, const JointCommand& command) const;
   JointCommandError CheckJointCommands(int robot, const std::vector<JointCommand>& commands) const;
+  // Moves a robot's root body; every velocity of the robot becomes zero and
+  // its joints keep their angles (unless reset_joints). Takes effect at once.
+  PlacementError PlaceRobot(int robot, const RobotPlacement& placement);
+  // Ball centre and linear velocity (world frame); its spin becomes zero.
+  PlacementError PlaceBall(const std::array<double, 3>& position, const std::array<double, 3>& velocity);
   // Back to the scene's start: time 0, start poses, every joint holding.
   void Reset();
 
@@ -120,6 +152,7 @@ class LeggedWorld {
   int RobotIndex(const std::string& name) const;  // -1 if unknown
   int RobotCount() const;
   int JointIndex(int robot, const std::string& joint) const;  // -1 if unknown
+  std::vector<LeggedGeom> RobotGeoms(int robot) const;        // empty if unknown
   int64_t time_ns() const { return static_cast<int64_t>(frame_) * step_ns_; }
   uint64_t frame() const { return frame_; }
   int64_t step_ns() const { return step_ns_; }
@@ -135,6 +168,8 @@ class LeggedWorld {
   void StageServos();
   bool StagePhysics();
   void ResetCommands();
+  void ResetCommands(RobotSlot* robot);
+  void AcceptState();  // the current state is the last good one
   void ContactWrench(int site, ForceReading* out) const;
 
   LeggedScene scene_;

@@ -4,6 +4,7 @@
 #include <turf/idl/ClockPubSubTypes.h>
 #include <turf/idl/JointsPubSubTypes.h>
 #include <turf/idl/SimControlPubSubTypes.h>
+#include <turf/idl/WorldStatePubSubTypes.h>
 
 #include <atomic>
 #include <cmath>
@@ -23,6 +24,8 @@ namespace {
 
 constexpr double kMaxSpeed = 1000.0;
 constexpr uint32_t kMaxStepRequest = 1000000;
+constexpr double kMaxPlacement = 100.0;  // m from the origin, any axis
+constexpr double kMaxBallSpeed = 50.0;   // m/s
 
 struct PendingStep {
   uint64_t done_at_frame;
@@ -44,6 +47,26 @@ idl::Quat Q4(const std::array<double, 4>& a) {
   q.y(a[2]);
   q.z(a[3]);
   return q;
+}
+
+std::array<double, 3> A3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+idl::GeomShape ToIdl(LeggedGeom::Shape shape) {
+  switch (shape) {
+    case LeggedGeom::Shape::kBox:
+      return idl::GEOM_BOX;
+    case LeggedGeom::Shape::kSphere:
+      return idl::GEOM_SPHERE;
+    case LeggedGeom::Shape::kCapsule:
+      return idl::GEOM_CAPSULE;
+    case LeggedGeom::Shape::kCylinder:
+      return idl::GEOM_CYLINDER;
+    case LeggedGeom::Shape::kEllipsoid:
+      return idl::GEOM_ELLIPSOID;
+    case LeggedGeom::Shape::kOther:
+      break;
+  }
+  return idl::GEOM_OTHER;
 }
 
 bool FromIdl(const idl::JointTarget& in, JointCommand* out) {
@@ -79,6 +102,9 @@ class LeggedNode::Impl {
         joint_writer_(participant_.MakeWriter<idl::JointStatePubSubType>(dds::Topic::kRobotJointState)),
         imu_writer_(participant_.MakeWriter<idl::ImuStatePubSubType>(dds::Topic::kRobotImu)),
         force_writer_(participant_.MakeWriter<idl::ForceStatePubSubType>(dds::Topic::kRobotForce)),
+        links_writer_(participant_.MakeWriter<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks)),
+        world_writer_(participant_.MakeWriter<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
+        scene_writer_(participant_.MakeWriter<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene)),
         reply_writer_(participant_.MakeWriter<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
         command_reader_(participant_.MakeReader<idl::JointCommandPubSubType>(dds::Topic::kRobotJointCommand,
                                                                              [this] { wakeup_.Notify(); })),
@@ -94,6 +120,7 @@ class LeggedNode::Impl {
 
   void Run(const std::function<bool()>& stop) {
     ReportStartup();
+    PublishSceneInfo();
     PublishState();
     const int64_t end_ns = options_.duration > 0 ? std::llround(options_.duration * 1e9) : -1;
     pacer_.Anchor(Pacer::Clock::now(), world_.time_ns());
@@ -160,19 +187,47 @@ class LeggedNode::Impl {
 
   // A sample is checked whole first: a refused one changes no joint.
   void ApplyCommand(const idl::JointCommand& in) {
-    const int robot = world_.RobotIndex(in.robot());
-    JointCommandError error = robot < 0 ? JointCommandError::kUnknownRobot : JointCommandError::kOk;
-    std::vector<JointCommand> commands(in.joints().size());
-    for (size_t i = 0; i < commands.size() && error == JointCommandError::kOk; ++i) {
-      if (!FromIdl(in.joints()[i], &commands[i])) error = JointCommandError::kOutOfRange;
-    }
-    if (error == JointCommandError::kOk) error = world_.CheckJointCommands(robot, commands);
+    const JointCommandError error = CheckCommand(in, &checked_);
     if (error != JointCommandError::kOk) {
       Reject(fmt::format("joint_command.{}", JointCommandErrorName(error)),
              fmt::format("robot '{}', {} joints", in.robot(), in.joints().size()));
       return;
     }
-    for (const JointCommand& c : commands) world_.SetJointCommand(robot, c);
+    for (const JointCommand& c : checked_) world_.SetJointCommand(world_.RobotIndex(in.robot()), c);
+  }
+
+  JointCommandError CheckCommand(const idl::JointCommand& in, std::vector<JointCommand>* commands) const {
+    const int robot = world_.RobotIndex(in.robot());
+    if (robot < 0) return JointCommandError::kUnknownRobot;
+    commands->resize(in.joints().size());
+    for (size_t i = 0; i < commands->size(); ++i) {
+      if (!FromIdl(in.joints()[i], &(*commands)[i])) return JointCommandError::kOutOfRange;
+    }
+    return world_.CheckJointCommands(robot, *commands);
+  }
+
+  // OP_TELEPORT_ROBOT: a legged robot's root body.
+  std::string PlaceRobot(const idl::LeggedTeleport& t) {
+    RobotPlacement p;
+    p.position = A3(t.position());
+    p.orientation = {t.orientation().w(), t.orientation().x(), t.orientation().y(), t.orientation().z()};
+    p.reset_joints = t.reset_joints();
+    for (int k = 0; k < 3; ++k) {
+      if (std::abs(p.position[k]) > kMaxPlacement) return fmt::format("position beyond {} m", kMaxPlacement);
+    }
+    const PlacementError e = world_.PlaceRobot(world_.RobotIndex(t.robot()), p);
+    return e == PlacementError::kOk ? "" : fmt::format("robot '{}': {}", t.robot(), PlacementErrorName(e));
+  }
+
+  std::string PlaceBall(const idl::BallTeleport& b) {
+    const std::array<double, 3> position = A3(b.position());
+    const std::array<double, 3> velocity = A3(b.velocity());
+    for (int k = 0; k < 3; ++k) {
+      if (std::abs(position[k]) > kMaxPlacement) return fmt::format("position beyond {} m", kMaxPlacement);
+      if (std::abs(velocity[k]) > kMaxBallSpeed) return fmt::format("velocity beyond {} m/s", kMaxBallSpeed);
+    }
+    const PlacementError e = world_.PlaceBall(position, velocity);
+    return e == PlacementError::kOk ? "" : fmt::format("ball: {}", PlacementErrorName(e));
   }
 
   void HandleControl(const idl::SimControl& req) {
@@ -195,7 +250,11 @@ class LeggedNode::Impl {
         why = SetTimeMode(req.time_mode(), req.speed());
         break;
       case idl::OP_TELEPORT_BALL:
+        why = PlaceBall(req.ball());
+        break;
       case idl::OP_TELEPORT_ROBOT:
+        why = PlaceRobot(req.legged());
+        break;
       case idl::OP_SET_REALISM:
         why = "not supported in legged scenes yet";
         break;
@@ -212,7 +271,17 @@ class LeggedNode::Impl {
     if (!paused_ && mode_ != TimeMode::kLockstep) return "step needs a paused simulation or lockstep mode";
     if (req.step_count() == 0 || req.step_count() > kMaxStepRequest)
       return fmt::format("step_count must be 1..{}", kMaxStepRequest);
-    if (!req.commands().empty()) return "legged robots take joint commands on robots/joint_command";
+    if (!req.commands().empty()) return "legged robots take joint_commands, not SSL commands";
+    // All of the step's joint commands or none.
+    for (const idl::JointCommand& c : req.joint_commands()) {
+      const JointCommandError e = CheckCommand(c, &checked_);
+      if (e != JointCommandError::kOk)
+        return fmt::format("joint command for '{}': {}", c.robot(), JointCommandErrorName(e));
+    }
+    for (const idl::JointCommand& c : req.joint_commands()) {
+      CheckCommand(c, &checked_);
+      for (const JointCommand& j : checked_) world_.SetJointCommand(world_.RobotIndex(c.robot()), j);
+    }
     pending_steps_ += req.step_count();
     pending_replies_.push_back({world_.frame() + pending_steps_, req});
     return "";
@@ -312,6 +381,25 @@ class LeggedNode::Impl {
         force.sensors().push_back(reading);
       }
       force_writer_->Write(force);
+
+      links_sample_.robot(r.name);
+      links_sample_.sim_time_ns(state_.time_ns);
+      links_sample_.frame(state_.frame);
+      links_sample_.links().resize(r.links.size());
+      for (size_t i = 0; i < r.links.size(); ++i) {
+        links_sample_.links()[i].name(r.links[i].name);
+        links_sample_.links()[i].position(V3(r.links[i].position));
+        links_sample_.links()[i].orientation(Q4(r.links[i].orientation));
+      }
+      links_writer_->Write(links_sample_);
+    }
+    if (state_.has_ball) {
+      idl::WorldState world;
+      world.sim_time_ns(state_.time_ns);
+      world.frame(state_.frame);
+      world.ball().position(V3(state_.ball_position));
+      world.ball().velocity(V3(state_.ball_velocity));
+      world_writer_->Write(world);
     }
     idl::Clock clock;
     clock.sim_time_ns(world_.time_ns());
@@ -325,6 +413,36 @@ class LeggedNode::Impl {
     rtf_.store(pacer_.real_time_factor());
   }
 
+  void PublishSceneInfo() {
+    const LeggedScene& s = world_.scene();
+    idl::LeggedSceneInfo info;
+    info.name(s.name);
+    info.has_field(s.field.enabled);
+    info.field_length(s.field.length);
+    info.field_width(s.field.width);
+    info.goal_width(s.field.goal_width);
+    info.goal_depth(s.field.goal_depth);
+    info.goal_height(s.field.goal_height);
+    info.ball_radius(s.field.ball_radius);
+    for (int i = 0; i < world_.RobotCount(); ++i) {
+      idl::RobotDescription robot;
+      robot.robot(s.robots[i].name);
+      robot.id(s.robots[i].id);
+      robot.model(s.robots[i].model);
+      for (const LeggedGeom& g : world_.RobotGeoms(i)) {
+        idl::RobotGeom geom;
+        geom.body(g.body);
+        geom.shape(ToIdl(g.shape));
+        geom.size(V3(g.size));
+        geom.position(V3(g.position));
+        geom.orientation(Q4(g.orientation));
+        robot.geoms().push_back(geom);
+      }
+      info.robots().push_back(robot);
+    }
+    scene_writer_->Write(info);
+  }
+
   void ReportStartup() const {
     const LeggedScene& s = world_.scene();
     spdlog::info("legged scene '{}': {} robots, step {} ms, field {}, seed {}", s.name, s.robots.size(),
@@ -334,9 +452,10 @@ class LeggedNode::Impl {
                    r.forces.size(), r.has_imu ? ", IMU" : "");
     spdlog::info("DDS domain {}, QoS profiles {}", options_.domain, participant_.options().qos_file);
     auto name = [this](dds::Topic t) { return participant_.TopicName(t); };
-    spdlog::info("publishing {}, {}, {} and {} at {:.0f} Hz of sim time; {}", name(dds::Topic::kRobotJointState),
-                 name(dds::Topic::kRobotImu), name(dds::Topic::kRobotForce), name(dds::Topic::kClock),
-                 s.rates.joint_state_hz, name(dds::Topic::kControlReply));
+    spdlog::info("publishing {}, {}, {}, {}, {} and {} at {:.0f} Hz of sim time; {}, {} (latched)",
+                 name(dds::Topic::kRobotJointState), name(dds::Topic::kRobotImu), name(dds::Topic::kRobotForce),
+                 name(dds::Topic::kRobotLinks), name(dds::Topic::kWorldState), name(dds::Topic::kClock),
+                 s.rates.joint_state_hz, name(dds::Topic::kControlReply), name(dds::Topic::kLeggedScene));
     spdlog::info("subscribing {}, {}", name(dds::Topic::kRobotJointCommand), name(dds::Topic::kControl));
     spdlog::info("time: {}{}{}", TimeModeName(mode_), mode_ == TimeMode::kScaled ? fmt::format(" x{}", speed_) : "",
                  paused_ ? ", paused" : "");
@@ -356,6 +475,9 @@ class LeggedNode::Impl {
   std::unique_ptr<dds::Writer<idl::JointStatePubSubType>> joint_writer_;
   std::unique_ptr<dds::Writer<idl::ImuStatePubSubType>> imu_writer_;
   std::unique_ptr<dds::Writer<idl::ForceStatePubSubType>> force_writer_;
+  std::unique_ptr<dds::Writer<idl::LinkStatePubSubType>> links_writer_;
+  std::unique_ptr<dds::Writer<idl::WorldStatePubSubType>> world_writer_;
+  std::unique_ptr<dds::Writer<idl::LeggedSceneInfoPubSubType>> scene_writer_;
   std::unique_ptr<dds::Writer<idl::SimControlReplyPubSubType>> reply_writer_;
   std::unique_ptr<dds::Reader<idl::JointCommandPubSubType>> command_reader_;
   std::unique_ptr<dds::Reader<idl::SimControlPubSubType>> control_reader_;
@@ -370,6 +492,8 @@ class LeggedNode::Impl {
 
   LeggedWorldState state_;
   idl::JointState joint_sample_;
+  idl::LinkState links_sample_;
+  std::vector<JointCommand> checked_;
   std::vector<idl::JointCommand> command_inbox_;
   std::vector<idl::SimControl> control_inbox_;
 

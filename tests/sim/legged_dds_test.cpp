@@ -4,6 +4,7 @@
 #include <turf/idl/ClockPubSubTypes.h>
 #include <turf/idl/JointsPubSubTypes.h>
 #include <turf/idl/SimControlPubSubTypes.h>
+#include <turf/idl/WorldStatePubSubTypes.h>
 
 #include <atomic>
 #include <chrono>
@@ -71,7 +72,10 @@ class Client {
         joint_reader_(participant_.MakeReader<idl::JointStatePubSubType>(dds::Topic::kRobotJointState)),
         imu_(participant_.MakeReader<idl::ImuStatePubSubType>(dds::Topic::kRobotImu)),
         force_(participant_.MakeReader<idl::ForceStatePubSubType>(dds::Topic::kRobotForce)),
-        reply_(participant_.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)) {}
+        reply_(participant_.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
+        links_(participant_.MakeReader<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks)),
+        world_(participant_.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
+        scene_(participant_.MakeReader<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene)) {}
 
   bool WaitMatched() {
     const auto end = Clock::now() + 5s;
@@ -94,6 +98,13 @@ class Client {
     std::vector<idl::ForceState> f;
     if (force_->Take(&f))
       for (auto& x : f) force_now_[x.robot()] = x;
+    std::vector<idl::LinkState> l;
+    if (links_->Take(&l))
+      for (auto& x : l) links[x.robot()] = x;
+    std::vector<idl::WorldState> w;
+    if (world_->Take(&w) && !w.empty()) world = w.back();
+    std::vector<idl::LeggedSceneInfo> info;
+    if (scene_->Take(&info) && !info.empty()) scene = info.back();
   }
   // Polls until `done` holds, or 5 s.
   bool WaitFor(const std::function<bool()>& done) {
@@ -107,10 +118,14 @@ class Client {
   }
   std::optional<idl::SimControlReply> Control(idl::ControlOp op, uint32_t steps = 0) {
     idl::SimControl req;
-    req.client("test");
-    req.request_id(++request_id_);
     req.op(op);
     req.step_count(steps);
+    return Control(req);
+  }
+  std::optional<idl::SimControlReply> Control(idl::SimControl req) {
+    const idl::ControlOp op = req.op();
+    req.client("test");
+    req.request_id(++request_id_);
     if (op == idl::OP_SET_TIME_MODE) req.time_mode(idl::TIME_LOCKSTEP);
     control_->Write(req);
     const auto end = Clock::now() + 5s;
@@ -144,6 +159,9 @@ class Client {
   std::map<std::string, idl::JointState> joints;
   std::map<std::string, idl::ImuState> imu_now_;
   std::map<std::string, idl::ForceState> force_now_;
+  std::map<std::string, idl::LinkState> links;
+  std::optional<idl::WorldState> world;
+  std::optional<idl::LeggedSceneInfo> scene;
 
  private:
   dds::Participant participant_;
@@ -153,6 +171,9 @@ class Client {
   std::unique_ptr<dds::Reader<idl::ImuStatePubSubType>> imu_;
   std::unique_ptr<dds::Reader<idl::ForceStatePubSubType>> force_;
   std::unique_ptr<dds::Reader<idl::SimControlReplyPubSubType>> reply_;
+  std::unique_ptr<dds::Reader<idl::LinkStatePubSubType>> links_;
+  std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> world_;
+  std::unique_ptr<dds::Reader<idl::LeggedSceneInfoPubSubType>> scene_;
   uint64_t request_id_ = 0;
 };
 
@@ -222,9 +243,88 @@ TEST(LeggedDdsTest, LockstepStepsExactlyAndResetRestarts) {
   EXPECT_EQ(reset->frame(), 0u);
   ASSERT_TRUE(client.WaitFor([&] { return client.joints["nao_1"].frame() == 0u; }));
   EXPECT_NEAR(client.Angle("nao_1", "hj1"), 0.0, 1e-9);
-  const auto teleport = client.Control(idl::OP_TELEPORT_BALL);
-  ASSERT_TRUE(teleport);
-  EXPECT_EQ(teleport->result(), idl::RESULT_REJECTED);
+}
+
+idl::Vec3 Vec(double x, double y, double z) {
+  idl::Vec3 v;
+  v.x(x);
+  v.y(y);
+  v.z(z);
+  return v;
+}
+
+// What the SimSpark bridge needs: joint commands inside STEP (atomic with the
+// step), robots and ball moved by control requests, body poses, the scene.
+TEST(LeggedDdsTest, StepCarriesJointCommandsAndTeleportsMoveRobotsAndBall) {
+  const auto dds = UniqueDds("sim");
+  NodeUnderTest sim(dds, TimeMode::kLockstep);
+  Client client(dds);
+  ASSERT_TRUE(client.WaitMatched());
+  ASSERT_TRUE(client.WaitFor([&] { return client.scene.has_value() && client.links.count("nao_2"); }));
+  ASSERT_EQ(client.scene->robots().size(), 2u);
+  EXPECT_TRUE(client.scene->has_field());
+  EXPECT_EQ(client.scene->field_length(), 30.0);
+  EXPECT_GT(client.scene->robots()[0].geoms().size(), 10u);
+
+  idl::SimControl step;
+  step.op(idl::OP_STEP);
+  step.step_count(250);  // 0.5 s
+  idl::JointCommand c;
+  c.robot("nao_1");
+  idl::JointTarget t;
+  t.name("hj1");
+  t.mode(idl::JOINT_VELOCITY);
+  t.value(1.0);
+  c.joints().push_back(t);
+  step.joint_commands().push_back(c);
+  auto reply = client.Control(step);
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->result(), idl::RESULT_OK) << reply->reason();
+  ASSERT_TRUE(client.WaitFor([&] { return client.joints["nao_1"].frame() == 250u; }));
+  EXPECT_NEAR(client.Angle("nao_1", "hj1"), 0.5, 0.03);
+
+  // A refused joint command refuses the whole step: no time passes.
+  step.joint_commands()[0].joints()[0].value(NAN);
+  reply = client.Control(step);
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
+  EXPECT_EQ(reply->frame(), 250u);
+
+  idl::SimControl move;
+  move.op(idl::OP_TELEPORT_ROBOT);
+  move.legged().robot("nao_2");
+  move.legged().position(Vec(2.0, 3.0, 0.4));
+  move.legged().orientation().w(1.0);
+  reply = client.Control(move);
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->result(), idl::RESULT_OK) << reply->reason();
+  idl::SimControl ball;
+  ball.op(idl::OP_TELEPORT_BALL);
+  ball.ball().position(Vec(1.0, -1.0, 0.042));
+  reply = client.Control(ball);
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->result(), idl::RESULT_OK) << reply->reason();
+  ASSERT_TRUE(client.WaitFor([&] {
+    const auto& links = client.links["nao_2"].links();
+    return !links.empty() && std::abs(links[0].position().x() - 2.0) < 1e-6 && client.world &&
+           std::abs(client.world->ball().position().x() - 1.0) < 1e-6;
+  }));
+  EXPECT_EQ(client.links["nao_2"].links()[0].name(), "torso");
+  EXPECT_NEAR(client.world->ball().position().y(), -1.0, 1e-6);
+
+  move.legged().robot("nao_7");
+  reply = client.Control(move);
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
+  move.legged().robot("nao_2");
+  move.legged().position(Vec(1e6, 0, 0));
+  reply = client.Control(move);
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
+  ball.ball().velocity(Vec(NAN, 0, 0));
+  reply = client.Control(ball);
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
 }
 
 TEST(LeggedDdsTest, PauseStopsTimeAndStepAdvancesIt) {

@@ -14,14 +14,25 @@ namespace {
 
 using testing::NaoScene;
 
-constexpr int kStepsPerSecond = 500;  // 2 ms step
+// Every test runs at the default 2 ms step and at the 5 ms step of the
+// SimSpark scene (configs/scenes/simspark_3d.yaml, 4 steps per 20 ms cycle).
+class NaoPhysicsTest : public ::testing::TestWithParam<double> {
+ protected:
+  double step() const { return GetParam(); }
+  int steps_per_second() const { return static_cast<int>(std::lround(1.0 / step())); }
+  LeggedScene Scene(int robots = 1, bool field = false) const {
+    LeggedScene s = NaoScene(robots, field);
+    s.physics.step = step();
+    return s;
+  }
+};
 
 double JointAngle(const LeggedWorld& w, int robot, const std::string& joint) {
   return w.State().robots[robot].joint_positions[w.JointIndex(robot, joint)];
 }
 
-TEST(NaoPhysicsTest, ModelHasTheSheetsJointsMassAndSensors) {
-  LeggedWorld w(NaoScene());
+TEST_P(NaoPhysicsTest, ModelHasTheSheetsJointsMassAndSensors) {
+  LeggedWorld w(Scene());
   const LeggedRobotState s = w.State().robots[0];
   EXPECT_EQ(s.joint_names.size(), 22u);
   for (const char* j : {"hj1", "hj2", "raj1", "laj4", "rlj1", "llj6"}) EXPECT_GE(w.JointIndex(0, j), 0) << j;
@@ -34,13 +45,13 @@ TEST(NaoPhysicsTest, ModelHasTheSheetsJointsMassAndSensors) {
 }
 
 // Zero joint velocities for 10 s: the Nao stays upright where it stands.
-TEST(NaoPhysicsTest, StandsTenSecondsWithZeroCommands) {
-  LeggedWorld w(NaoScene());
+TEST_P(NaoPhysicsTest, StandsTenSecondsWithZeroCommands) {
+  LeggedWorld w(Scene());
   const auto start = w.State().robots[0].base_position;
   double max_dz = 0.0;
   double max_dxy = 0.0;
   double max_tilt = 0.0;
-  for (int i = 0; i < 10 * kStepsPerSecond; ++i) {
+  for (int i = 0; i < 10 * steps_per_second(); ++i) {
     w.Step();
     const LeggedRobotState s = w.State().robots[0];
     max_dz = std::max(max_dz, std::abs(s.base_position[2] - start[2]));
@@ -72,15 +83,15 @@ TEST(NaoPhysicsTest, StandsTenSecondsWithZeroCommands) {
 }
 
 // SimSpark: (he1 1.0) for 25 cycles (0.5 s) turns hj1 by 28.65 deg (0.5 rad).
-TEST(NaoPhysicsTest, VelocityCommandReachesExpectedAngle) {
-  LeggedWorld w(NaoScene());
-  for (int i = 0; i < kStepsPerSecond; ++i) w.Step();  // settle
+TEST_P(NaoPhysicsTest, VelocityCommandReachesExpectedAngle) {
+  LeggedWorld w(Scene());
+  for (int i = 0; i < steps_per_second(); ++i) w.Step();  // settle
   const double start = JointAngle(w, 0, "hj1");
   ASSERT_EQ(w.SetJointCommand(0, {"hj1", JointMode::kVelocity, 1.0}), JointCommandError::kOk);
-  for (int i = 0; i < kStepsPerSecond / 2; ++i) w.Step();
+  for (int i = 0; i < steps_per_second() / 2; ++i) w.Step();
   const double moved_at_half_second = JointAngle(w, 0, "hj1") - start;
   ASSERT_EQ(w.SetJointCommand(0, {"hj1", JointMode::kVelocity, 0.0}), JointCommandError::kOk);
-  for (int i = 0; i < kStepsPerSecond / 5; ++i) w.Step();
+  for (int i = 0; i < steps_per_second() / 5; ++i) w.Step();
   const double moved = JointAngle(w, 0, "hj1") - start;
   std::printf("hj1 at 1 rad/s: %.4f rad after 0.5 s, %.4f rad after stopping\n", moved_at_half_second, moved);
   EXPECT_NEAR(moved_at_half_second, 0.5, 0.03);
@@ -88,35 +99,35 @@ TEST(NaoPhysicsTest, VelocityCommandReachesExpectedAngle) {
 }
 
 // A knee bent by a velocity command (knee bends negative) and held.
-TEST(NaoPhysicsTest, KneeFollowsVelocityAndHolds) {
-  LeggedWorld w(NaoScene());
+TEST_P(NaoPhysicsTest, KneeFollowsVelocityAndHolds) {
+  LeggedWorld w(Scene());
   ASSERT_EQ(w.SetJointCommand(0, {"rlj4", JointMode::kVelocity, -1.0}), JointCommandError::kOk);
-  for (int i = 0; i < kStepsPerSecond / 5; ++i) w.Step();
+  for (int i = 0; i < steps_per_second() / 5; ++i) w.Step();
   ASSERT_EQ(w.SetJointCommand(0, {"rlj4", JointMode::kVelocity, 0.0}), JointCommandError::kOk);
-  for (int i = 0; i < kStepsPerSecond; ++i) w.Step();
+  for (int i = 0; i < steps_per_second(); ++i) w.Step();
   const double knee = JointAngle(w, 0, "rlj4");
   std::printf("rlj4 at -1 rad/s for 0.2 s, held 1 s: %.4f rad\n", knee);
   EXPECT_NEAR(knee, -0.2, 0.03);
 }
 
-TEST(NaoPhysicsTest, PositionCommandReachesTarget) {
-  LeggedWorld w(NaoScene());
+TEST_P(NaoPhysicsTest, PositionCommandReachesTarget) {
+  LeggedWorld w(Scene());
   ASSERT_EQ(w.SetJointCommand(0, {"laj1", JointMode::kPosition, -1.0}), JointCommandError::kOk);
-  for (int i = 0; i < kStepsPerSecond; ++i) w.Step();
+  for (int i = 0; i < steps_per_second(); ++i) w.Step();
   const double a = JointAngle(w, 0, "laj1");
   std::printf("laj1 position target -1.0 rad after 1 s: %.4f rad\n", a);
   EXPECT_NEAR(a, -1.0, 0.05);
 }
 
-TEST(NaoPhysicsTest, JointsStopAtTheirLimits) {
-  LeggedWorld w(NaoScene());
+TEST_P(NaoPhysicsTest, JointsStopAtTheirLimits) {
+  LeggedWorld w(Scene());
   ASSERT_EQ(w.SetJointCommand(0, {"hj2", JointMode::kVelocity, 6.0}), JointCommandError::kOk);
-  for (int i = 0; i < kStepsPerSecond; ++i) w.Step();
+  for (int i = 0; i < steps_per_second(); ++i) w.Step();
   EXPECT_NEAR(JointAngle(w, 0, "hj2"), M_PI / 4, 0.02);  // range -45..45 deg
 }
 
-TEST(NaoPhysicsTest, RefusesBadCommands) {
-  LeggedWorld w(NaoScene());
+TEST_P(NaoPhysicsTest, RefusesBadCommands) {
+  LeggedWorld w(Scene());
   EXPECT_EQ(w.SetJointCommand(1, {"hj1", JointMode::kVelocity, 0.0}), JointCommandError::kUnknownRobot);
   EXPECT_EQ(w.SetJointCommand(0, {"he1", JointMode::kVelocity, 0.0}), JointCommandError::kUnknownJoint);
   EXPECT_EQ(w.SetJointCommand(0, {"hj1", JointMode::kVelocity, NAN}), JointCommandError::kNotFinite);
@@ -131,16 +142,17 @@ TEST(NaoPhysicsTest, RefusesBadCommands) {
 // (anywhere in +-2 rad; out of range is refused) and torque mixed. The state
 // stays finite and on the field, and no step needs an undo. Returns the
 // largest joint speed seen.
-double RunRandomCommands(bool mixed) {
-  LeggedWorld w(NaoScene(2, /*field=*/true));
+double RunRandomCommands(const LeggedScene& scene, bool mixed) {
+  LeggedWorld w(scene);
+  const int steps_per_second = static_cast<int>(std::lround(1.0 / scene.physics.step));
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::uniform_int_distribution<int> mode(0, mixed ? 2 : 0);
   const LeggedWorldState first = w.State();
   double max_joint_speed = 0.0;
   int refused = 0;
-  for (int i = 0; i < 10 * kStepsPerSecond; ++i) {
-    if (i % 10 == 0) {
+  for (int i = 0; i < 10 * steps_per_second; ++i) {
+    if (i % (steps_per_second / 50) == 0) {  // every 20 ms
       for (int r = 0; r < 2; ++r) {
         for (const std::string& j : first.robots[r].joint_names) {
           JointCommand c{j, static_cast<JointMode>(mode(rng)), 0.0};
@@ -170,18 +182,18 @@ double RunRandomCommands(bool mixed) {
   return max_joint_speed;
 }
 
-TEST(NaoPhysicsTest, RandomVelocityCommandsDoNotExplode) {
+TEST_P(NaoPhysicsTest, RandomVelocityCommandsDoNotExplode) {
   // Joints move at most about the commanded 6.14 rad/s, plus impacts.
-  EXPECT_LT(RunRandomCommands(/*mixed=*/false), 20.0);
+  EXPECT_LT(RunRandomCommands(Scene(2, /*field=*/true), /*mixed=*/false), 20.0);
 }
 
-TEST(NaoPhysicsTest, RandomMixedCommandsDoNotExplode) {
+TEST_P(NaoPhysicsTest, RandomMixedCommandsDoNotExplode) {
   // Full torque on a light arm link spins it fast, but never without bound.
-  EXPECT_LT(RunRandomCommands(/*mixed=*/true), 100.0);
+  EXPECT_LT(RunRandomCommands(Scene(2, /*field=*/true), /*mixed=*/true), 100.0);
 }
 
 // Same scene and command stream: identical state, also after a reset.
-TEST(NaoPhysicsTest, DeterministicAndResettable) {
+TEST_P(NaoPhysicsTest, DeterministicAndResettable) {
   auto run = [](LeggedWorld& w) {
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> speed(-3.0, 3.0);
@@ -194,8 +206,8 @@ TEST(NaoPhysicsTest, DeterministicAndResettable) {
     }
     return w.State();
   };
-  LeggedWorld a(NaoScene());
-  LeggedWorld b(NaoScene());
+  LeggedWorld a(Scene());
+  LeggedWorld b(Scene());
   const LeggedWorldState sa = run(a);
   const LeggedWorldState sb = run(b);
   EXPECT_EQ(sa.robots[0].joint_positions, sb.robots[0].joint_positions);
@@ -205,6 +217,11 @@ TEST(NaoPhysicsTest, DeterministicAndResettable) {
   const LeggedWorldState again = run(a);
   EXPECT_EQ(again.robots[0].joint_positions, sa.robots[0].joint_positions);
 }
+
+INSTANTIATE_TEST_SUITE_P(Steps, NaoPhysicsTest, ::testing::Values(0.002, 0.005),
+                         [](const ::testing::TestParamInfo<double>& info) {
+                           return std::to_string(static_cast<int>(std::lround(info.param * 1000))) + "ms";
+                         });
 
 }  // namespace
 }  // namespace turf

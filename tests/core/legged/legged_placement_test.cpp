@@ -1,0 +1,135 @@
+// Moving legged robots and the ball (SimSpark's beam and trainer commands),
+// body poses for vision, and the robots' shapes for viewers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/legged/legged_world.h"
+#include "tests/core/legged/nao_fixture.h"
+
+namespace turf {
+namespace {
+
+using testing::NaoScene;
+
+const LinkPose* Link(const LeggedRobotState& r, const std::string& name) {
+  for (const LinkPose& l : r.links)
+    if (l.name == name) return &l;
+  return nullptr;
+}
+
+double Angle(const LeggedWorld& w, int robot, const std::string& joint) {
+  return w.State().robots[robot].joint_positions[w.JointIndex(robot, joint)];
+}
+
+// Yaw about +z as a quaternion (w, x, y, z).
+std::array<double, 4> Yaw(double a) { return {std::cos(a / 2), 0, 0, std::sin(a / 2)}; }
+
+TEST(LeggedPlacementTest, LinksAreEveryBodyAtItsWorldPose) {
+  LeggedWorld w(NaoScene());
+  const LeggedRobotState r = w.State().robots[0];
+  ASSERT_NE(Link(r, "torso"), nullptr);
+  ASSERT_NE(Link(r, "head"), nullptr);
+  ASSERT_NE(Link(r, "lfoot"), nullptr);
+  EXPECT_EQ(Link(r, "torso")->position, r.base_position);
+  // Zero pose: head centre 0.155 m above the torso centre, feet 0.375 m below (sole at 0.385).
+  EXPECT_NEAR(Link(r, "head")->position[2] - r.base_position[2], 0.155, 1e-6);
+  EXPECT_NEAR(Link(r, "rfoot")->position[2], 0.01, 1e-3);
+  EXPECT_NEAR(Link(r, "rfoot")->position[0] - r.base_position[0], 0.055, 1e-6);  // right = +x in the model frame
+}
+
+TEST(LeggedPlacementTest, PlaceRobotMovesRootZeroesVelocityKeepsJoints) {
+  LeggedWorld w(NaoScene());
+  ASSERT_EQ(w.SetJointCommand(0, {"hj1", JointMode::kVelocity, 2.0}), JointCommandError::kOk);
+  for (int i = 0; i < 100; ++i) w.Step();  // 0.2 s: hj1 turned ~0.4 rad, still turning
+  const double hj1 = Angle(w, 0, "hj1");
+  ASSERT_GT(hj1, 0.3);
+  RobotPlacement p;
+  p.position = {3.0, -2.0, 0.4};
+  p.orientation = Yaw(M_PI / 2);
+  ASSERT_EQ(w.PlaceRobot(0, p), PlacementError::kOk);
+  LeggedRobotState r = w.State().robots[0];
+  EXPECT_NEAR(r.base_position[0], 3.0, 1e-9);
+  EXPECT_NEAR(r.base_position[1], -2.0, 1e-9);
+  EXPECT_NEAR(r.base_position[2], 0.4, 1e-9);
+  EXPECT_NEAR(Angle(w, 0, "hj1"), hj1, 1e-9);
+  for (double v : r.joint_velocities) EXPECT_EQ(v, 0.0);
+  // The model's forward (+y) now points to world -x (yaw +90 deg); the head is above the torso.
+  const LinkPose* head = Link(r, "head");
+  EXPECT_NEAR(head->position[0], 3.0, 0.05);
+  // The robot lands from 1.5 cm and stands again; the command still holds (hj1 keeps turning, as SimSpark's).
+  for (int i = 0; i < 500; ++i) w.Step();
+  r = w.State().robots[0];
+  EXPECT_NEAR(r.base_position[0], 3.0, 0.02);
+  EXPECT_NEAR(r.base_position[2], 0.385, 0.01);
+  EXPECT_GT(Angle(w, 0, "hj1"), hj1 + 0.5);
+}
+
+TEST(LeggedPlacementTest, PlaceRobotWithResetJointsRestoresZeroPoseHolding) {
+  LeggedWorld w(NaoScene());
+  ASSERT_EQ(w.SetJointCommand(0, {"rlj4", JointMode::kVelocity, -1.0}), JointCommandError::kOk);
+  for (int i = 0; i < 200; ++i) w.Step();
+  ASSERT_LT(Angle(w, 0, "rlj4"), -0.3);
+  RobotPlacement p;
+  p.position = {0, 0, 0.385};
+  p.reset_joints = true;
+  ASSERT_EQ(w.PlaceRobot(0, p), PlacementError::kOk);
+  EXPECT_EQ(Angle(w, 0, "rlj4"), 0.0);
+  for (int i = 0; i < 500; ++i) w.Step();
+  EXPECT_NEAR(Angle(w, 0, "rlj4"), 0.0, 0.01);  // the old command is gone: it holds
+}
+
+TEST(LeggedPlacementTest, RefusesBadPlacements) {
+  LeggedWorld w(NaoScene(1, /*field=*/true));
+  const LeggedRobotState before = w.State().robots[0];
+  RobotPlacement p;
+  p.position = {NAN, 0, 0.4};
+  EXPECT_EQ(w.PlaceRobot(0, p), PlacementError::kNotFinite);
+  p.position = {0, 0, 0.4};
+  p.orientation = {0, 0, 0, 0};
+  EXPECT_EQ(w.PlaceRobot(0, p), PlacementError::kNotFinite);
+  EXPECT_EQ(w.PlaceRobot(5, RobotPlacement{}), PlacementError::kUnknownRobot);
+  EXPECT_EQ(w.PlaceRobot(-1, RobotPlacement{}), PlacementError::kUnknownRobot);
+  EXPECT_EQ(w.State().robots[0].base_position, before.base_position);
+  EXPECT_EQ(w.PlaceBall({0, 0, INFINITY}, {0, 0, 0}), PlacementError::kNotFinite);
+  LeggedWorld no_field(NaoScene());
+  EXPECT_EQ(no_field.PlaceBall({0, 0, 1}, {0, 0, 0}), PlacementError::kNoBall);
+}
+
+TEST(LeggedPlacementTest, PlaceBallSetsPositionAndVelocity) {
+  LeggedWorld w(NaoScene(1, /*field=*/true));
+  ASSERT_EQ(w.PlaceBall({5.0, 1.0, 0.042}, {2.0, 0.0, 0.0}), PlacementError::kOk);
+  LeggedWorldState s = w.State();
+  EXPECT_NEAR(s.ball_position[0], 5.0, 1e-9);
+  EXPECT_NEAR(s.ball_velocity[0], 2.0, 1e-9);
+  for (int i = 0; i < 250; ++i) w.Step();  // 0.5 s rolling
+  s = w.State();
+  const double travelled = s.ball_position[0] - 5.0;
+  std::printf("ball at 2 m/s: %.3f m in 0.5 s\n", travelled);
+  EXPECT_GT(travelled, 0.6);
+  EXPECT_LT(travelled, 1.01);
+}
+
+TEST(LeggedPlacementTest, GeomsDescribeTheNaosShapes) {
+  LeggedWorld w(NaoScene());
+  const std::vector<LeggedGeom> geoms = w.RobotGeoms(0);
+  bool torso = false;
+  bool head = false;
+  for (const LeggedGeom& g : geoms) {
+    if (g.body == "torso" && g.shape == LeggedGeom::Shape::kBox) {
+      torso = true;
+      EXPECT_NEAR(g.size[0], 0.05, 1e-9);
+      EXPECT_NEAR(g.size[2], 0.09, 1e-9);
+    }
+    if (g.body == "head" && g.shape == LeggedGeom::Shape::kSphere) {
+      head = true;
+      EXPECT_NEAR(g.size[0], 0.065, 1e-9);
+    }
+  }
+  EXPECT_TRUE(torso);
+  EXPECT_TRUE(head);
+  EXPECT_TRUE(w.RobotGeoms(3).empty());
+}
+
+}  // namespace
+}  // namespace turf
