@@ -1,0 +1,65 @@
+// S-expressions as SimSpark writes and reads them (shared/protocols/simspark.md):
+// lists in parentheses and atoms separated by any whitespace, several top-level
+// lists simply concatenated, no quoting. The parser is iterative and bounded
+// (depth, node count, atom length), so untrusted input costs at most
+// O(size) time and O(max_nodes) memory.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace turf::simspark {
+
+struct SExpr {
+  bool is_list = false;
+  std::string atom;          // when !is_list
+  std::vector<SExpr> items;  // when is_list
+
+  // A list whose first item is the atom `name`, e.g. `(beam 1 2 3)` IsCall("beam").
+  bool IsCall(std::string_view name) const;
+  // The first item that IsCall(name), or nullptr.
+  const SExpr* Child(std::string_view name) const;
+  // The head atom of a list, "" for an atom, an empty list or a list headed by a list.
+  std::string_view Head() const;
+};
+
+enum class SExprError {
+  kOk,
+  kUnbalancedOpen,   // input ends inside a list
+  kUnbalancedClose,  // ')' without its '('
+  kTooDeep,          // a list nested deeper than max_depth
+  kTooManyNodes,     // more than max_nodes lists and atoms in all
+  kAtomTooLong,      // an atom longer than max_atom bytes
+  kBadByte,          // a byte that is neither printable ASCII (0x21-0x7E) nor whitespace, e.g. NUL
+  kTopLevelAtom,     // an atom outside any list
+};
+// "ok", "unbalanced_open", "unbalanced_close", "too_deep", "too_many_nodes", "atom_too_long", "bad_byte",
+// "top_level_atom".
+const char* SExprErrorName(SExprError error);
+
+struct SExprLimits {
+  size_t max_depth = 16;  // `(a)` has depth 1
+  size_t max_nodes = 4096;
+  size_t max_atom = 256;
+};
+
+// All or nothing: on an error `exprs` is empty and `offset` is the byte offset of
+// the offending byte (for kUnbalancedOpen: the end of the text).
+struct SExprParse {
+  std::vector<SExpr> exprs;
+  SExprError error = SExprError::kOk;
+  size_t offset = 0;
+};
+
+SExprParse ParseSExprs(std::string_view text, const SExprLimits& limits = {});
+
+// Atom helpers shared by the decoders. Numbers are decimal only ([+-]digits[.digits][e[+-]digits]),
+// the whole atom must be the number: "1.0abc", "0x10", "" and " 1" are bad.
+enum class NumberError { kOk, kBad, kNotFinite };  // kNotFinite: nan, inf, infinity (any case), or overflow
+NumberError ParseDouble(std::string_view atom, double* out);
+// A decimal integer without fraction or exponent, within int range.
+bool ParseInt(std::string_view atom, int* out);
+
+}  // namespace turf::simspark
