@@ -1,0 +1,99 @@
+#include "bridges/simspark/perception.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace turf::simspark {
+
+std::string FormatFloat(double v) {
+  if (!std::isfinite(v)) return "0.00";
+  char buffer[32];
+  const int n = std::snprintf(buffer, sizeof(buffer), "%.2f", v);
+  if (n >= 0 && static_cast<size_t>(n) < sizeof(buffer)) return std::string(buffer, static_cast<size_t>(n));
+  std::string big(static_cast<size_t>(n) + 1, '\0');  // |v| >= 1e29: rare, but printed whole
+  std::snprintf(big.data(), big.size(), "%.2f", v);
+  big.resize(static_cast<size_t>(n));
+  return big;
+}
+
+namespace {
+
+void Append3(std::string* out, const std::array<double, 3>& v) {
+  for (const double x : v) {
+    out->push_back(' ');
+    out->append(FormatFloat(x));
+  }
+}
+
+void AppendPol(std::string* out, const Polar& p) {
+  out->append("(pol ");
+  out->append(FormatFloat(p.distance));
+  out->push_back(' ');
+  out->append(FormatFloat(p.horizontal));
+  out->push_back(' ');
+  out->append(FormatFloat(p.vertical));
+  out->push_back(')');
+}
+
+std::string FormatSee(const SeeItems& see) {
+  std::string out = "(See";
+  for (const SeeObject& o : see.objects) {
+    out += " (" + o.label + ' ';
+    AppendPol(&out, o.pol);
+    out.push_back(')');
+  }
+  for (const SeePlayer& player : see.players) {
+    out += " (P (team " + player.team + ") (id " + std::to_string(player.id) + ')';
+    for (const SeePart& part : player.parts) {
+      out += " (" + part.name + ' ';
+      AppendPol(&out, part.pol);
+      out.push_back(')');
+    }
+    out.push_back(')');
+  }
+  for (const SeeLine& line : see.lines) {
+    out += " (L ";
+    AppendPol(&out, line.begin);
+    out.push_back(' ');
+    AppendPol(&out, line.end);
+    out.push_back(')');
+  }
+  out.push_back(')');
+  return out;
+}
+
+std::string FormatHear(const Heard& heard) {
+  return "(hear " + heard.team + ' ' + FormatFloat(heard.game_time) + ' ' +
+         (heard.self ? std::string("self") : FormatFloat(heard.direction)) + ' ' + heard.message + ')';
+}
+
+}  // namespace
+
+std::string FormatPerception(const Perception& p) {
+  std::string out;
+  out.reserve(1024);
+  out += "(time (now " + FormatFloat(p.time) + "))";
+  out += "(GS";
+  if (p.unum) out += " (unum " + std::to_string(*p.unum) + ')';
+  if (p.side) out += std::string(" (team ") + SideName(*p.side) + ')';
+  out += " (sl " + std::to_string(p.score_left) + ") (sr " + std::to_string(p.score_right) + ") (t " +
+         FormatFloat(p.game_time) + ") (pm " + PlayModeName(p.play_mode) + "))";
+  out += "(GYR (n torso) (rt";
+  Append3(&out, p.gyro_deg_s);
+  out += "))(ACC (n torso) (a";
+  Append3(&out, p.acc);
+  out += "))";
+  for (const auto& [name, deg] : p.joints_deg) out += "(HJ (n " + name + ") (ax " + FormatFloat(deg) + "))";
+  for (const ForcePerception& f : p.forces) {
+    out += "(FRP (n " + f.name + ") (c";
+    Append3(&out, f.point);
+    out += ") (f";
+    Append3(&out, f.force);
+    out += "))";
+  }
+  if (p.see) out += FormatSee(*p.see);
+  for (const Heard& heard : p.heard) out += FormatHear(heard);
+  return out;
+}
+
+}  // namespace turf::simspark
