@@ -1,0 +1,71 @@
+// turf-simspark-bridge: the SimSpark / rcssserver3d agent protocol (TCP 3100)
+// and trainer protocol (TCP 3200) in front of turf-sim running a legged scene
+// (configs/scenes/simspark_match.yaml), so RoboCup 3D soccer simulation teams
+// run their agents unchanged.
+//
+// The bridge is the match's clock: it holds turf-sim in lockstep and steps it
+// one SimSpark cycle (0.02 s) at a time. Real-time mode: a cycle every 20 ms
+// of wall time (no catching up when late, like the reference). Sync mode: a
+// cycle as soon as every agent with a robot has sent (syn). Agents may connect
+// at any time, all at once; each gets a parked robot of the scene at `scene`.
+//
+// Untrusted input: a frame longer than 64 KiB, or a client that stops reading
+// (more than 1 MiB unsent), drops that client; a malformed message or predicate
+// is logged, counted and ignored. Facts: shared/protocols/simspark.md.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace turf {
+
+struct SimSparkBridgeOptions {
+  int domain = 0;
+  std::string prefix = "turf";
+  std::string qos_file;
+  std::string listen = "0.0.0.0";
+  uint16_t agent_port = 3100;    // 0: any free port (tests)
+  uint16_t monitor_port = 3200;  // 0: any free port
+  bool sync_mode = false;
+  uint64_t seed = 1;
+  std::chrono::milliseconds attach_timeout{30000};  // waiting for turf-sim at start
+  std::chrono::milliseconds step_timeout{5000};     // turf-sim's answer to one cycle
+  // Sync mode: an agent that sends no (syn) for this long is dropped (0: wait forever).
+  std::chrono::milliseconds sync_timeout{10000};
+  size_t max_clients = 64;
+  double duration = 0.0;  // stop after this many simulated seconds (0: run until stopped)
+};
+
+struct SimSparkBridgeStats {
+  uint64_t cycles = 0;
+  double sim_time = 0.0;
+  int agents = 0;
+  uint64_t dropped_clients = 0;
+  uint64_t refused = 0;  // refused input of every kind
+  std::map<std::string, uint64_t> refused_by_kind;
+};
+
+class SimSparkBridge {
+ public:
+  // Binds the ports; throws std::runtime_error if it cannot.
+  explicit SimSparkBridge(SimSparkBridgeOptions options);
+  ~SimSparkBridge();
+  SimSparkBridge(const SimSparkBridge&) = delete;
+  SimSparkBridge& operator=(const SimSparkBridge&) = delete;
+
+  uint16_t agent_port() const;
+  uint16_t monitor_port() const;
+  // Until stop() (polled), a trainer's (killsim) or a fatal DDS error; false on an error.
+  bool Run(const std::function<bool()>& stop);
+  SimSparkBridgeStats Stats() const;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace turf

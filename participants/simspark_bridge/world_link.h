@@ -1,0 +1,54 @@
+// The SimSpark bridge's DDS side: it drives turf-sim (a legged scene) in
+// lockstep, one SimSpark cycle at a time, and assembles what the world looks
+// like after each cycle.
+//
+// Writes: control (SimControl: OP_SET_TIME_MODE, OP_TELEPORT_*, OP_STEP with joint commands).
+// Reads:  legged/scene (latched), robots/joint_state, robots/imu, robots/force,
+//         robots/links, world_state (the ball), control_reply.
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dds/participant.h"
+#include "participants/simspark_bridge/session.h"
+
+namespace turf {
+
+class WorldLink {
+ public:
+  // Throws std::runtime_error if the DDS entities cannot be created.
+  explicit WorldLink(const dds::ParticipantOptions& options);
+  ~WorldLink();
+  WorldLink(const WorldLink&) = delete;
+  WorldLink& operator=(const WorldLink&) = delete;
+
+  std::string TopicName(dds::Topic topic) const;
+
+  struct Scene {
+    std::string name;
+    std::vector<std::string> robots;
+    std::vector<simspark::RobotMove> park;  // each robot's torso pose now
+  };
+  // Waits for turf-sim's scene, switches it to lockstep and reads where each
+  // robot stands; nullopt (error set) on timeout or refusal.
+  std::optional<Scene> Attach(std::chrono::milliseconds timeout, const std::function<bool()>& stop, std::string* error);
+  // Moves, then one step of `steps` physics steps with the joint velocities;
+  // waits for the reply and the world after it. nullopt (error set) when
+  // turf-sim refused the step or did not answer within `timeout`. A refused
+  // move is reported in `warnings` and does not stop the step.
+  std::optional<simspark::WorldSnapshot> Cycle(const simspark::WorldRequests& requests, uint32_t steps,
+                                               std::chrono::milliseconds timeout, std::string* error,
+                                               std::vector<std::string>* warnings);
+  double step_s() const;  // turf-sim's physics step (after Attach)
+  uint64_t Overflowed() const;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace turf
