@@ -13,7 +13,7 @@
 #include "bridges/simspark/framing.h"
 #include "participants/common/process.h"
 #include "participants/common/tcp.h"
-#include "participants/simspark_bridge/session.h"
+#include "bridges/simspark/session.h"
 #include "participants/simspark_bridge/world_link.h"
 
 namespace turf {

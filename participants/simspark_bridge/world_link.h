@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "dds/participant.h"
-#include "participants/simspark_bridge/session.h"
+#include "bridges/simspark/session.h"
 
 namespace turf {
 

@@ -1,4 +1,4 @@
-#include "participants/simspark_bridge/session.h"
+#include "bridges/simspark/session.h"
 
 #include <fmt/format.h>
 
