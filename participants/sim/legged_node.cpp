@@ -1,36 +1,21 @@
 #include "participants/sim/legged_node.h"
 
 #include <spdlog/spdlog.h>
-#include <turf/idl/ClockPubSubTypes.h>
 #include <turf/idl/JointsPubSubTypes.h>
-#include <turf/idl/SimControlPubSubTypes.h>
 #include <turf/idl/WorldStatePubSubTypes.h>
 
-#include <atomic>
 #include <cmath>
-#include <deque>
-#include <mutex>
-#include <thread>
 
 #include "core/legged/legged_world.h"
 #include "dds/participant.h"
-#include "participants/common/process.h"
-#include "participants/common/wakeup.h"
-#include "participants/sim/pacer.h"
+#include "participants/sim/control_loop.h"
 
 namespace turf {
 
 namespace {
 
-constexpr double kMaxSpeed = 1000.0;
-constexpr uint32_t kMaxStepRequest = 1000000;
 constexpr double kMaxPlacement = 100.0;  // m from the origin, any axis
 constexpr double kMaxBallSpeed = 50.0;   // m/s
-
-struct PendingStep {
-  uint64_t done_at_frame;
-  idl::SimControl request;
-};
 
 idl::Vec3 V3(const std::array<double, 3>& a) {
   idl::Vec3 v;
@@ -92,105 +77,79 @@ bool FromIdl(const idl::JointTarget& in, JointCommand* out) {
 
 }  // namespace
 
-class LeggedNode::Impl {
+class LeggedNode::Impl final : private ControlLoop::Node {
  public:
   Impl(LeggedScene scene, SimNodeOptions options)
       : options_(std::move(options)),
         world_(std::move(scene)),
         participant_({options_.domain, options_.name, options_.prefix, options_.qos_file}),
-        clock_writer_(participant_.MakeWriter<idl::ClockPubSubType>(dds::Topic::kClock)),
+        loop_(participant_, options_, LoopTiming(world_.scene(), world_.step_ns()), *this),
         joint_writer_(participant_.MakeWriter<idl::JointStatePubSubType>(dds::Topic::kRobotJointState)),
         imu_writer_(participant_.MakeWriter<idl::ImuStatePubSubType>(dds::Topic::kRobotImu)),
         force_writer_(participant_.MakeWriter<idl::ForceStatePubSubType>(dds::Topic::kRobotForce)),
         links_writer_(participant_.MakeWriter<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks)),
         world_writer_(participant_.MakeWriter<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
         scene_writer_(participant_.MakeWriter<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene)),
-        reply_writer_(participant_.MakeWriter<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
         command_reader_(participant_.MakeReader<idl::JointCommandPubSubType>(dds::Topic::kRobotJointCommand,
-                                                                             [this] { wakeup_.Notify(); })),
-        control_reader_(
-            participant_.MakeReader<idl::SimControlPubSubType>(dds::Topic::kControl, [this] { wakeup_.Notify(); })),
-        rejects_("input") {
-    mode_ = options_.mode;
-    speed_ = options_.mode == TimeMode::kScaled ? options_.speed : 1.0;
-    paused_ = options_.start_paused;
-    const LeggedScene& s = world_.scene();
-    state_every_ = std::max<int64_t>(1, std::llround(1.0 / (s.rates.joint_state_hz * s.physics.step)));
-  }
+                                                                             [this] { loop_.Wake(); })) {}
 
   void Run(const std::function<bool()>& stop) {
     ReportStartup();
     PublishSceneInfo();
-    PublishState();
-    const int64_t end_ns = options_.duration > 0 ? std::llround(options_.duration * 1e9) : -1;
-    pacer_.Anchor(Pacer::Clock::now(), world_.time_ns());
-    auto next_status = Pacer::Clock::now() + std::chrono::seconds(10);
-    while (!stop()) {
-      HandleInputs();
-      const auto now = Pacer::Clock::now();
-      pacer_.Measure(now, world_.time_ns());
-      if (now >= next_status) {
-        ReportStatus();
-        next_status = now + std::chrono::seconds(10);
-      }
-      if (!CanStep()) {
-        wakeup_.WaitUntil(now + std::chrono::milliseconds(50));
-        pacer_.Anchor(Pacer::Clock::now(), world_.time_ns());
-        continue;
-      }
-      if (pending_steps_ == 0) Pace();
-      world_.Step();
-      if (pending_steps_ > 0) --pending_steps_;
-      AfterStep();
-      if (end_ns >= 0 && world_.time_ns() >= end_ns) break;
-    }
-    ReportStatus();
+    loop_.Run(stop);
   }
 
-  SimNodeStats Stats() const { return {frame_.load(), time_ns_.load(), rejected_.load(), rtf_.load()}; }
-  uint64_t Rejected(const std::string& kind) const {
-    std::lock_guard<std::mutex> lock(rejects_mutex_);
-    return rejects_.Count(kind);
-  }
+  SimNodeStats Stats() const { return loop_.Stats(); }
+  uint64_t Rejected(const std::string& kind) const { return loop_.Rejected(kind); }
 
  private:
-  bool CanStep() const { return pending_steps_ > 0 || (!paused_ && mode_ != TimeMode::kLockstep); }
-
-  void Pace() {
-    if (mode_ != TimeMode::kRealtime && mode_ != TimeMode::kScaled) return;
-    const auto deadline = pacer_.Deadline(world_.time_ns() + world_.step_ns(), speed_);
-    const auto now = Pacer::Clock::now();
-    if (pacer_.CatchUp(now, deadline, world_.time_ns())) return;
-    if (deadline > now) std::this_thread::sleep_until(deadline);
+  static ControlLoop::Timing LoopTiming(const LeggedScene& s, int64_t step_ns) {
+    return {s.physics.step, step_ns, s.rates.joint_state_hz};
   }
 
-  void Reject(const std::string& kind, const std::string& detail) {
-    std::lock_guard<std::mutex> lock(rejects_mutex_);
-    rejects_.Reject(kind, detail);
-    rejected_.store(rejects_.Total());
-  }
+  // --- ControlLoop::Node ---
 
-  void HandleInputs() {
+  int64_t TimeNs() const override { return world_.time_ns(); }
+  uint64_t Frame() const override { return world_.frame(); }
+
+  void TakeCommands() override {
     if (command_reader_->Take(&command_inbox_)) {
       for (const idl::JointCommand& c : command_inbox_) ApplyCommand(c);
     }
-    if (control_reader_->Take(&control_inbox_)) {
-      for (const idl::SimControl& c : control_inbox_) HandleControl(c);
-    }
-    const uint64_t overflow = command_reader_->Overflowed() + control_reader_->Overflowed();
-    if (overflow > reported_overflow_) {
-      Reject("queue_overflow",
-             fmt::format("{} samples arrived faster than the loop could take them", overflow - reported_overflow_));
-      reported_overflow_ = overflow;
-    }
   }
+
+  uint64_t CommandsOverflowed() const override { return command_reader_->Overflowed(); }
+  void Step() override { world_.Step(); }
+  void AfterStep() override {}
+
+  std::string ApplyStepCommands(const idl::SimControl& req) override {
+    if (!req.commands().empty()) return "legged robots take joint_commands, not SSL commands";
+    // All of the step's joint commands or none.
+    for (const idl::JointCommand& c : req.joint_commands()) {
+      const JointCommandError e = CheckCommand(c, &checked_);
+      if (e != JointCommandError::kOk)
+        return fmt::format("joint command for '{}': {}", c.robot(), JointCommandErrorName(e));
+    }
+    for (const idl::JointCommand& c : req.joint_commands()) {
+      CheckCommand(c, &checked_);
+      for (const JointCommand& j : checked_) world_.SetJointCommand(world_.RobotIndex(c.robot()), j);
+    }
+    return "";
+  }
+
+  std::string TeleportBall(const idl::SimControl& req) override { return PlaceBall(req.ball()); }
+  std::string TeleportRobot(const idl::SimControl& req) override { return PlaceRobot(req.legged()); }
+  std::string ChangeRealism(const std::string&) override { return "not supported in legged scenes yet"; }
+  void ResetWorld() override { world_.Reset(); }
+
+  // --- Inputs ---
 
   // A sample is checked whole first: a refused one changes no joint.
   void ApplyCommand(const idl::JointCommand& in) {
     const JointCommandError error = CheckCommand(in, &checked_);
     if (error != JointCommandError::kOk) {
-      Reject(fmt::format("joint_command.{}", JointCommandErrorName(error)),
-             fmt::format("robot '{}', {} joints", in.robot(), in.joints().size()));
+      loop_.Reject(fmt::format("joint_command.{}", JointCommandErrorName(error)),
+                   fmt::format("robot '{}', {} joints", in.robot(), in.joints().size()));
       return;
     }
     for (const JointCommand& c : checked_) world_.SetJointCommand(world_.RobotIndex(in.robot()), c);
@@ -230,121 +189,7 @@ class LeggedNode::Impl {
     return e == PlacementError::kOk ? "" : fmt::format("ball: {}", PlacementErrorName(e));
   }
 
-  void HandleControl(const idl::SimControl& req) {
-    std::string why;
-    switch (req.op()) {
-      case idl::OP_PAUSE:
-        paused_ = true;
-        break;
-      case idl::OP_RESUME:
-        paused_ = false;
-        break;
-      case idl::OP_STEP:
-        why = QueueSteps(req);
-        if (why.empty()) return;  // replied when the steps are done
-        break;
-      case idl::OP_RESET:
-        ResetWorld();
-        break;
-      case idl::OP_SET_TIME_MODE:
-        why = SetTimeMode(req.time_mode(), req.speed());
-        break;
-      case idl::OP_TELEPORT_BALL:
-        why = PlaceBall(req.ball());
-        break;
-      case idl::OP_TELEPORT_ROBOT:
-        why = PlaceRobot(req.legged());
-        break;
-      case idl::OP_SET_REALISM:
-        why = "not supported in legged scenes yet";
-        break;
-      default:
-        why = fmt::format("unknown op {}", static_cast<int>(req.op()));
-        break;
-    }
-    if (!why.empty()) Reject("control", fmt::format("from '{}': {}", req.client(), why));
-    Reply(req, why);
-    PublishState();
-  }
-
-  std::string QueueSteps(const idl::SimControl& req) {
-    if (!paused_ && mode_ != TimeMode::kLockstep) return "step needs a paused simulation or lockstep mode";
-    if (req.step_count() == 0 || req.step_count() > kMaxStepRequest)
-      return fmt::format("step_count must be 1..{}", kMaxStepRequest);
-    if (!req.commands().empty()) return "legged robots take joint_commands, not SSL commands";
-    // All of the step's joint commands or none.
-    for (const idl::JointCommand& c : req.joint_commands()) {
-      const JointCommandError e = CheckCommand(c, &checked_);
-      if (e != JointCommandError::kOk)
-        return fmt::format("joint command for '{}': {}", c.robot(), JointCommandErrorName(e));
-    }
-    for (const idl::JointCommand& c : req.joint_commands()) {
-      CheckCommand(c, &checked_);
-      for (const JointCommand& j : checked_) world_.SetJointCommand(world_.RobotIndex(c.robot()), j);
-    }
-    pending_steps_ += req.step_count();
-    pending_replies_.push_back({world_.frame() + pending_steps_, req});
-    return "";
-  }
-
-  std::string SetTimeMode(idl::TimeMode mode, double speed) {
-    switch (mode) {
-      case idl::TIME_REALTIME:
-        mode_ = TimeMode::kRealtime;
-        speed_ = 1.0;
-        break;
-      case idl::TIME_SCALED:
-        if (!(std::isfinite(speed) && speed > 0.0 && speed <= kMaxSpeed))
-          return fmt::format("speed must be in (0, {}]", kMaxSpeed);
-        mode_ = TimeMode::kScaled;
-        speed_ = speed;
-        break;
-      case idl::TIME_FREE_RUNNING:
-        mode_ = TimeMode::kFreeRunning;
-        break;
-      case idl::TIME_LOCKSTEP:
-        mode_ = TimeMode::kLockstep;
-        break;
-      default:
-        return fmt::format("unknown time mode {}", static_cast<int>(mode));
-    }
-    spdlog::info("time mode {} (speed {})", TimeModeName(mode_), speed_);
-    pacer_.Anchor(Pacer::Clock::now(), world_.time_ns());
-    return "";
-  }
-
-  void ResetWorld() {
-    world_.Reset();
-    pending_steps_ = 0;
-    for (const PendingStep& p : pending_replies_) Reply(p.request, "cancelled by a reset");
-    pending_replies_.clear();
-    pacer_.Anchor(Pacer::Clock::now(), world_.time_ns());
-  }
-
-  void Reply(const idl::SimControl& req, const std::string& why) {
-    idl::SimControlReply reply;
-    reply.client(req.client());
-    reply.request_id(req.request_id());
-    reply.op(req.op());
-    reply.result(why.empty() ? idl::RESULT_OK : idl::RESULT_REJECTED);
-    reply.reason(why);
-    reply.sim_time_ns(world_.time_ns());
-    reply.frame(world_.frame());
-    reply_writer_->Write(reply);
-  }
-
-  void AfterStep() {
-    frame_.store(world_.frame());
-    time_ns_.store(world_.time_ns());
-    const bool steps_done = !pending_replies_.empty() && world_.frame() >= pending_replies_.front().done_at_frame;
-    if (world_.frame() % state_every_ == 0 || steps_done) PublishState();
-    while (!pending_replies_.empty() && world_.frame() >= pending_replies_.front().done_at_frame) {
-      Reply(pending_replies_.front().request, "");
-      pending_replies_.pop_front();
-    }
-  }
-
-  void PublishState() {
+  void PublishState() override {
     world_.State(&state_);
     for (const LeggedRobotState& r : state_.robots) {
       joint_sample_.robot(r.name);
@@ -401,16 +246,6 @@ class LeggedNode::Impl {
       world.ball().velocity(V3(state_.ball_velocity));
       world_writer_->Write(world);
     }
-    idl::Clock clock;
-    clock.sim_time_ns(world_.time_ns());
-    clock.frame(world_.frame());
-    clock.step_s(world_.scene().physics.step);
-    clock.paused(paused_);
-    clock.mode(static_cast<idl::TimeMode>(mode_));
-    clock.speed(speed_);
-    clock.real_time_factor(pacer_.real_time_factor());
-    clock_writer_->Write(clock);
-    rtf_.store(pacer_.real_time_factor());
   }
 
   void PublishSceneInfo() {
@@ -457,52 +292,31 @@ class LeggedNode::Impl {
                  name(dds::Topic::kRobotLinks), name(dds::Topic::kWorldState), name(dds::Topic::kClock),
                  s.rates.joint_state_hz, name(dds::Topic::kControlReply), name(dds::Topic::kLeggedScene));
     spdlog::info("subscribing {}, {}", name(dds::Topic::kRobotJointCommand), name(dds::Topic::kControl));
-    spdlog::info("time: {}{}{}", TimeModeName(mode_), mode_ == TimeMode::kScaled ? fmt::format(" x{}", speed_) : "",
-                 paused_ ? ", paused" : "");
+    loop_.ReportTimeMode();
   }
 
-  void ReportStatus() const {
+  void ReportStatus() const override {
     spdlog::info("t={:.1f}s frame={} rtf={:.2f} refused={} recoveries={}", world_.time_ns() * 1e-9, world_.frame(),
-                 pacer_.real_time_factor(), rejected_.load(), world_.health().instability_recoveries);
+                 loop_.real_time_factor(), loop_.rejected(), world_.health().instability_recoveries);
   }
 
   SimNodeOptions options_;
   LeggedWorld world_;
-  Pacer pacer_;
-  Wakeup wakeup_;
   dds::Participant participant_;
-  std::unique_ptr<dds::Writer<idl::ClockPubSubType>> clock_writer_;
+  ControlLoop loop_;  // before the readers: their callbacks wake it
   std::unique_ptr<dds::Writer<idl::JointStatePubSubType>> joint_writer_;
   std::unique_ptr<dds::Writer<idl::ImuStatePubSubType>> imu_writer_;
   std::unique_ptr<dds::Writer<idl::ForceStatePubSubType>> force_writer_;
   std::unique_ptr<dds::Writer<idl::LinkStatePubSubType>> links_writer_;
   std::unique_ptr<dds::Writer<idl::WorldStatePubSubType>> world_writer_;
   std::unique_ptr<dds::Writer<idl::LeggedSceneInfoPubSubType>> scene_writer_;
-  std::unique_ptr<dds::Writer<idl::SimControlReplyPubSubType>> reply_writer_;
   std::unique_ptr<dds::Reader<idl::JointCommandPubSubType>> command_reader_;
-  std::unique_ptr<dds::Reader<idl::SimControlPubSubType>> control_reader_;
-
-  TimeMode mode_ = TimeMode::kRealtime;
-  double speed_ = 1.0;
-  bool paused_ = false;
-  int64_t state_every_ = 1;
-  uint64_t pending_steps_ = 0;
-  std::deque<PendingStep> pending_replies_;
-  uint64_t reported_overflow_ = 0;
 
   LeggedWorldState state_;
   idl::JointState joint_sample_;
   idl::LinkState links_sample_;
   std::vector<JointCommand> checked_;
   std::vector<idl::JointCommand> command_inbox_;
-  std::vector<idl::SimControl> control_inbox_;
-
-  mutable std::mutex rejects_mutex_;
-  RejectLog rejects_;
-  std::atomic<uint64_t> rejected_{0};
-  std::atomic<uint64_t> frame_{0};
-  std::atomic<int64_t> time_ns_{0};
-  std::atomic<double> rtf_{0.0};
 };
 
 LeggedNode::LeggedNode(LeggedScene scene, SimNodeOptions options)

@@ -5,12 +5,16 @@
 //   robots/joint_state  JointState       per robot (keyed), every 1/rates.joint_state_hz of sim time
 //   robots/imu          ImuState         per robot, with every joint state
 //   robots/force        ForceState       per robot, with every joint state
+//   robots/links        LinkState        per robot, body poses, with every joint state
+//   world_state         WorldState       the ball (scenes with one), with every joint state
+//   legged/scene        LeggedSceneInfo  once, latched: field and robot shapes
 //   clock               Clock            with every joint state
 //   control_reply       SimControlReply  one per control request
 // Subscribes:
 //   robots/joint_command JointCommand    joint targets of one robot; each holds until replaced
-//   control              SimControl      pause/resume, step, reset, time mode (as for SSL scenes);
-//                                        teleports, realism and STEP with SSL commands are refused
+//   control              SimControl      pause/resume, step, reset, time mode (control_loop.h, as for
+//                                        SSL scenes); ball and robot teleports; STEP carries joint_commands
+//                                        (all applied or the step refused); realism and SSL commands are refused
 // Every sample from outside is validated; a refused one is counted per kind
 // ("joint_command.unknown_joint", ...), logged (rate-limited) and changes
 // nothing. Inputs are applied between physics steps, commands before control
@@ -23,7 +27,7 @@
 #include <string>
 
 #include "core/legged/legged_scene.h"
-#include "participants/sim/sim_node.h"
+#include "participants/sim/node_options.h"
 
 namespace turf {
 

@@ -10,6 +10,7 @@
 // Subscribes:
 //   ssl/command/<team>  SslRobotCommand   newest per robot; team must match topic
 //   control             SimControl        teleport, pause/resume, step, reset, time mode
+// Time, pause/step/reset, the clock and replies: control_loop.h.
 // Every sample from outside is validated; a refused one is counted, logged
 // (rate-limited) and changes nothing. Commands and control requests are applied
 // between physics steps, in arrival order.
@@ -21,27 +22,9 @@
 #include <string>
 
 #include "core/scene.h"
-#include "participants/sim/pacer.h"
+#include "participants/sim/node_options.h"
 
 namespace turf {
-
-struct SimNodeOptions {
-  int domain = 0;
-  std::string prefix = "turf";
-  std::string qos_file;  // empty: the shipped profiles
-  std::string name = "turf-sim";
-  TimeMode mode = TimeMode::kRealtime;
-  double speed = 1.0;  // for kScaled
-  bool start_paused = false;
-  double duration = 0.0;  // s of simulation time, then Run returns; 0 = until stopped
-};
-
-struct SimNodeStats {
-  uint64_t frame = 0;
-  int64_t sim_time_ns = 0;
-  uint64_t rejected = 0;  // refused samples of every kind
-  double real_time_factor = 0.0;
-};
 
 class SimNode {
  public:

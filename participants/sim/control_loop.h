@@ -1,0 +1,140 @@
+// The time and control handling both turf-sim nodes share: the run loop with
+// real-time pacing (pacer.h), pause/resume, lockstep, STEP requests (replied at
+// the frame they finish), time modes, reset, the clock, replies and the log of
+// refused inputs.
+//
+// Publishes (topic names <prefix>/...):
+//   clock          Clock            with every state publication
+//   control_reply  SimControlReply  one per control request
+// Subscribes:
+//   control        SimControl       pause/resume, step, reset, time mode here;
+//                                   teleports and realism go to the node
+// The node (SSL or legged) owns its world and its other topics and answers the
+// loop through ControlLoop::Node. Every call to the node comes from the loop's
+// thread; Stats() and Rejected() may be called from any thread.
+#pragma once
+
+#include <turf/idl/ClockPubSubTypes.h>
+#include <turf/idl/SimControlPubSubTypes.h>
+
+#include <atomic>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "dds/participant.h"
+#include "participants/common/process.h"
+#include "participants/common/wakeup.h"
+#include "participants/sim/node_options.h"
+#include "participants/sim/pacer.h"
+
+namespace turf {
+
+class ControlLoop {
+ public:
+  // What a node does for the loop. A returned string is a refusal reason ("" = done).
+  class Node {
+   public:
+    virtual int64_t TimeNs() const = 0;
+    virtual uint64_t Frame() const = 0;
+    // Takes the node's command topics (before each poll's control requests).
+    virtual void TakeCommands() = 0;
+    // Samples the command readers dropped so far.
+    virtual uint64_t CommandsOverflowed() const = 0;
+    // One physics step, with whatever commands are due.
+    virtual void Step() = 0;
+    // After each step: sensors and feedback (the state is published by the loop).
+    virtual void AfterStep() = 0;
+    // The node's state topics; the loop adds the clock.
+    virtual void PublishState() = 0;
+    // Commands a STEP request carries, applied before its steps.
+    virtual std::string ApplyStepCommands(const idl::SimControl& request) = 0;
+    virtual std::string TeleportBall(const idl::SimControl& request) = 0;
+    virtual std::string TeleportRobot(const idl::SimControl& request) = 0;
+    virtual std::string ChangeRealism(const std::string& spec) = 0;
+    // The world back to the scene's start (the loop cancels pending steps).
+    virtual void ResetWorld() = 0;
+    virtual void ReportStatus() const = 0;
+
+   protected:
+    ~Node() = default;
+  };
+
+  struct Timing {
+    double step_s = 0.0;    // the scene's physics step, as published on the clock
+    int64_t step_ns = 0;    // the world's step
+    double state_hz = 0.0;  // state publications per second of sim time
+  };
+
+  // Makes the control reader and the clock and reply writers on `participant`.
+  ControlLoop(dds::Participant& participant, const SimNodeOptions& options, Timing timing, Node& node);
+  ControlLoop(const ControlLoop&) = delete;
+  ControlLoop& operator=(const ControlLoop&) = delete;
+
+  // Publishes the state, then steps until `stop()` answers true (checked every
+  // step and at least every 50 ms while idle) or the duration is reached.
+  void Run(const std::function<bool()>& stop);
+
+  // For the node's command readers' on_data callbacks (any thread).
+  void Wake() { wakeup_.Notify(); }
+  // Counts and logs (rate-limited) a refused input of `kind`.
+  void Reject(const std::string& kind, const std::string& detail);
+  // Logs the time mode, as the last line of a node's startup report.
+  void ReportTimeMode() const;
+
+  TimeMode mode() const { return mode_; }
+  double speed() const { return speed_; }
+  double real_time_factor() const { return pacer_.real_time_factor(); }
+  uint64_t rejected() const { return rejected_.load(); }
+
+  SimNodeStats Stats() const { return {frame_.load(), time_ns_.load(), rejected_.load(), rtf_.load()}; }
+  uint64_t Rejected(const std::string& kind) const;
+
+ private:
+  struct PendingStep {
+    uint64_t done_at_frame;
+    idl::SimControl request;
+  };
+
+  bool CanStep() const { return pending_steps_ > 0 || (!paused_ && mode_ != TimeMode::kLockstep); }
+  void Pace();
+  void TakeInputs();
+  void HandleControl(const idl::SimControl& request);
+  std::string QueueSteps(const idl::SimControl& request);
+  std::string SetTimeMode(idl::TimeMode mode, double speed);
+  void Reset();
+  void Reply(const idl::SimControl& request, const std::string& why);
+  void AfterStep();
+  void PublishState();
+
+  Node& node_;
+  const SimNodeOptions options_;
+  const Timing timing_;
+  int64_t state_every_ = 1;
+  Pacer pacer_;
+  Wakeup wakeup_;
+  std::unique_ptr<dds::Writer<idl::ClockPubSubType>> clock_writer_;
+  std::unique_ptr<dds::Writer<idl::SimControlReplyPubSubType>> reply_writer_;
+  std::unique_ptr<dds::Reader<idl::SimControlPubSubType>> control_reader_;
+
+  TimeMode mode_ = TimeMode::kRealtime;
+  double speed_ = 1.0;
+  bool paused_ = false;
+  uint64_t pending_steps_ = 0;
+  std::deque<PendingStep> pending_replies_;
+  uint64_t reported_overflow_ = 0;
+  std::vector<idl::SimControl> control_inbox_;
+
+  mutable std::mutex rejects_mutex_;
+  RejectLog rejects_;
+  std::atomic<uint64_t> rejected_{0};
+  std::atomic<uint64_t> frame_{0};
+  std::atomic<int64_t> time_ns_{0};
+  std::atomic<double> rtf_{0.0};
+};
+
+}  // namespace turf

@@ -1,0 +1,29 @@
+// Options and statistics shared by turf-sim's nodes (SSL and legged scenes).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "participants/sim/pacer.h"
+
+namespace turf {
+
+struct SimNodeOptions {
+  int domain = 0;
+  std::string prefix = "turf";
+  std::string qos_file;  // empty: the shipped profiles
+  std::string name = "turf-sim";
+  TimeMode mode = TimeMode::kRealtime;
+  double speed = 1.0;  // for kScaled
+  bool start_paused = false;
+  double duration = 0.0;  // s of simulation time, then Run returns; 0 = until stopped
+};
+
+struct SimNodeStats {
+  uint64_t frame = 0;
+  int64_t sim_time_ns = 0;
+  uint64_t rejected = 0;  // refused samples of every kind
+  double real_time_factor = 0.0;
+};
+
+}  // namespace turf
