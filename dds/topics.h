@@ -24,6 +24,7 @@ enum class Topic {
   kRobotJointCommand,
   kRobotLinks,
   kLeggedScene,
+  kRobotsState,
 };
 
 struct TopicInfo {
@@ -56,6 +57,8 @@ inline constexpr TopicInfo kTopics[] = {
     {Topic::kRobotLinks, "robots/links", "turf.state", "LinkState", "legged robots' body poses, keyed by robot"},
     {Topic::kLeggedScene, "legged/scene", "turf.field", "LeggedSceneInfo",
      "legged scene: robots' shapes, 3D field size (latched)"},
+    {Topic::kRobotsState, "robots/state", "turf.state", "LeggedState",
+     "all legged robots' joints, IMU, forces and links of one frame, with the ball"},
 };
 
 const TopicInfo& Info(Topic topic);

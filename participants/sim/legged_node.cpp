@@ -54,6 +54,66 @@ idl::GeomShape ToIdl(LeggedGeom::Shape shape) {
   return idl::GEOM_OTHER;
 }
 
+// The world's state as the per-robot samples (reusing out's storage).
+void FillState(const LeggedWorldState& state, idl::LeggedState* out) {
+  const size_t n = state.robots.size();
+  out->sim_time_ns(state.time_ns);
+  out->frame(state.frame);
+  out->joints().resize(n);
+  out->imu().resize(n);
+  out->force().resize(n);
+  out->links().resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    const LeggedRobotState& r = state.robots[i];
+    idl::JointState& joints = out->joints()[i];
+    joints.robot(r.name);
+    joints.id(r.id);
+    joints.sim_time_ns(state.time_ns);
+    joints.frame(state.frame);
+    joints.name(r.joint_names);
+    joints.position(r.joint_positions);
+    joints.velocity(r.joint_velocities);
+    joints.effort(r.joint_efforts);
+
+    idl::ImuState& imu = out->imu()[i];
+    imu.robot(r.name);
+    imu.sim_time_ns(state.time_ns);
+    imu.valid(r.has_imu);
+    imu.orientation(Q4(r.orientation));
+    imu.angular_velocity(V3(r.gyro));
+    imu.linear_acceleration(V3(r.accelerometer));
+    imu.base_position(V3(r.base_position));
+    imu.base_orientation(Q4(r.base_orientation));
+
+    idl::ForceState& force = out->force()[i];
+    force.robot(r.name);
+    force.sim_time_ns(state.time_ns);
+    force.sensors().resize(r.forces.size());
+    for (size_t f = 0; f < r.forces.size(); ++f) {
+      idl::ForceReading& reading = force.sensors()[f];
+      reading.name(r.forces[f].name);
+      reading.values(r.forces[f].values);
+      reading.contact(r.forces[f].contact);
+      reading.force(V3(r.forces[f].force));
+      reading.point(V3(r.forces[f].point));
+    }
+
+    idl::LinkState& links = out->links()[i];
+    links.robot(r.name);
+    links.sim_time_ns(state.time_ns);
+    links.frame(state.frame);
+    links.links().resize(r.links.size());
+    for (size_t l = 0; l < r.links.size(); ++l) {
+      links.links()[l].name(r.links[l].name);
+      links.links()[l].position(V3(r.links[l].position));
+      links.links()[l].orientation(Q4(r.links[l].orientation));
+    }
+  }
+  out->has_ball(state.has_ball);
+  out->ball_position(V3(state.ball_position));
+  out->ball_velocity(V3(state.ball_velocity));
+}
+
 bool FromIdl(const idl::JointTarget& in, JointCommand* out) {
   out->joint = in.name();
   switch (in.mode()) {
@@ -88,6 +148,7 @@ class LeggedNode::Impl final : private ControlLoop::Node {
         imu_writer_(participant_.MakeWriter<idl::ImuStatePubSubType>(dds::Topic::kRobotImu)),
         force_writer_(participant_.MakeWriter<idl::ForceStatePubSubType>(dds::Topic::kRobotForce)),
         links_writer_(participant_.MakeWriter<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks)),
+        state_writer_(participant_.MakeWriter<idl::LeggedStatePubSubType>(dds::Topic::kRobotsState)),
         world_writer_(participant_.MakeWriter<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
         scene_writer_(participant_.MakeWriter<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene)),
         command_reader_(participant_.MakeReader<idl::JointCommandPubSubType>(dds::Topic::kRobotJointCommand,
@@ -191,53 +252,14 @@ class LeggedNode::Impl final : private ControlLoop::Node {
 
   void PublishState() override {
     world_.State(&state_);
-    for (const LeggedRobotState& r : state_.robots) {
-      joint_sample_.robot(r.name);
-      joint_sample_.id(r.id);
-      joint_sample_.sim_time_ns(state_.time_ns);
-      joint_sample_.frame(state_.frame);
-      joint_sample_.name(r.joint_names);
-      joint_sample_.position(r.joint_positions);
-      joint_sample_.velocity(r.joint_velocities);
-      joint_sample_.effort(r.joint_efforts);
-      joint_writer_->Write(joint_sample_);
-
-      idl::ImuState imu;
-      imu.robot(r.name);
-      imu.sim_time_ns(state_.time_ns);
-      imu.valid(r.has_imu);
-      imu.orientation(Q4(r.orientation));
-      imu.angular_velocity(V3(r.gyro));
-      imu.linear_acceleration(V3(r.accelerometer));
-      imu.base_position(V3(r.base_position));
-      imu.base_orientation(Q4(r.base_orientation));
-      imu_writer_->Write(imu);
-
-      idl::ForceState force;
-      force.robot(r.name);
-      force.sim_time_ns(state_.time_ns);
-      for (const ForceReading& f : r.forces) {
-        idl::ForceReading reading;
-        reading.name(f.name);
-        reading.values(f.values);
-        reading.contact(f.contact);
-        reading.force(V3(f.force));
-        reading.point(V3(f.point));
-        force.sensors().push_back(reading);
-      }
-      force_writer_->Write(force);
-
-      links_sample_.robot(r.name);
-      links_sample_.sim_time_ns(state_.time_ns);
-      links_sample_.frame(state_.frame);
-      links_sample_.links().resize(r.links.size());
-      for (size_t i = 0; i < r.links.size(); ++i) {
-        links_sample_.links()[i].name(r.links[i].name);
-        links_sample_.links()[i].position(V3(r.links[i].position));
-        links_sample_.links()[i].orientation(Q4(r.links[i].orientation));
-      }
-      links_writer_->Write(links_sample_);
+    FillState(state_, &frame_sample_);
+    for (size_t i = 0; i < state_.robots.size(); ++i) {
+      joint_writer_->Write(frame_sample_.joints()[i]);
+      imu_writer_->Write(frame_sample_.imu()[i]);
+      force_writer_->Write(frame_sample_.force()[i]);
+      links_writer_->Write(frame_sample_.links()[i]);
     }
+    state_writer_->Write(frame_sample_);
     if (state_.has_ball) {
       idl::WorldState world;
       world.sim_time_ns(state_.time_ns);
@@ -287,10 +309,13 @@ class LeggedNode::Impl final : private ControlLoop::Node {
                    r.forces.size(), r.has_imu ? ", IMU" : "");
     spdlog::info("DDS domain {}, QoS profiles {}", options_.domain, participant_.options().qos_file);
     auto name = [this](dds::Topic t) { return participant_.TopicName(t); };
-    spdlog::info("publishing {}, {}, {}, {}, {} and {} at {:.0f} Hz of sim time; {}, {} (latched)",
-                 name(dds::Topic::kRobotJointState), name(dds::Topic::kRobotImu), name(dds::Topic::kRobotForce),
-                 name(dds::Topic::kRobotLinks), name(dds::Topic::kWorldState), name(dds::Topic::kClock),
-                 s.rates.joint_state_hz, name(dds::Topic::kControlReply), name(dds::Topic::kLeggedScene));
+    spdlog::info(
+        "publishing {}, {}, {}, {}, {} (all four in one sample), {} and {} at {:.0f} Hz of sim time; {}, {} "
+        "(latched)",
+        name(dds::Topic::kRobotJointState), name(dds::Topic::kRobotImu), name(dds::Topic::kRobotForce),
+        name(dds::Topic::kRobotLinks), name(dds::Topic::kRobotsState), name(dds::Topic::kWorldState),
+        name(dds::Topic::kClock), s.rates.joint_state_hz, name(dds::Topic::kControlReply),
+        name(dds::Topic::kLeggedScene));
     spdlog::info("subscribing {}, {}", name(dds::Topic::kRobotJointCommand), name(dds::Topic::kControl));
     loop_.ReportTimeMode();
   }
@@ -308,13 +333,13 @@ class LeggedNode::Impl final : private ControlLoop::Node {
   std::unique_ptr<dds::Writer<idl::ImuStatePubSubType>> imu_writer_;
   std::unique_ptr<dds::Writer<idl::ForceStatePubSubType>> force_writer_;
   std::unique_ptr<dds::Writer<idl::LinkStatePubSubType>> links_writer_;
+  std::unique_ptr<dds::Writer<idl::LeggedStatePubSubType>> state_writer_;
   std::unique_ptr<dds::Writer<idl::WorldStatePubSubType>> world_writer_;
   std::unique_ptr<dds::Writer<idl::LeggedSceneInfoPubSubType>> scene_writer_;
   std::unique_ptr<dds::Reader<idl::JointCommandPubSubType>> command_reader_;
 
   LeggedWorldState state_;
-  idl::JointState joint_sample_;
-  idl::LinkState links_sample_;
+  idl::LeggedState frame_sample_;
   std::vector<JointCommand> checked_;
   std::vector<idl::JointCommand> command_inbox_;
 };

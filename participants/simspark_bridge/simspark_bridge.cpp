@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "bridges/simspark/framing.h"
+#include "bridges/simspark/session.h"
 #include "participants/common/process.h"
 #include "participants/common/tcp.h"
-#include "bridges/simspark/session.h"
 #include "participants/simspark_bridge/world_link.h"
 
 namespace turf {
@@ -122,9 +122,10 @@ class SimSparkBridge::Impl {
     std::string error;
     std::vector<std::string> warnings;
     const simspark::WorldRequests requests = session_->TakeRequests();
-    auto world = link_.Cycle(requests, steps_, options_.step_timeout, &error, &warnings);
+    auto world = link_.Cycle(requests, steps_, options_.step_timeout, stop, &error, &warnings);
     for (const std::string& w : warnings) spdlog::warn("turf-sim refused {}", w);
     if (!world) {
+      if (stop()) return true;
       spdlog::error("{}; attaching again", error);
       return Attach(stop) || stop();
     }

@@ -3,7 +3,6 @@
 #include <turf/idl/ClockPubSubTypes.h>
 #include <turf/idl/JointsPubSubTypes.h>
 #include <turf/idl/SimControlPubSubTypes.h>
-#include <turf/idl/WorldStatePubSubTypes.h>
 
 #include <fmt/format.h>
 
@@ -28,15 +27,6 @@ idl::Vec3 V3(const Eigen::Vector3d& v) {
 Eigen::Vector3d E3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 std::array<double, 3> A3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
-// What turf-sim published for one robot, gathered until all parts carry the
-// cycle's frame.
-struct RobotParts {
-  std::optional<idl::JointState> joints;
-  std::optional<idl::ImuState> imu;
-  std::optional<idl::ForceState> force;
-  std::optional<idl::LinkState> links;
-};
-
 }  // namespace
 
 class WorldLink::Impl {
@@ -47,11 +37,7 @@ class WorldLink::Impl {
         reply_(participant_.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply, Wake())),
         scene_(participant_.MakeReader<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene, Wake())),
         clock_(participant_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock, Wake())),
-        joints_(participant_.MakeReader<idl::JointStatePubSubType>(dds::Topic::kRobotJointState, Wake())),
-        imu_(participant_.MakeReader<idl::ImuStatePubSubType>(dds::Topic::kRobotImu, Wake())),
-        force_(participant_.MakeReader<idl::ForceStatePubSubType>(dds::Topic::kRobotForce, Wake())),
-        links_(participant_.MakeReader<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks, Wake())),
-        world_(participant_.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState, Wake())) {}
+        state_(participant_.MakeReader<idl::LeggedStatePubSubType>(dds::Topic::kRobotsState, Wake())) {}
 
   std::function<void()> Wake() {
     return [this] { wakeup_.Notify(); };
@@ -65,15 +51,7 @@ class WorldLink::Impl {
         if (r.client() == kClient) replies_[r.request_id()] = r;
     if (scene_->Take(&scene_in_)) scene_info_ = scene_in_.back();
     if (clock_->Take(&clock_in_)) step_s_ = clock_in_.back().step_s();
-    if (joints_->Take(&joints_in_))
-      for (auto& s : joints_in_) parts_[s.robot()].joints = std::move(s);
-    if (imu_->Take(&imu_in_))
-      for (auto& s : imu_in_) parts_[s.robot()].imu = std::move(s);
-    if (force_->Take(&force_in_))
-      for (auto& s : force_in_) parts_[s.robot()].force = std::move(s);
-    if (links_->Take(&links_in_))
-      for (auto& s : links_in_) parts_[s.robot()].links = std::move(s);
-    if (world_->Take(&world_in_)) world_state_ = world_in_.back();
+    if (state_->Take(&state_in_)) state_now_ = std::move(state_in_.back());
   }
 
   // Polls until done() or the deadline; false on timeout or stop.
@@ -118,23 +96,17 @@ class WorldLink::Impl {
     Scene scene;
     scene.name = scene_info_->name();
     for (const idl::RobotDescription& r : scene_info_->robots()) scene.robots.push_back(r.robot());
-    // Where every robot stands now: its links at the current frame.
-    auto all_links = [&] {
-      for (const std::string& r : scene.robots) {
-        auto it = parts_.find(r);
-        if (it == parts_.end() || !it->second.links || it->second.links->frame() != frame_) return false;
-      }
-      return step_s_ > 0;
-    };
-    if (!WaitFor(all_links, deadline, stop)) {
-      *error = fmt::format("turf-sim did not publish every robot's links at frame {} ({} of {} robots seen, step {} s)",
-                           frame_, parts_.size(), scene.robots.size(), step_s_);
+    // Where every robot stands now.
+    auto current = [&] { return step_s_ > 0 && Complete(scene.robots); };
+    if (!WaitFor(current, deadline, stop)) {
+      *error =
+          fmt::format("turf-sim did not publish the state of its {} robots at frame {}", scene.robots.size(), frame_);
       return std::nullopt;
     }
-    for (const std::string& r : scene.robots) {
-      const idl::LinkPose& torso = parts_[r].links->links().at(0);
+    for (const idl::LinkState& links : state_now_->links()) {
+      const idl::LinkPose& torso = links.links().at(0);
       simspark::RobotMove park;
-      park.robot = r;
+      park.robot = links.robot();
       park.position = E3(torso.position());
       park.orientation = Eigen::Quaterniond(torso.orientation().w(), torso.orientation().x(), torso.orientation().y(),
                                             torso.orientation().z());
@@ -145,8 +117,8 @@ class WorldLink::Impl {
   }
 
   std::optional<simspark::WorldSnapshot> Cycle(const simspark::WorldRequests& requests, uint32_t steps,
-                                               std::chrono::milliseconds timeout, std::string* error,
-                                               std::vector<std::string>* warnings) {
+                                               std::chrono::milliseconds timeout, const std::function<bool()>& stop,
+                                               std::string* error, std::vector<std::string>* warnings) {
     std::vector<std::pair<uint64_t, std::string>> moves;
     for (const simspark::RobotMove& m : requests.moves) {
       idl::SimControl move;
@@ -186,7 +158,7 @@ class WorldLink::Impl {
     }
     const uint64_t id = Send(step);
     const auto deadline = Clock::now() + timeout;
-    if (!WaitFor([&] { return replies_.count(id) > 0; }, deadline)) {
+    if (!WaitFor([&] { return replies_.count(id) > 0; }, deadline, stop)) {
       *error = "turf-sim did not answer the step";
       return std::nullopt;
     }
@@ -202,41 +174,41 @@ class WorldLink::Impl {
       return std::nullopt;
     }
     frame_ = reply.frame();
-    auto complete = [&] {
-      if (!world_state_ || world_state_->frame() != frame_) return false;
-      for (const std::string& r : robots_) {
-        auto it = parts_.find(r);
-        if (it == parts_.end()) return false;
-        const RobotParts& p = it->second;
-        if (!p.joints || !p.imu || !p.force || !p.links || p.joints->frame() != frame_ || p.links->frame() != frame_ ||
-            p.imu->sim_time_ns() != reply.sim_time_ns() || p.force->sim_time_ns() != reply.sim_time_ns())
-          return false;
-      }
-      return true;
-    };
-    if (!WaitFor(complete, deadline)) {
+    if (!WaitFor([&] { return Complete(robots_); }, deadline, stop)) {
       *error = "turf-sim did not publish the world after the step";
       return std::nullopt;
     }
-    return Snapshot(reply.sim_time_ns());
+    return Snapshot();
   }
 
-  simspark::WorldSnapshot Snapshot(int64_t time_ns) const {
+  // The newest state is of the current frame and has every robot, whole.
+  bool Complete(const std::vector<std::string>& robots) const {
+    if (!state_now_ || state_now_->frame() != frame_) return false;
+    const idl::LeggedState& s = *state_now_;
+    const size_t n = s.joints().size();
+    if (n != robots.size() || s.imu().size() != n || s.force().size() != n || s.links().size() != n) return false;
+    for (size_t i = 0; i < n; ++i) {
+      if (s.joints()[i].robot() != robots[i] || s.links()[i].links().empty()) return false;
+    }
+    return true;
+  }
+
+  simspark::WorldSnapshot Snapshot() const {
+    const idl::LeggedState& s = *state_now_;
     simspark::WorldSnapshot w;
-    w.time = time_ns * 1e-9;
-    w.ball = E3(world_state_->ball().position());
-    w.ball_velocity = E3(world_state_->ball().velocity());
-    for (const std::string& name : robots_) {
-      const RobotParts& p = parts_.at(name);
+    w.time = s.sim_time_ns() * 1e-9;
+    w.ball = E3(s.ball_position());
+    w.ball_velocity = E3(s.ball_velocity());
+    for (size_t i = 0; i < s.joints().size(); ++i) {
       simspark::RobotSnapshot r;
-      r.name = name;
-      r.joint_names = p.joints->name();
-      r.joint_positions = p.joints->position();
-      r.gyro = A3(p.imu->angular_velocity());
-      r.accelerometer = A3(p.imu->linear_acceleration());
-      for (const idl::ForceReading& f : p.force->sensors())
+      r.name = s.joints()[i].robot();
+      r.joint_names = s.joints()[i].name();
+      r.joint_positions = s.joints()[i].position();
+      r.gyro = A3(s.imu()[i].angular_velocity());
+      r.accelerometer = A3(s.imu()[i].linear_acceleration());
+      for (const idl::ForceReading& f : s.force()[i].sensors())
         r.feet.push_back({f.name(), f.contact(), A3(f.point()), A3(f.force())});
-      for (const idl::LinkPose& l : p.links->links()) {
+      for (const idl::LinkPose& l : s.links()[i].links()) {
         r.links.push_back(
             {l.name(), E3(l.position()),
              Eigen::Quaterniond(l.orientation().w(), l.orientation().x(), l.orientation().y(), l.orientation().z())});
@@ -247,10 +219,7 @@ class WorldLink::Impl {
   }
 
   double step_s() const { return step_s_; }
-  uint64_t Overflowed() const {
-    return reply_->Overflowed() + joints_->Overflowed() + imu_->Overflowed() + force_->Overflowed() +
-           links_->Overflowed() + world_->Overflowed();
-  }
+  uint64_t Overflowed() const { return reply_->Overflowed() + state_->Overflowed(); }
 
  private:
   static constexpr const char* kClient = "turf-simspark-bridge";
@@ -261,24 +230,15 @@ class WorldLink::Impl {
   std::unique_ptr<dds::Reader<idl::SimControlReplyPubSubType>> reply_;
   std::unique_ptr<dds::Reader<idl::LeggedSceneInfoPubSubType>> scene_;
   std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_;
-  std::unique_ptr<dds::Reader<idl::JointStatePubSubType>> joints_;
-  std::unique_ptr<dds::Reader<idl::ImuStatePubSubType>> imu_;
-  std::unique_ptr<dds::Reader<idl::ForceStatePubSubType>> force_;
-  std::unique_ptr<dds::Reader<idl::LinkStatePubSubType>> links_;
-  std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> world_;
+  std::unique_ptr<dds::Reader<idl::LeggedStatePubSubType>> state_;
 
   std::vector<idl::SimControlReply> reply_in_;
   std::vector<idl::LeggedSceneInfo> scene_in_;
   std::vector<idl::Clock> clock_in_;
-  std::vector<idl::JointState> joints_in_;
-  std::vector<idl::ImuState> imu_in_;
-  std::vector<idl::ForceState> force_in_;
-  std::vector<idl::LinkState> links_in_;
-  std::vector<idl::WorldState> world_in_;
+  std::vector<idl::LeggedState> state_in_;
 
   std::optional<idl::LeggedSceneInfo> scene_info_;
-  std::optional<idl::WorldState> world_state_;
-  std::map<std::string, RobotParts> parts_;
+  std::optional<idl::LeggedState> state_now_;
   std::map<uint64_t, idl::SimControlReply> replies_;
   std::vector<std::string> robots_;
   uint64_t request_id_ = 0;
@@ -294,9 +254,10 @@ std::optional<WorldLink::Scene> WorldLink::Attach(std::chrono::milliseconds time
   return impl_->Attach(timeout, stop, error);
 }
 std::optional<simspark::WorldSnapshot> WorldLink::Cycle(const simspark::WorldRequests& requests, uint32_t steps,
-                                                        std::chrono::milliseconds timeout, std::string* error,
+                                                        std::chrono::milliseconds timeout,
+                                                        const std::function<bool()>& stop, std::string* error,
                                                         std::vector<std::string>* warnings) {
-  return impl_->Cycle(requests, steps, timeout, error, warnings);
+  return impl_->Cycle(requests, steps, timeout, stop, error, warnings);
 }
 double WorldLink::step_s() const { return impl_->step_s(); }
 uint64_t WorldLink::Overflowed() const { return impl_->Overflowed(); }

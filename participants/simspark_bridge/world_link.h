@@ -3,18 +3,19 @@
 // like after each cycle.
 //
 // Writes: control (SimControl: OP_SET_TIME_MODE, OP_TELEPORT_*, OP_STEP with joint commands).
-// Reads:  legged/scene (latched), robots/joint_state, robots/imu, robots/force,
-//         robots/links, world_state (the ball), control_reply.
+// Reads:  legged/scene (latched), robots/state (every robot and the ball in one
+//         sample per frame), clock, control_reply.
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "dds/participant.h"
 #include "bridges/simspark/session.h"
+#include "dds/participant.h"
 
 namespace turf {
 
@@ -41,8 +42,8 @@ class WorldLink {
   // turf-sim refused the step or did not answer within `timeout`. A refused
   // move is reported in `warnings` and does not stop the step.
   std::optional<simspark::WorldSnapshot> Cycle(const simspark::WorldRequests& requests, uint32_t steps,
-                                               std::chrono::milliseconds timeout, std::string* error,
-                                               std::vector<std::string>* warnings);
+                                               std::chrono::milliseconds timeout, const std::function<bool()>& stop,
+                                               std::string* error, std::vector<std::string>* warnings);
   double step_s() const;  // turf-sim's physics step (after Attach)
   uint64_t Overflowed() const;
 

@@ -1,0 +1,115 @@
+// turf-bench-simspark: N scripted SimSpark agents against turf-simspark-bridge
+// (started by bench/run.sh with turf-sim). All agents connect at once, build
+// mixed robot types (the team composition rules), join two teams, beam, then
+// answer every perception with all 22 hinge velocities (a slow sway) and
+// (syn). Prints simulated seconds per wall second over the measured stretch.
+#include <poll.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "tests/simspark/agent_client.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr int kTypes[11] = {0, 0, 0, 0, 0, 0, 0, 1, 1, 2, 3};  // <= 7 of a type, <= 9 of two, >= 3 types
+constexpr const char* kEffectors[22] = {"he1",  "he2",  "rae1", "rae2", "rae3", "rae4", "lae1", "lae2",
+                                        "lae3", "lae4", "rle1", "rle2", "rle3", "rle4", "rle5", "rle6",
+                                        "lle1", "lle2", "lle3", "lle4", "lle5", "lle6"};
+
+double NowIn(const std::string& m) {
+  const size_t at = m.find("(now ");
+  return at == std::string::npos ? -1.0 : std::stod(m.substr(at + 5));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"turf-bench-simspark: scripted agents against turf-simspark-bridge"};
+  int port = 3100;
+  int agents = 22;
+  double seconds = 20.0;
+  bool header = false;
+  std::string label = "";
+  app.add_option("--port", port, "the bridge's agent port")->capture_default_str();
+  app.add_option("--agents", agents, "agents (two teams, up to 22)")->capture_default_str()->check(CLI::Range(1, 22));
+  app.add_option("--seconds", seconds, "simulated seconds to measure")->capture_default_str();
+  app.add_option("--label", label, "first column of the table row");
+  app.add_flag("--header", header, "print the table header");
+  CLI11_PARSE(app, argc, argv);
+
+  std::vector<turf::test::AgentClient> clients(agents);
+  for (int i = 0; i < agents; ++i) {
+    if (!clients[i].Connect(static_cast<uint16_t>(port))) {
+      std::fprintf(stderr, "agent %d cannot connect to port %d\n", i, port);
+      return 1;
+    }
+  }
+  for (int i = 0; i < agents; ++i)
+    clients[i].Send("(scene rsg/agent/nao/nao_hetero.rsg " + std::to_string(kTypes[i % 11]) + ")");
+  for (int i = 0; i < agents; ++i) {
+    if (!clients[i].Receive()) {
+      std::fprintf(stderr, "agent %d got no perception\n", i);
+      return 1;
+    }
+    const std::string team = i % 2 == 0 ? "BenchA" : "BenchB";
+    clients[i].Send("(init (unum " + std::to_string(i / 2 + 1) + ")(teamname " + team + "))(syn)");
+  }
+  std::vector<pollfd> fds(agents);
+  for (int i = 0; i < agents; ++i) fds[i] = {clients[i].fd(), POLLIN, 0};
+  std::vector<uint64_t> perceptions(agents, 0);
+  double t_start = -1.0;
+  double t_now = 0.0;
+  Clock::time_point wall_start;
+  uint64_t bytes = 0;
+  const auto give_up = Clock::now() + std::chrono::seconds(static_cast<int>(seconds * 20 + 60));
+  while (Clock::now() < give_up) {
+    if (poll(fds.data(), fds.size(), 1000) <= 0) continue;
+    for (int i = 0; i < agents; ++i) {
+      if (!(fds[i].revents & POLLIN)) continue;
+      if (!clients[i].ReadSome()) {
+        std::fprintf(stderr, "agent %d: the bridge closed the connection\n", i);
+        return 1;
+      }
+      while (auto m = clients[i].Next()) {
+        bytes += m->size();
+        const double t = NowIn(*m);
+        ++perceptions[i];
+        std::string answer;
+        if (perceptions[i] == 3)
+          answer = "(beam " + std::to_string(-2.0 - i / 2) + " " + std::to_string(i % 5 - 2) + " 0)";
+        for (int j = 0; j < 22; ++j) {
+          char buf[32];
+          std::snprintf(buf, sizeof(buf), "(%s %.2f)", kEffectors[j], 0.3 * std::sin(t * 2.0 + j));
+          answer += buf;
+        }
+        clients[i].Send(answer + "(syn)");
+        if (i == 0 && t >= 0) {
+          t_now = t;
+          if (t_start < 0 && perceptions[0] >= 10) {
+            t_start = t;
+            wall_start = Clock::now();
+          }
+        }
+      }
+    }
+    if (t_start >= 0 && t_now - t_start >= seconds) break;
+  }
+  const double wall = std::chrono::duration<double>(Clock::now() - wall_start).count();
+  const double sim = t_now - t_start;
+  if (sim < seconds) {
+    std::fprintf(stderr, "measured only %.2f s of simulation\n", sim);
+    return 1;
+  }
+  uint64_t total = 0;
+  for (uint64_t p : perceptions) total += p;
+  if (header) std::printf("%-28s %8s %8s %8s %10s %12s\n", "run", "agents", "sim s", "wall s", "RTF", "KB/agent/s");
+  std::printf("%-28s %8d %8.2f %8.2f %9.2fx %12.1f\n", label.c_str(), agents, sim, wall, sim / wall,
+              bytes / 1024.0 / agents / wall);
+  return total > 0 ? 0 : 1;
+}

@@ -1,0 +1,96 @@
+// A scripted SimSpark agent's connection for tests and benchmarks: blocking
+// TCP with timeouts and the 4-byte big-endian length framing.
+#pragma once
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdint>
+#include <cstring>
+#include <optional>
+#include <string>
+
+namespace turf::test {
+
+class AgentClient {
+ public:
+  AgentClient() = default;
+  ~AgentClient() { Close(); }
+  AgentClient(const AgentClient&) = delete;
+  AgentClient& operator=(const AgentClient&) = delete;
+  AgentClient(AgentClient&& o) noexcept : fd_(o.fd_), in_(std::move(o.in_)) { o.fd_ = -1; }
+
+  bool Connect(uint16_t port) {
+    fd_ = socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_port = htons(port);
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (connect(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) != 0) return false;
+    const int one = 1;
+    setsockopt(fd_, IPPROTO_TCP, TCP_NODELAY, &one, sizeof(one));
+    return true;
+  }
+  void Close() {
+    if (fd_ >= 0) close(fd_);
+    fd_ = -1;
+  }
+  int fd() const { return fd_; }
+
+  bool SendRaw(const std::string& bytes) {
+    size_t sent = 0;
+    while (sent < bytes.size()) {
+      const ssize_t n = send(fd_, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
+      if (n <= 0) return false;
+      sent += static_cast<size_t>(n);
+    }
+    return true;
+  }
+  bool Send(const std::string& payload) {
+    const uint32_t n = htonl(static_cast<uint32_t>(payload.size()));
+    return SendRaw(std::string(reinterpret_cast<const char*>(&n), 4) + payload);
+  }
+  // The next message, or nullopt on timeout or a closed connection.
+  std::optional<std::string> Receive(std::chrono::milliseconds timeout = std::chrono::milliseconds(5000)) {
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    while (true) {
+      if (auto m = Next()) return m;
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+      if (left.count() <= 0) return std::nullopt;
+      pollfd p{fd_, POLLIN, 0};
+      if (poll(&p, 1, static_cast<int>(left.count())) <= 0) continue;
+      if (!ReadSome()) return Next();
+    }
+  }
+  // Reads what is there without waiting; false once the peer closed.
+  bool ReadSome() {
+    char buffer[65536];
+    const ssize_t n = recv(fd_, buffer, sizeof(buffer), MSG_DONTWAIT);
+    if (n > 0) in_.append(buffer, static_cast<size_t>(n));
+    return n > 0 || (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR));
+  }
+  // A complete buffered message, if any.
+  std::optional<std::string> Next() {
+    if (in_.size() < 4) return std::nullopt;
+    uint32_t n = 0;
+    std::memcpy(&n, in_.data(), 4);
+    n = ntohl(n);
+    if (in_.size() < 4 + n) return std::nullopt;
+    std::string m = in_.substr(4, n);
+    in_.erase(0, 4 + n);
+    return m;
+  }
+
+ private:
+  int fd_ = -1;
+  std::string in_;
+};
+
+}  // namespace turf::test
