@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 
@@ -135,7 +136,7 @@ Bounds Inside(const idl::SslField& f, double r) {
   return {f.field_length() / 2 + f.boundary_width_goal_line() - r, f.field_width() / 2 + f.boundary_width() - r};
 }
 
-void TeleportBall(Fields& in, const std::optional<idl::SslField>& field, PageRequest* out) {
+void TeleportBall(Fields& in, const idl::SslField* field, PageRequest* out) {
   if (!in.OnlyKeys({"op", "x", "y", "z", "vx", "vy", "vz"})) return;
   const double big = 1e3;  // numbers past any field: out of range before the wall check
   const double x = in.Number("x", -big, big);
@@ -164,7 +165,7 @@ void TeleportBall(Fields& in, const std::optional<idl::SslField>& field, PageReq
   out->control.ball().roll(z <= field->ball_radius() && vz == 0.0);
 }
 
-void TeleportRobot(Fields& in, const std::optional<idl::SslField>& field, PageRequest* out) {
+void TeleportRobot(Fields& in, const idl::SslField* field, PageRequest* out) {
   const bool on_field = in.Bool("on_field");
   if (!in.ok()) return;
   if (!(on_field ? in.OnlyKeys({"op", "team", "id", "on_field", "x", "y", "yaw"})
@@ -205,6 +206,77 @@ void TeleportRobot(Fields& in, const std::optional<idl::SslField>& field, PageRe
   r.position().y(y);
   r.orientation(std::remainder(yaw, 2 * M_PI));
   r.velocity(V3(0, 0, 0));
+}
+
+// Legged scenes: where a ball or a robot's root may go (half extents, m).
+Bounds LeggedArea(const idl::LeggedSceneInfo& s) {
+  if (!s.has_field()) return {kLeggedArea, kLeggedArea};
+  return {s.field_length() / 2 + kLeggedMargin, s.field_width() / 2 + kLeggedMargin};
+}
+
+void TeleportLeggedBall(Fields& in, const idl::LeggedSceneInfo& scene, PageRequest* out) {
+  if (!in.OnlyKeys({"op", "x", "y", "z", "vx", "vy", "vz"})) return;
+  const double big = 1e3;
+  const double x = in.Number("x", -big, big);
+  const double y = in.Number("y", -big, big);
+  const double z = in.Number("z", -big, big, 0.0);
+  const double vx = in.Number("vx", -kMaxTeleportSpeed, kMaxTeleportSpeed, 0.0);
+  const double vy = in.Number("vy", -kMaxTeleportSpeed, kMaxTeleportSpeed, 0.0);
+  const double vz = in.Number("vz", -kMaxTeleportSpeed, kMaxTeleportSpeed, 0.0);
+  if (!in.ok()) return;
+  if (!scene.has_field()) {
+    in.Fail(PageError::kNoField, fmt::format("legged scene '{}' has no field and no ball", Fields::Clip(scene.name())));
+    return;
+  }
+  const Bounds b = LeggedArea(scene);
+  if (std::abs(x) > b.x || std::abs(y) > b.y || z < 0 || z > kMaxTeleportHeight) {
+    in.Fail(PageError::kOutsideField,
+            fmt::format("ball at ({:.3f}, {:.3f}, {:.3f}) is more than {} m off the field", x, y, z, kLeggedMargin));
+    return;
+  }
+  if (std::sqrt(vx * vx + vy * vy + vz * vz) > kMaxTeleportSpeed) {
+    in.Fail(PageError::kOutOfRange, fmt::format("ball speed is above {} m/s", kMaxTeleportSpeed));
+    return;
+  }
+  out->control.op(idl::OP_TELEPORT_BALL);
+  out->control.ball().position(V3(x, y, std::max(z, scene.ball_radius())));
+  out->control.ball().velocity(V3(vx, vy, vz));
+  out->control.ball().roll(z <= scene.ball_radius() && vz == 0.0);
+}
+
+void TeleportLeggedRobot(Fields& in, const idl::LeggedSceneInfo& scene, PageRequest* out) {
+  if (!in.OnlyKeys({"op", "robot", "x", "y", "z", "qw", "qx", "qy", "qz"})) return;
+  const std::string name = in.String("robot");
+  const double big = 1e3;
+  const double x = in.Number("x", -big, big);
+  const double y = in.Number("y", -big, big);
+  const double z = in.Number("z", 0.0, kMaxTeleportHeight);
+  double q[4] = {in.Number("qw", -2, 2), in.Number("qx", -2, 2), in.Number("qy", -2, 2), in.Number("qz", -2, 2)};
+  if (!in.ok()) return;
+  const auto& robots = scene.robots();
+  if (std::none_of(robots.begin(), robots.end(), [&](const idl::RobotDescription& r) { return r.robot() == name; })) {
+    in.Fail(PageError::kUnknownRobot, fmt::format("no robot '{}' in this scene", Fields::Clip(name)));
+    return;
+  }
+  const Bounds b = LeggedArea(scene);
+  if (std::abs(x) > b.x || std::abs(y) > b.y) {
+    in.Fail(PageError::kOutsideField, fmt::format("robot at ({:.3f}, {:.3f}) is outside the area", x, y));
+    return;
+  }
+  const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (norm < 0.5 || norm > 1.5) {
+    in.Fail(PageError::kOutOfRange, fmt::format("orientation quaternion has norm {:.3f}, not about 1", norm));
+    return;
+  }
+  idl::LeggedTeleport& t = out->control.legged();
+  out->control.op(idl::OP_TELEPORT_ROBOT);
+  t.robot(name);
+  t.position(V3(x, y, z));
+  t.orientation().w(q[0] / norm);
+  t.orientation().x(q[1] / norm);
+  t.orientation().y(q[2] / norm);
+  t.orientation().z(q[3] / norm);
+  t.reset_joints(false);
 }
 
 void Step(Fields& in, PageRequest* out) {
@@ -301,6 +373,10 @@ const char* PageErrorName(PageError error) {
 }
 
 PageRequest ParsePageRequest(std::string_view text, const std::optional<idl::SslField>& field) {
+  return ParsePageRequest(text, PageScene{field ? &*field : nullptr, nullptr});
+}
+
+PageRequest ParsePageRequest(std::string_view text, const PageScene& scene) {
   PageRequest out;
   if (text.size() > kMaxPageMessage) {
     out.error = PageError::kTooLarge;
@@ -328,10 +404,14 @@ PageRequest ParsePageRequest(std::string_view text, const std::optional<idl::Ssl
   out.op = Fields::Clip(op->get<std::string>());
   Fields in(message, &out);
   const std::string& name = op->get_ref<const std::string&>();
-  if (name == "teleport_ball") {
-    TeleportBall(in, field, &out);
+  if (name == "teleport_ball" && scene.legged) {
+    TeleportLeggedBall(in, *scene.legged, &out);
+  } else if (name == "teleport_robot" && scene.legged) {
+    TeleportLeggedRobot(in, *scene.legged, &out);
+  } else if (name == "teleport_ball") {
+    TeleportBall(in, scene.ssl, &out);
   } else if (name == "teleport_robot") {
-    TeleportRobot(in, field, &out);
+    TeleportRobot(in, scene.ssl, &out);
   } else if (name == "step") {
     Step(in, &out);
   } else if (name == "time_mode") {

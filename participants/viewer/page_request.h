@@ -9,6 +9,9 @@
 //   {"op":"teleport_robot", "team":"blue"|"yellow", "id":n, "on_field":true,
 //    "x":m, "y":m, "yaw":rad}                  place (and orient) a robot
 //   {"op":"teleport_robot", "team":..., "id":n, "on_field":false}   take it off
+//   {"op":"teleport_robot", "robot":name, "x":m, "y":m, "z":m,
+//    "qw","qx","qy","qz"}          legged scenes: the root body's pose (the
+//                                  quaternion, world <- root, is normalised)
 //   {"op":"pause"} {"op":"resume"} {"op":"reset"}
 //   {"op":"step", ["count":1..kMaxStepCount]}  needs a paused simulation
 //   {"op":"time_mode", "mode":"realtime"|"scaled"|"free"|"lockstep",
@@ -16,9 +19,14 @@
 //   {"op":"realism", "preset":"ideal"|"realistic"|"harsh"}  (presets only:
 //    the page can never send YAML or a path)
 // Positions must be inside the field's walls (as turf-sim checks them), so the
-// field (SslField) must be known before a teleport is accepted.
+// field (SslField) must be known before a teleport is accepted. In a legged
+// scene (LeggedSceneInfo) they must be within kLeggedMargin of the 3D field's
+// lines (robots park beside it), or kLeggedArea of the origin without a field;
+// the ball needs a field (a scene without one has no ball), a robot a name in
+// the scene.
 #pragma once
 
+#include <turf/idl/Joints.h>
 #include <turf/idl/SimControl.h>
 #include <turf/idl/SslVision.h>
 
@@ -34,6 +42,8 @@ inline constexpr size_t kMaxPageMessage = 4096;  // bytes
 inline constexpr uint32_t kMaxStepCount = 1000;  // physics steps per request
 inline constexpr double kMaxSpeed = 100.0;       // multiples of real time
 inline constexpr double kMaxYaw = 100.0;         // rad, before normalising
+inline constexpr double kLeggedMargin = 5.0;     // m beyond a legged scene's field lines
+inline constexpr double kLeggedArea = 50.0;      // m from the origin, legged scenes without a field
 
 enum class PageError {
   kOk,
@@ -63,7 +73,16 @@ struct PageRequest {
   idl::SimControl control;  // valid only when error == kOk; client and request_id unset
 };
 
-// Decodes one page message. `field` bounds teleports (nullopt: none allowed).
+// The scene turf-sim runs, as far as the viewer knows (at most one is set):
+// what teleports are checked against. Neither: no teleport is accepted.
+struct PageScene {
+  const idl::SslField* ssl = nullptr;
+  const idl::LeggedSceneInfo* legged = nullptr;
+};
+
+// Decodes one page message.
+PageRequest ParsePageRequest(std::string_view text, const PageScene& scene);
+// An SSL scene's field (nullopt: no teleport allowed).
 PageRequest ParsePageRequest(std::string_view text, const std::optional<idl::SslField>& field);
 
 }  // namespace turf::viewer

@@ -4,22 +4,18 @@
 
 #include <cmath>
 
+#include "participants/viewer/json_util.h"
+#include "participants/viewer/legged_json.h"
 #include "participants/viewer/page_request.h"
 
 namespace turf::viewer {
 
 namespace {
 
+using json_util::Dump;
+using json_util::Ns;
+using json_util::R;
 using nlohmann::json;
-
-// Rounded so that the shortest decimal form is short; non-finite values never
-// get here (ViewerModel refuses such samples), but would become 0, not null.
-double R(double v, double scale = 1e4) { return std::isfinite(v) ? std::round(v * scale) / scale : 0.0; }
-double Ns(int64_t ns) { return R(static_cast<double>(ns) * 1e-9, 1e6); }
-
-// Strings from DDS or the command line may hold invalid UTF-8, which a plain
-// dump() throws on: replace such bytes instead.
-std::string Dump(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
 
 const char* TeamName(idl::Team team) { return team == idl::TEAM_BLUE ? "blue" : "yellow"; }
 
@@ -36,6 +32,21 @@ json Detection(const idl::CameraFrame& f) {
                       {"conf", R(r.confidence(), 1e3)}});
   }
   return {{"camera", f.camera_id()}, {"t", Ns(f.capture_time_ns())}, {"balls", balls}, {"robots", robots}};
+}
+
+json Ball(const idl::BallState& b) {
+  return {{"p", {R(b.position().x()), R(b.position().y()), R(b.position().z())}},
+          {"v", {R(b.velocity().x(), 1e3), R(b.velocity().y(), 1e3), R(b.velocity().z(), 1e3)}}};
+}
+
+// What every state message ends with: the clock (once known) and the viewer's condition.
+void AddClockAndViewer(const std::optional<idl::Clock>& clock, const ViewerInfo& viewer, json* out) {
+  (*out)["viewer"] = {{"refused", viewer.refused}, {"control", viewer.control}};
+  if (!clock) return;
+  (*out)["clock"] = {{"paused", clock->paused()},
+                     {"mode", TimeModeName(clock->mode())},
+                     {"speed", R(clock->speed(), 1e3)},
+                     {"rtf", R(clock->real_time_factor(), 1e3)}};
 }
 
 }  // namespace
@@ -112,7 +123,6 @@ std::string FieldJson(const idl::SslField& f) {
 
 std::string StateJson(const idl::WorldState& s, const std::optional<idl::Clock>& clock,
                       const std::vector<const idl::CameraFrame*>& frames, const ViewerInfo& viewer) {
-  const idl::BallState& b = s.ball();
   json robots = json::array();
   for (const idl::RobotState& r : s.robots()) {
     robots.push_back(
@@ -125,21 +135,31 @@ std::string StateJson(const idl::WorldState& s, const std::optional<idl::Clock>&
   }
   json detections = json::array();
   for (const idl::CameraFrame* f : frames) detections.push_back(Detection(*f));
-  json out{{"type", "state"},
-           {"t", Ns(s.sim_time_ns())},
-           {"frame", s.frame()},
-           {"ball",
-            {{"p", {R(b.position().x()), R(b.position().y()), R(b.position().z())}},
-             {"v", {R(b.velocity().x(), 1e3), R(b.velocity().y(), 1e3), R(b.velocity().z(), 1e3)}}}},
-           {"robots", robots},
-           {"detections", detections},
-           {"viewer", {{"refused", viewer.refused}, {"control", viewer.control}}}};
-  if (clock) {
-    out["clock"] = {{"paused", clock->paused()},
-                    {"mode", TimeModeName(clock->mode())},
-                    {"speed", R(clock->speed(), 1e3)},
-                    {"rtf", R(clock->real_time_factor(), 1e3)}};
+  json out{{"type", "state"},        {"t", Ns(s.sim_time_ns())}, {"frame", s.frame()},
+           {"ball", Ball(s.ball())}, {"robots", robots},         {"detections", detections}};
+  AddClockAndViewer(clock, viewer, &out);
+  return Dump(out);
+}
+
+std::string LeggedStateJson(const idl::WorldState* ball, const idl::LeggedSceneInfo& scene,
+                            const std::map<std::string, idl::LinkState>& links, const std::optional<idl::Clock>& clock,
+                            const ViewerInfo& viewer) {
+  // Time: the newest of the samples shown.
+  int64_t t = ball ? ball->sim_time_ns() : 0;
+  uint64_t frame = ball ? ball->frame() : 0;
+  for (const auto& [name, l] : links) {
+    if (l.sim_time_ns() < t) continue;
+    t = l.sim_time_ns();
+    frame = l.frame();
   }
+  json out{{"type", "state"},
+           {"t", Ns(t)},
+           {"frame", frame},
+           {"robots", json::array()},
+           {"detections", json::array()},
+           {"links", LinksJson(scene, links)}};
+  if (ball) out["ball"] = Ball(ball->ball());
+  AddClockAndViewer(clock, viewer, &out);
   return Dump(out);
 }
 

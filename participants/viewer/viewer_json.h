@@ -14,18 +14,24 @@
 //            detections:[{camera, t, balls:[[x,y,z,conf]],
 //                         robots:[{team, id, p:[x,y], yaw, conf}]}],
 //            viewer:{refused, control}}  control: turf-sim reads our requests
+//   legged  a legged scene's robot shapes and 3D field (legged_json.h); a page
+//           shows the SSL field or the legged scene, whichever came last
+//   state (legged scenes) {t, frame, ball (absent without a field), robots:[],
+//            detections:[], links:{<robot>: [poses]} (legged_json.h), clock, viewer}
 //   stats   {t, window, streams:[{name, rate, sent, lost, loss, latency, jitter}]}
 //   reply   {op, ok, reason, t}                     turf-sim's answer to our request
 //   refused {kind, detail}                          to the page whose message was refused
 #pragma once
 
 #include <turf/idl/Clock.h>
+#include <turf/idl/Joints.h>
 #include <turf/idl/SensorStats.h>
 #include <turf/idl/SimControl.h>
 #include <turf/idl/SslVision.h>
 #include <turf/idl/WorldState.h>
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +51,11 @@ struct ViewerInfo {
 // `frames`: the newest frame of each camera to show with this state.
 std::string StateJson(const idl::WorldState& state, const std::optional<idl::Clock>& clock,
                       const std::vector<const idl::CameraFrame*>& frames, const ViewerInfo& viewer);
+// Legged scenes: `ball` null when there is none (a scene without a field) or
+// before the first world state; `links`: the newest LinkState per robot.
+std::string LeggedStateJson(const idl::WorldState* ball, const idl::LeggedSceneInfo& scene,
+                            const std::map<std::string, idl::LinkState>& links, const std::optional<idl::Clock>& clock,
+                            const ViewerInfo& viewer);
 std::string StatsJson(const idl::SensorStats& stats);
 std::string ReplyJson(const idl::SimControlReply& reply);
 std::string RefusedJson(const std::string& kind, const std::string& detail);

@@ -1,9 +1,11 @@
 #include "participants/viewer/viewer_model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <vector>
 
+#include "participants/viewer/legged_json.h"
 #include "participants/viewer/viewer_json.h"
 
 namespace turf::viewer {
@@ -17,6 +19,7 @@ bool Finite(std::initializer_list<double> values) {
 }
 bool Finite(const idl::Vec3& v) { return Finite({v.x(), v.y(), v.z()}); }
 bool Finite(const idl::Vec2& v) { return Finite({v.x(), v.y()}); }
+bool Finite(const idl::Quat& q) { return Finite({q.w(), q.x(), q.y(), q.z()}); }
 bool KnownTeam(idl::Team t) { return t == idl::TEAM_BLUE || t == idl::TEAM_YELLOW; }
 
 // A size the page can draw: positive and below a kilometre.
@@ -37,6 +40,8 @@ const char* SampleErrorName(SampleError error) {
       return "too_many";
     case SampleError::kBadSize:
       return "bad_size";
+    case SampleError::kDuplicate:
+      return "duplicate";
   }
   return "unknown";
 }
@@ -78,6 +83,8 @@ SampleError ViewerModel::OnField(const idl::SslField& f) {
   for (const idl::CameraInfo& c : f.cameras())
     if (!Finite(c.area_min()) || !Finite(c.area_max())) return SampleError::kNotFinite;
   field_ = f;
+  legged_.reset();
+  links_.clear();
   return SampleError::kOk;
 }
 
@@ -106,8 +113,57 @@ SampleError ViewerModel::OnStats(const idl::SensorStats& s) {
   return SampleError::kOk;
 }
 
+SampleError ViewerModel::OnLeggedScene(const idl::LeggedSceneInfo& s) {
+  if (s.robots().size() > kMaxLeggedRobots) return SampleError::kTooMany;
+  if (s.name().size() > kMaxNameLength) return SampleError::kBadSize;
+  if (!Finite({s.field_length(), s.field_width(), s.goal_width(), s.goal_depth(), s.goal_height(), s.ball_radius()}))
+    return SampleError::kNotFinite;
+  if (s.has_field() && (!Size(s.field_length()) || !Size(s.field_width()) || !Size(s.ball_radius()) ||
+                        !NonNegative(s.goal_width()) || !NonNegative(s.goal_depth()) || !NonNegative(s.goal_height())))
+    return SampleError::kBadSize;
+  for (size_t i = 0; i < s.robots().size(); ++i) {
+    const idl::RobotDescription& r = s.robots()[i];
+    if (r.geoms().size() > kMaxBodies) return SampleError::kTooMany;
+    if (r.robot().empty() || r.robot().size() > kMaxNameLength || r.model().size() > kMaxNameLength)
+      return SampleError::kBadSize;
+    for (size_t j = 0; j < i; ++j)
+      if (s.robots()[j].robot() == r.robot()) return SampleError::kDuplicate;
+    for (const idl::RobotGeom& g : r.geoms()) {
+      if (g.shape() > idl::GEOM_OTHER) return SampleError::kUnknownEnum;
+      if (!Finite(g.size()) || !Finite(g.position()) || !Finite(g.orientation())) return SampleError::kNotFinite;
+      if (g.body().size() > kMaxNameLength) return SampleError::kBadSize;
+      for (double v : {g.size().x(), g.size().y(), g.size().z()})
+        if (!NonNegative(v)) return SampleError::kBadSize;
+    }
+  }
+  legged_ = s;
+  field_.reset();
+  state_.reset();  // an SSL state would show robots that are not there
+  frames_.clear();
+  // Poses of robots this scene does not have are from another run.
+  for (auto it = links_.begin(); it != links_.end();) {
+    const auto& robots = s.robots();
+    const bool known = std::any_of(robots.begin(), robots.end(),
+                                   [&](const idl::RobotDescription& r) { return r.robot() == it->first; });
+    it = known ? std::next(it) : links_.erase(it);
+  }
+  return SampleError::kOk;
+}
+
+SampleError ViewerModel::OnLinks(const idl::LinkState& l) {
+  if (l.links().size() > kMaxBodies) return SampleError::kTooMany;
+  if (l.robot().empty() || l.robot().size() > kMaxNameLength) return SampleError::kBadSize;
+  for (const idl::LinkPose& p : l.links()) {
+    if (!Finite(p.position()) || !Finite(p.orientation())) return SampleError::kNotFinite;
+    if (p.name().size() > kMaxNameLength) return SampleError::kBadSize;
+  }
+  if (links_.count(l.robot()) == 0 && links_.size() >= kMaxLeggedRobots) return SampleError::kTooMany;
+  links_[l.robot()] = l;
+  return SampleError::kOk;
+}
+
 PageRequest ViewerModel::OnPageMessage(std::string_view text) {
-  PageRequest r = ParsePageRequest(text, field_);
+  PageRequest r = ParsePageRequest(text, PageScene{field_ ? &*field_ : nullptr, legged_ ? &*legged_ : nullptr});
   if (r.error != PageError::kOk) {
     ++refused_pages_;
     return r;
@@ -119,9 +175,17 @@ PageRequest ViewerModel::OnPageMessage(std::string_view text) {
 
 std::string ViewerModel::Hello() const { return HelloJson(prefix_); }
 
-std::string ViewerModel::Field() const { return field_ ? FieldJson(*field_) : std::string(); }
+std::string ViewerModel::Field() const {
+  if (legged_) return LeggedSceneJson(*legged_);
+  return field_ ? FieldJson(*field_) : std::string();
+}
 
 std::string ViewerModel::State() const {
+  if (legged_) {
+    if (!has_state()) return {};
+    const bool ball = state_ && legged_->has_field();
+    return LeggedStateJson(ball ? &*state_ : nullptr, *legged_, links_, clock_, {refused_pages_, control_matched_});
+  }
   if (!state_) return {};
   // What the cameras saw lately: frames from the last kMaxFrameAgeNs of sim
   // time (none from the future, as after a reset).

@@ -1,5 +1,7 @@
 // What turf-viewer knows and shows, apart from DDS and sockets: the newest
-// world state, clock, field, camera frames and sensor statistics in; the JSON
+// world state, clock, field, camera frames and sensor statistics in (or, for
+// a legged scene, its scene info, every robot's newest body poses and the
+// ball's world state); the JSON
 // the page reads out (viewer_json.h); page messages in, as validated
 // SimControl requests out (page_request.h). Single-threaded: its owner
 // serialises the calls.
@@ -10,6 +12,7 @@
 #pragma once
 
 #include <turf/idl/Clock.h>
+#include <turf/idl/Joints.h>
 #include <turf/idl/SensorStats.h>
 #include <turf/idl/SimControl.h>
 #include <turf/idl/SslVision.h>
@@ -29,8 +32,11 @@ inline constexpr size_t kMaxRobots = 64;                // per world state or ca
 inline constexpr size_t kMaxCameras = 32;               // distinct camera ids kept
 inline constexpr size_t kMaxStreams = 64;               // per SensorStats
 inline constexpr int64_t kMaxFrameAgeNs = 250'000'000;  // camera frames shown with a state
+inline constexpr size_t kMaxLeggedRobots = 64;          // per legged scene, and robots with poses kept
+inline constexpr size_t kMaxBodies = 256;               // geoms or links per legged robot
+inline constexpr size_t kMaxNameLength = 128;           // robot, body and scene names
 
-enum class SampleError { kOk, kNotFinite, kUnknownEnum, kTooMany, kBadSize };
+enum class SampleError { kOk, kNotFinite, kUnknownEnum, kTooMany, kBadSize, kDuplicate };
 const char* SampleErrorName(SampleError error);
 
 class ViewerModel {
@@ -43,6 +49,10 @@ class ViewerModel {
   SampleError OnField(const idl::SslField& field);
   SampleError OnCamera(const idl::CameraFrame& frame);
   SampleError OnStats(const idl::SensorStats& stats);
+  // A legged scene replaces the SSL field and the other way round: the page
+  // draws the newest (turf-sim runs one kind of scene at a time).
+  SampleError OnLeggedScene(const idl::LeggedSceneInfo& scene);
+  SampleError OnLinks(const idl::LinkState& links);
   // Whether a reply answers one of our requests (others are not shown).
   bool IsOurs(const idl::SimControlReply& reply) const { return reply.client() == client_; }
 
@@ -53,13 +63,16 @@ class ViewerModel {
   // Whether turf-sim's control reader is matched (shown to the page).
   void SetControlMatched(bool matched) { control_matched_ = matched; }
 
-  bool has_state() const { return state_.has_value(); }
+  // A world state or, in a legged scene, a robot's poses has arrived.
+  bool has_state() const { return state_.has_value() || (legged_ && !links_.empty()); }
   bool has_field() const { return field_.has_value(); }
+  bool is_legged() const { return legged_.has_value(); }
   const std::optional<idl::SslField>& field() const { return field_; }
+  const std::optional<idl::LeggedSceneInfo>& legged() const { return legged_; }
   uint64_t refused_pages() const { return refused_pages_; }
 
   std::string Hello() const;
-  std::string Field() const;  // empty before the field is known
+  std::string Field() const;  // the SSL field or the legged scene; empty before either is known
   std::string State() const;  // empty before the first world state
   std::string Stats() const;  // empty before the first statistics
 
@@ -74,6 +87,8 @@ class ViewerModel {
   std::optional<idl::SslField> field_;
   std::optional<idl::SensorStats> stats_;
   std::map<uint32_t, idl::CameraFrame> frames_;  // newest per camera
+  std::optional<idl::LeggedSceneInfo> legged_;
+  std::map<std::string, idl::LinkState> links_;  // newest per robot
 };
 
 }  // namespace turf::viewer

@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 #include <turf/idl/ClockPubSubTypes.h>
+#include <turf/idl/JointsPubSubTypes.h>
 #include <turf/idl/SensorStatsPubSubTypes.h>
 #include <turf/idl/SimControlPubSubTypes.h>
 #include <turf/idl/SslVisionPubSubTypes.h>
@@ -56,6 +57,8 @@ class ViewerNode::Impl {
         camera_reader_(Reader<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)),
         stats_reader_(Reader<idl::SensorStatsPubSubType>(dds::Topic::kStats)),
         reply_reader_(Reader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
+        legged_reader_(Reader<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene)),
+        links_reader_(Reader<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks)),
         control_writer_(participant_.MakeWriter<idl::SimControlPubSubType>(dds::Topic::kControl)),
         rejects_("input") {
     viewer::WebServerOptions web;
@@ -88,6 +91,7 @@ class ViewerNode::Impl {
       const auto idle = SteadyClock::now() + std::chrono::milliseconds(50);
       wakeup_.WaitUntil(dirty_ ? std::min(idle, next_push) : idle);
       HandleField();
+      HandleLegged();
       HandleStats();
       HandleCameras();
       HandleStates();
@@ -225,6 +229,21 @@ class ViewerNode::Impl {
     }
   }
 
+  // Legged scenes: the robots' shapes (latched, like the field) and their body poses.
+  void HandleLegged() {
+    if (legged_reader_->Take(&legged_inbox_)) {
+      for (const idl::LeggedSceneInfo& s : legged_inbox_) {
+        if (Refused("legged_scene", model_.OnLeggedScene(s))) continue;
+        spdlog::info("legged scene '{}' known: {} robots, {}", s.name(), s.robots().size(),
+                     s.has_field() ? fmt::format("field {} x {} m", s.field_length(), s.field_width()) : "no field");
+        server_->Publish(viewer::Channel::kField, model_.Field());
+        dirty_ = true;
+      }
+    }
+    if (!links_reader_->Take(&links_inbox_)) return;
+    for (const idl::LinkState& l : links_inbox_) dirty_ |= !Refused("links", model_.OnLinks(l));
+  }
+
   void HandleStats() {
     if (!stats_reader_->Take(&stats_inbox_)) return;
     for (const idl::SensorStats& s : stats_inbox_)
@@ -265,7 +284,8 @@ class ViewerNode::Impl {
 
   void HandleOverflow() {
     const uint64_t overflow = state_reader_->Overflowed() + clock_reader_->Overflowed() + field_reader_->Overflowed() +
-                              camera_reader_->Overflowed() + stats_reader_->Overflowed() + reply_reader_->Overflowed();
+                              camera_reader_->Overflowed() + stats_reader_->Overflowed() + reply_reader_->Overflowed() +
+                              legged_reader_->Overflowed() + links_reader_->Overflowed();
     if (overflow > reported_overflow_) {
       Reject("queue_overflow",
              fmt::format("{} samples arrived faster than the loop could take them", overflow - reported_overflow_));
@@ -283,9 +303,10 @@ class ViewerNode::Impl {
                               : "");
     spdlog::info("serving the page from {}", options_.web_root);
     spdlog::info("DDS domain {}, QoS profiles {}", options_.domain, participant_.options().qos_file);
-    spdlog::info("subscribing {}, {}, {} (latched), {}, {}, {}", name(dds::Topic::kWorldState),
-                 name(dds::Topic::kClock), name(dds::Topic::kSslField), name(dds::Topic::kSslCamera),
-                 name(dds::Topic::kStats), name(dds::Topic::kControlReply));
+    spdlog::info("subscribing {}, {}, {} (latched), {}, {}, {}; legged scenes: {} (latched), {}",
+                 name(dds::Topic::kWorldState), name(dds::Topic::kClock), name(dds::Topic::kSslField),
+                 name(dds::Topic::kSslCamera), name(dds::Topic::kStats), name(dds::Topic::kControlReply),
+                 name(dds::Topic::kLeggedScene), name(dds::Topic::kRobotLinks));
     spdlog::info("publishing {} as client '{}'; state to the pages at up to {:.0f} Hz", name(dds::Topic::kControl),
                  client_, options_.rate_hz);
     spdlog::info("waiting for turf-sim on domain {} prefix '{}'", options_.domain, options_.prefix);
@@ -308,6 +329,8 @@ class ViewerNode::Impl {
   std::unique_ptr<dds::Reader<idl::CameraFramePubSubType>> camera_reader_;
   std::unique_ptr<dds::Reader<idl::SensorStatsPubSubType>> stats_reader_;
   std::unique_ptr<dds::Reader<idl::SimControlReplyPubSubType>> reply_reader_;
+  std::unique_ptr<dds::Reader<idl::LeggedSceneInfoPubSubType>> legged_reader_;
+  std::unique_ptr<dds::Reader<idl::LinkStatePubSubType>> links_reader_;
   std::unique_ptr<dds::Writer<idl::SimControlPubSubType>> control_writer_;
 
   std::vector<idl::WorldState> state_inbox_;
@@ -316,6 +339,8 @@ class ViewerNode::Impl {
   std::vector<idl::CameraFrame> camera_inbox_;
   std::vector<idl::SensorStats> stats_inbox_;
   std::vector<idl::SimControlReply> reply_inbox_;
+  std::vector<idl::LeggedSceneInfo> legged_inbox_;
+  std::vector<idl::LinkState> links_inbox_;
   bool dirty_ = false;
   bool receiving_ = false;
   bool field_logged_ = false;

@@ -8,9 +8,13 @@
 //   ssl/camera     CameraFrame      60 Hz per camera: what the cameras report
 //   stats          SensorStats      every second of sim time: per-stream rate, loss, latency
 //   control_reply  SimControlReply  answers to our requests (others' are ignored)
+//   legged/scene   LeggedSceneInfo  latched, legged scenes: robots' shapes, 3D field size
+//   robots/links   LinkState        legged scenes, 50 Hz of sim time per robot: body poses
+//                                   (world_state then carries the ball only)
 // Publishes:
 //   control        SimControl       one per accepted page message (teleport, pause,
-//                                   resume, step, reset, time mode, realism preset)
+//                                   resume, step, reset, time mode, realism preset;
+//                                   a legged robot's teleport as LeggedTeleport)
 // Serves (web_server.h): the page at http://<listen>:<port>/, its WebSocket at /ws;
 // state messages to every page at up to `rate_hz` (the newest state wins).
 // Page messages are untrusted (page_request.h): a refused one is counted per

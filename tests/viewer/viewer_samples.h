@@ -2,6 +2,7 @@
 #pragma once
 
 #include <turf/idl/Clock.h>
+#include <turf/idl/Joints.h>
 #include <turf/idl/SensorStats.h>
 #include <turf/idl/SslVision.h>
 #include <turf/idl/WorldState.h>
@@ -96,6 +97,67 @@ inline idl::CameraFrame SampleFrame(uint32_t camera, int64_t capture_ns) {
   r.confidence(0.95f);
   f.robots().push_back(r);
   return f;
+}
+
+inline idl::RobotGeom Geom(const char* body, idl::GeomShape shape, double sx, double sy, double sz, double pz = 0.0) {
+  idl::RobotGeom g;
+  g.body(body);
+  g.shape(shape);
+  g.size().x(sx);
+  g.size().y(sy);
+  g.size().z(sz);
+  g.position().z(pz);
+  g.orientation().w(1.0);
+  return g;
+}
+
+// A legged scene with the 3D field and two robots of three shapes on two
+// bodies: torso (a box and a capsule neck) and head (a sphere).
+inline idl::LeggedSceneInfo LeggedScene() {
+  idl::LeggedSceneInfo s;
+  s.name("simspark-3d");
+  s.has_field(true);
+  s.field_length(30.0);
+  s.field_width(20.0);
+  s.goal_width(2.1);
+  s.goal_depth(0.6);
+  s.goal_height(0.8);
+  s.ball_radius(0.042);
+  for (int i = 1; i <= 2; ++i) {
+    idl::RobotDescription r;
+    r.robot("nao_" + std::to_string(i));
+    r.id(i);
+    r.model("nao");
+    r.geoms().push_back(Geom("torso", idl::GEOM_BOX, 0.05, 0.05, 0.09));
+    r.geoms().push_back(Geom("torso", idl::GEOM_CAPSULE, 0.015, 0.04, 0.0, 0.09));
+    r.geoms().push_back(Geom("head", idl::GEOM_SPHERE, 0.065, 0.0, 0.0, 0.05));
+    s.robots().push_back(r);
+  }
+  return s;
+}
+
+inline idl::LinkPose Link(const char* name, double x, double y, double z, double qw, double qz) {
+  idl::LinkPose l;
+  l.name(name);
+  l.position().x(x);
+  l.position().y(y);
+  l.position().z(z);
+  l.orientation().w(qw);
+  l.orientation().z(qz);
+  return l;
+}
+
+// nao_1's bodies at t = 2 s, turned -90 deg about z; `head` before `torso`
+// (the poses are matched by name, not order) and an extra body without shapes.
+inline idl::LinkState Links(const std::string& robot = "nao_1", double x = -14.2, double y = 0.0) {
+  idl::LinkState l;
+  l.robot(robot);
+  l.sim_time_ns(2'000'000'000);
+  l.frame(1000);
+  l.links().push_back(Link("head", x, y, 0.51234, 0.70710678, -0.70710678));
+  l.links().push_back(Link("torso", x, y, 0.38567, 0.70710678, -0.70710678));
+  l.links().push_back(Link("lhip1", x, y + 0.05, 0.2, 1.0, 0.0));
+  return l;
 }
 
 }  // namespace turf::test
