@@ -1,10 +1,12 @@
 // The page itself, end to end: turf-sim and turf-viewer as real processes,
 // the page in headless Chromium driven through chromedriver (W3C WebDriver),
 // and a DDS client that knows the truth. Checks that robots are drawn where
-// the world state says, that dragging the ball teleports it, that Pause stops
-// simulation time, and saves screenshots to <build>/tests/viewer/artifacts/.
+// the world state (SSL) or robots/links (legged) says, that dragging the ball
+// (and a legged robot) teleports it, that Pause stops simulation time, and
+// saves screenshots to <build>/tests/viewer/artifacts/.
 // Skipped when chromium or chromedriver is not installed.
 #include <gtest/gtest.h>
+#include <turf/idl/JointsPubSubTypes.h>
 
 #include <cmath>
 #include <filesystem>
@@ -42,6 +44,48 @@ bool Within(int ms, const std::function<bool()>& done) {
   return false;
 }
 
+// A legged scene's truth: every robot's newest body poses, the ball, the clock.
+class LeggedClient {
+ public:
+  explicit LeggedClient(dds::ParticipantOptions o)
+      : participant_((o.name = "client", o)),
+        links_(participant_.MakeReader<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks)),
+        world_(participant_.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
+        clock_(participant_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock)) {}
+  void Poll() {
+    std::vector<idl::LinkState> l;
+    if (links_->Take(&l))
+      for (auto& x : l) links[x.robot()] = x;
+    std::vector<idl::WorldState> w;
+    if (world_->Take(&w) && !w.empty()) world = w.back();
+    std::vector<idl::Clock> c;
+    if (clock_->Take(&c) && !c.empty()) clock = c.back();
+  }
+  bool WaitFor(const std::function<bool()>& done, int ms = 10000) {
+    return Within(ms, [&] {
+      Poll();
+      return done();
+    });
+  }
+  // The named body's world position, or nullopt.
+  std::optional<idl::Vec3> Body(const std::string& robot, const std::string& body) const {
+    const auto it = links.find(robot);
+    if (it == links.end()) return std::nullopt;
+    for (const idl::LinkPose& p : it->second.links())
+      if (p.name() == body) return p.position();
+    return std::nullopt;
+  }
+  std::map<std::string, idl::LinkState> links;
+  std::optional<idl::WorldState> world;
+  std::optional<idl::Clock> clock;
+
+ private:
+  dds::Participant participant_;
+  std::unique_ptr<dds::Reader<idl::LinkStatePubSubType>> links_;
+  std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> world_;
+  std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_;
+};
+
 class ViewerBrowser : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -50,14 +94,17 @@ class ViewerBrowser : public ::testing::Test {
     if (chromium_.empty() || chromedriver_.empty())
       GTEST_SKIP() << "headless Chromium not installed (Debian packages chromium and chromium-driver; "
                       "scripts/setup.sh installs them)";
+  }
+  // turf-sim with `scene` (under configs/scenes/), turf-viewer and chromedriver.
+  void Launch(const std::string& scene) {
     dds_ = UniqueDds("viewer-browser");
     dds_.domain = TestDomain(7);
-    dds_.prefix = "browser" + std::to_string(getpid());
+    dds_.prefix = "browser" + std::to_string(getpid()) + "_" + std::to_string(++launches_);
     viewer_port_ = FreeTcpPort();
     const std::string domain = std::to_string(dds_.domain);
     sim_ = std::make_unique<ChildProcess>(
         "viewer_sim", std::vector<std::string>{BuiltBinary("participants/sim/turf-sim"), "--scene",
-                                               TURF_SOURCE_DIR "/configs/scenes/ssl_div_b.yaml", "--domain", domain,
+                                               TURF_SOURCE_DIR "/configs/scenes/" + scene, "--domain", domain,
                                                "--prefix", dds_.prefix, "--qos", dds_.qos_file});
     viewer_ = std::make_unique<ChildProcess>(
         "viewer",
@@ -66,7 +113,6 @@ class ViewerBrowser : public ::testing::Test {
     const int driver_port = FreeTcpPort();
     driver_process_ = std::make_unique<ChildProcess>(
         "chromedriver", std::vector<std::string>{chromedriver_, "--port=" + std::to_string(driver_port)});
-    client_ = std::make_unique<Client>(dds_);
     profile_ = TURF_BINARY_DIR "/tests/viewer/chrome_profile_" + std::to_string(getpid());
     std::filesystem::remove_all(profile_);
     std::filesystem::create_directories(profile_);
@@ -78,9 +124,10 @@ class ViewerBrowser : public ::testing::Test {
     if (!profile_.empty()) std::filesystem::remove_all(profile_);
   }
 
-  // Opens the page and waits until it shows the field and a world state.
-  void OpenPage() {
-    ASSERT_TRUE(client_->WaitMatched(10s)) << "turf-sim did not come up: " << sim_->Log();
+  // Opens the page and waits until it shows the field and a world state;
+  // `sim_up` waits for turf-sim.
+  void OpenPage(const std::function<bool()>& sim_up) {
+    ASSERT_TRUE(sim_up()) << "turf-sim did not come up: " << sim_->Log();
     ASSERT_TRUE(driver_->WaitReady(10000)) << "chromedriver did not come up: " << driver_process_->Log();
     ASSERT_TRUE(driver_->NewSession(chromium_, profile_, 1280, 800)) << driver_->error();
     ASSERT_TRUE(driver_->Navigate("http://127.0.0.1:" + std::to_string(viewer_port_) + "/")) << driver_->error();
@@ -107,6 +154,14 @@ class ViewerBrowser : public ::testing::Test {
     return element ? driver_->Text(*element).value_or("") : "";
   }
 
+  // Presses the mouse on field point (x0, y0) and releases it on (x1, y1).
+  bool DragField(double x0, double y0, double x1, double y1) {
+    const auto [cx0, cy0] = ClientPoint(x0, y0);
+    const auto [cx1, cy1] = ClientPoint(x1, y1);
+    return driver_->Drag(cx0, cy0, cx1, cy1, 400);
+  }
+
+  int launches_ = 0;
   std::string chromium_, chromedriver_, profile_;
   dds::ParticipantOptions dds_;
   int viewer_port_ = 0;
@@ -116,7 +171,9 @@ class ViewerBrowser : public ::testing::Test {
 };
 
 TEST_F(ViewerBrowser, DrawsTheWorldDragsTheBallPausesAndSavesScreenshots) {
-  OpenPage();
+  Launch("ssl_div_b.yaml");
+  client_ = std::make_unique<Client>(dds_);
+  OpenPage([&] { return client_->WaitMatched(10s); });
   if (HasFatalFailure()) return;
 
   // 1. Every robot on the field is drawn in its team's colour where the world
@@ -196,6 +253,99 @@ TEST_F(ViewerBrowser, DrawsTheWorldDragsTheBallPausesAndSavesScreenshots) {
 
   EXPECT_EQ(viewer_->Stop(), 0) << viewer_->Log();  // SIGTERM: a clean exit
   EXPECT_NE(viewer_->Log().find("stopped cleanly"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace turf::test
+
+namespace turf::test {
+namespace {
+
+// Light grey robot shapes (legged.js shades them 150..245 by height) on green grass.
+bool IsRobotGrey(const json& c) { return c.is_array() && c.size() >= 3 && c[0] > 140 && c[1] > 140 && c[2] > 140; }
+bool IsGrass(const json& c) {
+  if (!c.is_array() || c.size() < 3) return false;
+  const int r = c[0], g = c[1], b = c[2];
+  return g > r + 40 && g > b + 40;
+}
+
+TEST_F(ViewerBrowser, LeggedSceneDrawsRobotsWhereTheirLinksAreAndDragsBallAndRobot) {
+  Launch("simspark_3d.yaml");
+  LeggedClient truth(dds_);
+  OpenPage([&] {
+    return truth.WaitFor([&] { return truth.links.count("nao_1") && truth.links.count("nao_2") && truth.world; });
+  });
+  if (HasFatalFailure()) return;
+
+  // 1. Both Naos are drawn, each torso where robots/links puts it (and where
+  // the scene starts them), in robot grey with grass beside.
+  const auto legged = driver_->Execute("return window.turfViewer.legged();");
+  ASSERT_TRUE(legged && legged->is_object()) << "no legged scene on the page";
+  EXPECT_DOUBLE_EQ((*legged)["field"]["length"].get<double>(), 30.0);
+  ASSERT_TRUE(Within(5000, [&] {
+    const auto n = driver_->Execute("return window.turfViewer.leggedDrawn().length;");
+    return n && *n == 2;
+  }));
+  const json drawn = driver_->Execute("return window.turfViewer.leggedDrawn();").value_or(json::array());
+  truth.Poll();
+  const std::map<std::string, std::pair<double, double>> start = {{"nao_1", {-14.2, 0.0}}, {"nao_2", {-5.0, 1.5}}};
+  for (const json& r : drawn) {
+    const std::string name = r["name"];
+    ASSERT_TRUE(start.count(name)) << name;
+    const std::optional<idl::Vec3> torso = truth.Body(name, "torso");
+    ASSERT_TRUE(torso) << name;
+    const double x = r["first"][0], y = r["first"][1];  // the torso box's drawn centre
+    EXPECT_NEAR(x, torso->x(), 0.02) << name;
+    EXPECT_NEAR(y, torso->y(), 0.02) << name;
+    EXPECT_NEAR(x, start.at(name).first, 0.05) << name;
+    EXPECT_NEAR(y, start.at(name).second, 0.05) << name;
+    size_t geoms = 0;  // every shape of the robot's is drawn
+    for (const json& d : (*legged)["robots"])
+      if (d["name"] == name) geoms = d["geoms"].size();
+    EXPECT_GE(geoms, 10u) << name;
+    EXPECT_EQ(r["shapes"], geoms) << name;
+    const json inside = ColorAt(torso->x(), torso->y());
+    const json beside = ColorAt(torso->x(), torso->y() - 0.6);
+    EXPECT_TRUE(IsRobotGrey(inside)) << name << ": " << inside;
+    EXPECT_TRUE(IsGrass(beside)) << name << ": " << beside;
+  }
+
+  // 2. Dragging the ball teleports it; world_state says so.
+  const double bx = truth.world->ball().position().x(), by = truth.world->ball().position().y();
+  ASSERT_TRUE(DragField(bx, by, 2.0, -3.0)) << driver_->error();
+  EXPECT_TRUE(truth.WaitFor(
+      [&] {
+        return std::hypot(truth.world->ball().position().x() - 2.0, truth.world->ball().position().y() + 3.0) < 0.1;
+      },
+      5000))
+      << "ball at (" << truth.world->ball().position().x() << ", " << truth.world->ball().position().y() << ")";
+
+  // 3. Dragging a robot teleports it upright, at its height and orientation.
+  ASSERT_TRUE(DragField(-5.0, 1.5, -3.0, 3.0)) << driver_->error();
+  EXPECT_TRUE(truth.WaitFor(
+      [&] {
+        const std::optional<idl::Vec3> t = truth.Body("nao_2", "torso");
+        return t && std::hypot(t->x() + 3.0, t->y() - 3.0) < 0.1;
+      },
+      5000))
+      << "nao_2's torso at (" << truth.Body("nao_2", "torso")->x() << ", " << truth.Body("nao_2", "torso")->y() << ")";
+  std::this_thread::sleep_for(500ms);  // let it settle; a fallen Nao's torso is below 0.15 m
+  truth.Poll();
+  EXPECT_GT(truth.Body("nao_2", "torso")->z(), 0.3) << "nao_2 fell after the teleport";
+
+  // 4. Pause stops time for legged scenes too.
+  const auto pause = driver_->Find("#pause");
+  ASSERT_TRUE(pause && driver_->Click(*pause)) << driver_->error();
+  EXPECT_TRUE(truth.WaitFor([&] { return truth.clock && truth.clock->paused(); }, 3000));
+  std::this_thread::sleep_for(300ms);
+  const std::string paused_at = SimTimeText();
+  std::this_thread::sleep_for(500ms);
+  EXPECT_EQ(SimTimeText(), paused_at);
+  const auto badge = driver_->Execute("return !document.getElementById('paused-badge').classList.contains('hidden');");
+  EXPECT_TRUE(badge && *badge == true);
+
+  EXPECT_TRUE(SavePng(driver_->Screenshot(), "legged.png")) << driver_->error();
+  EXPECT_EQ(viewer_->Stop(), 0) << viewer_->Log();
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // turf-viewer's page: draws the field to scale from the viewer's WebSocket
 // messages (participants/viewer/viewer_json.h) and sends the user's controls
 // back (participants/viewer/page_request.h). Plain JavaScript and Canvas 2D.
+// Legged scenes are drawn by legged.js (window.turfLegged).
 'use strict';
 
 (() => {
@@ -14,8 +15,13 @@
   const ctx = canvas.getContext('2d');
   const $ = (id) => document.getElementById(id);
 
+  const Legged = window.turfLegged;
+  const LEGGED_REACH = 0.35;  // m from a legged robot's root that grabs it
+
   const view = {
-    field: null,
+    field: null,            // SSL scenes: the field message
+    legged: null,           // legged scenes: the legged message (robots' shapes, 3D field)
+    leggedDrawn: [],        // legged robots as last drawn (outlines in metres)
     prev: null, prevAt: 0,  // the two newest states and when they arrived (performance.now())
     cur: null, curAt: 0,
     mode: 'truth',          // truth | cameras | both
@@ -34,13 +40,21 @@
     canvas.width = Math.max(1, Math.round(rect.width * view.dpr));
     canvas.height = Math.max(1, Math.round(rect.height * view.dpr));
     const f = view.field;
-    const halfX = f ? f.length / 2 + f.boundary_goal + 0.05 : 5;
-    const halfY = f ? f.width / 2 + f.boundary + 0.05 : 3.5;
+    let halfX = f ? f.length / 2 + f.boundary_goal + 0.05 : 5;
+    let halfY = f ? f.width / 2 + f.boundary + 0.05 : 3.5;
+    if (view.legged) {
+      const e = Legged.extents(view.legged, view.cur ? Legged.robots(view.legged, view.cur.links) : []);
+      [halfX, halfY] = [e.hx, e.hy];
+    }
+    view.half = [halfX, halfY];
     view.scale = Math.min(rect.width / (2 * halfX), rect.height / (2 * halfY));
     view.ox = rect.width / 2;
     view.oy = rect.height / 2;
     view.drawn = false;  // resizing cleared the canvas
   }
+  const sceneKnown = () => !!(view.field || view.legged);
+  const ballRadius = () => (view.field ? view.field.ball_radius
+    : view.legged && view.legged.field ? view.legged.field.ball_radius : 0.05);
   const toCanvas = (x, y) => [view.ox + x * view.scale, view.oy - y * view.scale];
   const toField = (cx, cy) => [(cx - view.ox) / view.scale, (view.oy - cy) / view.scale];
   const px = (metres) => metres * view.scale;
@@ -152,8 +166,7 @@
     ctx.restore();
   }
 
-  function drawBall(x, y, z, f, style) {
-    const r = f.ball_radius;
+  function drawBall(x, y, z, r, style) {
     const [cx, cy] = toCanvas(x, y);
     const R = Math.max(4, px(r));
     ctx.save();
@@ -201,21 +214,68 @@
       dyaw = Math.atan2(Math.sin(dyaw), Math.cos(dyaw));
       return { ...r, p: [lerp(p.p[0], r.p[0]), lerp(p.p[1], r.p[1])], yaw: p.yaw + dyaw * a };
     });
-    const bp = prev.ball.p, bc = cur.ball.p;
-    const ball = Math.hypot(bc[0] - bp[0], bc[1] - bp[1]) > SNAP_DISTANCE
-      ? cur.ball : { ...cur.ball, p: [lerp(bp[0], bc[0]), lerp(bp[1], bc[1]), lerp(bp[2], bc[2])] };
-    return { ...cur, robots, ball };
+    let ball = cur.ball;
+    if (prev.ball && cur.ball) {
+      const bp = prev.ball.p, bc = cur.ball.p;
+      if (Math.hypot(bc[0] - bp[0], bc[1] - bp[1]) <= SNAP_DISTANCE)
+        ball = { ...cur.ball, p: [lerp(bp[0], bc[0]), lerp(bp[1], bc[1]), lerp(bp[2], bc[2])] };
+    }
+    return { ...cur, robots, ball, links: blendLinks(prev.links, cur.links, a) };
+  }
+
+  // Legged robots' body poses eased like the SSL robots: positions lerped,
+  // quaternions lerped and normalised (nlerp), unless the root jumped.
+  function blendLinks(prev, cur, a) {
+    if (!prev || !cur) return cur;
+    const out = {};
+    for (const [name, c] of Object.entries(cur)) {
+      const p = prev[name];
+      if (!p || p.length !== c.length || Math.hypot(c[0] - p[0], c[1] - p[1]) > SNAP_DISTANCE) { out[name] = c; continue; }
+      const b = new Array(c.length);
+      for (let i = 0; i < c.length; i += 7) {
+        for (let k = 0; k < 3; ++k) b[i + k] = p[i + k] + (c[i + k] - p[i + k]) * a;
+        const sign = p[i + 3] * c[i + 3] + p[i + 4] * c[i + 4] + p[i + 5] * c[i + 5] + p[i + 6] * c[i + 6] < 0 ? -1 : 1;
+        let n = 0;
+        for (let k = 3; k < 7; ++k) { b[i + k] = p[i + k] * sign + (c[i + k] - p[i + k] * sign) * a; n += b[i + k] * b[i + k]; }
+        n = Math.sqrt(n) || 1;
+        for (let k = 3; k < 7; ++k) b[i + k] /= n;
+      }
+      out[name] = b;
+    }
+    return out;
+  }
+
+  function drawLegged() {
+    const T = { ctx, toCanvas, toField, px, width: canvas.width / view.dpr, height: canvas.height / view.dpr };
+    Legged.drawGround(T, view.legged);
+    const s = blended();
+    if (!s) { view.leggedDrawn = []; return; }
+    const d = view.drag;
+    const moved = {};
+    if (d && d.kind === 'legged') moved[d.name] = [d.x - d.root[0], d.y - d.root[1]];
+    view.leggedDrawn = Legged.robots(view.legged, s.links, moved);
+    // A robot beyond the shown area (walked off, teleported): show more.
+    const [hx, hy] = view.half;
+    if (!d && view.leggedDrawn.some((r) => Math.abs(r.root[0]) > hx || Math.abs(r.root[1]) > hy)) {
+      layout();
+      return;
+    }
+    Legged.drawRobots(T, view.leggedDrawn, { alpha: 1, highlight: d && d.kind === 'legged' ? d.name : null });
+    if (d && d.kind === 'ball') drawBall(d.x, d.y, 0, ballRadius(), { alpha: 1 });
+    else if (s.ball) drawBall(s.ball.p[0], s.ball.p[1], s.ball.p[2], ballRadius(), { alpha: 1 });
+    view.drawn = true;
   }
 
   function draw() {
     ctx.setTransform(view.dpr, 0, 0, view.dpr, 0, 0);
+    if (view.legged) { drawLegged(); return; }
     const f = view.field;
     if (!f) {
       ctx.fillStyle = '#0e1013';
       ctx.fillRect(0, 0, canvas.width, canvas.height);
       ctx.fillStyle = '#9aa3ad';
       ctx.font = '16px "DejaVu Sans", sans-serif';
-      ctx.fillText('waiting for the field from turf-sim…', 20, 30);
+      ctx.fillText('waiting for the field (or legged scene) from turf-sim…', 20, 30);
       return;
     }
     drawField(f);
@@ -235,8 +295,8 @@
         drawRobot(shown, f.robot_radius, { alpha });
       }
       const d = view.drag;
-      if (d && d.kind === 'ball') drawBall(d.x, d.y, 0, f, { alpha });
-      else drawBall(s.ball.p[0], s.ball.p[1], s.ball.p[2], f, { alpha });
+      if (d && d.kind === 'ball') drawBall(d.x, d.y, 0, f.ball_radius, { alpha });
+      else drawBall(s.ball.p[0], s.ball.p[1], s.ball.p[2], f.ball_radius, { alpha });
     }
     view.drawn = true;
     if (cameras) {
@@ -245,7 +305,7 @@
           drawRobot({ team: r.team, id: r.id, x: r.p[0], y: r.p[1], yaw: r.yaw }, f.robot_radius,
             { alpha: 0.4 + 0.6 * r.conf, outline: true });
         }
-        for (const b of det.balls) drawBall(b[0], b[1], b[2], f, { alpha: 0.4 + 0.6 * b[3], outline: true });
+        for (const b of det.balls) drawBall(b[0], b[1], b[2], f.ball_radius, { alpha: 0.4 + 0.6 * b[3], outline: true });
       }
     }
   }
@@ -343,7 +403,8 @@
     view.received[m.type] = (view.received[m.type] || 0) + 1;
     switch (m.type) {
       case 'hello': say(`connected to prefix '${m.prefix}'`); break;
-      case 'field': view.field = m; layout(); break;
+      case 'field': view.field = m; view.legged = null; view.cur = view.prev = null; setLegged(false); layout(); break;
+      case 'legged': view.legged = m; view.field = null; view.cur = view.prev = null; setLegged(true); layout(); break;
       case 'state': onState(m); break;
       case 'stats': onStats(m); break;
       case 'reply':
@@ -353,6 +414,12 @@
       case 'refused': say(`viewer refused the request (${m.kind}): ${m.detail}`, true); break;
       default: break;
     }
+  }
+
+  // Legged scenes have neither off-field robots nor cameras: hide those controls.
+  function setLegged(legged) {
+    for (const el of document.querySelectorAll('.ssl-only')) el.classList.toggle('hidden', legged);
+    for (const el of document.querySelectorAll('.legged-only')) el.classList.toggle('hidden', !legged);
   }
 
   function connect() {
@@ -377,6 +444,11 @@
   const round = (v) => Math.round(v * 1e4) / 1e4;
 
   function clampInside(x, y, r) {
+    if (view.legged) {  // as page_request.h: kLeggedMargin beyond the lines, kLeggedArea without a field
+      const lf = view.legged.field;
+      const bx = (lf ? lf.length / 2 + 5 : 50) - r - 1e-3, by = (lf ? lf.width / 2 + 5 : 50) - r - 1e-3;
+      return [Math.max(-bx, Math.min(bx, x)), Math.max(-by, Math.min(by, y))];
+    }
     const f = view.field;
     const bx = f.length / 2 + f.boundary_goal - r - 1e-3, by = f.width / 2 + f.boundary - r - 1e-3;
     return [Math.max(-bx, Math.min(bx, x)), Math.max(-by, Math.min(by, y))];
@@ -400,6 +472,7 @@
   }
 
   function robotAt(x, y) {
+    if (view.legged) return null;  // legged robots: leggedAt
     const s = view.cur, f = view.field;
     if (!s || !f) return null;
     let best = null, bestD = f.robot_radius * 1.1;
@@ -412,11 +485,13 @@
   }
 
   function ballAt(x, y) {
-    const s = view.cur, f = view.field;
-    if (!s || !f) return false;
-    const reach = Math.max(f.ball_radius * 2, 10 / view.scale);  // at least 10 px to grab
+    const s = view.cur;
+    if (!s || !s.ball || !sceneKnown()) return false;
+    const reach = Math.max(ballRadius() * 2, 10 / view.scale);  // at least 10 px to grab
     return Math.hypot(s.ball.p[0] - x, s.ball.p[1] - y) < reach;
   }
+
+  const leggedAt = (x, y) => (view.legged ? Legged.robotAt(view.leggedDrawn, x, y, LEGGED_REACH) : null);
 
   function sendDrag(final) {
     const d = view.drag;
@@ -424,14 +499,23 @@
     if (!final && now - d.lastSent < SEND_EVERY_MS) return;
     d.lastSent = now;
     if (d.kind === 'ball') send({ op: 'teleport_ball', x: round(d.x), y: round(d.y) });
-    else sendRobot(d.team, d.id, d.x, d.y, d.yaw);
+    else if (d.kind === 'legged') {
+      // Keep its orientation and height: only where it stands changes.
+      send({ op: 'teleport_robot', robot: d.name, x: round(d.x), y: round(d.y), z: round(d.z),
+        qw: round(d.q[0]), qx: round(d.q[1]), qy: round(d.q[2]), qz: round(d.q[3]) });
+    } else sendRobot(d.team, d.id, d.x, d.y, d.yaw);
   }
 
   canvas.addEventListener('pointerdown', (e) => {
-    if (!view.field || view.mode === 'cameras') return;
+    if (!sceneKnown() || (view.field && view.mode === 'cameras')) return;
     const [x, y] = eventField(e);
+    const legged = leggedAt(x, y);
     if (ballAt(x, y)) {
       view.drag = { kind: 'ball', x, y, lastSent: 0 };
+    } else if (legged) {
+      const [rx, ry, rz] = legged.root;
+      view.drag = { kind: 'legged', name: legged.name, root: [rx, ry], x: rx, y: ry, z: Math.max(0, rz), q: legged.q,
+        dx: rx - x, dy: ry - y, lastSent: 0 };
     } else {
       const r = robotAt(x, y);
       if (!r) return;
@@ -446,13 +530,17 @@
   canvas.addEventListener('pointermove', (e) => {
     const d = view.drag;
     if (!d) {
-      const [x, y] = view.field ? eventField(e) : [0, 0];
-      canvas.style.cursor = view.field && (ballAt(x, y) || robotAt(x, y)) ? 'grab' : 'default';
+      const [x, y] = sceneKnown() ? eventField(e) : [0, 0];
+      canvas.style.cursor = sceneKnown() && (ballAt(x, y) || robotAt(x, y) || leggedAt(x, y)) ? 'grab' : 'default';
       return;
     }
     const [x, y] = eventField(e);
     const f = view.field;
-    if (d.kind === 'robot' && d.rotate) {
+    if (d.kind === 'legged') {
+      [d.x, d.y] = clampInside(x + d.dx, y + d.dy, 0);
+    } else if (d.kind === 'ball' && view.legged) {
+      [d.x, d.y] = clampInside(x, y, ballRadius());
+    } else if (d.kind === 'robot' && d.rotate) {
       d.yaw = Math.atan2(y - d.y, x - d.x);
     } else if (d.kind === 'robot') {
       [d.x, d.y] = clampInside(x + d.dx, y + d.dy, f.robot_radius);
@@ -521,11 +609,16 @@
   // For tests and the console: where a field point is drawn, and what is there.
   window.turfViewer = {
     // The field and a state have arrived, are drawn, and the controls are live.
-    ready: () => !!(view.field && view.cur && view.drawn && view.cur.viewer && view.cur.viewer.control &&
+    ready: () => !!(sceneKnown() && view.cur && view.drawn && view.cur.viewer && view.cur.viewer.control &&
       view.ws && view.ws.readyState === WebSocket.OPEN),
     state: () => view.cur,
     received: () => ({ ...view.received, socket: view.ws ? view.ws.readyState : -1 }),
     field: () => view.field,
+    legged: () => view.legged,
+    // Legged robots as drawn: root body position (m), the drawn centre of its
+    // first shape (the root's, e.g. the Nao's torso) and how many shapes.
+    leggedDrawn: () => view.leggedDrawn.map((r) => ({ name: r.name, id: r.id, root: r.root,
+      first: r.shapes.length ? Legged.centre(r.shapes[0]) : null, shapes: r.shapes.length })),
     fieldToClient: (x, y) => {
       const rect = canvas.getBoundingClientRect();
       const [cx, cy] = toCanvas(x, y);
