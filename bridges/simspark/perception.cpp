@@ -1,12 +1,31 @@
 #include "bridges/simspark/perception.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 namespace turf::simspark {
 
 std::string FormatFloat(double v) {
   if (!std::isfinite(v)) return "0.00";
+  // The common case without printf (a perception has ~150 numbers); printf
+  // for huge values.
+  if (std::abs(v) < 1e12) {
+    // The exact product a * 100 against c + 0.5, by fma, so near-ties round
+    // like printf (which rounds the exact binary value, ties to even).
+    const double a = std::abs(v);
+    double c = std::floor(a * 100.0);
+    if (std::fma(a, 100.0, -c) < 0) c -= 1.0;
+    const double above_half = std::fma(a, 100.0, -(c + 0.5));
+    if (above_half > 0 || (above_half == 0 && std::fmod(c, 2.0) != 0)) c += 1.0;
+    const auto hundredths = static_cast<int64_t>(c);
+    std::string out = std::signbit(v) ? "-" : "";
+    out += std::to_string(hundredths / 100);
+    out.push_back('.');
+    out.push_back(static_cast<char>('0' + (hundredths % 100) / 10));
+    out.push_back(static_cast<char>('0' + hundredths % 10));
+    return out;
+  }
   char buffer[32];
   const int n = std::snprintf(buffer, sizeof(buffer), "%.2f", v);
   if (n >= 0 && static_cast<size_t>(n) < sizeof(buffer)) return std::string(buffer, static_cast<size_t>(n));

@@ -314,6 +314,19 @@ void Session::Advance(const WorldSnapshot& world) {
   const GameUpdate update = game_.Update(0.02, world.ball, touched);
   if (update.place_ball) requests_.ball = BallMove{*update.place_ball, Eigen::Vector3d::Zero()};
   last_ = world;
+  // Every player's seen parts, once per cycle for all agents' vision.
+  players_.clear();
+  for (const auto& [id, other] : agents_) {
+    if (!other.inited || other.robot < 0) continue;
+    const RobotSnapshot* r = world.Find(robots_[other.robot]);
+    if (r == nullptr) continue;
+    VisionPlayer player{other.team, other.unum, {}};
+    for (const char* part : kSeenParts) {
+      const RobotSnapshot::Link* l = r->FindLink(part);
+      if (l != nullptr) player.parts.push_back({part, l->position});
+    }
+    players_.push_back(std::move(player));
+  }
   for (auto& [id, a] : agents_) {
     if (a.robot < 0) continue;
     outputs_.emplace_back(id, Perceive(&a, world, touched));
@@ -372,17 +385,7 @@ SeeItems Session::See(const Agent& agent, const RobotSnapshot& robot, const Worl
   scene.head_orientation = head->orientation;
   scene.calibration_offset = agent.calibration;
   scene.ball = world.ball;
-  for (const auto& [id, other] : agents_) {
-    if (!other.inited || other.robot < 0) continue;
-    const RobotSnapshot* r = world.Find(robots_[other.robot]);
-    if (r == nullptr) continue;
-    VisionPlayer player{other.team, other.unum, {}};
-    for (const char* part : kSeenParts) {
-      const RobotSnapshot::Link* l = r->FindLink(part);
-      if (l != nullptr) player.parts.push_back({part, l->position});
-    }
-    scene.players.push_back(std::move(player));
-  }
+  scene.players = players_;
   VisionParams params = options_.vision;
   Rng& rng = agents_.at(agent.id).rng;
   return ComputeSee(scene, field_, params, &rng);

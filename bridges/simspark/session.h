@@ -174,6 +174,7 @@ class Session {
   std::string monitor_;
   bool quit_ = false;
   std::optional<WorldSnapshot> last_;
+  std::vector<VisionPlayer> players_;  // this cycle's, for every agent's vision
 
   friend struct TrainerCommandVisitor;
 };

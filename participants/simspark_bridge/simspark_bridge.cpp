@@ -2,6 +2,7 @@
 
 #include <poll.h>
 #include <spdlog/spdlog.h>
+#include <sys/socket.h>
 
 #include <algorithm>
 #include <atomic>
@@ -23,7 +24,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr auto kCycle = std::chrono::milliseconds(20);
 constexpr double kCycleSeconds = 0.02;
-constexpr size_t kMaxUnsent = 1 << 20;  // bytes a client may leave unread
+constexpr int kSendBuffer = 128 * 1024;  // kernel buffer per client (bounds what a stalled client holds)
 constexpr size_t kMaxReadPerPoll = 1 << 18;
 
 struct Client {
@@ -178,7 +179,8 @@ class SimSparkBridge::Impl {
   void AcceptAll(TcpListener* listener, bool monitor) {
     std::string address;
     for (int fd = listener->Accept(&address); fd >= 0; fd = listener->Accept(&address)) {
-      auto peer = std::make_unique<TcpPeer>(fd, address, kMaxUnsent);
+      setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &kSendBuffer, sizeof(kSendBuffer));
+      auto peer = std::make_unique<TcpPeer>(fd, address, options_.max_unsent);
       if (clients_.size() >= options_.max_clients) {
         rejects_.Reject("too_many_clients", fmt::format("{} refused: {} clients connected", address, clients_.size()));
         continue;  // the peer's destructor closes it

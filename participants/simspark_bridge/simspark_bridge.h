@@ -10,7 +10,7 @@
 // at any time, all at once; each gets a parked robot of the scene at `scene`.
 //
 // Untrusted input: a frame longer than 64 KiB, or a client that stops reading
-// (more than 1 MiB unsent), drops that client; a malformed message or predicate
+// (more than max_unsent bytes waiting), drops that client; a malformed message or predicate
 // is logged, counted and ignored. Facts: shared/protocols/simspark.md.
 #pragma once
 
@@ -37,7 +37,8 @@ struct SimSparkBridgeOptions {
   // Sync mode: an agent that sends no (syn) for this long is dropped (0: wait forever).
   std::chrono::milliseconds sync_timeout{10000};
   size_t max_clients = 64;
-  double duration = 0.0;  // stop after this many simulated seconds (0: run until stopped)
+  size_t max_unsent = 1 << 20;  // bytes a client may leave unread before it is dropped
+  double duration = 0.0;        // stop after this many simulated seconds (0: run until stopped)
 };
 
 struct SimSparkBridgeStats {

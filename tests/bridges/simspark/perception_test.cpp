@@ -3,6 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -123,6 +128,33 @@ TEST(Perception, AFullVisionCycleParsesBackWithinTheAgentLimits) {
   ASSERT_TRUE(see_expr.IsCall("See"));
   EXPECT_EQ(see_expr.items.size(), 1u + 9 + 22 + 21);
   EXPECT_EQ(see_expr.items[10].Child("id")->items[1].atom, "1");
+}
+
+}  // namespace
+}  // namespace turf::simspark
+
+namespace turf::simspark {
+namespace {
+
+// The fast path agrees with printf("%.2f") (the reference's format), ties and
+// near-ties included.
+TEST(PerceptionFormatFloat, AgreesWithPrintfOnRandomAndTieValues) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> wide(-2000.0, 2000.0);
+  std::vector<double> values = {0.0, -0.0, 0.125, -0.375, 2.675, 0.005, -0.004, 0.015, 1.005, 99.995, 1e11, -1e13};
+  for (int i = 0; i < 100000; ++i) {
+    const double v = wide(rng);
+    values.push_back(v);
+    values.push_back(std::round(v * 1000) / 1000);  // thousandths: many near-ties
+  }
+  int mismatches = 0;
+  for (double v : values) {
+    char expected[64];
+    std::snprintf(expected, sizeof(expected), "%.2f", v);
+    if (FormatFloat(v) != expected && ++mismatches < 5)
+      ADD_FAILURE() << v << ": " << FormatFloat(v) << " vs " << expected;
+  }
+  EXPECT_EQ(mismatches, 0);
 }
 
 }  // namespace

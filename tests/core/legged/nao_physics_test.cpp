@@ -14,8 +14,9 @@ namespace {
 
 using testing::NaoScene;
 
-// Every test runs at the default 2 ms step and at the 5 ms step of the
-// SimSpark scene (configs/scenes/simspark_3d.yaml, 4 steps per 20 ms cycle).
+// Every test runs at the default 2 ms step, at 5 ms, and at the 6.67 ms step
+// of the SimSpark match scene (configs/scenes/simspark_match.yaml: 3 steps per
+// 20 ms cycle).
 class NaoPhysicsTest : public ::testing::TestWithParam<double> {
  protected:
   double step() const { return GetParam(); }
@@ -218,9 +219,9 @@ TEST_P(NaoPhysicsTest, DeterministicAndResettable) {
   EXPECT_EQ(again.robots[0].joint_positions, sa.robots[0].joint_positions);
 }
 
-INSTANTIATE_TEST_SUITE_P(Steps, NaoPhysicsTest, ::testing::Values(0.002, 0.005),
+INSTANTIATE_TEST_SUITE_P(Steps, NaoPhysicsTest, ::testing::Values(0.002, 0.005, 0.02 / 3),
                          [](const ::testing::TestParamInfo<double>& info) {
-                           return std::to_string(static_cast<int>(std::lround(info.param * 1000))) + "ms";
+                           return std::to_string(static_cast<int>(std::lround(info.param * 1e6))) + "us";
                          });
 
 }  // namespace
