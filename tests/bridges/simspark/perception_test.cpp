@@ -4,12 +4,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <random>
-#include <vector>
-
-#include <cmath>
 #include <limits>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "bridges/simspark/sexpr.h"
 
