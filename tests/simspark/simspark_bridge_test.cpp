@@ -1,0 +1,325 @@
+// turf-simspark-bridge in process with turf-sim's legged node (the 22-Nao
+// match scene) over DDS, and scripted agents over real TCP: the agent
+// lifecycle, units (HJ in degrees after a known velocity), vision facing the
+// ball and away, sync mode's one cycle per (syn) round, 22 agents at once,
+// bad input, and the trainer port.
+#include <gtest/gtest.h>
+#include <sys/socket.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <regex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "config/legged_scene_yaml.h"
+#include "participants/sim/legged_node.h"
+#include "participants/simspark_bridge/simspark_bridge.h"
+#include "tests/simspark/agent_client.h"
+#include "tests/test_domain.h"
+
+namespace turf {
+namespace {
+
+using namespace std::chrono_literals;
+using test::AgentClient;
+
+// turf-sim (legged node) and the bridge, each on its own thread.
+class Match {
+ public:
+  explicit Match(bool sync, size_t max_unsent = 1 << 20) {
+    static int counter = 0;
+    const std::string prefix = "simspark" + std::to_string(getpid()) + "_" + std::to_string(++counter);
+    const std::string qos = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
+    LeggedSceneLoadResult scene = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/simspark_match.yaml");
+    if (!scene.scene) throw std::runtime_error(scene.errors.front());
+    SimNodeOptions sim;
+    sim.domain = test::TestDomain(11);
+    sim.prefix = prefix;
+    sim.qos_file = qos;
+    sim.mode = TimeMode::kLockstep;
+    sim_ = std::make_unique<LeggedNode>(std::move(*scene.scene), sim);
+    sim_thread_ = std::thread([this] { sim_->Run([this] { return stop_.load(); }); });
+    SimSparkBridgeOptions o;
+    o.domain = sim.domain;
+    o.prefix = prefix;
+    o.qos_file = qos;
+    o.listen = "127.0.0.1";
+    o.agent_port = 0;
+    o.monitor_port = 0;
+    o.sync_mode = sync;
+    o.max_unsent = max_unsent;
+    bridge_ = std::make_unique<SimSparkBridge>(o);
+    bridge_thread_ = std::thread([this] { bridge_->Run([this] { return stop_.load(); }); });
+  }
+  ~Match() {
+    stop_ = true;
+    bridge_thread_.join();
+    sim_thread_.join();
+  }
+  SimSparkBridge& bridge() { return *bridge_; }
+
+  // A connected agent with a robot (scene sent, first perception read).
+  AgentClient Agent(int type = 0) {
+    AgentClient a;
+    EXPECT_TRUE(a.Connect(bridge_->agent_port()));
+    a.Send("(scene rsg/agent/nao/nao_hetero.rsg " + std::to_string(type) + ")");
+    EXPECT_TRUE(a.Receive(10s).has_value()) << "no first perception";
+    return a;
+  }
+
+ private:
+  std::atomic<bool> stop_{false};
+  std::unique_ptr<LeggedNode> sim_;
+  std::unique_ptr<SimSparkBridge> bridge_;
+  std::thread sim_thread_;
+  std::thread bridge_thread_;
+};
+
+double Number(const std::string& message, const std::string& pattern) {
+  std::smatch m;
+  if (!std::regex_search(message, m, std::regex(pattern))) return NAN;
+  return std::stod(m[1]);
+}
+double Time(const std::string& m) { return Number(m, R"(\(time \(now ([-0-9.]+)\)\))"); }
+double Joint(const std::string& m, const std::string& j) {
+  return Number(m, R"(\(HJ \(n )" + j + R"(\) \(ax ([-0-9.]+)\)\))");
+}
+
+// Sync mode: answers with `effectors` and (syn), returns the next perception.
+std::string Cycle(AgentClient& a, const std::string& effectors = "") {
+  a.Send(effectors + "(syn)");
+  auto m = a.Receive(10s);
+  EXPECT_TRUE(m.has_value());
+  return m.value_or("");
+}
+
+// The next perception that has a See.
+std::string NextSee(AgentClient& a) {
+  for (int i = 0; i < 3; ++i) {
+    const std::string m = Cycle(a);
+    if (m.find("(See") != std::string::npos) return m;
+  }
+  ADD_FAILURE() << "no See in 3 cycles";
+  return "";
+}
+
+TEST(SimSparkBridgeTest, AgentInitsBeamsAndReadsJointAnglesInDegrees) {
+  Match match(/*sync=*/true);
+  AgentClient a = match.Agent();
+  std::string m = Cycle(a, "(init (unum 0)(teamname Alpha))");
+  EXPECT_NE(m.find("(GS (unum 1) (team left)"), std::string::npos) << m;
+  m = Cycle(a);
+  EXPECT_EQ(m.find("(unum"), std::string::npos);  // only in the first GS after init
+  EXPECT_NE(m.find("(pm BeforeKickOff)"), std::string::npos);
+  for (int i = 0; i < 50; ++i) m = Cycle(a);  // 1 s: settle at the start spot
+  // Standing: proper acceleration about +g up, both feet on the ground.
+  EXPECT_NEAR(Number(m, R"(\(ACC \(n torso\) \(a [-0-9.]+ [-0-9.]+ ([-0-9.]+)\)\))"), 9.81, 1.0) << m;
+  EXPECT_NE(m.find("(FRP (n lf)"), std::string::npos);
+  EXPECT_NE(m.find("(FRP (n rf)"), std::string::npos);
+  EXPECT_EQ(std::count(m.begin(), m.end(), 'H') >= 22, true);
+  const double hj1_start = Joint(m, "hj1");
+  const double t0 = Time(m);
+  // (he1 1.0) for 25 cycles turns hj1 by 0.5 rad = 28.65 deg (the reference, verified).
+  m = Cycle(a, "(he1 1.0)");
+  for (int i = 1; i < 25; ++i) {
+    const double t = Time(m);
+    m = Cycle(a);
+    EXPECT_NEAR(Time(m) - t, 0.02, 1e-6);  // one cycle per (syn) round
+  }
+  for (int i = 0; i < 10; ++i) m = Cycle(a, "(he1 0.0)");
+  EXPECT_NEAR(Time(m) - t0, 0.02 * 35, 1e-6);
+  const double turned = Joint(m, "hj1") - hj1_start;
+  std::printf("hj1 after (he1 1.0) for 25 cycles: %.2f deg\n", turned);
+  EXPECT_NEAR(turned, 28.65, 1.0);
+}
+
+TEST(SimSparkBridgeTest, SeesTheBallWhenFacingItAndNotWhenFacingAway) {
+  Match match(/*sync=*/true);
+  AgentClient a = match.Agent();
+  Cycle(a, "(init (unum 3)(teamname Alpha))");
+  // Beam in the team's frame: 2 m behind the ball on the centre, facing it (+x).
+  Cycle(a, "(beam -2.0 0.0 0.0)");
+  for (int i = 0; i < 10; ++i) Cycle(a);
+  std::string see = NextSee(a);
+  const double d = Number(see, R"(\(B \(pol ([-0-9.]+) )");
+  const double h = Number(see, R"(\(B \(pol [-0-9.]+ ([-0-9.]+) )");
+  std::printf("ball facing it: d %.2f m, h %.2f deg\n", d, h);
+  EXPECT_NEAR(d, 2.05, 0.15) << see;  // head 0.6 m up, beam noise +-0.05 m
+  EXPECT_LT(std::abs(h), 12.0);       // beam noise +-10 deg
+  // The flags and goal posts of the right side are ahead too; the left ones are behind.
+  EXPECT_NE(see.find("(G1R (pol"), std::string::npos);
+  EXPECT_EQ(see.find("(G1L (pol"), std::string::npos);
+
+  Cycle(a, "(beam -2.0 0.0 180.0)");
+  for (int i = 0; i < 10; ++i) Cycle(a);
+  see = NextSee(a);
+  EXPECT_EQ(see.find("(B (pol"), std::string::npos) << see;
+  EXPECT_NE(see.find("(G1L (pol"), std::string::npos);
+}
+
+TEST(SimSparkBridgeTest, SyncModeWaitsForEveryAgentsSyn) {
+  Match match(/*sync=*/true);
+  AgentClient a = match.Agent();
+  AgentClient b;
+  ASSERT_TRUE(b.Connect(match.bridge().agent_port()));
+  b.Send("(scene rsg/agent/nao/nao_hetero.rsg 0)");
+  // a's grace cycles may be over: the world waits for a's (syn) until b has a robot.
+  bool b_has_robot = false;
+  for (int i = 0; i < 50 && !b_has_robot; ++i) {
+    a.Send("(syn)");
+    ASSERT_TRUE(a.Receive(10s).has_value());
+    b_has_robot = b.Receive(50ms).has_value();
+  }
+  ASSERT_TRUE(b_has_robot);
+  // Past the grace cycles after scene, both answering.
+  std::string ma;
+  for (int i = 0; i < 8; ++i) {
+    a.Send("(syn)");
+    b.Send("(syn)");
+    ma = a.Receive(10s).value_or("");
+    ASSERT_TRUE(b.Receive(10s).has_value());
+  }
+  // A (syn) sent during b's grace cycles may already count for the next
+  // cycle: drain until both have read everything.
+  for (auto m = a.Receive(300ms); m; m = a.Receive(300ms)) ma = *m;
+  while (b.Receive(300ms)) {
+  }
+  a.Send("(syn)");
+  b.Send("(syn)");
+  ma = a.Receive(10s).value_or("");
+  ASSERT_TRUE(b.Receive(10s).has_value());
+  const double t = Time(ma);
+  a.Send("(syn)");
+  EXPECT_FALSE(a.Receive(400ms).has_value()) << "stepped without b's (syn)";
+  b.Send("(syn)");
+  auto next_a = a.Receive(10s);
+  auto next_b = b.Receive(10s);
+  ASSERT_TRUE(next_a && next_b);
+  EXPECT_NEAR(Time(*next_a) - t, 0.02, 1e-6);
+  EXPECT_NEAR(Time(*next_b) - t, 0.02, 1e-6);
+  EXPECT_FALSE(a.Receive(200ms).has_value());  // exactly one cycle
+}
+
+TEST(SimSparkBridgeTest, TwentyTwoAgentsConnectAtOnceAndAllPlay) {
+  Match match(/*sync=*/false);  // real time
+  constexpr int kTypes[11] = {0, 0, 0, 0, 0, 0, 0, 1, 1, 2, 3};
+  std::vector<AgentClient> agents(22);
+  for (AgentClient& a : agents) ASSERT_TRUE(a.Connect(match.bridge().agent_port()));
+  for (int i = 0; i < 22; ++i)
+    agents[i].Send("(scene rsg/agent/nao/nao_hetero.rsg " + std::to_string(kTypes[i / 2]) + ")");
+  for (int i = 0; i < 22; ++i) {
+    ASSERT_TRUE(agents[i].Receive(10s).has_value()) << "agent " << i;
+    agents[i].Send(std::string("(init (unum ") + std::to_string(i / 2 + 1) + ")(teamname " +
+                   (i % 2 ? "Beta" : "Alpha") + "))");
+  }
+  int inited = 0;
+  for (int i = 0; i < 22; ++i) {
+    const std::string side = i % 2 ? "right" : "left";
+    const std::string want = "(GS (unum " + std::to_string(i / 2 + 1) + ") (team " + side + ")";
+    for (int k = 0; k < 20; ++k) {
+      auto m = agents[i].Receive(10s);
+      ASSERT_TRUE(m.has_value()) << "agent " << i;
+      if (m->find(want) != std::string::npos) {
+        ++inited;
+        break;
+      }
+    }
+  }
+  EXPECT_EQ(inited, 22);
+  // Everyone sees teammates and opponents on vision cycles.
+  bool saw_other_team = false;
+  for (int k = 0; k < 6 && !saw_other_team; ++k) {
+    auto m = agents[0].Receive(10s);
+    ASSERT_TRUE(m.has_value());
+    saw_other_team = m->find("(P (team Beta)") != std::string::npos;
+  }
+  EXPECT_TRUE(saw_other_team);
+  EXPECT_EQ(match.bridge().Stats().agents, 22);
+}
+
+TEST(SimSparkBridgeTest, BadInputIsRefusedAndOthersCarryOn) {
+  Match match(/*sync=*/false, /*max_unsent=*/16 * 1024);
+  AgentClient good = match.Agent();
+  AgentClient noisy = match.Agent();
+  noisy.Send("(he1 nan)");
+  noisy.Send("((((");
+  noisy.Send("(fly 1.0)");
+  noisy.Send("(he1 1.0");
+  noisy.Send(std::string("(say \0x)", 8));
+  AgentClient huge;
+  ASSERT_TRUE(huge.Connect(match.bridge().agent_port()));
+  huge.SendRaw(std::string("\xff\xff\xff\xff", 4) + "(scene rsg/agent/nao/nao.rsg)");
+  AgentClient half;
+  ASSERT_TRUE(half.Connect(match.bridge().agent_port()));
+  half.SendRaw(std::string("\x00\x00\x00\x40(scene rsg/ag", 17));
+  half.Close();  // disconnects mid-message
+  // A client that stops reading: a small receive buffer, never read.
+  AgentClient stalled;
+  const int small = 4096;
+  ASSERT_TRUE(stalled.Connect(match.bridge().agent_port()));
+  setsockopt(stalled.fd(), SOL_SOCKET, SO_RCVBUF, &small, sizeof(small));
+  stalled.Send("(scene rsg/agent/nao/nao_hetero.rsg 1)");
+
+  // The huge prefix closes that connection.
+  auto closed = huge.Receive(5s);
+  EXPECT_FALSE(closed.has_value());
+  EXPECT_FALSE(huge.ReadSome());
+  // The others get perceptions all along, until the stalled client is dropped.
+  const auto deadline = std::chrono::steady_clock::now() + 30s;
+  while (match.bridge().Stats().dropped_clients < 3 && std::chrono::steady_clock::now() < deadline) {
+    ASSERT_TRUE(good.Receive(5s).has_value());
+    ASSERT_TRUE(noisy.Receive(5s).has_value());
+  }
+  const SimSparkBridgeStats stats = match.bridge().Stats();
+  EXPECT_GE(stats.dropped_clients, 3u);  // huge prefix, mid-message disconnect, stopped reading
+  auto count = [&](const std::string& kind) {
+    auto it = stats.refused_by_kind.find(kind);
+    return it == stats.refused_by_kind.end() ? 0u : it->second;
+  };
+  EXPECT_GE(count("not_finite"), 1u);
+  EXPECT_GE(count("parse"), 2u);  // "((((" and "(he1 1.0"
+  EXPECT_GE(count("unknown_effector"), 1u);
+  EXPECT_GE(count("frame_too_large"), 1u);
+  auto m = good.Receive(5s);
+  ASSERT_TRUE(m.has_value());
+  EXPECT_NE(m->find("(HJ (n hj1)"), std::string::npos);
+}
+
+TEST(SimSparkBridgeTest, TrainerSetsPlayModesAndMovesTheBall) {
+  Match match(/*sync=*/true);
+  AgentClient a = match.Agent();
+  Cycle(a, "(init (unum 1)(teamname Alpha))");
+  Cycle(a, "(beam -1.0 0.0 0.0)");
+  AgentClient monitor;
+  ASSERT_TRUE(monitor.Connect(match.bridge().monitor_port()));
+  auto greeting = monitor.Receive(5s);
+  ASSERT_TRUE(greeting.has_value());
+  EXPECT_NE(greeting->find("(FieldLength 30)"), std::string::npos);
+  monitor.Send("(kickOff Left)");
+  std::string m = Cycle(a);
+  for (int i = 0; i < 3 && m.find("(pm KickOff_Left)") == std::string::npos; ++i) m = Cycle(a);
+  EXPECT_NE(m.find("(pm KickOff_Left)"), std::string::npos) << m;
+  monitor.Send("(playMode PlayOn)");
+  for (int i = 0; i < 3 && m.find("(pm PlayOn)") == std::string::npos; ++i) m = Cycle(a);
+  EXPECT_NE(m.find("(pm PlayOn)"), std::string::npos);
+  // The ball 5 m ahead of the agent, then seen there.
+  monitor.Send("(ball (pos 4.0 0.0 0.042) (vel 0 0 0))");
+  for (int i = 0; i < 5; ++i) Cycle(a);
+  const std::string see = NextSee(a);
+  EXPECT_NEAR(Number(see, R"(\(B \(pol ([-0-9.]+) )"), 5.03, 0.2) << see;
+  // A monitor frame reports the play mode by index (PlayOn = 3).
+  bool saw = false;
+  for (int i = 0; i < 10 && !saw; ++i) {
+    auto frame = monitor.Receive(2s);
+    saw = frame && frame->find("(play_mode 3)") != std::string::npos;
+    Cycle(a);
+  }
+  EXPECT_TRUE(saw);
+}
+
+}  // namespace
+}  // namespace turf
