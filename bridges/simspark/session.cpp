@@ -184,13 +184,14 @@ void Session::Receive(int agent_id, const std::string& payload) {
     }  // else ignored, as the reference does outside BeforeKickOff and Goal_X
   }
   if (!m.hinges.empty() && agent->robot >= 0) {
-    std::vector<JointVelocity>& targets = requests_.joints[robots_[agent->robot]];
     for (const HingeEffector& h : m.hinges) {
       const std::optional<std::string> joint = JointForEffector(h.effector, agent->type);
       if (!joint) {
         Issue(agent_id, "unknown_effector", fmt::format("{} (robot type {})", h.effector, agent->type));
         continue;
       }
+      // Here, not before the loop: a message without a usable joint asks nothing (no empty command).
+      std::vector<JointVelocity>& targets = requests_.joints[robots_[agent->robot]];
       const double limit = NaoMaxSpeed(agent->type, *joint);
       const double v = std::clamp(h.velocity, -limit, limit);
       bool replaced = false;
