@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 #include <variant>
@@ -184,12 +185,17 @@ void Session::Receive(int agent_id, const std::string& payload) {
     }  // else ignored, as the reference does outside BeforeKickOff and Goal_X
   }
   if (!m.hinges.empty() && agent->robot >= 0) {
+    const RobotSnapshot* robot = last_ ? last_->Find(robots_[agent->robot]) : nullptr;
     for (const HingeEffector& h : m.hinges) {
       const std::optional<std::string> joint = JointForEffector(h.effector, agent->type);
       if (!joint) {
         Issue(agent_id, "unknown_effector", fmt::format("{} (robot type {})", h.effector, agent->type));
         continue;
       }
+      // Type 4's toes (lle7, rle7) are accepted but the one Nao model has none.
+      if (robot == nullptr ||
+          std::find(robot->joint_names.begin(), robot->joint_names.end(), *joint) == robot->joint_names.end())
+        continue;
       // Here, not before the loop: a message without a usable joint asks nothing (no empty command).
       std::vector<JointVelocity>& targets = requests_.joints[robots_[agent->robot]];
       const double limit = NaoMaxSpeed(agent->type, *joint);

@@ -63,7 +63,9 @@ class SimSparkBridge::Impl {
     auto next_status = Clock::now() + std::chrono::seconds(10);
     const int64_t end_cycles = options_.duration > 0 ? std::llround(options_.duration / kCycleSeconds) : -1;
     while (!stop() && !session_->quit_requested()) {
-      const bool paced = !options_.sync_mode || session_->agents_with_robot() == 0;
+      // Sync mode without agents: the world waits (a run is the agents' stream alone).
+      const bool idle = options_.sync_mode && session_->agents_with_robot() == 0;
+      const bool paced = !options_.sync_mode;
       const auto now = Clock::now();
       const auto wait = paced ? std::max(next_cycle - now, Clock::duration::zero()) : Clock::duration(kCycle);
       PollSockets(std::chrono::duration_cast<std::chrono::milliseconds>(wait));
@@ -73,9 +75,9 @@ class SimSparkBridge::Impl {
         ReportStatus();
         next_status = after + std::chrono::seconds(10);
       }
-      const bool due = paced ? after >= next_cycle : session_->ReadyToStep();
+      const bool due = paced ? after >= next_cycle : !idle && session_->ReadyToStep();
       if (!due) {
-        if (!paced && options_.sync_timeout.count() > 0 && after - waiting_since > options_.sync_timeout) {
+        if (!paced && !idle && options_.sync_timeout.count() > 0 && after - waiting_since > options_.sync_timeout) {
           for (int agent : session_->Waiting()) DropAgent(agent, "sent no (syn) within the sync timeout");
           waiting_since = after;
         }

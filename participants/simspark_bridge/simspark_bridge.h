@@ -6,7 +6,8 @@
 // The bridge is the match's clock: it holds turf-sim in lockstep and steps it
 // one SimSpark cycle (0.02 s) at a time. Real-time mode: a cycle every 20 ms
 // of wall time (no catching up when late, like the reference). Sync mode: a
-// cycle as soon as every agent with a robot has sent (syn). Agents may connect
+// cycle as soon as every agent with a robot has sent (syn), none while no agent
+// has a robot, so a run depends on the agents' messages alone. Agents may connect
 // at any time, all at once; each gets a parked robot of the scene at `scene`.
 //
 // Untrusted input: a frame longer than 64 KiB, or a client that stops reading
