@@ -8,10 +8,12 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 
 #include "config/realism_yaml.h"
+#include "config/text_file.h"
 #include "config/yaml_reader.h"
 #include "participants/launcher/programs.h"
 
@@ -99,7 +101,9 @@ void ReadFlags(const YAML::Node& node, const std::string& path, const std::strin
   reader.Finish();
 }
 
-void ReadBridges(const YAML::Node& node, Errors* errors, std::vector<ProcessSpec>* bridges) {
+// `legged`: the scene's kind, unknown (nullopt) when the scene did not load.
+void ReadBridges(const YAML::Node& node, std::optional<bool> legged, Errors* errors,
+                 std::vector<ProcessSpec>* bridges) {
   MapReader reader(node, "bridges", errors);
   if (!node.IsMap()) return;
   std::set<std::string> seen;
@@ -110,6 +114,12 @@ void ReadBridges(const YAML::Node& node, Errors* errors, std::vector<ProcessSpec
     if (program == nullptr || !IsBridge(name)) continue;  // Finish() reports it
     reader.Child(name);
     if (!seen.insert(name).second) continue;
+    if (legged && program->scenes != Scenes::kAny && (program->scenes == Scenes::kLegged) != *legged) {
+      errors->push_back(
+          yaml::Message(reader.PathOf(name), pair.first,
+                        fmt::format("{} works with {} scenes, the profile's scene is {}", program->binary,
+                                    *legged ? "SSL" : "legged (kind: legged)", *legged ? "legged" : "an SSL scene")));
+    }
     ProcessSpec spec{name, {}};
     ReadFlags(pair.second, reader.PathOf(name), name, errors, &spec.flags);
     bridges->push_back(spec);
@@ -199,10 +209,13 @@ ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::st
     p.scene = Absolute(p.scene, base_dir);
     if (!fs::is_regular_file(p.scene)) m.Fail("scene", fmt::format("no such file: {}", p.scene));
   }
+  if (!p.scene.empty()) p.legged = IsLeggedScene(p.scene);
   if (m.String("realism", &p.realism)) {
     if (LooksLikePath(p.realism)) p.realism = Absolute(p.realism, base_dir);
     const RealismLoadResult realism = LoadRealism(p.realism);
-    if (!realism.realism) {
+    if (p.legged) {
+      m.Fail("realism", "the scene is legged (kind: legged); sensor realism is for SSL scenes");
+    } else if (!realism.realism) {
       m.Fail("realism",
              fmt::format("not a preset of configs/realism/ or a realism file: {}", fmt::join(realism.errors, "; ")));
     }
@@ -216,7 +229,8 @@ ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::st
   }
   ReadDiscovery(m.Map("discovery"), &p.discovery);
   ReadFlags(m.Child("sim"), "sim", "sim", &errors, &p.sim.flags);
-  ReadBridges(m.Child("bridges"), &errors, &p.bridges);
+  const bool scene_loads = !p.scene.empty() && fs::is_regular_file(p.scene);
+  ReadBridges(m.Child("bridges"), scene_loads ? std::optional<bool>(p.legged) : std::nullopt, &errors, &p.bridges);
   ReadRestart(m.Map("restart"), &p.restart);
   if (m.Number("stop_grace", &p.stop_grace) && p.stop_grace <= 0) m.Fail("stop_grace", "must be > 0");
   m.Finish();
@@ -250,6 +264,17 @@ ProfileLoadResult LoadLaunchProfile(const std::string& name_or_path, const std::
     if (result.profile->name.empty()) result.profile->name = path.stem().string();
   }
   return result;
+}
+
+bool IsLeggedScene(const std::string& path) {
+  try {
+    std::string text, error;
+    if (!ReadTextFile(path, 1 << 20, &text, &error)) return false;
+    const YAML::Node root = YAML::Load(text);
+    return root.IsMap() && root["kind"] && root["kind"].IsScalar() && root["kind"].Scalar() == "legged";
+  } catch (const std::exception&) {
+    return false;
+  }
 }
 
 std::string DefaultProfileDir() { return TURF_LAUNCH_PROFILE_DIR; }

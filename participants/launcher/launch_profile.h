@@ -7,7 +7,8 @@
 //   name: ssl_div_a                    shown in logs (default: the file's name)
 //   scene: ../scenes/ssl_div_a.yaml    turf-sim --scene; relative to the profile's directory
 //   realism: realistic                 turf-sim --realism: a preset of configs/realism/ or a YAML
-//                                      file (relative to the profile); absent: the scene's
+//                                      file (relative to the profile); absent: the scene's.
+//                                      SSL scenes only (refused for a `kind: legged` scene)
 //   domain: 0                          DDS domain of every process (0..232)
 //   prefix: turf                       topic prefix of every process
 //   qos: FILE                          --qos of every process (absent: the shipped profiles)
@@ -15,7 +16,8 @@
 //     server: HOST:PORT                every process gets ROS_DISCOVERY_SERVER=HOST:PORT
 //     start: false                     true: `turf launch` also runs fast-discovery-server there
 //   sim: {FLAG: VALUE, ...}            more turf-sim flags (e.g. speed: 1)
-//   bridges:                           the bridges to start (grsim, vision, simproto), in order
+//   bridges:                           the bridges to start, in order: grsim, vision, simproto for an
+//                                      SSL scene, simspark for a legged one (programs.h)
 //     grsim: {FLAG: VALUE, ...}        each with its flags ({} for the defaults)
 //   restart: {max_restarts: 5, backoff_initial: 0.5, backoff_max: 8, stable_after: 10}
 //   stop_grace: 5                      s from SIGTERM to SIGKILL when stopping
@@ -58,6 +60,7 @@ struct LaunchProfile {
   std::string name;
   std::string path;     // the file it came from (empty: parsed from text)
   std::string scene;    // absolute path
+  bool legged = false;  // the scene says `kind: legged`: SSL sensor realism does not apply
   std::string realism;  // preset name or absolute path; empty: the scene's
   int domain = 0;
   std::string prefix = "turf";
@@ -79,6 +82,10 @@ ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::st
 
 // `name_or_path`: a file, or a profile name looked up as <dir>/<name>.yaml.
 ProfileLoadResult LoadLaunchProfile(const std::string& name_or_path, const std::string& dir);
+
+// True if the scene file's top level says `kind: legged` (as
+// config/legged_scene_yaml.h's IsLeggedSceneFile, which would link the physics).
+bool IsLeggedScene(const std::string& path);
 
 // configs/launch/ of this source tree.
 std::string DefaultProfileDir();

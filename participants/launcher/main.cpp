@@ -12,6 +12,7 @@
 #include "participants/common/process.h"
 #include "participants/launcher/launch_plan.h"
 #include "participants/launcher/launch_profile.h"
+#include "participants/launcher/programs.h"
 #include "participants/launcher/supervisor.h"
 
 namespace {
@@ -36,7 +37,9 @@ int main(int argc, char** argv) {
   std::string prefix, realism, discovery_server, log_level = "info";
   double grace = 0;
   turf::launch::LaunchOverrides overrides;
-  launch->add_option("profile", profile_arg, "profile name (ssl_div_a, ssl_div_b: configs/launch/<name>.yaml) or file")
+  launch
+      ->add_option("profile", profile_arg,
+                   "profile name (ssl_div_a, ssl_div_b, simspark: configs/launch/<name>.yaml) or file")
       ->required();
   launch->add_flag("--print", print,
                    "print one shell command line per process and exit (run them on separate hosts by hand)");
@@ -49,8 +52,10 @@ int main(int argc, char** argv) {
   launch->add_flag("--start-discovery-server", overrides.start_discovery_server,
                    "also run fast-discovery-server on the --discovery-server address (on the host that has it; "
                    "even with --only)");
-  launch->add_option("--only", overrides.only, "run only these processes (discovery, sim, grsim, vision, simproto)")
-      ->delimiter(',');
+  std::string program_names;
+  for (const turf::launch::Program& p : turf::launch::kPrograms)
+    program_names += (program_names.empty() ? "" : ", ") + std::string(p.name);
+  launch->add_option("--only", overrides.only, "run only these processes (" + program_names + ")")->delimiter(',');
   launch->add_option("--set", overrides.sets, "PROCESS.FLAG=VALUE: change one process's flag (repeatable)");
   launch->add_option("--bin-dir", overrides.bin_dir,
                      "where the turf executables are (default: next to turf in the build tree, then PATH)");

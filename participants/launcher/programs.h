@@ -7,18 +7,24 @@
 
 namespace turf::launch {
 
+// The scenes a program works with (a profile's bridges must fit its scene).
+enum class Scenes { kAny, kSsl, kLegged };
+
 struct Program {
   std::string_view name;       // in profiles, --only, --set and log prefixes
   std::string_view binary;     // executable name
   std::string_view build_dir;  // under <build>/participants/; empty: a system tool found on PATH
+  Scenes scenes = Scenes::kAny;
 };
 
 inline constexpr Program kPrograms[] = {
     {"discovery", "fast-discovery-server", ""},  // Fast DDS discovery server (Debian: fastdds-tools)
     {"sim", "turf-sim", "sim"},
-    {"grsim", "turf-grsim-bridge", "grsim_bridge"},
-    {"vision", "turf-vision-bridge", "vision_bridge"},
-    {"simproto", "turf-simproto-bridge", "simproto_bridge"},
+    {"grsim", "turf-grsim-bridge", "grsim_bridge", Scenes::kSsl},
+    {"vision", "turf-vision-bridge", "vision_bridge", Scenes::kSsl},
+    {"simproto", "turf-simproto-bridge", "simproto_bridge", Scenes::kSsl},
+    // Steps turf-sim itself (switches it to lockstep).
+    {"simspark", "turf-simspark-bridge", "simspark_bridge", Scenes::kLegged},
 };
 
 // Bridges a profile may list under `bridges:` (every program but discovery and sim).

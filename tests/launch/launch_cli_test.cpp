@@ -73,6 +73,41 @@ TEST(LaunchCli, PrintGivesOneRunnableLinePerProcess) {
   }
 }
 
+TEST(LaunchCli, PrintSimSparkAndItsSyncMode) {
+  std::string out;
+  ASSERT_EQ(RunCommand({Turf(), "launch", "simspark", "--print"}, &out), 0) << out;
+  std::vector<std::string> lines = Lines(out);
+  ASSERT_EQ(lines.size(), 2u) << out;
+  EXPECT_NE(lines[0].find("/turf-sim --scene "), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("configs/scenes/simspark_match.yaml --domain 0 --prefix turf"), std::string::npos);
+  EXPECT_NE(lines[1].find("/turf-simspark-bridge --domain 0 --prefix turf --listen 0.0.0.0 --agent-port 3100 "
+                          "--monitor-port 3200"),
+            std::string::npos)
+      << lines[1];
+  EXPECT_EQ(lines[1].find("--sync"), std::string::npos) << "real time by default";
+  ExpectRunnable(lines);
+
+  ASSERT_EQ(
+      RunCommand({Turf(), "launch", "simspark", "--print", "--set", "simspark.sync=true", "--only", "simspark"}, &out),
+      0)
+      << out;
+  lines = Lines(out);
+  ASSERT_EQ(lines.size(), 1u) << out;
+  EXPECT_NE(lines[0].find("turf-simspark-bridge "), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find(" --sync"), std::string::npos) << lines[0];
+  ExpectRunnable(lines);
+
+  ASSERT_EQ(RunCommand({Turf(), "launch", "simspark", "--print", "--only", "sim"}, &out), 0) << out;
+  lines = Lines(out);
+  ASSERT_EQ(lines.size(), 1u) << out;
+  EXPECT_NE(lines[0].find("/turf-sim "), std::string::npos) << lines[0];
+
+  EXPECT_EQ(RunCommand({Turf(), "launch", "simspark", "--print", "--realism", "ideal"}, &out), 2);
+  EXPECT_NE(out.find("legged"), std::string::npos) << out;
+  EXPECT_EQ(RunCommand({Turf(), "launch", "simspark", "--print", "--only", "grsim"}, &out), 2);
+  EXPECT_NE(out.find("sim, simspark"), std::string::npos) << out;
+}
+
 TEST(LaunchCli, PrintWithOverridesAndADiscoveryServer) {
   std::string out;
   ASSERT_EQ(RunCommand({Turf(), "launch", "ssl_div_a", "--print", "--domain", "42", "--prefix", "field2",

@@ -46,10 +46,12 @@ TEST(LaunchProfile, ShippedProfilesLoad) {
     ASSERT_TRUE(r.profile.has_value()) << entry.path() << ": " << (r.errors.empty() ? "" : r.errors[0]);
     EXPECT_EQ(r.profile->name, entry.path().stem().string());
     EXPECT_TRUE(fs::is_regular_file(r.profile->scene));
-    EXPECT_FALSE(r.profile->realism.empty()) << "a league profile names its realism preset";
+    if (!r.profile->legged) {
+      EXPECT_FALSE(r.profile->realism.empty()) << "an SSL profile names its realism preset";
+    }
     EXPECT_FALSE(r.profile->bridges.empty());
   }
-  EXPECT_GE(count, 2);
+  EXPECT_GE(count, 3);
   const ProfileLoadResult a = LoadLaunchProfile("ssl_div_a", DefaultProfileDir());
   ASSERT_TRUE(a.profile.has_value());
   EXPECT_EQ(fs::path(a.profile->scene).filename(), "ssl_div_a.yaml");
@@ -60,6 +62,20 @@ TEST(LaunchProfile, ShippedProfilesLoad) {
   const ProfileLoadResult b = LoadLaunchProfile("ssl_div_b", DefaultProfileDir());
   ASSERT_TRUE(b.profile.has_value());
   EXPECT_EQ(fs::path(b.profile->scene).filename(), "ssl_div_b.yaml");
+}
+
+TEST(LaunchProfile, SimSparkRunsTheLeggedSceneAndTheBridge) {
+  const ProfileLoadResult r = LoadLaunchProfile("simspark", DefaultProfileDir());
+  ASSERT_TRUE(r.profile.has_value()) << r.errors[0];
+  const LaunchProfile& p = *r.profile;
+  EXPECT_EQ(fs::path(p.scene).filename(), "simspark_match.yaml");
+  EXPECT_TRUE(p.legged);
+  EXPECT_TRUE(p.realism.empty());
+  EXPECT_TRUE(p.sim.flags.empty()) << "the bridge steps turf-sim: no speed";
+  ASSERT_EQ(p.bridges.size(), 1u);
+  EXPECT_EQ(p.bridges[0].name, "simspark");
+  EXPECT_FALSE(IsLeggedScene(kScenes + "/ssl_div_a.yaml"));
+  EXPECT_FALSE(IsLeggedScene(kScenes + "/nowhere.yaml"));
 }
 
 TEST(LaunchProfile, UnknownProfileNamesTheKnownOnes) {
@@ -95,6 +111,9 @@ TEST(LaunchProfile, ErrorsNameTheKey) {
   ExpectError("scene: ssl_div_a.yaml\ndomain: two\n", "domain", "integer");
   ExpectError("scene: ssl_div_a.yaml\nprefix: 'a b'\n", "prefix", "letters");
   ExpectError("scene: ssl_div_a.yaml\nrealism: lifelike\n", "realism", "preset");
+  ExpectError("scene: simspark_match.yaml\nrealism: ideal\n", "realism", "legged");
+  ExpectError("scene: ssl_div_a.yaml\nbridges: {simspark: {}}\n", "bridges.simspark", "works with legged");
+  ExpectError("scene: simspark_match.yaml\nbridges: {grsim: {}}\n", "bridges.grsim", "works with SSL");
   ExpectError("scene: ssl_div_a.yaml\nbridges: {grsm: {}}\n", "bridges.grsm", "unknown key");
   ExpectError("scene: ssl_div_a.yaml\nbridges: {sim: {}}\n", "bridges.sim", "unknown key");
   ExpectError("scene: ssl_div_a.yaml\nbridges: {grsim: {domain: 3}}\n", "bridges.grsim.domain", "top-level");
@@ -184,6 +203,53 @@ TEST(LaunchPlan, BinariesAreFoundInTheBuildTree) {
   LaunchOverrides o;
   o.bin_dir = "/nonexistent";
   EXPECT_EQ(BuildPlan(*r.profile, o, kLauncherDir).errors.size(), 4u);
+}
+
+TEST(LaunchPlan, SimSparkPlanAndSyncMode) {
+  const ProfileLoadResult r = LoadLaunchProfile("simspark", DefaultProfileDir());
+  ASSERT_TRUE(r.profile.has_value()) << r.errors[0];
+  LaunchPlan plan = BuildPlan(*r.profile, {}, kLauncherDir);
+  ASSERT_TRUE(plan.errors.empty()) << plan.errors[0];
+  ASSERT_EQ(plan.commands.size(), 2u);
+  const std::string build = std::string(TURF_BINARY_DIR) + "/participants/";
+  EXPECT_EQ(plan.commands[0].name, "sim");
+  EXPECT_EQ(plan.commands[0].argv[0], build + "sim/turf-sim");
+  EXPECT_EQ(Args(plan.commands[0]), "--scene " + kScenes + "/simspark_match.yaml --domain 0 --prefix turf ");
+  EXPECT_EQ(plan.commands[1].name, "simspark");
+  EXPECT_EQ(plan.commands[1].argv[0], build + "simspark_bridge/turf-simspark-bridge");
+  EXPECT_EQ(Args(plan.commands[1]), "--domain 0 --prefix turf --listen 0.0.0.0 --agent-port 3100 --monitor-port 3200 ");
+
+  // Sync mode and other ports, as the profile's comment says.
+  LaunchOverrides o;
+  o.domain = 7;
+  o.sets = {"simspark.sync=true", "simspark.agent-port=3110", "simspark.monitor-port=3210"};
+  plan = BuildPlan(*r.profile, o, kLauncherDir);
+  ASSERT_TRUE(plan.errors.empty()) << plan.errors[0];
+  ASSERT_EQ(plan.commands.size(), 2u);
+  EXPECT_EQ(Args(plan.commands[1]),
+            "--domain 7 --prefix turf --listen 0.0.0.0 --sync --agent-port 3110 "
+            "--monitor-port 3210 ");
+  o.sets = {"simspark.sync=false"};
+  EXPECT_EQ(Args(BuildPlan(*r.profile, o, kLauncherDir).commands[1]).find("--sync"), std::string::npos);
+
+  // One process per host.
+  for (const char* only : {"sim", "simspark"}) {
+    LaunchOverrides one;
+    one.only = {only};
+    plan = BuildPlan(*r.profile, one, kLauncherDir);
+    ASSERT_TRUE(plan.errors.empty()) << plan.errors[0];
+    ASSERT_EQ(plan.commands.size(), 1u);
+    EXPECT_EQ(plan.commands[0].name, only);
+  }
+
+  // SSL-only overrides are refused by name.
+  LaunchOverrides bad;
+  bad.realism = "ideal";
+  bad.only = {"grsim"};
+  bad.sets = {"vision.port=10006"};
+  plan = BuildPlan(*r.profile, bad, kLauncherDir);
+  ASSERT_EQ(plan.errors.size(), 3u);
+  EXPECT_NE(plan.errors[0].find("legged"), std::string::npos) << plan.errors[0];
 }
 
 TEST(LaunchPlan, ShellLineQuotes) {
