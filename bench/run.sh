@@ -1,18 +1,70 @@
 #!/usr/bin/env bash
-# Runs turf's benchmarks and prints a table. Usage: bench/run.sh [sim seconds]
+# Runs turf's benchmarks and prints tables.
+#   bench/run.sh [sim seconds]           all of them
+#   bench/run.sh ssl [sim seconds]       turf-sim alone, SSL scenes
+#   bench/run.sh simspark [sim seconds]  SimSpark agents through turf-simspark-bridge
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
+WHAT=all
+if [[ "${1:-}" == ssl || "${1:-}" == simspark ]]; then
+  WHAT=$1
+  shift
+fi
 SECONDS_SIM=${1:-20}
-bin="$BUILD_DIR/bench/turf-bench-sim"
-[ -x "$bin" ] || bash scripts/build.sh
-echo "turf-sim free-running (2 ms step), world state 100 Hz + cameras 60 Hz published; $(nproc) cores"
-"$bin" --header --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a.yaml
-"$bin" --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a_2x16.yaml
-"$bin" --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a.yaml --subscribe
-"$bin" --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a_2x16.yaml --subscribe
-"$bin" --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a.yaml --drive
-"$bin" --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a_2x16.yaml --drive
-echo "RTF: simulated seconds per wall second; the physics loop is one thread. client process: a second"
-echo "process that receives world states / camera frames ('listen'), and also commands every robot at"
-echo "each world state ('drive'). sim CPU: user+sys of the simulator process (incl. Fast DDS threads)."
+[ -x "$BUILD_DIR/bench/turf-bench-simspark" ] || bash scripts/build.sh
+
+ssl() {
+  local bin="$BUILD_DIR/bench/turf-bench-sim"
+  echo "turf-sim free-running (2 ms step), world state 100 Hz + cameras 60 Hz published; $(nproc) cores"
+  "$bin" --header --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a.yaml
+  "$bin" --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a_2x16.yaml
+  "$bin" --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a.yaml --subscribe
+  "$bin" --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a_2x16.yaml --subscribe
+  "$bin" --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a.yaml --drive
+  "$bin" --seconds "$SECONDS_SIM" --scene configs/scenes/ssl_div_a_2x16.yaml --drive
+  echo "RTF: simulated seconds per wall second; the physics loop is one thread. client process: a second"
+  echo "process that receives world states / camera frames ('listen'), and also commands every robot at"
+  echo "each world state ('drive'). sim CPU: user+sys of the simulator process (incl. Fast DDS threads)."
+}
+
+# One run: turf-sim (simspark_match scene) and turf-simspark-bridge as their
+# own processes on a private DDS domain and ports, then the scripted agents.
+simspark_run() {
+  local agents=$1 mode=$2 header=${3:-}
+  local domain=$((90 + RANDOM % 9)) port=$((23100 + RANDOM % 500))
+  local prefix="bench$$"
+  "$BUILD_DIR/participants/sim/turf-sim" --scene configs/scenes/simspark_match.yaml -d "$domain" -p "$prefix" \
+    --lockstep --log-level warn &
+  local sim=$!
+  local sync_flag=""
+  [[ "$mode" == sync ]] && sync_flag="--sync"
+  "$BUILD_DIR/participants/simspark_bridge/turf-simspark-bridge" -d "$domain" -p "$prefix" --listen 127.0.0.1 \
+    --agent-port "$port" --monitor-port $((port + 1)) $sync_flag --log-level warn &
+  local bridge=$!
+  sleep 1
+  "$BUILD_DIR/bench/turf-bench-simspark" --port "$port" --agents "$agents" --seconds "$SECONDS_SIM" \
+    --label "$agents agents, $mode" $header || true
+  kill -INT "$bridge" "$sim" 2>/dev/null || true
+  wait "$bridge" "$sim" 2>/dev/null || true
+}
+
+simspark() {
+  echo "SimSpark agents -> turf-simspark-bridge -> turf-sim (22 Naos, 3 steps of 6.67 ms per 20 ms cycle);"
+  echo "each agent answers every perception with 22 hinge velocities and (syn); $(nproc) cores"
+  simspark_run 22 sync --header
+  simspark_run 11 sync
+  simspark_run 22 real-time
+  echo "RTF: simulated seconds per wall second over the measured stretch (sync: as fast as the agents"
+  echo "answer). Reference rcssserver3d 0.7.3 on this machine: 0.72x with 22 agents, 1.9x with 11."
+}
+
+case "$WHAT" in
+  ssl) ssl ;;
+  simspark) simspark ;;
+  all)
+    ssl
+    echo
+    simspark
+    ;;
+esac
