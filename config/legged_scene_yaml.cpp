@@ -1,5 +1,5 @@
-#include "config/text_file.h"
 #include "config/legged_scene_yaml.h"
+#include "config/text_file.h"
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
@@ -10,6 +10,7 @@
 #include <iterator>
 #include <map>
 
+#include "config/realism_yaml.h"
 #include "config/yaml_reader.h"
 
 namespace turf {
@@ -21,7 +22,6 @@ using yaml::MapReader;
 
 constexpr uintmax_t kMaxSceneBytes = 1 << 20;
 constexpr uintmax_t kMaxModelBytes = 16 << 20;
-
 
 void ReadMotors(MapReader m, MotorParams* p) {
   m.Number("max_torque", &p->max_torque);
@@ -98,6 +98,7 @@ void ReadScene(MapReader m, const std::string& base_dir, LeggedScene* s, Errors*
     r.Finish();
   }
   if (m.Has("field")) ReadField(m.Map("field"), &s->field);
+  ReadSceneRealism(m, &s->realism, errors);  // encoder and imu apply to legged robots
   const YAML::Node robots = m.Child("robots");
   if (robots && !robots.IsSequence()) {
     m.Fail("robots", "expected a list");

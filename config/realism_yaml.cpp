@@ -59,7 +59,6 @@ void ReadCamera(MapReader m, CameraRealism* c) {
   m.Finish();
 }
 
-
 }  // namespace
 
 void ReadRealism(MapReader m, SensorRealism* r) {
@@ -76,6 +75,18 @@ void ReadRealism(MapReader m, SensorRealism* r) {
   i.Number("accel_noise_stddev", &r->imu.accel_noise_stddev);
   i.Finish();
   m.Finish();
+}
+
+void ReadSceneRealism(MapReader& m, SensorRealism* realism, std::vector<std::string>* errors) {
+  if (!m.Has("realism")) return;
+  const YAML::Node node = m.Child("realism");
+  if (node.IsScalar()) {
+    RealismLoadResult preset = LoadRealism(node.as<std::string>());
+    for (const std::string& e : preset.errors) errors->push_back("realism: " + e);
+    if (preset.realism) *realism = *preset.realism;
+  } else {
+    ReadRealism(m.Map("realism"), realism);
+  }
 }
 
 std::string DefaultRealismDir() { return TURF_REALISM_DIR; }

@@ -50,5 +50,7 @@ class MapReader;
 }
 // For the scene compiler: reads a realism map.
 void ReadRealism(yaml::MapReader m, SensorRealism* realism);
+// A scene's optional `realism:` key: a preset name (configs/realism/<name>.yaml) or a map.
+void ReadSceneRealism(yaml::MapReader& scene, SensorRealism* realism, std::vector<std::string>* errors);
 
 }  // namespace turf

@@ -212,17 +212,7 @@ void ReadScene(MapReader m, Scene* s, std::vector<RobotSource>* sources, Errors*
   m.Int("robots_per_team", &s->robots_per_team);  // before teams: ids are checked against it
   ReadTeams(m.Map("teams"), s, sources, errors);
   ReadCameras(m.Map("cameras"), &s->cameras);
-  // realism: a preset name (configs/realism/<name>.yaml) or a map.
-  if (m.Has("realism")) {
-    const YAML::Node node = m.Child("realism");
-    if (node.IsScalar()) {
-      RealismLoadResult preset = LoadRealism(node.as<std::string>());
-      for (const std::string& e : preset.errors) errors->push_back("realism: " + e);
-      if (preset.realism) s->realism = *preset.realism;
-    } else {
-      ReadRealism(m.Map("realism"), &s->realism);
-    }
-  }
+  ReadSceneRealism(m, &s->realism, errors);
   m.Finish();
 }
 
@@ -271,10 +261,7 @@ SceneLoadResult ParseSceneYaml(const std::string& yaml_text) {
   }
 }
 
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 SceneLoadResult LoadSceneFile(const std::string& path) {
   SceneLoadResult result;

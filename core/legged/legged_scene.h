@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/sensor_realism.h"
+
 namespace turf {
 
 struct LeggedPhysics {
@@ -69,6 +71,9 @@ struct LeggedScene {
   LeggedRates rates;
   Field3d field;
   double ground_friction = 1.0;
+  // Encoders and IMU (realism.encoder, realism.imu); the camera and radio
+  // parts are the SSL world's and unused here. Ideal by default.
+  SensorRealism realism;
   std::vector<LeggedRobot> robots;
 };
 

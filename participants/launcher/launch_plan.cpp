@@ -99,9 +99,7 @@ void ApplyOverrides(const LaunchOverrides& o, LaunchProfile* profile, std::vecto
   }
   if (o.realism) {
     const RealismLoadResult r = LoadRealism(*o.realism);
-    if (profile->legged) {
-      errors->push_back("--realism: the profile's scene is legged; sensor realism is for SSL scenes");
-    } else if (!r.realism) {
+    if (!r.realism) {
       errors->push_back(fmt::format("--realism {}: {}", *o.realism, fmt::join(r.errors, "; ")));
     }
     profile->realism = *o.realism;

@@ -213,9 +213,7 @@ ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::st
   if (m.String("realism", &p.realism)) {
     if (LooksLikePath(p.realism)) p.realism = Absolute(p.realism, base_dir);
     const RealismLoadResult realism = LoadRealism(p.realism);
-    if (p.legged) {
-      m.Fail("realism", "the scene is legged (kind: legged); sensor realism is for SSL scenes");
-    } else if (!realism.realism) {
+    if (!realism.realism) {
       m.Fail("realism",
              fmt::format("not a preset of configs/realism/ or a realism file: {}", fmt::join(realism.errors, "; ")));
     }

@@ -60,7 +60,7 @@ struct LaunchProfile {
   std::string name;
   std::string path;     // the file it came from (empty: parsed from text)
   std::string scene;    // absolute path
-  bool legged = false;  // the scene says `kind: legged`: SSL sensor realism does not apply
+  bool legged = false;  // the scene says `kind: legged`: the SSL bridges do not apply
   std::string realism;  // preset name or absolute path; empty: the scene's
   int domain = 0;
   std::string prefix = "turf";

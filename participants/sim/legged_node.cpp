@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "config/realism_yaml.h"
+#include "core/legged/legged_sensors.h"
 #include "core/legged/legged_world.h"
 #include "dds/participant.h"
 #include "participants/sim/control_loop.h"
@@ -152,7 +154,9 @@ class LeggedNode::Impl final : private ControlLoop::Node {
         world_writer_(participant_.MakeWriter<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
         scene_writer_(participant_.MakeWriter<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene)),
         command_reader_(participant_.MakeReader<idl::JointCommandPubSubType>(dds::Topic::kRobotJointCommand,
-                                                                             [this] { loop_.Wake(); })) {}
+                                                                             [this] { loop_.Wake(); })),
+        realism_(world_.scene().realism),
+        sensors_(world_.scene().seed, RobotNames(world_.scene())) {}
 
   void Run(const std::function<bool()>& stop) {
     ReportStartup();
@@ -164,6 +168,12 @@ class LeggedNode::Impl final : private ControlLoop::Node {
   uint64_t Rejected(const std::string& kind) const { return loop_.Rejected(kind); }
 
  private:
+  static std::vector<std::string> RobotNames(const LeggedScene& s) {
+    std::vector<std::string> names;
+    for (const LeggedRobot& r : s.robots) names.push_back(r.name);
+    return names;
+  }
+
   static ControlLoop::Timing LoopTiming(const LeggedScene& s, int64_t step_ns) {
     return {s.physics.step, step_ns, s.rates.joint_state_hz};
   }
@@ -200,8 +210,18 @@ class LeggedNode::Impl final : private ControlLoop::Node {
 
   std::string TeleportBall(const idl::SimControl& req) override { return PlaceBall(req.ball()); }
   std::string TeleportRobot(const idl::SimControl& req) override { return PlaceRobot(req.legged()); }
-  std::string ChangeRealism(const std::string&) override { return "not supported in legged scenes yet"; }
-  void ResetWorld() override { world_.Reset(); }
+  std::string ChangeRealism(const std::string& spec) override {
+    // From the network: preset names and YAML text only, never file paths.
+    const RealismLoadResult loaded = LoadRealism(spec, DefaultRealismDir(), /*allow_paths=*/false, realism_);
+    if (!loaded.realism) return loaded.errors.empty() ? "invalid realism" : loaded.errors.front();
+    realism_ = *loaded.realism;
+    spdlog::info("sensor realism changed ({})", spec.size() < 40 ? spec : spec.substr(0, 40) + "...");
+    return "";
+  }
+  void ResetWorld() override {
+    world_.Reset();
+    sensors_.Reset();
+  }
 
   // --- Inputs ---
 
@@ -252,6 +272,7 @@ class LeggedNode::Impl final : private ControlLoop::Node {
 
   void PublishState() override {
     world_.State(&state_);
+    sensors_.Apply(realism_, &state_);
     FillState(state_, &frame_sample_);
     for (size_t i = 0; i < state_.robots.size(); ++i) {
       joint_writer_->Write(frame_sample_.joints()[i]);
@@ -340,6 +361,8 @@ class LeggedNode::Impl final : private ControlLoop::Node {
 
   LeggedWorldState state_;
   idl::LeggedState frame_sample_;
+  SensorRealism realism_;
+  LeggedSensors sensors_;
   std::vector<JointCommand> checked_;
   std::vector<idl::JointCommand> command_inbox_;
 };

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "config/legged_scene_yaml.h"
@@ -19,7 +20,19 @@ namespace {
 void MujocoWarning(const char* message) { spdlog::warn("MuJoCo: {}", message); }
 
 // Scenes with `kind: legged`: any MJCF robots on joint topics (legged_node.h).
-int RunLegged(const std::string& scene_path, const turf::SimNodeOptions& options) {
+// The realism preset or file named on the command line, if any.
+std::optional<turf::SensorRealism> LoadRealismOption(const std::string& realism) {
+  const turf::RealismLoadResult r = turf::LoadRealism(realism);
+  if (!r.realism) {
+    spdlog::error("cannot load realism '{}':", realism);
+    for (const std::string& e : r.errors) spdlog::error("  {}", e);
+    return std::nullopt;
+  }
+  spdlog::info("sensor realism from '{}'", realism);
+  return r.realism;
+}
+
+int RunLegged(const std::string& scene_path, const std::string& realism, const turf::SimNodeOptions& options) {
   turf::LeggedSceneLoadResult loaded = turf::LoadLeggedSceneFile(scene_path);
   if (!loaded.scene) {
     spdlog::error("cannot load legged scene {}:", scene_path);
@@ -27,6 +40,11 @@ int RunLegged(const std::string& scene_path, const turf::SimNodeOptions& options
     return 2;
   }
   spdlog::info("legged scene file {}", scene_path);
+  if (!realism.empty()) {
+    const std::optional<turf::SensorRealism> r = LoadRealismOption(realism);
+    if (!r) return 2;
+    loaded.scene->realism = *r;  // encoders and IMU
+  }
   turf::InstallStopSignals();
   try {
     turf::LeggedNode node(std::move(*loaded.scene), options);
@@ -84,7 +102,7 @@ int main(int argc, char** argv) {
   }
 
   mju_user_warning = MujocoWarning;
-  if (turf::IsLeggedSceneFile(scene_path)) return RunLegged(scene_path, options);
+  if (turf::IsLeggedSceneFile(scene_path)) return RunLegged(scene_path, realism, options);
   turf::SceneLoadResult loaded = turf::LoadSceneFile(scene_path);
   if (!loaded.scene) {
     spdlog::error("cannot load scene {}:", scene_path);
@@ -93,14 +111,9 @@ int main(int argc, char** argv) {
   }
   spdlog::info("scene file {}", scene_path);
   if (!realism.empty()) {
-    const turf::RealismLoadResult r = turf::LoadRealism(realism);
-    if (!r.realism) {
-      spdlog::error("cannot load realism '{}':", realism);
-      for (const std::string& e : r.errors) spdlog::error("  {}", e);
-      return 2;
-    }
-    loaded.scene->realism = *r.realism;
-    spdlog::info("sensor realism from '{}'", realism);
+    const std::optional<turf::SensorRealism> r = LoadRealismOption(realism);
+    if (!r) return 2;
+    loaded.scene->realism = *r;
   }
   mju_user_warning = MujocoWarning;
   turf::InstallStopSignals();

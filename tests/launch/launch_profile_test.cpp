@@ -111,7 +111,7 @@ TEST(LaunchProfile, ErrorsNameTheKey) {
   ExpectError("scene: ssl_div_a.yaml\ndomain: two\n", "domain", "integer");
   ExpectError("scene: ssl_div_a.yaml\nprefix: 'a b'\n", "prefix", "letters");
   ExpectError("scene: ssl_div_a.yaml\nrealism: lifelike\n", "realism", "preset");
-  ExpectError("scene: simspark_match.yaml\nrealism: ideal\n", "realism", "legged");
+  ExpectError("scene: simspark_match.yaml\nrealism: lifelike\n", "realism", "preset");  // legged: encoders, IMU
   ExpectError("scene: ssl_div_a.yaml\nbridges: {simspark: {}}\n", "bridges.simspark", "works with legged");
   ExpectError("scene: simspark_match.yaml\nbridges: {grsim: {}}\n", "bridges.grsim", "works with SSL");
   ExpectError("scene: ssl_div_a.yaml\nbridges: {grsm: {}}\n", "bridges.grsm", "unknown key");
@@ -242,14 +242,14 @@ TEST(LaunchPlan, SimSparkPlanAndSyncMode) {
     EXPECT_EQ(plan.commands[0].name, only);
   }
 
-  // SSL-only overrides are refused by name.
+  // SSL-only overrides are refused by name; realism applies (encoders, IMU).
   LaunchOverrides bad;
   bad.realism = "ideal";
   bad.only = {"grsim"};
   bad.sets = {"vision.port=10006"};
   plan = BuildPlan(*r.profile, bad, kLauncherDir);
-  ASSERT_EQ(plan.errors.size(), 3u);
-  EXPECT_NE(plan.errors[0].find("legged"), std::string::npos) << plan.errors[0];
+  ASSERT_EQ(plan.errors.size(), 2u);
+  for (const std::string& e : plan.errors) EXPECT_EQ(e.find("realism"), std::string::npos) << e;
 }
 
 TEST(LaunchPlan, ShellLineQuotes) {

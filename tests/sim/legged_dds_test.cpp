@@ -327,6 +327,32 @@ TEST(LeggedDdsTest, StepCarriesJointCommandsAndTeleportsMoveRobotsAndBall) {
   EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
 }
 
+// Encoder realism changed at run time: published joint angles are quantised.
+TEST(LeggedDdsTest, SetRealismModelsTheEncoders) {
+  const auto dds = UniqueDds("sim");
+  NodeUnderTest sim(dds, TimeMode::kFreeRunning);
+  Client client(dds);
+  ASSERT_TRUE(client.WaitMatched());
+  client.Command("nao_1", "hj1", idl::JOINT_VELOCITY, 0.37);
+  idl::SimControl req;
+  req.op(idl::OP_SET_REALISM);
+  req.realism("encoder: {resolution: 0.05}");
+  auto reply = client.Control(req);
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->result(), idl::RESULT_OK) << reply->reason();
+  const uint64_t after = reply->frame();
+  ASSERT_TRUE(client.WaitFor([&] { return client.joints["nao_1"].frame() > after + 10; }));
+  for (double q : client.joints["nao_1"].position()) EXPECT_NEAR(q / 0.05, std::round(q / 0.05), 1e-9);
+  req.realism("/etc/passwd");  // never a path from the network
+  reply = client.Control(req);
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
+  req.realism("encoder: {resolution: -1}");
+  reply = client.Control(req);
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
+}
+
 TEST(LeggedDdsTest, PauseStopsTimeAndStepAdvancesIt) {
   const auto dds = UniqueDds("sim");
   NodeUnderTest sim(dds, TimeMode::kRealtime);

@@ -48,6 +48,24 @@ TEST(LeggedSceneYamlTest, SimSparkMatchSceneParks22NaosOffTheField) {
   }
 }
 
+TEST(LeggedSceneYamlTest, RealismPresetOrMapSetsEncodersAndImu) {
+  const std::string dir = std::string(TURF_SOURCE_DIR) + "/configs/scenes";
+  LeggedSceneLoadResult r =
+      ParseLeggedSceneYaml("kind: legged\nrealism: realistic\nrobots:\n  - {name: a, model: ../robots/nao.xml}\n", dir);
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_GT(r.scene->realism.encoder.resolution, 0.0);
+  EXPECT_GT(r.scene->realism.imu.gyro_noise_stddev, 0.0);
+  r = ParseLeggedSceneYaml(
+      "kind: legged\nrealism: {encoder: {noise_stddev: 0.01}}\nrobots:\n  - {name: a, model: ../robots/nao.xml}\n",
+      dir);
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_EQ(r.scene->realism.encoder.noise_stddev, 0.01);
+  EXPECT_TRUE(HasError(ParseLeggedSceneYaml("kind: legged\nrealism: nosuchpreset\nrobots:\n  - {name: a, model: "
+                                            "../robots/nao.xml}\n",
+                                            dir),
+                       "realism"));
+}
+
 TEST(LeggedSceneYamlTest, ExampleSceneLoads) {
   LeggedSceneLoadResult r = LoadLeggedSceneFile(kScenes + "legged_example.yaml");
   ASSERT_TRUE(r.scene) << r.errors.front();

@@ -220,8 +220,8 @@ TEST_P(NaoPhysicsTest, DeterministicAndResettable) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Steps, NaoPhysicsTest, ::testing::Values(0.002, 0.005, 0.02 / 3),
-                         [](const ::testing::TestParamInfo<double>& info) {
-                           return std::to_string(static_cast<int>(std::lround(info.param * 1e6))) + "us";
+                         [](const ::testing::TestParamInfo<double>& p) {
+                           return std::to_string(static_cast<int>(std::lround(p.param * 1e6))) + "us";
                          });
 
 }  // namespace
