@@ -100,6 +100,13 @@ class SimSparkBridge::Impl {
 
  private:
   bool Attach(const std::function<bool()>& stop) {
+    if (session_) {
+      // turf-sim went away (or restarted): its world starts over, so do the
+      // agents, as with a restarted rcssserver3d.
+      for (auto& [fd, c] : clients_)
+        if (!c.monitor) MarkDrop(fd, "turf-sim stopped answering; reconnect when it is back");
+      FlushDrops();
+    }
     spdlog::info("waiting for turf-sim's legged scene on DDS domain {} ({})", options_.domain,
                  link_.TopicName(dds::Topic::kLeggedScene));
     std::string error;

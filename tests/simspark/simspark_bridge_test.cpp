@@ -34,17 +34,13 @@ class Match {
     static int counter = 0;
     const std::string prefix = "simspark" + std::to_string(getpid()) + "_" + std::to_string(++counter);
     const std::string qos = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
-    LeggedSceneLoadResult scene = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/simspark_match.yaml");
-    if (!scene.scene) throw std::runtime_error(scene.errors.front());
-    SimNodeOptions sim;
-    sim.domain = test::TestDomain(11);
-    sim.prefix = prefix;
-    sim.qos_file = qos;
-    sim.mode = TimeMode::kLockstep;
-    sim_ = std::make_unique<LeggedNode>(std::move(*scene.scene), sim);
-    sim_thread_ = std::thread([this] { sim_->Run([this] { return stop_.load(); }); });
+    sim_options_.domain = test::TestDomain(11);
+    sim_options_.prefix = prefix;
+    sim_options_.qos_file = qos;
+    sim_options_.mode = TimeMode::kLockstep;
+    StartSim();
     SimSparkBridgeOptions o;
-    o.domain = sim.domain;
+    o.domain = sim_options_.domain;
     o.prefix = prefix;
     o.qos_file = qos;
     o.listen = "127.0.0.1";
@@ -58,7 +54,19 @@ class Match {
   ~Match() {
     stop_ = true;
     bridge_thread_.join();
-    sim_thread_.join();
+    StopSim();
+  }
+  void StartSim() {
+    LeggedSceneLoadResult scene = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/simspark_match.yaml");
+    if (!scene.scene) throw std::runtime_error(scene.errors.front());
+    stop_sim_ = false;
+    sim_ = std::make_unique<LeggedNode>(std::move(*scene.scene), sim_options_);
+    sim_thread_ = std::thread([this] { sim_->Run([this] { return stop_sim_.load() || stop_.load(); }); });
+  }
+  void StopSim() {
+    stop_sim_ = true;
+    if (sim_thread_.joinable()) sim_thread_.join();
+    sim_.reset();
   }
   SimSparkBridge& bridge() { return *bridge_; }
 
@@ -75,7 +83,9 @@ class Match {
 
  private:
   bool sync_;
+  SimNodeOptions sim_options_;
   std::atomic<bool> stop_{false};
+  std::atomic<bool> stop_sim_{false};
   std::unique_ptr<LeggedNode> sim_;
   std::unique_ptr<SimSparkBridge> bridge_;
   std::thread sim_thread_;
@@ -316,6 +326,26 @@ TEST(SimSparkBridgeTest, BadInputIsRefusedAndOthersCarryOn) {
   EXPECT_GE(count("unknown_effector"), 1u);
   EXPECT_GE(count("frame_too_large"), 1u);
   auto m = good.Receive(5s);
+  ASSERT_TRUE(m.has_value());
+  EXPECT_NE(m->find("(HJ (n hj1)"), std::string::npos);
+}
+
+// turf-sim stops and comes back: the bridge drops its agents (their world is
+// gone, as with a restarted rcssserver3d) and serves new ones.
+TEST(SimSparkBridgeTest, AgentsReconnectAfterTurfSimRestarts) {
+  Match match(/*sync=*/false);
+  AgentClient a = match.Agent();
+  match.StopSim();
+  const auto deadline = std::chrono::steady_clock::now() + 20s;
+  bool closed = false;
+  while (!closed && std::chrono::steady_clock::now() < deadline) {
+    a.Receive(200ms);
+    closed = !a.ReadSome();
+  }
+  EXPECT_TRUE(closed) << "the bridge kept an agent whose world is gone";
+  match.StartSim();
+  AgentClient b = match.Agent();
+  auto m = b.Receive(10s);
   ASSERT_TRUE(m.has_value());
   EXPECT_NE(m->find("(HJ (n hj1)"), std::string::npos);
 }
