@@ -274,13 +274,14 @@ class LeggedNode::Impl final : private ControlLoop::Node {
     world_.State(&state_);
     sensors_.Apply(realism_, &state_);
     FillState(state_, &frame_sample_);
+    // The whole frame first: a lockstep driver (the SimSpark bridge) waits for it.
+    state_writer_->Write(frame_sample_);
     for (size_t i = 0; i < state_.robots.size(); ++i) {
       joint_writer_->Write(frame_sample_.joints()[i]);
       imu_writer_->Write(frame_sample_.imu()[i]);
       force_writer_->Write(frame_sample_.force()[i]);
       links_writer_->Write(frame_sample_.links()[i]);
     }
-    state_writer_->Write(frame_sample_);
     if (state_.has_ball) {
       idl::WorldState world;
       world.sim_time_ns(state_.time_ns);

@@ -83,6 +83,7 @@ class SimSparkBridge::Impl {
         }
         continue;
       }
+      split_.waiting += Clock::now() - waiting_since;
       if (!RunCycle(stop)) return false;
       next_cycle = std::max(next_cycle + kCycle, Clock::now());  // late: no catching up
       waiting_since = Clock::now();
@@ -131,8 +132,12 @@ class SimSparkBridge::Impl {
   bool RunCycle(const std::function<bool()>& stop) {
     std::string error;
     std::vector<std::string> warnings;
+    const auto start = Clock::now();
     const simspark::WorldRequests requests = session_->TakeRequests();
     auto world = link_.Cycle(requests, steps_, options_.step_timeout, stop, &error, &warnings);
+    const auto stepped = Clock::now();
+    split_.world += stepped - start;
+    ++split_.cycles;
     for (const std::string& w : warnings) spdlog::warn("turf-sim refused {}", w);
     if (!world) {
       if (stop()) return true;
@@ -148,6 +153,7 @@ class SimSparkBridge::Impl {
         if (c.monitor) Send(fd, framed);
     }
     FlushDrops();
+    split_.bridge += Clock::now() - stepped;
     for (const simspark::SessionIssue& issue : session_->TakeIssues()) {
       rejects_.Reject(issue.kind, issue.agent < 0 ? "trainer: " + issue.detail
                                                   : fmt::format("agent {}: {}", issue.agent, issue.detail));
@@ -271,8 +277,17 @@ class SimSparkBridge::Impl {
     drops_.clear();
   }
 
-  void ReportStatus() const {
+  void ReportStatus() {
     if (!session_) return;
+    if (split_.cycles > 0) {
+      // Where a cycle's wall time went: turf-sim stepping and publishing (with
+      // the DDS hops), the bridge's perceptions, and waiting (agents' answers in
+      // sync mode, the 20 ms pacing in real time).
+      auto ms = [&](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count() / split_.cycles; };
+      spdlog::info("per cycle: world {:.2f} ms, bridge {:.2f} ms, waiting {:.2f} ms ({} cycles)", ms(split_.world),
+                   ms(split_.bridge), ms(split_.waiting), split_.cycles);
+      split_ = {};
+    }
     const simspark::Game& g = session_->game();
     spdlog::info("cycle {} agents {} ({} with robots) play mode {} game time {:.2f} score {}:{} refused {}",
                  session_->cycle(), session_->agents(), session_->agents_with_robot(),
@@ -288,6 +303,10 @@ class SimSparkBridge::Impl {
   std::map<int, Client> clients_;
   std::vector<std::pair<int, std::string>> drops_;
   uint32_t steps_ = 4;
+  struct {
+    Clock::duration world{}, bridge{}, waiting{};
+    uint64_t cycles = 0;
+  } split_;
   RejectLog rejects_;
   mutable std::mutex stats_mutex_;
   SimSparkBridgeStats stats_;

@@ -97,7 +97,7 @@ class WorldLink::Impl {
     scene.name = scene_info_->name();
     for (const idl::RobotDescription& r : scene_info_->robots()) scene.robots.push_back(r.robot());
     // Where every robot stands now.
-    auto current = [&] { return step_s_ > 0 && Complete(scene.robots); };
+    auto current = [&] { return step_s_ > 0 && Complete(scene.robots, frame_); };
     if (!WaitFor(current, deadline, stop)) {
       *error =
           fmt::format("turf-sim did not publish the state of its {} robots at frame {}", scene.robots.size(), frame_);
@@ -158,32 +158,41 @@ class WorldLink::Impl {
     }
     const uint64_t id = Send(step);
     const auto deadline = Clock::now() + timeout;
-    if (!WaitFor([&] { return replies_.count(id) > 0; }, deadline, stop)) {
+    // The world after the step usually arrives before the step's reply (turf-sim
+    // writes robots/state first): take it at the expected frame at once; the
+    // reply's frame counts when someone else stepped too (a viewer's step).
+    const uint64_t expected = frame_ + steps;
+    auto done = [&] {
+      if (Complete(robots_, expected)) return true;
+      auto it = replies_.find(id);
+      return it != replies_.end() && (it->second.result() != idl::RESULT_OK || Complete(robots_, it->second.frame()));
+    };
+    if (!WaitFor(done, deadline, stop)) {
       *error = "turf-sim did not answer the step";
       return std::nullopt;
     }
-    for (const auto& [move_id, what] : moves) {
-      auto it = replies_.find(move_id);
-      if (it != replies_.end() && it->second.result() != idl::RESULT_OK)
-        warnings->push_back(what + ": " + it->second.reason());
-    }
-    const idl::SimControlReply reply = replies_[id];
-    replies_.clear();
-    if (reply.result() != idl::RESULT_OK) {
-      *error = "turf-sim refused the step: " + reply.reason();
+    auto it = replies_.find(id);
+    if (it != replies_.end() && it->second.result() != idl::RESULT_OK) {
+      *error = "turf-sim refused the step: " + it->second.reason();
       return std::nullopt;
     }
-    frame_ = reply.frame();
-    if (!WaitFor([&] { return Complete(robots_); }, deadline, stop)) {
-      *error = "turf-sim did not publish the world after the step";
-      return std::nullopt;
+    frame_ = state_now_->frame();
+    // Moves are answered before the step; report refusals (late ones next cycle).
+    for (const auto& [move_id, what] : moves) pending_moves_[move_id] = what;
+    for (auto r = replies_.begin(); r != replies_.end();) {
+      auto move = pending_moves_.find(r->first);
+      if (move != pending_moves_.end()) {
+        if (r->second.result() != idl::RESULT_OK) warnings->push_back(move->second + ": " + r->second.reason());
+        pending_moves_.erase(move);
+      }
+      r = r->first <= id ? replies_.erase(r) : std::next(r);
     }
     return Snapshot();
   }
 
-  // The newest state is of the current frame and has every robot, whole.
-  bool Complete(const std::vector<std::string>& robots) const {
-    if (!state_now_ || state_now_->frame() != frame_) return false;
+  // The newest state is of `frame` and has every robot, whole.
+  bool Complete(const std::vector<std::string>& robots, uint64_t frame) const {
+    if (!state_now_ || state_now_->frame() != frame) return false;
     const idl::LeggedState& s = *state_now_;
     const size_t n = s.joints().size();
     if (n != robots.size() || s.imu().size() != n || s.force().size() != n || s.links().size() != n) return false;
@@ -240,6 +249,7 @@ class WorldLink::Impl {
   std::optional<idl::LeggedSceneInfo> scene_info_;
   std::optional<idl::LeggedState> state_now_;
   std::map<uint64_t, idl::SimControlReply> replies_;
+  std::map<uint64_t, std::string> pending_moves_;  // request id -> what, until answered
   std::vector<std::string> robots_;
   uint64_t request_id_ = 0;
   uint64_t frame_ = 0;
