@@ -31,7 +31,7 @@ ssl() {
 # One run: turf-sim (simspark_match scene) and turf-simspark-bridge as their
 # own processes on a private DDS domain and ports, then the scripted agents.
 simspark_run() {
-  local agents=$1 mode=$2 header=${3:-}
+  local agents=$1 mode=$2 motion=$3 header=${4:-}
   local domain=$((90 + RANDOM % 9)) port=$((23100 + RANDOM % 500))
   local prefix="bench$$"
   "$BUILD_DIR/participants/sim/turf-sim" --scene configs/scenes/simspark_match.yaml -d "$domain" -p "$prefix" \
@@ -44,17 +44,19 @@ simspark_run() {
   local bridge=$!
   sleep 1
   "$BUILD_DIR/bench/turf-bench-simspark" --port "$port" --agents "$agents" --seconds "$SECONDS_SIM" \
-    --label "$agents agents, $mode" $header || true
+    --motion "$motion" --label "$agents agents, $mode, $motion" $header || true
   kill -INT "$bridge" "$sim" 2>/dev/null || true
   wait "$bridge" "$sim" 2>/dev/null || true
 }
 
 simspark() {
   echo "SimSpark agents -> turf-simspark-bridge -> turf-sim (22 Naos, 3 steps of 6.67 ms per 20 ms cycle);"
-  echo "each agent answers every perception with 22 hinge velocities and (syn); $(nproc) cores"
-  simspark_run 22 sync --header
-  simspark_run 11 sync
-  simspark_run 22 real-time
+  echo "each agent answers every perception with 22 hinge velocities and (syn): 'all' sways every joint (the"
+  echo "robots fall and lie, many contacts), 'upper' only head and arms (they stand); $(nproc) cores"
+  simspark_run 22 sync all --header
+  simspark_run 22 sync upper
+  simspark_run 11 sync all
+  simspark_run 22 real-time all
   echo "RTF: simulated seconds per wall second over the measured stretch (sync: as fast as the agents"
   echo "answer). Reference rcssserver3d 0.7.3 on this machine: 0.72x with 22 agents, 1.9x with 11."
 }

@@ -2,7 +2,8 @@
 // (started by bench/run.sh with turf-sim). All agents connect at once, build
 // mixed robot types (the team composition rules), join two teams, beam, then
 // answer every perception with all 22 hinge velocities (a slow sway) and
-// (syn). Prints simulated seconds per wall second over the measured stretch.
+// (syn) (--motion upper: legs hold, the robots stand). Prints simulated
+// seconds per wall second over the measured stretch.
 #include <poll.h>
 
 #include <CLI/CLI.hpp>
@@ -36,11 +37,16 @@ int main(int argc, char** argv) {
   double seconds = 20.0;
   bool header = false;
   std::string label = "";
+  std::string motion = "all";
   app.add_option("--port", port, "the bridge's agent port")->capture_default_str();
   app.add_option("--agents", agents, "agents (two teams, up to 22)")->capture_default_str()->check(CLI::Range(1, 22));
   app.add_option("--seconds", seconds, "simulated seconds to measure")->capture_default_str();
   app.add_option("--label", label, "first column of the table row");
   app.add_flag("--header", header, "print the table header");
+  app.add_option("--motion", motion,
+                 "all: every joint sways (the robots fall and lie); upper: head and arms sway, legs hold (they stand)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"all", "upper"}));
   CLI11_PARSE(app, argc, argv);
 
   std::vector<turf::test::AgentClient> clients(agents);
@@ -85,7 +91,8 @@ int main(int argc, char** argv) {
           answer = "(beam " + std::to_string(-2.0 - i / 2) + " " + std::to_string(i % 5 - 2) + " 0)";
         for (int j = 0; j < 22; ++j) {
           char buf[32];
-          std::snprintf(buf, sizeof(buf), "(%s %.2f)", kEffectors[j], 0.3 * std::sin(t * 2.0 + j));
+          const double amplitude = motion == "all" || j < 10 ? 0.3 : 0.0;  // joints 10..21 are the legs
+          std::snprintf(buf, sizeof(buf), "(%s %.2f)", kEffectors[j], amplitude * std::sin(t * 2.0 + j));
           answer += buf;
         }
         clients[i].Send(answer + "(syn)");
