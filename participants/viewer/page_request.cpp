@@ -136,33 +136,73 @@ Bounds Inside(const idl::SslField& f, double r) {
   return {f.field_length() / 2 + f.boundary_width_goal_line() - r, f.field_width() / 2 + f.boundary_width() - r};
 }
 
-void TeleportBall(Fields& in, const idl::SslField* field, PageRequest* out) {
-  if (!in.OnlyKeys({"op", "x", "y", "z", "vx", "vy", "vz"})) return;
-  const double big = 1e3;  // numbers past any field: out of range before the wall check
-  const double x = in.Number("x", -big, big);
-  const double y = in.Number("y", -big, big);
-  const double z = in.Number("z", -big, big, 0.0);
-  const double vx = in.Number("vx", -kMaxTeleportSpeed, kMaxTeleportSpeed, 0.0);
-  const double vy = in.Number("vy", -kMaxTeleportSpeed, kMaxTeleportSpeed, 0.0);
-  const double vz = in.Number("vz", -kMaxTeleportSpeed, kMaxTeleportSpeed, 0.0);
-  if (!in.ok()) return;
-  if (!field) {
-    in.Fail(PageError::kNoField, "the field is not known yet");
+// Legged scenes: where a ball or a robot's root may go (half extents, m).
+Bounds LeggedArea(const idl::LeggedSceneInfo& s) {
+  if (!s.has_field()) return {kLeggedArea, kLeggedArea};
+  return {s.field_length() / 2 + kLeggedMargin, s.field_width() / 2 + kLeggedMargin};
+}
+
+// Where the ball may go in the scene turf-sim runs; fails with kNoField if
+// there is no ball to place (no scene yet, or a legged scene without a field).
+struct BallArea {
+  Bounds half;         // |x|, |y| at most these
+  double radius;       // the ball's: its centre rests this high
+  std::string beyond;  // what a position past `half` is, for the page
+};
+std::optional<BallArea> FindBallArea(Fields& in, const PageScene& scene) {
+  if (scene.legged) {
+    const idl::LeggedSceneInfo& s = *scene.legged;
+    if (s.has_field())
+      return BallArea{LeggedArea(s), s.ball_radius(), fmt::format("more than {} m off the field", kLeggedMargin)};
+    in.Fail(PageError::kNoField, fmt::format("legged scene '{}' has no field and no ball", Fields::Clip(s.name())));
+    return std::nullopt;
+  }
+  if (scene.ssl)
+    return BallArea{Inside(*scene.ssl, scene.ssl->ball_radius()), scene.ssl->ball_radius(), "outside the walls"};
+  in.Fail(PageError::kNoField, "the field is not known yet");
+  return std::nullopt;
+}
+
+// Checks the ball's position and velocity and makes the teleport.
+void PlaceBall(Fields& in, const BallArea& area, const double p[3], const double v[3], double max_speed,
+               PageRequest* out) {
+  if (std::abs(p[0]) > area.half.x || std::abs(p[1]) > area.half.y || p[2] < 0 || p[2] > kMaxTeleportHeight) {
+    in.Fail(PageError::kOutsideField,
+            fmt::format("ball at ({:.3f}, {:.3f}, {:.3f}) is {}", p[0], p[1], p[2], area.beyond));
     return;
   }
-  const Bounds b = Inside(*field, field->ball_radius());
-  if (std::abs(x) > b.x || std::abs(y) > b.y || z < 0 || z > kMaxTeleportHeight) {
-    in.Fail(PageError::kOutsideField, fmt::format("ball at ({:.3f}, {:.3f}, {:.3f}) is outside the walls", x, y, z));
-    return;
-  }
-  if (std::sqrt(vx * vx + vy * vy + vz * vz) > kMaxTeleportSpeed) {
-    in.Fail(PageError::kOutOfRange, fmt::format("ball speed is above {} m/s", kMaxTeleportSpeed));
+  if (std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) > max_speed) {
+    in.Fail(PageError::kOutOfRange, fmt::format("ball speed is above {} m/s", max_speed));
     return;
   }
   out->control.op(idl::OP_TELEPORT_BALL);
-  out->control.ball().position(V3(x, y, std::max(z, field->ball_radius())));
-  out->control.ball().velocity(V3(vx, vy, vz));
-  out->control.ball().roll(z <= field->ball_radius() && vz == 0.0);
+  out->control.ball().position(V3(p[0], p[1], std::max(p[2], area.radius)));
+  out->control.ball().velocity(V3(v[0], v[1], v[2]));
+  // On the ground and moving along it: spinning to match, so it rolls (SSL;
+  // legged scenes ignore this).
+  out->control.ball().roll(p[2] <= area.radius && v[2] == 0.0);
+}
+
+void TeleportBall(Fields& in, const PageScene& scene, PageRequest* out) {
+  if (!in.OnlyKeys({"op", "x", "y", "z", "vx", "vy", "vz"})) return;
+  const double big = 1e3;  // numbers past any field: out of range before the wall check
+  const double p[3] = {in.Number("x", -big, big), in.Number("y", -big, big), in.Number("z", -big, big, 0.0)};
+  const double v[3] = {in.Number("vx", -kMaxTeleportSpeed, kMaxTeleportSpeed, 0.0),
+                       in.Number("vy", -kMaxTeleportSpeed, kMaxTeleportSpeed, 0.0),
+                       in.Number("vz", -kMaxTeleportSpeed, kMaxTeleportSpeed, 0.0)};
+  if (!in.ok()) return;
+  if (const auto area = FindBallArea(in, scene)) PlaceBall(in, *area, p, v, kMaxTeleportSpeed, out);
+}
+
+// A throw: the ball where it lies, on the ground, with the page's velocity.
+void ThrowBall(Fields& in, const PageScene& scene, PageRequest* out) {
+  if (!in.OnlyKeys({"op", "x", "y", "vx", "vy"})) return;
+  const double big = 1e3;
+  const double p[3] = {in.Number("x", -big, big), in.Number("y", -big, big), 0.0};
+  const double v[3] = {in.Number("vx", -kMaxThrowSpeed, kMaxThrowSpeed),
+                       in.Number("vy", -kMaxThrowSpeed, kMaxThrowSpeed), 0.0};
+  if (!in.ok()) return;
+  if (const auto area = FindBallArea(in, scene)) PlaceBall(in, *area, p, v, kMaxThrowSpeed, out);
 }
 
 void TeleportRobot(Fields& in, const idl::SslField* field, PageRequest* out) {
@@ -206,42 +246,6 @@ void TeleportRobot(Fields& in, const idl::SslField* field, PageRequest* out) {
   r.position().y(y);
   r.orientation(std::remainder(yaw, 2 * M_PI));
   r.velocity(V3(0, 0, 0));
-}
-
-// Legged scenes: where a ball or a robot's root may go (half extents, m).
-Bounds LeggedArea(const idl::LeggedSceneInfo& s) {
-  if (!s.has_field()) return {kLeggedArea, kLeggedArea};
-  return {s.field_length() / 2 + kLeggedMargin, s.field_width() / 2 + kLeggedMargin};
-}
-
-void TeleportLeggedBall(Fields& in, const idl::LeggedSceneInfo& scene, PageRequest* out) {
-  if (!in.OnlyKeys({"op", "x", "y", "z", "vx", "vy", "vz"})) return;
-  const double big = 1e3;
-  const double x = in.Number("x", -big, big);
-  const double y = in.Number("y", -big, big);
-  const double z = in.Number("z", -big, big, 0.0);
-  const double vx = in.Number("vx", -kMaxTeleportSpeed, kMaxTeleportSpeed, 0.0);
-  const double vy = in.Number("vy", -kMaxTeleportSpeed, kMaxTeleportSpeed, 0.0);
-  const double vz = in.Number("vz", -kMaxTeleportSpeed, kMaxTeleportSpeed, 0.0);
-  if (!in.ok()) return;
-  if (!scene.has_field()) {
-    in.Fail(PageError::kNoField, fmt::format("legged scene '{}' has no field and no ball", Fields::Clip(scene.name())));
-    return;
-  }
-  const Bounds b = LeggedArea(scene);
-  if (std::abs(x) > b.x || std::abs(y) > b.y || z < 0 || z > kMaxTeleportHeight) {
-    in.Fail(PageError::kOutsideField,
-            fmt::format("ball at ({:.3f}, {:.3f}, {:.3f}) is more than {} m off the field", x, y, z, kLeggedMargin));
-    return;
-  }
-  if (std::sqrt(vx * vx + vy * vy + vz * vz) > kMaxTeleportSpeed) {
-    in.Fail(PageError::kOutOfRange, fmt::format("ball speed is above {} m/s", kMaxTeleportSpeed));
-    return;
-  }
-  out->control.op(idl::OP_TELEPORT_BALL);
-  out->control.ball().position(V3(x, y, std::max(z, scene.ball_radius())));
-  out->control.ball().velocity(V3(vx, vy, vz));
-  out->control.ball().roll(z <= scene.ball_radius() && vz == 0.0);
 }
 
 void TeleportLeggedRobot(Fields& in, const idl::LeggedSceneInfo& scene, PageRequest* out) {
@@ -404,12 +408,12 @@ PageRequest ParsePageRequest(std::string_view text, const PageScene& scene) {
   out.op = Fields::Clip(op->get<std::string>());
   Fields in(message, &out);
   const std::string& name = op->get_ref<const std::string&>();
-  if (name == "teleport_ball" && scene.legged) {
-    TeleportLeggedBall(in, *scene.legged, &out);
+  if (name == "teleport_ball") {
+    TeleportBall(in, scene, &out);
+  } else if (name == "throw_ball") {
+    ThrowBall(in, scene, &out);
   } else if (name == "teleport_robot" && scene.legged) {
     TeleportLeggedRobot(in, *scene.legged, &out);
-  } else if (name == "teleport_ball") {
-    TeleportBall(in, scene.ssl, &out);
   } else if (name == "teleport_robot") {
     TeleportRobot(in, scene.ssl, &out);
   } else if (name == "step") {

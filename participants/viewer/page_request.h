@@ -6,6 +6,8 @@
 // Protocol (one JSON object per WebSocket text message, at most
 // kMaxPageMessage bytes; every key not listed is refused):
 //   {"op":"teleport_ball", "x":m, "y":m, ["z":m, "vx","vy","vz":m/s]}
+//   {"op":"throw_ball", "x":m, "y":m, "vx":m/s, "vy":m/s}   the ball on the
+//    ground at (x, y), rolling at (vx, vy), |v| <= kMaxThrowSpeed
 //   {"op":"teleport_robot", "team":"blue"|"yellow", "id":n, "on_field":true,
 //    "x":m, "y":m, "yaw":rad}                  place (and orient) a robot
 //   {"op":"teleport_robot", "team":..., "id":n, "on_field":false}   take it off
@@ -44,6 +46,9 @@ inline constexpr double kMaxSpeed = 100.0;       // multiples of real time
 inline constexpr double kMaxYaw = 100.0;         // rad, before normalising
 inline constexpr double kLeggedMargin = 5.0;     // m beyond a legged scene's field lines
 inline constexpr double kLeggedArea = 50.0;      // m from the origin, legged scenes without a field
+// A throw from the page: about a hard SSL kick (6.5 m/s), far below what a
+// teleport may carry (kMaxTeleportSpeed).
+inline constexpr double kMaxThrowSpeed = 8.0;  // m/s
 
 enum class PageError {
   kOk,
@@ -55,7 +60,7 @@ enum class PageError {
   kMissingField,   // a key the op needs
   kWrongType,      // e.g. a string where a number belongs
   kNotFinite,      // a number that is not finite
-  kOutOfRange,     // e.g. step count 0, speed 1e6, robot id 300
+  kOutOfRange,     // e.g. step count 0, speed 1e6, robot id 300, a throw above kMaxThrowSpeed
   kUnknownTeam,    // team not "blue" or "yellow"
   kUnknownRobot,   // id not below the field's robots_per_team
   kOutsideField,   // beyond the walls (or too high for the ball)

@@ -19,7 +19,7 @@
 //   state (legged scenes) {t, frame, ball (absent without a field), robots:[],
 //            detections:[], links:{<robot>: [poses]} (legged_json.h), clock, viewer}
 //   stats   {t, window, streams:[{name, rate, sent, lost, loss, latency, jitter}]}
-//   reply   {op, ok, reason, t}                     turf-sim's answer to our request
+//   reply   {op, ok, reason, t}                     turf-sim's answer, to the page that asked
 //   refused {kind, detail}                          to the page whose message was refused
 #pragma once
 

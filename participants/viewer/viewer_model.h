@@ -35,6 +35,7 @@ inline constexpr int64_t kMaxFrameAgeNs = 250'000'000;  // camera frames shown w
 inline constexpr size_t kMaxLeggedRobots = 64;          // per legged scene, and robots with poses kept
 inline constexpr size_t kMaxBodies = 256;               // geoms or links per legged robot
 inline constexpr size_t kMaxNameLength = 128;           // robot, body and scene names
+inline constexpr size_t kMaxPendingReplies = 1024;      // requests whose reply we still route to a page
 
 enum class SampleError { kOk, kNotFinite, kUnknownEnum, kTooMany, kBadSize, kDuplicate };
 const char* SampleErrorName(SampleError error);
@@ -59,6 +60,15 @@ class ViewerModel {
   // A page message as a request ready to write (client and request_id set),
   // or the error; a refusal is counted in refused_pages().
   PageRequest OnPageMessage(std::string_view text);
+  // Request `request_id` was written for page `page`: its reply goes to that
+  // page alone (one page never sees another's refusals). At most
+  // kMaxPendingReplies are remembered; past that the oldest is forgotten
+  // (its reply, if it ever comes, is shown to nobody).
+  void RequestSent(uint64_t request_id, uint64_t page);
+  // The page that asked what `reply` answers, once: the route is forgotten.
+  // nullopt for another client's reply, or one whose route is not known.
+  std::optional<uint64_t> ReplyPage(const idl::SimControlReply& reply);
+  size_t pending_replies() const { return routes_.size(); }
   void CountRefusedPage() { ++refused_pages_; }  // refused before parsing (size, binary)
   // Whether turf-sim's control reader is matched (shown to the page).
   void SetControlMatched(bool matched) { control_matched_ = matched; }
@@ -89,6 +99,7 @@ class ViewerModel {
   std::map<uint32_t, idl::CameraFrame> frames_;  // newest per camera
   std::optional<idl::LeggedSceneInfo> legged_;
   std::map<std::string, idl::LinkState> links_;  // newest per robot
+  std::map<uint64_t, uint64_t> routes_;          // request id -> page awaiting its reply
 };
 
 }  // namespace turf::viewer

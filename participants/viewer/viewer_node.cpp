@@ -212,6 +212,7 @@ class ViewerNode::Impl {
       }
       spdlog::debug("page {}: {} -> control request {}", client, r.op, r.control.request_id());
       control_writer_->Write(r.control);
+      model_.RequestSent(r.control.request_id(), client);
       ++controls_sent_;
     }
   }
@@ -277,8 +278,11 @@ class ViewerNode::Impl {
     for (const idl::SimControlReply& r : reply_inbox_) {
       if (!model_.IsOurs(r)) continue;
       ++replies_;
-      if (r.result() != idl::RESULT_OK) spdlog::info("turf-sim refused {}: {}", viewer::OpName(r.op()), r.reason());
-      server_->Publish(viewer::Channel::kEvent, viewer::ReplyJson(r));
+      const std::optional<uint64_t> page = model_.ReplyPage(r);
+      if (r.result() != idl::RESULT_OK)
+        spdlog::info("turf-sim refused page {}'s {}: {}", page.value_or(0), viewer::OpName(r.op()), r.reason());
+      // Only the page that asked sees the answer; the others see its effect in the state.
+      if (page) server_->SendTo(*page, viewer::ReplyJson(r));
     }
   }
 

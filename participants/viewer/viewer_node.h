@@ -16,7 +16,8 @@
 //                                   resume, step, reset, time mode, realism preset;
 //                                   a legged robot's teleport as LeggedTeleport)
 // Serves (web_server.h): the page at http://<listen>:<port>/, its WebSocket at /ws;
-// state messages to every page at up to `rate_hz` (the newest state wins).
+// state messages to every page at up to `rate_hz` (the newest state wins);
+// turf-sim's reply to a request only to the page that made it.
 // Page messages are untrusted (page_request.h): a refused one is counted per
 // kind ("page.<error>"), logged at a limited rate, answered with a "refused"
 // message to that page, and sends nothing to turf-sim.

@@ -202,6 +202,21 @@ TEST_F(LeggedPage, BallAnywhereOnTheFieldOrBesideIt) {
   EXPECT_EQ(Parse(R"({"op":"teleport_ball","x":0,"y":0})").error, PageError::kNoField);  // no field: no ball
 }
 
+TEST_F(LeggedPage, ThrowTheBall) {
+  PageRequest r = Parse(R"({"op":"throw_ball","x":3,"y":-11,"vx":-2,"vy":5})");
+  ASSERT_EQ(r.error, PageError::kOk) << r.detail;
+  EXPECT_EQ(r.control.op(), idl::OP_TELEPORT_BALL);
+  EXPECT_DOUBLE_EQ(r.control.ball().position().x(), 3.0);
+  EXPECT_DOUBLE_EQ(r.control.ball().position().z(), 0.042);
+  EXPECT_DOUBLE_EQ(r.control.ball().velocity().x(), -2.0);
+  EXPECT_DOUBLE_EQ(r.control.ball().velocity().y(), 5.0);
+  EXPECT_DOUBLE_EQ(r.control.ball().velocity().z(), 0.0);
+  EXPECT_EQ(Parse(R"({"op":"throw_ball","x":20.1,"y":0,"vx":1,"vy":0})").error, PageError::kOutsideField);
+  EXPECT_EQ(Parse(R"({"op":"throw_ball","x":0,"y":0,"vx":7,"vy":7})").error, PageError::kOutOfRange);
+  scene_.has_field(false);
+  EXPECT_EQ(Parse(R"({"op":"throw_ball","x":0,"y":0,"vx":1,"vy":0})").error, PageError::kNoField);
+}
+
 TEST_F(LeggedPage, RobotKeepsItsOrientationNormalised) {
   const PageRequest r =
       Parse(R"({"op":"teleport_robot","robot":"nao_2","x":-4,"y":2,"z":0.385,"qw":0.7,"qx":0,"qy":0,"qz":-0.7})");

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "participants/viewer/viewer_model.h"
 #include "tests/viewer/viewer_samples.h"
@@ -36,6 +37,19 @@ TEST(PageRequest, TeleportBallWithHeightAndVelocity) {
   EXPECT_DOUBLE_EQ(r.control.ball().velocity().y(), -2.0);
   EXPECT_DOUBLE_EQ(r.control.ball().velocity().z(), 3.0);
   EXPECT_FALSE(r.control.ball().roll());
+}
+
+TEST(PageRequest, ThrowBallRollsFromWhereItLies) {
+  const PageRequest r = Parse(R"({"op":"throw_ball","x":-1,"y":0.5,"vx":4.8,"vy":-6.4})");  // 8 m/s
+  ASSERT_EQ(r.error, PageError::kOk) << r.detail;
+  EXPECT_EQ(r.control.op(), idl::OP_TELEPORT_BALL);
+  EXPECT_DOUBLE_EQ(r.control.ball().position().x(), -1.0);
+  EXPECT_DOUBLE_EQ(r.control.ball().position().y(), 0.5);
+  EXPECT_DOUBLE_EQ(r.control.ball().position().z(), 0.0215);  // on the carpet
+  EXPECT_DOUBLE_EQ(r.control.ball().velocity().x(), 4.8);
+  EXPECT_DOUBLE_EQ(r.control.ball().velocity().y(), -6.4);
+  EXPECT_DOUBLE_EQ(r.control.ball().velocity().z(), 0.0);
+  EXPECT_TRUE(r.control.ball().roll());
 }
 
 TEST(PageRequest, TeleportRobotPlacesAndNormalisesYaw) {
@@ -81,6 +95,8 @@ TEST(PageRequest, SimulationOps) {
 TEST(PageRequest, TeleportsNeedTheField) {
   const PageRequest r = ParsePageRequest(R"({"op":"teleport_ball","x":0,"y":0})", std::nullopt);
   EXPECT_EQ(r.error, PageError::kNoField);
+  EXPECT_EQ(ParsePageRequest(R"({"op":"throw_ball","x":0,"y":0,"vx":1,"vy":0})", std::nullopt).error,
+            PageError::kNoField);
   EXPECT_EQ(ParsePageRequest(R"({"op":"pause"})", std::nullopt).error, PageError::kOk);
 }
 
@@ -123,6 +139,19 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{R"({"op":"teleport_ball","x":1e300,"y":0})", PageError::kOutOfRange},
         Bad{R"({"op":"teleport_ball","x":0,"y":0,"vx":31})", PageError::kOutOfRange},
         Bad{R"({"op":"teleport_ball","x":0,"y":0,"vx":25,"vy":25})", PageError::kOutOfRange},
+        Bad{"{\"op\":\"throw_ball\",\"x\":0,\"y\":0,\"vx\":NaN,\"vy\":0}", PageError::kNotJson},
+        Bad{R"({"op":"throw_ball","x":0,"y":0,"vx":null,"vy":0})", PageError::kWrongType},  // JSON.stringify(NaN)
+        Bad{R"({"op":"throw_ball","x":0,"y":0,"vx":1e999,"vy":0})", PageError::kNotJson},
+        Bad{R"({"op":"throw_ball","x":0,"y":0,"vx":8.01,"vy":0})", PageError::kOutOfRange},
+        Bad{R"({"op":"throw_ball","x":0,"y":0,"vx":6,"vy":-6})", PageError::kOutOfRange},  // 8.5 m/s
+        Bad{R"({"op":"throw_ball","x":0,"y":0,"vx":-30,"vy":0})", PageError::kOutOfRange},
+        Bad{R"({"op":"throw_ball","x":4.8,"y":0,"vx":1,"vy":0})", PageError::kOutsideField},
+        Bad{R"({"op":"throw_ball","x":0,"y":-3.3,"vx":1,"vy":0})", PageError::kOutsideField},
+        Bad{R"({"op":"throw_ball","x":1e300,"y":0,"vx":1,"vy":0})", PageError::kOutOfRange},
+        Bad{R"({"op":"throw_ball","x":0,"y":0,"vx":1})", PageError::kMissingField},
+        Bad{R"({"op":"throw_ball","x":0,"y":0,"z":1,"vx":1,"vy":0})", PageError::kUnknownKey},
+        Bad{R"({"op":"throw_ball","x":0,"y":0,"vx":1,"vy":0,"vz":5})", PageError::kUnknownKey},
+        Bad{R"({"op":"throw_ball","x":0,"y":0,"vx":"1","vy":0})", PageError::kWrongType},
         Bad{R"({"op":"teleport_robot","team":"red","id":0,"on_field":false})", PageError::kUnknownTeam},
         Bad{R"({"op":"teleport_robot","team":"blue","id":6,"on_field":false})", PageError::kUnknownRobot},
         Bad{R"({"op":"teleport_robot","team":"blue","id":256,"on_field":false})", PageError::kOutOfRange},
@@ -161,6 +190,50 @@ TEST(ViewerModelPages, RequestsCarryOurNameAndFreshIds) {
   EXPECT_TRUE(model.IsOurs(reply));
   reply.client("someone-else");
   EXPECT_FALSE(model.IsOurs(reply));
+}
+
+idl::SimControlReply ReplyTo(const PageRequest& r) {
+  idl::SimControlReply reply;
+  reply.client(r.control.client());
+  reply.request_id(r.control.request_id());
+  reply.op(r.control.op());
+  reply.result(idl::RESULT_REJECTED);
+  return reply;
+}
+
+TEST(ViewerModelPages, EachReplyGoesToThePageThatAskedOnce) {
+  ViewerModel model("turf-viewer-1", "turf");
+  const PageRequest a = model.OnPageMessage(R"({"op":"step"})");
+  const PageRequest b = model.OnPageMessage(R"({"op":"pause"})");
+  model.RequestSent(a.control.request_id(), 7);
+  model.RequestSent(b.control.request_id(), 9);
+  EXPECT_EQ(model.pending_replies(), 2u);
+  // Out of order, as replies may come.
+  EXPECT_EQ(model.ReplyPage(ReplyTo(b)), std::optional<uint64_t>(9));
+  EXPECT_EQ(model.ReplyPage(ReplyTo(a)), std::optional<uint64_t>(7));
+  EXPECT_EQ(model.ReplyPage(ReplyTo(a)), std::nullopt);  // answered already
+  EXPECT_EQ(model.pending_replies(), 0u);
+
+  // Another client's reply with one of our ids goes to nobody.
+  const PageRequest c = model.OnPageMessage(R"({"op":"resume"})");
+  model.RequestSent(c.control.request_id(), 7);
+  idl::SimControlReply theirs = ReplyTo(c);
+  theirs.client("turf-viewer-2");
+  EXPECT_EQ(model.ReplyPage(theirs), std::nullopt);
+  EXPECT_EQ(model.ReplyPage(ReplyTo(c)), std::optional<uint64_t>(7));
+}
+
+TEST(ViewerModelPages, UnansweredRequestsAreForgottenOldestFirst) {
+  ViewerModel model("v", "turf");
+  std::vector<PageRequest> sent;
+  for (size_t i = 0; i < kMaxPendingReplies + 10; ++i) {
+    sent.push_back(model.OnPageMessage(R"({"op":"pause"})"));
+    model.RequestSent(sent.back().control.request_id(), 100 + i);
+  }
+  EXPECT_EQ(model.pending_replies(), kMaxPendingReplies);
+  EXPECT_EQ(model.ReplyPage(ReplyTo(sent[9])), std::nullopt);
+  EXPECT_EQ(model.ReplyPage(ReplyTo(sent[10])), std::optional<uint64_t>(110));
+  EXPECT_EQ(model.ReplyPage(ReplyTo(sent.back())), std::optional<uint64_t>(100 + kMaxPendingReplies + 9));
 }
 
 TEST(ViewerModelPages, RefusalsAreCountedAndShownToThePage) {

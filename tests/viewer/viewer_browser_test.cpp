@@ -2,8 +2,9 @@
 // the page in headless Chromium driven through chromedriver (W3C WebDriver),
 // and a DDS client that knows the truth. Checks that robots are drawn where
 // the world state (SSL) or robots/links (legged) says, that dragging the ball
-// (and a legged robot) teleports it, that Pause stops simulation time, and
-// saves screenshots to <build>/tests/viewer/artifacts/.
+// (and a legged robot) teleports it, that right-dragging the ball throws it,
+// that two pages each see only the replies to their own requests, that Pause
+// stops simulation time, and saves screenshots to <build>/tests/viewer/artifacts/.
 // Skipped when chromium or chromedriver is not installed.
 #include <gtest/gtest.h>
 #include <turf/idl/JointsPubSubTypes.h>
@@ -206,6 +207,25 @@ TEST_F(ViewerBrowser, DrawsTheWorldDragsTheBallPausesAndSavesScreenshots) {
   })) << "ball at ("
       << client_->state().ball().position().x() << ", " << client_->state().ball().position().y() << ")";
 
+  // 2b. Right-dragging the ball throws it: the arrow from the ball to the
+  // release point, 2 (m/s)/m, is its velocity; world_state shows it rolling
+  // that way (towards open field, before it meets anything).
+  {
+    const auto [tx0, ty0] = ClientPoint(1.5, 1.0);
+    const auto [tx1, ty1] = ClientPoint(0.5, 1.5);  // v = (-2, 1) m/s
+    ASSERT_TRUE(driver_->Drag(tx0, ty0, tx1, ty1, 300, /*button=*/2)) << driver_->error();
+    EXPECT_TRUE(client_->WaitState([](const idl::WorldState& s) {
+      const idl::Vec3& p = s.ball().position();
+      const idl::Vec3& v = s.ball().velocity();
+      const double speed = std::hypot(v.x(), v.y());
+      // Moving along (-2, 1)/|.| at about its speed, and already moved that way.
+      return speed > 1.0 && speed < 2.4 && (-2 * v.x() + v.y()) / (std::sqrt(5.0) * speed) > 0.97 && p.x() < 1.45 &&
+             p.y() > 1.02;
+    })) << "ball at ("
+        << client_->state().ball().position().x() << ", " << client_->state().ball().position().y() << ") moving ("
+        << client_->state().ball().velocity().x() << ", " << client_->state().ball().velocity().y() << ")";
+  }
+
   // 3. Pause: simulation time stops, in turf-sim and on the page.
   const std::string running = SimTimeText();
   ASSERT_TRUE(Within(2000, [&] { return SimTimeText() != running; })) << "time does not advance before pausing";
@@ -250,6 +270,43 @@ TEST_F(ViewerBrowser, DrawsTheWorldDragsTheBallPausesAndSavesScreenshots) {
   EXPECT_TRUE(SavePng(driver_->Screenshot(), "viewer_cameras.png")) << driver_->error();
   client_->Poll();
   EXPECT_FALSE(client_->clock().paused());
+
+  // 6. Two pages: each sees the answers to its own requests only, and both
+  // see the match. Page A steps the running simulation (turf-sim refuses);
+  // page B pauses it (accepted).
+  const std::optional<std::string> page_a = driver_->CurrentWindow();
+  const std::optional<std::string> page_b = driver_->NewWindow();
+  ASSERT_TRUE(page_a && page_b) << driver_->error();
+  ASSERT_TRUE(driver_->SwitchTo(*page_b) && driver_->Navigate("http://127.0.0.1:" + std::to_string(viewer_port_) + "/"))
+      << driver_->error();
+  auto script_true = [&](const std::string& script) {
+    const auto v = driver_->Execute(script);
+    return v && *v == true;
+  };
+  auto message_text = [&] {
+    const auto m = driver_->Find("#message");
+    return m ? driver_->Text(*m).value_or("") : std::string();
+  };
+  ASSERT_TRUE(Within(10000, [&] { return script_true("return !!(window.turfViewer && window.turfViewer.ready());"); }));
+  auto replies = [&] {
+    return driver_->Execute("return window.turfViewer.received().reply || 0;").value_or(json(-1)).get<int>();
+  };
+  ASSERT_TRUE(driver_->SwitchTo(*page_a));
+  const int a_replies = replies();  // to its drags, pause, realism and resume so far
+  const auto step = driver_->Find("#step");
+  ASSERT_TRUE(step && driver_->Click(*step)) << driver_->error();
+  EXPECT_TRUE(Within(3000, [&] { return message_text().rfind("turf-sim refused step", 0) == 0; })) << message_text();
+  ASSERT_TRUE(driver_->SwitchTo(*page_b));
+  const auto b_pause = driver_->Find("#pause");
+  ASSERT_TRUE(b_pause && driver_->Click(*b_pause)) << driver_->error();
+  EXPECT_TRUE(Within(3000, [&] { return message_text().rfind("pause: ok", 0) == 0; })) << message_text();
+  EXPECT_EQ(replies(), 1);  // its pause's, not A's step's
+  EXPECT_TRUE(Within(3000, [&] { return script_true("return window.turfViewer.state().clock.paused;"); }));
+  std::this_thread::sleep_for(200ms);  // were B's reply sent to A too, it would be there by now
+  ASSERT_TRUE(driver_->SwitchTo(*page_a));
+  EXPECT_EQ(message_text().rfind("turf-sim refused step", 0), 0u) << message_text();
+  EXPECT_EQ(replies(), a_replies + 1);  // its step's, not B's pause's
+  EXPECT_TRUE(Within(3000, [&] { return script_true("return window.turfViewer.state().clock.paused;"); }));
 
   EXPECT_EQ(viewer_->Stop(), 0) << viewer_->Log();  // SIGTERM: a clean exit
   EXPECT_NE(viewer_->Log().find("stopped cleanly"), std::string::npos);
@@ -319,6 +376,22 @@ TEST_F(ViewerBrowser, LeggedSceneDrawsRobotsWhereTheirLinksAreAndDragsBallAndRob
       },
       5000))
       << "ball at (" << truth.world->ball().position().x() << ", " << truth.world->ball().position().y() << ")";
+
+  // 2b. Right-dragging it throws it: v = (2, 0) m/s along the grass.
+  {
+    const auto [tx0, ty0] = ClientPoint(2.0, -3.0);
+    const auto [tx1, ty1] = ClientPoint(3.0, -3.0);
+    ASSERT_TRUE(driver_->Drag(tx0, ty0, tx1, ty1, 300, /*button=*/2)) << driver_->error();
+    EXPECT_TRUE(truth.WaitFor(
+        [&] {
+          const idl::Vec3& p = truth.world->ball().position();
+          const idl::Vec3& v = truth.world->ball().velocity();
+          return v.x() > 0.8 && v.x() < 2.2 && std::abs(v.y()) < 0.2 && p.x() > 2.05 && std::abs(p.y() + 3.0) < 0.1;
+        },
+        5000))
+        << "ball at (" << truth.world->ball().position().x() << ", " << truth.world->ball().position().y()
+        << ") moving (" << truth.world->ball().velocity().x() << ", " << truth.world->ball().velocity().y() << ")";
+  }
 
   // 3. Dragging a robot teleports it upright, at its height and orientation.
   ASSERT_TRUE(DragField(-5.0, 1.5, -3.0, 3.0)) << driver_->error();

@@ -172,6 +172,62 @@ TEST(ViewerServer, PauseStepAndResumeFromThePage) {
   EXPECT_TRUE(ReadType(ws2, "state", [&](const json& m) { return m["t"].get<double>() > t_paused + 0.3; }));
 }
 
+TEST(ViewerServer, EachPageSeesOnlyTheRepliesToItsOwnRequests) {
+  Rig rig;
+  ASSERT_TRUE(rig.Ready());
+  WsClient a, b;
+  std::string error;
+  ASSERT_TRUE(a.Connect(rig.viewer.port(), rig.viewer.origin(), &error)) << error;
+  ASSERT_TRUE(b.Connect(rig.viewer.port(), rig.viewer.origin(), &error)) << error;
+  ASSERT_TRUE(ReadType(a, "state"));
+  ASSERT_TRUE(ReadType(b, "state"));
+  // Page A steps a running simulation: turf-sim refuses, and A is told why.
+  ASSERT_TRUE(a.Send(R"({"op":"step","count":5})"));
+  const auto refused = ReadType(a, "reply");
+  ASSERT_TRUE(refused);
+  EXPECT_EQ((*refused)["op"], "step");
+  EXPECT_EQ((*refused)["ok"], false);
+  // Page B's first reply is the answer to its own request (A's refusal came
+  // before it, so had it been sent to B it would be read first).
+  ASSERT_TRUE(b.Send(R"({"op":"pause"})"));
+  const auto b_reply = ReadType(b, "reply");
+  ASSERT_TRUE(b_reply);
+  EXPECT_EQ((*b_reply)["op"], "pause");
+  EXPECT_EQ((*b_reply)["ok"], true);
+  // And A does not see B's: its next reply is to its own resume. State
+  // updates still reach both pages.
+  ASSERT_TRUE(a.Send(R"({"op":"resume"})"));
+  const auto a_reply = ReadType(a, "reply");
+  ASSERT_TRUE(a_reply);
+  EXPECT_EQ((*a_reply)["op"], "resume");
+  const double t_resumed = (*a_reply)["t"];
+  for (WsClient* page : {&a, &b})
+    EXPECT_TRUE(ReadType(*page, "state", [&](const json& m) { return m["t"].get<double>() > t_resumed; }));
+  EXPECT_TRUE(Eventually([&] { return rig.viewer.node().Stats().replies == 3; }));
+}
+
+TEST(ViewerServer, ThrowsTheBall) {
+  Rig rig;
+  ASSERT_TRUE(rig.Ready());
+  WsClient ws;
+  std::string error;
+  ASSERT_TRUE(ws.Connect(rig.viewer.port(), rig.viewer.origin(), &error)) << error;
+  ASSERT_TRUE(ReadType(ws, "field"));
+  ASSERT_TRUE(ws.Send(R"({"op":"throw_ball","x":-1,"y":0.5,"vx":3,"vy":-1})"));
+  // It rolls off in the thrown direction, slowing on the carpet.
+  EXPECT_TRUE(rig.client.WaitState([](const idl::WorldState& s) {
+    const idl::Vec3& p = s.ball().position();
+    const idl::Vec3& v = s.ball().velocity();
+    return p.x() > -0.9 && p.y() < 0.5 && v.x() > 0.5 && std::abs(v.y() + v.x() / 3) < 0.2;
+  })) << "ball at ("
+      << rig.client.state().ball().position().x() << ", " << rig.client.state().ball().position().y() << ")";
+  ASSERT_TRUE(ws.Send(R"({"op":"throw_ball","x":-1,"y":0.5,"vx":8,"vy":8})"));  // 11.3 m/s
+  const auto refused = ReadType(ws, "refused");
+  ASSERT_TRUE(refused);
+  EXPECT_EQ((*refused)["kind"], "out_of_range");
+  EXPECT_EQ(rig.viewer.node().Stats().controls_sent, 1u);
+}
+
 TEST(ViewerServer, RefusesHostileMessagesAndMovesNothing) {
   Rig rig;
   ASSERT_TRUE(rig.Ready());

@@ -112,10 +112,17 @@ std::optional<std::string> WebDriver::Text(const std::string& element) {
   return value->get<std::string>();
 }
 
-bool WebDriver::Drag(int x0, int y0, int x1, int y1, int ms) {
+namespace {
+json PointerActions(const json& moves) {
+  return {{"actions",
+           {{{"type", "pointer"}, {"id", "mouse"}, {"parameters", {{"pointerType", "mouse"}}}, {"actions", moves}}}}};
+}
+}  // namespace
+
+bool WebDriver::Drag(int x0, int y0, int x1, int y1, int ms, int button) {
   const json moves = json::array({
       {{"type", "pointerMove"}, {"duration", 0}, {"origin", "viewport"}, {"x", x0}, {"y", y0}},
-      {{"type", "pointerDown"}, {"button", 0}},
+      {{"type", "pointerDown"}, {"button", button}},
       {{"type", "pause"}, {"duration", 50}},
       {{"type", "pointerMove"},
        {"duration", ms / 2},
@@ -124,12 +131,25 @@ bool WebDriver::Drag(int x0, int y0, int x1, int y1, int ms) {
        {"y", (y0 + y1) / 2}},
       {{"type", "pointerMove"}, {"duration", ms / 2}, {"origin", "viewport"}, {"x", x1}, {"y", y1}},
       {{"type", "pause"}, {"duration", 50}},
-      {{"type", "pointerUp"}, {"button", 0}},
+      {{"type", "pointerUp"}, {"button", button}},
   });
-  const json actions = {
-      {"actions",
-       {{{"type", "pointer"}, {"id", "mouse"}, {"parameters", {{"pointerType", "mouse"}}}, {"actions", moves}}}}};
-  return Call("POST", "/session/" + session_ + "/actions", actions).has_value();
+  return Call("POST", "/session/" + session_ + "/actions", PointerActions(moves)).has_value();
+}
+
+std::optional<std::string> WebDriver::CurrentWindow() {
+  const auto value = Call("GET", "/session/" + session_ + "/window");
+  if (!value || !value->is_string()) return std::nullopt;
+  return value->get<std::string>();
+}
+
+std::optional<std::string> WebDriver::NewWindow() {
+  const auto value = Call("POST", "/session/" + session_ + "/window/new", {{"type", "window"}});
+  if (!value || !value->contains("handle")) return std::nullopt;
+  return (*value)["handle"].get<std::string>();
+}
+
+bool WebDriver::SwitchTo(const std::string& window) {
+  return Call("POST", "/session/" + session_ + "/window", {{"handle", window}}).has_value();
 }
 
 std::optional<std::string> WebDriver::Screenshot() {

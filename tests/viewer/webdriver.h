@@ -33,9 +33,14 @@ class WebDriver {
   std::optional<std::string> Find(const std::string& css);  // element id
   bool Click(const std::string& element);
   std::optional<std::string> Text(const std::string& element);
-  // Presses the left button at (x0, y0), moves to (x1, y1) over `ms` and
-  // releases (viewport CSS pixels).
-  bool Drag(int x0, int y0, int x1, int y1, int ms);
+  // Presses `button` (0 left, 2 right) at (x0, y0), moves to (x1, y1) over
+  // `ms` and releases (viewport CSS pixels).
+  bool Drag(int x0, int y0, int x1, int y1, int ms, int button = 0);
+  // Opens a new window (a second page) and returns its handle; SwitchTo makes
+  // a window the one the other calls act on.
+  std::optional<std::string> CurrentWindow();
+  std::optional<std::string> NewWindow();
+  bool SwitchTo(const std::string& window);
   // The page as PNG bytes.
   std::optional<std::string> Screenshot();
   const std::string& error() const { return error_; }

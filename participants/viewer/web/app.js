@@ -10,6 +10,10 @@
   const BALL = '#ff7a1a';
   const SEND_EVERY_MS = 33;  // teleports while dragging: ~30 a second
   const SNAP_DISTANCE = 0.5;  // m: a jump this large (teleport, reset) is not interpolated
+  // Throwing the ball (right- or shift-drag): the arrow from the ball to the
+  // pointer, times THROW_GAIN, is its velocity, up to MAX_THROW (page_request.h's kMaxThrowSpeed).
+  const THROW_GAIN = 2;  // (m/s) per m of arrow
+  const MAX_THROW = 8;  // m/s
 
   const canvas = document.getElementById('field');
   const ctx = canvas.getContext('2d');
@@ -25,7 +29,7 @@
     prev: null, prevAt: 0,  // the two newest states and when they arrived (performance.now())
     cur: null, curAt: 0,
     mode: 'truth',          // truth | cameras | both
-    drag: null,             // {kind: 'ball'|'robot', team, id, x, y, yaw, rotate, lastSent}
+    drag: null,             // {kind: 'ball'|'throw'|'robot'|'legged', team, id, x, y, yaw, rotate, lastSent}
     ws: null,
     scale: 1, ox: 0, oy: 0, dpr: 1,
     drawn: false,           // a state is on the canvas since the last layout
@@ -195,6 +199,30 @@
     ctx.restore();
   }
 
+  // A throw being aimed: an arrow from the ball along its velocity-to-be, with the speed.
+  function drawThrow(s) {
+    const t = throwOf(view.drag, s);
+    if (!t) return;
+    const [ax, ay] = toCanvas(t.x, t.y);
+    const [bx, by] = toCanvas(t.x + t.vx / THROW_GAIN, t.y + t.vy / THROW_GAIN);
+    const angle = Math.atan2(by - ay, bx - ax);
+    ctx.save();
+    ctx.strokeStyle = ctx.fillStyle = '#ffffff';
+    ctx.lineWidth = 2;
+    ctx.setLineDash([5, 4]);
+    ctx.beginPath(); ctx.moveTo(ax, ay); ctx.lineTo(bx, by); ctx.stroke();
+    ctx.setLineDash([]);
+    ctx.beginPath();
+    ctx.moveTo(bx, by);
+    ctx.lineTo(bx - 12 * Math.cos(angle - 0.4), by - 12 * Math.sin(angle - 0.4));
+    ctx.lineTo(bx - 12 * Math.cos(angle + 0.4), by - 12 * Math.sin(angle + 0.4));
+    ctx.closePath(); ctx.fill();
+    ctx.font = 'bold 12px "DejaVu Sans", sans-serif';
+    ctx.textAlign = 'left';
+    ctx.fillText(`${Math.hypot(t.vx, t.vy).toFixed(1)} m/s`, bx + 8, by - 8);
+    ctx.restore();
+  }
+
   // The state to draw: the newest, eased from the one before over one
   // message interval, so 60 messages a second look smooth at any refresh rate.
   function blended() {
@@ -263,6 +291,7 @@
     Legged.drawRobots(T, view.leggedDrawn, { alpha: 1, highlight: d && d.kind === 'legged' ? d.name : null });
     if (d && d.kind === 'ball') drawBall(d.x, d.y, 0, ballRadius(), { alpha: 1 });
     else if (s.ball) drawBall(s.ball.p[0], s.ball.p[1], s.ball.p[2], ballRadius(), { alpha: 1 });
+    drawThrow(s);
     view.drawn = true;
   }
 
@@ -298,6 +327,7 @@
       if (d && d.kind === 'ball') drawBall(d.x, d.y, 0, f.ball_radius, { alpha });
       else drawBall(s.ball.p[0], s.ball.p[1], s.ball.p[2], f.ball_radius, { alpha });
     }
+    drawThrow(s);
     view.drawn = true;
     if (cameras) {
       for (const det of s.detections || []) {
@@ -491,6 +521,25 @@
     return Math.hypot(s.ball.p[0] - x, s.ball.p[1] - y) < reach;
   }
 
+  // The throw a drag aims, from where the ball is now (it may roll while the
+  // user aims) towards the pointer; null for another drag or no ball.
+  function throwOf(d, s) {
+    if (!d || d.kind !== 'throw' || !s || !s.ball) return null;
+    const [x, y] = clampInside(s.ball.p[0], s.ball.p[1], ballRadius());
+    let vx = (d.x - x) * THROW_GAIN, vy = (d.y - y) * THROW_GAIN;
+    const speed = Math.hypot(vx, vy);
+    if (speed > MAX_THROW) { vx *= MAX_THROW / speed; vy *= MAX_THROW / speed; }
+    return { x, y, vx, vy };
+  }
+  // Toward zero, so rounding never takes a clamped throw past MAX_THROW.
+  const trunc = (v) => Math.trunc(v * 1e4) / 1e4;
+
+  function sendThrow() {
+    const t = throwOf(view.drag, view.cur);
+    if (!t || Math.hypot(t.vx, t.vy) < 0.05) return;  // a click, not a throw
+    send({ op: 'throw_ball', x: round(t.x), y: round(t.y), vx: trunc(t.vx), vy: trunc(t.vy) });
+  }
+
   const leggedAt = (x, y) => (view.legged ? Legged.robotAt(view.leggedDrawn, x, y, LEGGED_REACH) : null);
 
   function sendDrag(final) {
@@ -510,7 +559,9 @@
     if (!sceneKnown() || (view.field && view.mode === 'cameras')) return;
     const [x, y] = eventField(e);
     const legged = leggedAt(x, y);
-    if (ballAt(x, y)) {
+    if (ballAt(x, y) && (e.button === 2 || e.shiftKey)) {
+      view.drag = { kind: 'throw', x, y };
+    } else if (ballAt(x, y)) {
       view.drag = { kind: 'ball', x, y, lastSent: 0 };
     } else if (legged) {
       const [rx, ry, rz] = legged.root;
@@ -531,11 +582,18 @@
     const d = view.drag;
     if (!d) {
       const [x, y] = sceneKnown() ? eventField(e) : [0, 0];
-      canvas.style.cursor = sceneKnown() && (ballAt(x, y) || robotAt(x, y) || leggedAt(x, y)) ? 'grab' : 'default';
+      const ball = sceneKnown() && ballAt(x, y);
+      canvas.style.cursor = ball || (sceneKnown() && (robotAt(x, y) || leggedAt(x, y))) ? 'grab' : 'default';
+      canvas.title = ball ? 'drag to move the ball; right-drag or shift-drag to throw it' : '';
       return;
     }
+    canvas.style.cursor = d.kind === 'throw' ? 'crosshair' : 'grabbing';
     const [x, y] = eventField(e);
     const f = view.field;
+    if (d.kind === 'throw') {  // nothing is sent until the release
+      [d.x, d.y] = [x, y];
+      return;
+    }
     if (d.kind === 'legged') {
       [d.x, d.y] = clampInside(x + d.dx, y + d.dy, 0);
     } else if (d.kind === 'ball' && view.legged) {
@@ -550,13 +608,18 @@
     sendDrag(false);
   });
 
-  const endDrag = () => {
+  const endDrag = (e) => {
     if (!view.drag) return;
-    sendDrag(true);
+    if (view.drag.kind === 'throw') {
+      if (e.type === 'pointerup') sendThrow();
+    } else {
+      sendDrag(true);
+    }
     view.drag = null;
   };
   canvas.addEventListener('pointerup', endDrag);
   canvas.addEventListener('pointercancel', endDrag);
+  canvas.addEventListener('lostpointercapture', endDrag);  // e.g. the window lost focus: no throw
   canvas.addEventListener('contextmenu', (e) => e.preventDefault());
 
   canvas.addEventListener('dblclick', (e) => {
