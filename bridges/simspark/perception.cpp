@@ -6,8 +6,11 @@
 
 namespace turf::simspark {
 
-std::string FormatFloat(double v) {
-  if (!std::isfinite(v)) return "0.00";
+void AppendFloat(std::string* out, double v) {
+  if (!std::isfinite(v)) {
+    out->append("0.00");
+    return;
+  }
   // The common case without printf (a perception has ~150 numbers); printf
   // for huge values.
   if (std::abs(v) < 1e12) {
@@ -19,11 +22,28 @@ std::string FormatFloat(double v) {
     const double above_half = std::fma(a, 100.0, -(c + 0.5));
     if (above_half > 0 || (above_half == 0 && std::fmod(c, 2.0) != 0)) c += 1.0;
     const auto hundredths = static_cast<int64_t>(c);
-    std::string out = std::signbit(v) ? "-" : "";
-    out += std::to_string(hundredths / 100);
-    out.push_back('.');
-    out.push_back(static_cast<char>('0' + (hundredths % 100) / 10));
-    out.push_back(static_cast<char>('0' + hundredths % 10));
+    char digits[24];
+    int n = 0;
+    int64_t whole = hundredths / 100;
+    do {
+      digits[n++] = static_cast<char>('0' + whole % 10);
+      whole /= 10;
+    } while (whole > 0);
+    if (std::signbit(v)) out->push_back('-');
+    while (n > 0) out->push_back(digits[--n]);
+    out->push_back('.');
+    out->push_back(static_cast<char>('0' + (hundredths % 100) / 10));
+    out->push_back(static_cast<char>('0' + hundredths % 10));
+    return;
+  }
+  out->append(FormatFloat(v));
+}
+
+std::string FormatFloat(double v) {
+  if (!std::isfinite(v)) return "0.00";
+  if (std::abs(v) < 1e12) {
+    std::string out;
+    AppendFloat(&out, v);
     return out;
   }
   char buffer[32];
@@ -40,17 +60,17 @@ namespace {
 void Append3(std::string* out, const std::array<double, 3>& v) {
   for (const double x : v) {
     out->push_back(' ');
-    out->append(FormatFloat(x));
+    AppendFloat(out, x);
   }
 }
 
 void AppendPol(std::string* out, const Polar& p) {
   out->append("(pol ");
-  out->append(FormatFloat(p.distance));
+  AppendFloat(out, p.distance);
   out->push_back(' ');
-  out->append(FormatFloat(p.horizontal));
+  AppendFloat(out, p.horizontal);
   out->push_back(' ');
-  out->append(FormatFloat(p.vertical));
+  AppendFloat(out, p.vertical);
   out->push_back(')');
 }
 
@@ -102,7 +122,13 @@ std::string FormatPerception(const Perception& p) {
   out += "))(ACC (n torso) (a";
   Append3(&out, p.acc);
   out += "))";
-  for (const auto& [name, deg] : p.joints_deg) out += "(HJ (n " + name + ") (ax " + FormatFloat(deg) + "))";
+  for (const auto& [name, deg] : p.joints_deg) {
+    out += "(HJ (n ";
+    out += name;
+    out += ") (ax ";
+    AppendFloat(&out, deg);
+    out += "))";
+  }
   for (const ForcePerception& f : p.forces) {
     out += "(FRP (n " + f.name + ") (c";
     Append3(&out, f.point);

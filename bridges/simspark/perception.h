@@ -43,6 +43,7 @@ struct Perception {
 
 // Fixed with exactly 2 decimals ("-0.00" may occur, as the server prints it); a non-finite value -> "0.00".
 std::string FormatFloat(double v);
+void AppendFloat(std::string* out, double v);  // the same, appended
 
 // The whole message text (the payload of one frame).
 std::string FormatPerception(const Perception& p);

@@ -307,7 +307,9 @@ void Session::Trainer(const std::string& payload) {
   for (const TrainerCommand& c : m.commands) std::visit(visitor, c);
 }
 
-void Session::Advance(const WorldSnapshot& world) {
+void Session::Advance(WorldSnapshot snapshot) {
+  last_ = std::move(snapshot);
+  const WorldSnapshot& world = *last_;
   ++cycle_;
   // The first touch: a body of a player near the ball.
   bool touched = false;
@@ -320,7 +322,6 @@ void Session::Advance(const WorldSnapshot& world) {
   }
   const GameUpdate update = game_.Update(0.02, world.ball, touched);
   if (update.place_ball) requests_.ball = BallMove{*update.place_ball, Eigen::Vector3d::Zero()};
-  last_ = world;
   // Every player's seen parts, once per cycle for all agents' vision.
   players_.clear();
   for (const auto& [id, other] : agents_) {
@@ -364,11 +365,10 @@ std::string Session::Perceive(Agent* a, const WorldSnapshot& world, bool /*touch
       p.gyro_deg_s[k] = robot->gyro[k] * kDeg;
       p.acc[k] = robot->accelerometer[k];
     }
-    for (const NaoJoint& j : NaoJoints(a->type)) {
-      for (size_t i = 0; i < robot->joint_names.size(); ++i) {
-        if (robot->joint_names[i] == j.perceptor)
-          p.joints_deg.emplace_back(j.perceptor, robot->joint_positions[i] * kDeg);
-      }
+    const std::vector<NaoJoint>& joints = NaoJoints(a->type);
+    const std::vector<int>& index = HingeIndex(a->type, *robot);
+    for (size_t j = 0; j < joints.size(); ++j) {
+      if (index[j] >= 0) p.joints_deg.emplace_back(joints[j].perceptor, robot->joint_positions[index[j]] * kDeg);
     }
     for (const RobotSnapshot::Foot& f : robot->feet) {
       if (f.contact) p.forces.push_back({f.name, f.point, f.force});
@@ -382,6 +382,25 @@ std::string Session::Perceive(Agent* a, const WorldSnapshot& world, bool /*touch
   }
   ++a->perceptions;
   return FormatPerception(p);
+}
+
+// Where each of the type's hinges is in the robots' joint arrays (-1: the
+// model lacks it). Every robot of the scene is the same model: found once.
+const std::vector<int>& Session::HingeIndex(int type, const RobotSnapshot& robot) {
+  std::vector<int>& index = hinge_index_[type];
+  if (index.empty() || hinge_joint_count_ != robot.joint_names.size()) {
+    hinge_joint_count_ = robot.joint_names.size();
+    hinge_index_.clear();
+    std::vector<int>& fresh = hinge_index_[type];
+    for (const NaoJoint& j : NaoJoints(type)) {
+      int found = -1;
+      for (size_t i = 0; i < robot.joint_names.size() && found < 0; ++i)
+        if (robot.joint_names[i] == j.perceptor) found = static_cast<int>(i);
+      fresh.push_back(found);
+    }
+    return fresh;
+  }
+  return index;
 }
 
 SeeItems Session::See(const Agent& agent, const RobotSnapshot& robot, const WorldSnapshot& world) {

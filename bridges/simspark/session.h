@@ -114,7 +114,7 @@ class Session {
 
   bool ReadyToStep() const;
   WorldRequests TakeRequests();
-  void Advance(const WorldSnapshot& world);
+  void Advance(WorldSnapshot world);
   std::vector<std::pair<int, std::string>> TakeOutputs();
   std::vector<SessionIssue> TakeIssues();
   std::vector<int> TakeKicked();        // agents to disconnect (trainer kill)
@@ -155,6 +155,7 @@ class Session {
   void PlaceAgent(Agent* agent, const Pose2& pose);
   std::string Perceive(Agent* agent, const WorldSnapshot& world, bool touched);
   SeeItems See(const Agent& agent, const RobotSnapshot& robot, const WorldSnapshot& world);
+  const std::vector<int>& HingeIndex(int type, const RobotSnapshot& robot);
 
   SessionOptions options_;
   std::vector<std::string> robots_;
@@ -174,7 +175,9 @@ class Session {
   std::string monitor_;
   bool quit_ = false;
   std::optional<WorldSnapshot> last_;
-  std::vector<VisionPlayer> players_;  // this cycle's, for every agent's vision
+  std::vector<VisionPlayer> players_;            // this cycle's, for every agent's vision
+  std::map<int, std::vector<int>> hinge_index_;  // robot type -> HingeIndex
+  size_t hinge_joint_count_ = 0;
 
   friend struct TrainerCommandVisitor;
 };

@@ -144,7 +144,8 @@ class SimSparkBridge::Impl {
       spdlog::error("{}; attaching again", error);
       return Attach(stop) || stop();
     }
-    session_->Advance(*world);
+    const double sim_time = world->time;
+    session_->Advance(std::move(*world));
     for (auto& [agent, message] : session_->TakeOutputs()) SendToAgent(agent, simspark::Frame(message));
     const std::string monitor = session_->TakeMonitorOutput();
     if (!monitor.empty()) {
@@ -160,7 +161,7 @@ class SimSparkBridge::Impl {
     }
     std::lock_guard<std::mutex> lock(stats_mutex_);
     stats_.cycles = session_->cycle();
-    stats_.sim_time = world->time;
+    stats_.sim_time = sim_time;
     stats_.agents = session_->agents();
     stats_.refused = rejects_.Total();
     stats_.refused_by_kind = rejects_.counts();
