@@ -83,8 +83,17 @@ class WorldLink::Impl {
     idl::SimControl lockstep;
     lockstep.op(idl::OP_SET_TIME_MODE);
     lockstep.time_mode(idl::TIME_LOCKSTEP);
-    const uint64_t id = Send(lockstep);
-    if (!WaitFor([&] { return replies_.count(id) > 0; }, deadline, stop)) {
+    // Asked again every 0.5 s: a reply written before turf-sim's writer has
+    // discovered our reader is lost (control replies are volatile), which
+    // happens when turf-sim has just started. The request is idempotent.
+    uint64_t id = 0;
+    bool answered = false;
+    while (!answered && Clock::now() < deadline && !(stop && stop())) {
+      id = Send(lockstep);
+      answered = WaitFor([&] { return replies_.count(id) > 0; },
+                         std::min(deadline, Clock::now() + std::chrono::milliseconds(500)), stop);
+    }
+    if (!answered) {
       *error = "turf-sim did not answer the switch to lockstep";
       return std::nullopt;
     }
