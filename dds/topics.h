@@ -46,7 +46,7 @@ inline constexpr TopicInfo kTopics[] = {
     {Topic::kSslFeedbackYellow, "ssl/feedback/yellow", "turf.feedback", "SslRobotFeedback",
      "yellow ball contact, kicks"},
     {Topic::kControl, "control", "turf.control", "SimControl", "teleport, pause, step, reset, time mode"},
-    {Topic::kControlReply, "control_reply", "turf.control", "SimControlReply", "what a control request did"},
+    {Topic::kControlReply, "control_reply", "turf.reply", "SimControlReply", "what a control request did"},
     {Topic::kStats, "stats", "turf.state", "SensorStats", "rate, loss and latency of each modelled stream"},
     {Topic::kRobotJointState, "robots/joint_state", "turf.state", "JointState",
      "legged robots' joints, keyed by robot"},

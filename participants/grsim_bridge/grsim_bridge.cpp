@@ -15,6 +15,7 @@
 
 #include "bridges/grsim/robot_status.h"
 #include "dds/participant.h"
+#include "dds/request_id.h"
 #include "participants/common/process.h"
 #include "participants/common/udp.h"
 
@@ -251,7 +252,7 @@ class GrsimBridge::Impl {
 
   grsim::StatusTracker tracker_;
   std::optional<UdpEndpoint> status_to_[2];
-  uint64_t request_id_ = 0;
+  uint64_t request_id_ = dds::FirstRequestId();
   uint64_t send_failures_ = 0;
   uint64_t reported_datagrams_ = 0;
   std::vector<idl::SslField> fields_;

@@ -14,6 +14,8 @@
 #include <mutex>
 #include <set>
 
+#include "dds/request_id.h"
+
 namespace turf {
 
 class SimLink::Impl {
@@ -142,7 +144,7 @@ class SimLink::Impl {
   View view_;
   std::deque<idl::CameraFrame> frames_;  // the newest received, in arrival order
   uint64_t frames_received_ = 0;
-  uint64_t next_request_id_ = 0;
+  uint64_t next_request_id_ = dds::FirstRequestId();
   std::set<uint64_t> waiting_;
   std::map<uint64_t, idl::SimControlReply> replies_;
   std::vector<idl::SslField> fields_;

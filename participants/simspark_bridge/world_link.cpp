@@ -8,6 +8,7 @@
 
 #include <map>
 
+#include "dds/request_id.h"
 #include "participants/common/wakeup.h"
 
 namespace turf {
@@ -260,7 +261,7 @@ class WorldLink::Impl {
   std::map<uint64_t, idl::SimControlReply> replies_;
   std::map<uint64_t, std::string> pending_moves_;  // request id -> what, until answered
   std::vector<std::string> robots_;
-  uint64_t request_id_ = 0;
+  uint64_t request_id_ = dds::FirstRequestId();
   uint64_t frame_ = 0;
   double step_s_ = 0.0;
 };

@@ -24,6 +24,7 @@
 #include <string>
 #include <string_view>
 
+#include "dds/request_id.h"
 #include "participants/viewer/page_request.h"
 
 namespace turf::viewer {
@@ -89,7 +90,7 @@ class ViewerModel {
  private:
   std::string client_;
   std::string prefix_;
-  uint64_t next_request_id_ = 1;
+  uint64_t next_request_id_ = dds::FirstRequestId();
   uint64_t refused_pages_ = 0;
   bool control_matched_ = false;
   std::optional<idl::WorldState> state_;

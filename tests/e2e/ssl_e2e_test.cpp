@@ -3,12 +3,12 @@
 // speaks the legacy protocols with its own protos (tests/e2e/proto), as an SSL
 // team's software would. Every test has its own DDS domain, topic prefix and
 // UDP ports, so tests can run in parallel.
-#include "tests/test_domain.h"
 #include <arpa/inet.h>
 #include <gtest/gtest.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
+#include "tests/test_domain.h"
 
 #include <chrono>
 #include <cmath>
@@ -136,25 +136,24 @@ class Match {
         Args("participants/sim/turf-sim",
              {"--scene", std::string(TURF_SOURCE_DIR) + "/configs/scenes/ssl_div_a.yaml", "--speed", "1"}, dds));
     grsim = std::make_unique<ChildProcess>(
-        prefix + "_grsim", Args("participants/grsim_bridge/turf-grsim-bridge",
-                                {"--listen", "127.0.0.1", "--port", std::to_string(grsim_port),
-                                 "--blue-status-port", std::to_string(blue_status_port), "--yellow-status-port",
-                                 std::to_string(yellow_status_port)},
-                                dds));
+        prefix + "_grsim",
+        Args("participants/grsim_bridge/turf-grsim-bridge",
+             {"--listen", "127.0.0.1", "--port", std::to_string(grsim_port), "--blue-status-port",
+              std::to_string(blue_status_port), "--yellow-status-port", std::to_string(yellow_status_port)},
+             dds));
     vision = std::make_unique<ChildProcess>(
         prefix + "_vision", Args("participants/vision_bridge/turf-vision-bridge",
                                  // Simulation-time stamps: speeds measured from the stream stay
                                  // right when a loaded machine runs the simulation slower than real time.
-                                 {"--address", "127.0.0.1", "--port", std::to_string(vision_port),
-                                  "--geometry-every", "30", "--clock", "sim"},
+                                 {"--address", "127.0.0.1", "--port", std::to_string(vision_port), "--geometry-every",
+                                  "30", "--clock", "sim"},
                                  dds));
     simproto = std::make_unique<ChildProcess>(
-        prefix + "_simproto",
-        Args("participants/simproto_bridge/turf-simproto-bridge",
-             {"--listen", "127.0.0.1", "--control-port", std::to_string(control_port), "--blue-port",
-              std::to_string(blue_port), "--yellow-port", std::to_string(yellow_port), "--sync-port",
-              std::to_string(sync_port)},
-             dds));
+        prefix + "_simproto", Args("participants/simproto_bridge/turf-simproto-bridge",
+                                   {"--listen", "127.0.0.1", "--control-port", std::to_string(control_port),
+                                    "--blue-port", std::to_string(blue_port), "--yellow-port",
+                                    std::to_string(yellow_port), "--sync-port", std::to_string(sync_port)},
+                                   dds));
   }
   ~Match() {
     // Each process must shut down cleanly on SIGTERM.
@@ -342,6 +341,28 @@ std::string SimprotoMove(int id, double forward) {
   return rc.SerializeAsString();
 }
 
+// Sends a SimulatorCommand to the control port and returns the response.
+// Until the simulation bridge has seen turf-sim (the vision bridge may have
+// been faster) it answers "not available": ask again then.
+std::optional<team::simulation::SimulatorResponse> Command(Udp& team, const team::simulation::SimulatorCommand& cmd,
+                                                           uint16_t port) {
+  const auto give_up = Clock::now() + 15s;
+  while (Clock::now() < give_up) {
+    team.Send(cmd.SerializeAsString(), port);
+    team::simulation::SimulatorResponse response;
+    bool answered = false;
+    const auto answer_by = Clock::now() + 5s;  // the bridge's reply timeout is 2 s
+    while (Clock::now() < answer_by && !answered)
+      if (auto bytes = team.Receive()) answered = response.ParseFromString(*bytes);
+    if (!answered) return std::nullopt;
+    const bool not_yet =
+        response.errors_size() > 0 && response.errors(0).message().find("has not been seen yet") != std::string::npos;
+    if (!not_yet) return response;
+    std::this_thread::sleep_for(200ms);
+  }
+  return std::nullopt;
+}
+
 TEST(SslEndToEnd, SimulationProtocolMovesOnlyItsOwnTeam) {
   Match m;
   VisionClient v(m.vision_port);
@@ -358,7 +379,9 @@ TEST(SslEndToEnd, SimulationProtocolMovesOnlyItsOwnTeam) {
     t->set_orientation(0.0f);
     t->set_present(true);
   }
-  team.Send(cmd.SerializeAsString(), m.control_port);
+  const auto placed = Command(team, cmd, m.control_port);
+  ASSERT_TRUE(placed);
+  ASSERT_EQ(placed->errors_size(), 0) << placed->errors(0).message();
   const auto placed_by = Clock::now() + 5s;
   do {
     v.Drain(50ms);
@@ -395,19 +418,14 @@ TEST(SslEndToEnd, ErForceRealismKnobsChangeTheVisionStream) {
   Udp team;
   team::simulation::RealismConfigErForce knobs;
   knobs.set_vision_processing_time(20'000'000);  // ns
-  knobs.set_stddev_robot_p(0.01f);  // m
+  knobs.set_stddev_robot_p(0.01f);               // m
   team::simulation::SimulatorCommand cmd;
   auto* any = cmd.mutable_config()->mutable_realism_config()->add_custom();
   any->set_type_url("type.googleapis.com/sslsim.RealismConfigErForce");
   any->set_value(knobs.SerializeAsString());
-  team.Send(cmd.SerializeAsString(), m.control_port);
-  team::simulation::SimulatorResponse response;
-  bool answered = false;
-  // The bridge answers after turf-sim replied (up to its 2 s reply timeout).
-  const auto answer_by = Clock::now() + 5s;
-  while (Clock::now() < answer_by && !answered)
-    if (auto bytes = team.Receive()) answered = response.ParseFromString(*bytes);
-  ASSERT_TRUE(answered);
+  const auto answer = Command(team, cmd, m.control_port);
+  ASSERT_TRUE(answer);
+  const team::simulation::SimulatorResponse& response = *answer;
   EXPECT_EQ(response.errors_size(), 0) << response.errors(0).code() << ": " << response.errors(0).message();
   // Now every detection left the vision system 20 ms after its capture, and
   // standing robots jitter by about a centimetre.
