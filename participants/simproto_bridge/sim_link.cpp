@@ -13,6 +13,7 @@
 #include <map>
 #include <mutex>
 #include <set>
+#include <thread>
 
 #include "dds/request_id.h"
 
@@ -60,10 +61,14 @@ class SimLink::Impl {
         waiting_.insert(r.request_id());
       }
     }
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    // Requests are volatile: written before our writer has discovered
+    // turf-sim's reader (turf-sim just seen, machine busy), they would be lost.
+    while (control_writer_->Matched() == 0 && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
     for (const idl::SimControl& r : requests) control_writer_->Write(r);
     std::vector<std::optional<idl::SimControlReply>> out(ids.size());
     std::unique_lock<std::mutex> lock(mutex_);
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
     auto all_in = [&] {
       PumpLocked();
       return std::all_of(ids.begin(), ids.end(), [&](uint64_t id) { return replies_.count(id) > 0; });
