@@ -8,16 +8,16 @@
 // delivery switched off, so samples take the same shared-memory transport as
 // between two processes on one host. Prints p50/p99 of each path and their
 // difference.
-#include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 #include <turf/idl/SslRobotPubSubTypes.h>
 #include <turf/idl/SslVisionPubSubTypes.h>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <mutex>
@@ -39,7 +39,9 @@ namespace idl = turf::idl;
 
 int Seq(const idl::SslRobotCommand& c) { return static_cast<int>(std::lround((c.velocity().x() - 1.0) / 1e-4)); }
 
-int64_t NowNs() { return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count(); }
+int64_t NowNs() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count();
+}
 
 // Latencies (ns) recorded from any thread.
 class Samples {
@@ -206,8 +208,8 @@ void FramePath(turf::dds::Participant& sim, turf::dds::Participant& bridge, int 
 void Row(const char* path, PathResult& r) {
   const double d50 = r.direct.Percentile(0.5), d99 = r.direct.Percentile(0.99);
   const double x50 = r.dds.Percentile(0.5), x99 = r.dds.Percentile(0.99);
-  std::printf("| %-44s | %6zu | %7.0f | %7.0f | %7.0f | %7.0f | %+8.0f | %+8.0f |\n", path, r.dds.size(), d50, d99,
-              x50, x99, x50 - d50, x99 - d99);
+  std::printf("| %-44s | %6zu | %7.0f | %7.0f | %7.0f | %7.0f | %+8.0f | %+8.0f |\n", path, r.dds.size(), d50, d99, x50,
+              x99, x50 - d50, x99 - d99);
 }
 
 }  // namespace
@@ -215,7 +217,9 @@ void Row(const char* path, PathResult& r) {
 int main(int argc, char** argv) {
   CLI::App app{"turf-bench-latency: latency the DDS hop adds to the SSL bridge paths (loopback, one run)"};
   int count = 2000;
-  app.add_option("--samples", count, "samples per path and variant")->capture_default_str()->check(CLI::Range(10, 100000));
+  app.add_option("--samples", count, "samples per path and variant")
+      ->capture_default_str()
+      ->check(CLI::Range(10, 100000));
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::warn);
   const std::string qos = QosWithoutIntraprocess();

@@ -26,7 +26,7 @@ struct GilbertElliott {
 
 struct LinkParams {
   double latency = 0.0;  // s, fixed part of the delay
-  double jitter = 0.0;  // s: stddev (Gaussian), half width (uniform), mean (exponential)
+  double jitter = 0.0;   // s: stddev (Gaussian), half width (uniform), mean (exponential)
   JitterKind jitter_kind = JitterKind::kGaussian;
   double loss = 0.0;  // independent loss probability (when burst loss is off)
   GilbertElliott burst;

@@ -9,15 +9,15 @@ namespace turf {
 
 // SSL-Vision as a team sees it (cf. ER-Force's realism knobs).
 struct CameraRealism {
-  double robot_position_stddev = 0.0;  // m, per axis
+  double robot_position_stddev = 0.0;     // m, per axis
   double robot_orientation_stddev = 0.0;  // rad
-  double ball_position_stddev = 0.0;  // m, per axis
-  double robot_vanish = 0.0;  // probability a robot is missing from a camera frame
-  double ball_vanish = 0.0;  // likewise for the ball
-  bool ball_occlusion = false;  // hide the ball behind robots, seen from the camera
-  double confidence_spread = 0.0;  // confidence = 1 - spread * |N(0,1)|, at least 0.05
-  double processing_delay = 0.0;  // s from capture to sending (t_sent - t_capture)
-  LinkParams link;  // vision system to the network, per camera
+  double ball_position_stddev = 0.0;      // m, per axis
+  double robot_vanish = 0.0;              // probability a robot is missing from a camera frame
+  double ball_vanish = 0.0;               // likewise for the ball
+  bool ball_occlusion = false;            // hide the ball behind robots, seen from the camera
+  double confidence_spread = 0.0;         // confidence = 1 - spread * |N(0,1)|, at least 0.05
+  double processing_delay = 0.0;          // s from capture to sending (t_sent - t_capture)
+  LinkParams link;                        // vision system to the network, per camera
 };
 
 // Joint encoders: quantised to `resolution` (rad), plus Gaussian noise.

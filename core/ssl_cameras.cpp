@@ -177,7 +177,8 @@ void SslCameraSystem::Reset() {
   for (const CameraSpec& c : cameras_) {
     const std::string name = "camera/" + std::to_string(c.id);
     streams_.push_back(Stream{Rng(StreamSeed(scene_.seed, name + "/values")),
-                              Link(realism_.link, StreamSeed(scene_.seed, name + "/link")), {}});
+                              Link(realism_.link, StreamSeed(scene_.seed, name + "/link")),
+                              {}});
   }
 }
 

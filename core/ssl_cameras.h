@@ -21,7 +21,7 @@ namespace turf {
 
 struct CameraSpec {
   int id = 0;
-  Vec3 position;  // optical centre, field frame
+  Vec3 position;                                              // optical centre, field frame
   double min_x = 0.0, max_x = 0.0, min_y = 0.0, max_y = 0.0;  // reported area
 };
 

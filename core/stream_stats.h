@@ -11,7 +11,7 @@ struct StreamWindow {
   uint64_t sent = 0;
   uint64_t lost = 0;
   uint64_t delivered = 0;
-  double latency_mean = 0.0;  // s
+  double latency_mean = 0.0;    // s
   double latency_stddev = 0.0;  // s
 };
 

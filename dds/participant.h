@@ -57,8 +57,7 @@ class Writer {
   bool Write(const Sample& sample, int64_t source_ns) {
     eprosima::fastrtps::Time_t t(static_cast<int32_t>(source_ns / 1000000000),
                                  static_cast<uint32_t>(source_ns % 1000000000));
-    return writer_->write_w_timestamp(const_cast<Sample*>(&sample), fdds::HANDLE_NIL, t) ==
-           ReturnCode::RETCODE_OK;
+    return writer_->write_w_timestamp(const_cast<Sample*>(&sample), fdds::HANDLE_NIL, t) == ReturnCode::RETCODE_OK;
   }
   // Number of readers currently matched.
   int Matched() const {

@@ -12,7 +12,7 @@ PACKAGES=(
   libprotobuf-dev protobuf-compiler
   libgtest-dev
   iproute2 nftables  # multi-host tests: network namespaces, veth, multicast blocked (tests/multihost)
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev clang-format  # clang-format: scripts/check-format.sh (CI)
   libboost-dev nlohmann-json3-dev chromium chromium-driver  # turf-viewer (Boost.Beast, JSON) and its browser test
 )
 

@@ -120,8 +120,8 @@ std::optional<Datagram> UdpSocket::Receive(size_t max_bytes, std::chrono::millis
   d.bytes.resize(max_bytes);
   socklen_t len = sizeof(d.from.addr);
   // MSG_TRUNC makes recvfrom return the datagram's real length.
-  const ssize_t n = recvfrom(fd_, d.bytes.data(), d.bytes.size(), MSG_TRUNC,
-                             reinterpret_cast<sockaddr*>(&d.from.addr), &len);
+  const ssize_t n =
+      recvfrom(fd_, d.bytes.data(), d.bytes.size(), MSG_TRUNC, reinterpret_cast<sockaddr*>(&d.from.addr), &len);
   if (n < 0) return std::nullopt;
   d.size = static_cast<size_t>(n);
   d.truncated = d.size > max_bytes;

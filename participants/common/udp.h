@@ -27,7 +27,7 @@ struct Datagram {
   std::vector<uint8_t> bytes;
   UdpEndpoint from;
   bool truncated = false;  // larger than the receive limit; bytes hold the start
-  size_t size = 0;  // the datagram's real size
+  size_t size = 0;         // the datagram's real size
 };
 
 class UdpSocket {

@@ -6,8 +6,8 @@
 
 #include <atomic>
 #include <chrono>
-#include <map>
 #include <condition_variable>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <random>
@@ -18,8 +18,8 @@
 #include "bridges/ssl_vision/tracked.h"
 #include "dds/participant.h"
 #include "participants/common/process.h"
-#include "participants/common/wakeup.h"
 #include "participants/common/udp.h"
+#include "participants/common/wakeup.h"
 
 namespace turf {
 

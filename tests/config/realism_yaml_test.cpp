@@ -65,14 +65,12 @@ TEST(RealismYaml, BadInputIsRefusedWithTheKey) {
     const char* text;
     const char* error;
   };
-  for (const Case& c : {Case{"camera: {robot_position_stdev: 0.1}", "camera.robot_position_stdev"},
-                        Case{"camera: {link: {jitter_kind: pink}}", "jitter_kind"},
-                        Case{"command: {loss: 1.5}", "probability"},
-                        Case{"command: {latency: .nan}", "command.latency"},
-                        Case{"camera: {robot_vanish: -0.1}", "vanish"},
-                        Case{"command: {burst: {p_bad_to_good: 0}}", "bursts must end"},
-                        Case{"camera: [1, 2", "malformed"},
-                        Case{"- 1\n- 2", "expected a map"}}) {
+  for (const Case& c :
+       {Case{"camera: {robot_position_stdev: 0.1}", "camera.robot_position_stdev"},
+        Case{"camera: {link: {jitter_kind: pink}}", "jitter_kind"}, Case{"command: {loss: 1.5}", "probability"},
+        Case{"command: {latency: .nan}", "command.latency"}, Case{"camera: {robot_vanish: -0.1}", "vanish"},
+        Case{"command: {burst: {p_bad_to_good: 0}}", "bursts must end"}, Case{"camera: [1, 2", "malformed"},
+        Case{"- 1\n- 2", "expected a map"}}) {
     const RealismLoadResult r = ParseRealismYaml(c.text);
     EXPECT_FALSE(r.realism.has_value()) << c.text;
     EXPECT_TRUE(Mentions(r.errors, c.error)) << c.text << " -> " << (r.errors.empty() ? "no error" : r.errors[0]);

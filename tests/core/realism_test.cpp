@@ -45,9 +45,9 @@ TEST(LinkModel, DelayMeanAndStddevMatchEachJitterKind) {
     double jitter, expected_std, expected_extra_mean;
   };
   // Uniform on [-w, w] has stddev w / sqrt(3); exponential with mean m has stddev m.
-  for (const Case& c : {Case{JitterKind::kGaussian, 0.003, 0.003, 0.0},
-                        Case{JitterKind::kUniform, 0.004, 0.004 / std::sqrt(3.0), 0.0},
-                        Case{JitterKind::kExponential, 0.002, 0.002, 0.002}}) {
+  for (const Case& c :
+       {Case{JitterKind::kGaussian, 0.003, 0.003, 0.0}, Case{JitterKind::kUniform, 0.004, 0.004 / std::sqrt(3.0), 0.0},
+        Case{JitterKind::kExponential, 0.002, 0.002, 0.002}}) {
     LinkParams p;
     p.latency = 0.020;
     p.jitter = c.jitter;

@@ -58,8 +58,7 @@ TEST(RealismDds, CameraLossAndNoiseFollowTheSettings) {
   // When the change took effect (the client's newest state may lag behind a
   // free-running sim on a busy machine).
   const int64_t t0 = reply->sim_time_ns();
-  ASSERT_TRUE(client.WaitState([&](const idl::WorldState& s) { return s.sim_time_ns() > t0 + 60'000'000'000; },
-                               60s));
+  ASSERT_TRUE(client.WaitState([&](const idl::WorldState& s) { return s.sim_time_ns() > t0 + 60'000'000'000; }, 60s));
   client.Poll();
   // The robot stands still at the origin, seen by all four cameras.
   std::vector<double> xs;

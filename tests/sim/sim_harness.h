@@ -2,7 +2,6 @@
 // and a client participant, each test on its own domain and topic prefix.
 #pragma once
 
-#include "tests/test_domain.h"
 #include <gtest/gtest.h>
 #include <turf/idl/ClockPubSubTypes.h>
 #include <turf/idl/SensorStatsPubSubTypes.h>
@@ -11,6 +10,7 @@
 #include <turf/idl/SslVisionPubSubTypes.h>
 #include <turf/idl/WorldStatePubSubTypes.h>
 #include <unistd.h>
+#include "tests/test_domain.h"
 
 #include <atomic>
 #include <chrono>
@@ -28,7 +28,6 @@ namespace turf::test {
 
 using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
-
 
 inline dds::ParticipantOptions UniqueDds(const char* name) {
   static int g_test_counter = 0;

@@ -1,10 +1,10 @@
 // turf-grsim-bridge in-process: turf-sim and the bridge on threads of their
 // own, each test on its own DDS domain and prefix. The test speaks real grSim
 // UDP on 127.0.0.1 and checks the world over DDS. Waits are bounded.
-#include "tests/test_domain.h"
 #include <gtest/gtest.h>
 #include <turf/idl/WorldStatePubSubTypes.h>
 #include <unistd.h>
+#include "tests/test_domain.h"
 
 #include <atomic>
 #include <chrono>

@@ -1,11 +1,11 @@
 // turf-simproto-bridge in process: turf-sim's node and the bridge on threads,
 // a team over real UDP on 127.0.0.1, and a DDS observer of the world. Each test
 // has its own DDS domain, topic prefix and free ports. Waits are bounded.
-#include "tests/test_domain.h"
 #include <gtest/gtest.h>
 #include <turf/idl/ClockPubSubTypes.h>
 #include <turf/idl/WorldStatePubSubTypes.h>
 #include <unistd.h>
+#include "tests/test_domain.h"
 
 #include <atomic>
 #include <chrono>

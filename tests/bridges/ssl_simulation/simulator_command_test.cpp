@@ -264,9 +264,9 @@ TEST_F(SimulatorCommandCodec, ErForceRealismKnobsBecomeARealismRequest) {
   ASSERT_EQ(d.requests.size(), 1u);
   EXPECT_EQ(d.requests[0].op(), idl::OP_SET_REALISM);
   const std::string& yaml = d.requests[0].realism();
-  for (const char* part : {"robot_position_stddev: 0.002", "ball_position_stddev: 0.003", "ball_vanish: 0.05",
-                           "processing_delay: 0.01", "link: {latency: 0.035}", "ball_occlusion: true",
-                           "command: {loss: 0.1"})
+  for (const char* part :
+       {"robot_position_stddev: 0.002", "ball_position_stddev: 0.003", "ball_vanish: 0.05", "processing_delay: 0.01",
+        "link: {latency: 0.035}", "ball_occlusion: true", "command: {loss: 0.1"})
     EXPECT_NE(yaml.find(part), std::string::npos) << part << " in\n" << yaml;
   ASSERT_EQ(d.errors.size(), 1u);
   EXPECT_EQ(d.errors[0].code, kUnsupportedRealism);

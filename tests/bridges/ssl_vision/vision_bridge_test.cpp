@@ -1,11 +1,11 @@
 // turf-vision-bridge in-process: turf-sim's node and the bridge on threads of
 // their own, each test on its own DDS domain and topic prefix, sending unicast
 // to a UDP port the test picked free. Assertions are on the decoded packets.
-#include "tests/test_domain.h"
 #include <gtest/gtest.h>
 #include <turf/idl/SimControlPubSubTypes.h>
 #include <turf/idl/SslVisionPubSubTypes.h>
 #include <unistd.h>
+#include "tests/test_domain.h"
 
 #include <atomic>
 #include <chrono>
