@@ -81,17 +81,26 @@ class Client {
         stats_(participant_.MakeReader<idl::SensorStatsPubSubType>(dds::Topic::kStats)),
         all_frames_(participant_.MakeReader<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)) {}
 
-  // Polls until `done` holds for the newest world state, or the timeout.
-  bool WaitState(const std::function<bool(const idl::WorldState&)>& done, std::chrono::milliseconds timeout = 5s) {
+  // Polls until `done` holds, or the timeout.
+  bool WaitFor(const std::function<bool()>& done, std::chrono::milliseconds timeout = 5s) {
     const auto end = Clock::now() + timeout;
     while (Clock::now() < end) {
       Poll();
-      if (has_state_ && done(state_now_)) return true;
+      if (done()) return true;
       std::this_thread::sleep_for(2ms);
     }
     return false;
   }
-  bool WaitMatched(std::chrono::milliseconds timeout = 5s) {
+  // Polls until `done` holds for the newest world state, or the timeout.
+  bool WaitState(const std::function<bool(const idl::WorldState&)>& done, std::chrono::milliseconds timeout = 5s) {
+    return WaitFor([&] { return has_state_ && done(state_now_); }, timeout);
+  }
+  // Polls until `done` holds for the newest clock sample, or the timeout.
+  bool WaitClock(const std::function<bool(const idl::Clock&)>& done, std::chrono::milliseconds timeout = 5s) {
+    return WaitFor([&] { return has_clock_ && done(clock_now_); }, timeout);
+  }
+  // Discovery is slower on a busy machine: a generous (but bounded) wait.
+  bool WaitMatched(std::chrono::milliseconds timeout = 10s) {
     const auto end = Clock::now() + timeout;
     while (Clock::now() < end) {
       if (blue_->Matched() > 0 && yellow_->Matched() > 0 && control_->Matched() > 0 && state_->Matched() > 0 &&
@@ -125,7 +134,10 @@ class Client {
       has_state_ = true;
     }
     std::vector<idl::Clock> clocks;
-    if (clock_->Take(&clocks)) clock_now_ = clocks.back();
+    if (clock_->Take(&clocks)) {
+      clock_now_ = clocks.back();
+      has_clock_ = true;
+    }
     std::vector<idl::CameraFrame> frames;
     if (camera_->Take(&frames))
       for (auto& f : frames) cameras_[f.camera_id()] = f;
@@ -166,6 +178,7 @@ class Client {
   idl::WorldState state_now_;
   bool has_state_ = false;
   idl::Clock clock_now_;
+  bool has_clock_ = false;
   std::map<uint32_t, idl::CameraFrame> cameras_;
   std::optional<idl::SslField> field_now_;
   uint64_t request_id_ = 0;
@@ -188,6 +201,14 @@ inline const idl::RobotState* FindRobot(const idl::WorldState& s, idl::Team team
   for (const auto& r : s.robots())
     if (r.team() == team && r.id() == id) return &r;
   return nullptr;
+}
+
+// A reply that came and says OK; otherwise a failure that says why
+// (ASSERT_TRUE(Ok(client.Control(...))) never dereferences a missing reply).
+inline ::testing::AssertionResult Ok(const std::optional<idl::SimControlReply>& reply) {
+  if (!reply) return ::testing::AssertionFailure() << "no reply from turf-sim";
+  if (reply->result() != idl::RESULT_OK) return ::testing::AssertionFailure() << "refused: " << reply->reason();
+  return ::testing::AssertionSuccess();
 }
 
 inline idl::SimControl Op(idl::ControlOp op) {
