@@ -107,6 +107,7 @@ void ReadKicker(MapReader m, KickerParams* k) {
   m.Number("max_chip_speed", &k->max_chip_speed);
   m.Degrees("default_chip_angle_deg", &k->default_chip_angle);
   m.Number("reach", &k->reach);
+  m.Number("arm_time", &k->arm_time);
   m.Finish();
 }
 

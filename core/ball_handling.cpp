@@ -10,13 +10,19 @@ Vec3 BallInRobotFrame(const RobotKinematics& robot, const Vec3& ball) {
   return {c * dx + s * dy, -s * dx + c * dy, ball.z};
 }
 
+namespace {
+// A ball placed exactly at the reach counts as within it, whatever the
+// rounding of its position: 1 micrometre, far below any contact effect.
+constexpr double kReachRounding = 1e-6;  // m
+}  // namespace
+
 bool BallAtFront(const RobotKinematics& robot, const Vec3& ball, const RobotParams& params, double ball_radius,
                  double reach) {
   const Vec3 b = BallInRobotFrame(robot, ball);
   const double half_face =
       std::sqrt(params.radius * params.radius - params.center_to_dribbler * params.center_to_dribbler);
   const double gap = b.x - params.center_to_dribbler - ball_radius;  // ball surface to face
-  return gap > -ball_radius && gap <= reach && std::abs(b.y) <= half_face && b.z <= 2.0 * ball_radius;
+  return gap > -ball_radius && gap <= reach + kReachRounding && std::abs(b.y) <= half_face && b.z <= 2.0 * ball_radius;
 }
 
 Vec3 KickVelocity(const RobotKinematics& robot, KickKind kind, double speed, double chip_angle,

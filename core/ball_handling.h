@@ -2,6 +2,8 @@
 // it, both only at the flat front face. Pure functions of poses and velocities.
 #pragma once
 
+#include <cstdint>
+
 #include "core/scene.h"
 #include "core/types.h"
 
@@ -20,6 +22,15 @@ struct RobotKinematics {
   double vx = 0.0;
   double vy = 0.0;
   double omega = 0.0;
+};
+
+// A kick the robot's kicker is armed with: it fires when the ball is within
+// reach at a step at or before `until_ns` (simulation time). kNone: disarmed.
+struct ArmedKick {
+  KickKind kind = KickKind::kNone;
+  double speed = 0.0;
+  double chip_angle = 0.0;
+  int64_t until_ns = 0;
 };
 
 // The ball's centre in the robot frame (x forward, y left, z up).

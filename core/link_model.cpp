@@ -68,4 +68,12 @@ std::optional<int64_t> Link::Transmit(int64_t send_ns) {
   return arrival;
 }
 
+std::optional<int64_t> Link::TransmitAcknowledged(int64_t send_ns, int64_t retry_ns, int max_tries) {
+  for (int attempt = 0; attempt < max_tries; ++attempt) {
+    const std::optional<int64_t> arrival = Transmit(send_ns + attempt * retry_ns);
+    if (arrival) return arrival;
+  }
+  return std::nullopt;
+}
+
 }  // namespace turf

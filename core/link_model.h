@@ -48,6 +48,10 @@ class Link {
   const LinkParams& params() const { return params_; }
   // The fate of a sample sent at `send_ns`: nullopt if lost, else its arrival.
   std::optional<int64_t> Transmit(int64_t send_ns);
+  // An acknowledged sample (a robot radio's kick request): while lost it is
+  // sent again every `retry_ns`, at most `max_tries` times in all; each try is
+  // a sample of the link. nullopt only if every try was lost.
+  std::optional<int64_t> TransmitAcknowledged(int64_t send_ns, int64_t retry_ns, int max_tries);
   const LinkCounters& counters() const { return counters_; }
   // Restarts the stream from `seed` (a world reset).
   void Reset(uint64_t seed);

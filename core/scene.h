@@ -76,6 +76,10 @@ struct KickerParams {
   double max_chip_speed = 5.0;                     // m/s along the launch direction
   double default_chip_angle = 0.7853981633974483;  // rad (45 deg)
   double reach = 0.01;                             // ball may be this far off the face and still be kicked
+  // A kick command arms the kicker; it fires at the first step the ball is
+  // within reach, or is dropped after this much simulation time. Commands
+  // without a kick do not disarm it, so one kick command is enough.
+  double arm_time = 0.1;  // s
 };
 
 struct DribblerParams {

@@ -25,7 +25,7 @@ struct World::RobotSlot {
   RobotCommand command;
   int64_t command_time_ns = 0;
   bool has_command = false;
-  bool kick_armed = false;
+  ArmedKick kick;  // what the kicker does when the ball is within reach
   bool ball_contact = false;
   uint32_t kick_count = 0;
   KickKind last_kick = KickKind::kNone;
@@ -131,7 +131,11 @@ InputError World::SetCommand(const RobotCommand& c) {
   slot.command = c;
   slot.command_time_ns = time_ns();
   slot.has_command = true;
-  slot.kick_armed = c.kick != KickKind::kNone && c.kick_speed > 0.0;
+  // A kick arms the kicker (replacing an armed one); a command without a kick
+  // leaves it armed: team software sends one kick and then plain commands.
+  if (c.kick != KickKind::kNone && c.kick_speed > 0.0) {
+    slot.kick = {c.kick, c.kick_speed, c.chip_angle, time_ns() + std::llround(scene_.robot.kicker.arm_time * 1e9)};
+  }
   return InputError::kOk;
 }
 
@@ -163,6 +167,7 @@ InputError World::TeleportRobot(const RobotTeleport& t) {
   if (error != InputError::kOk) return error;
   RobotSlot& slot = robots_[index];
   slot.on_field = t.on_field;
+  if (!t.on_field) slot.kick = {};
   if (t.on_field) {
     PlaceRobot(slot, t.x, t.y, t.orientation, t.velocity);
   } else {
@@ -211,7 +216,7 @@ void World::StageWatchdog() {
       slot.command.team = slot.team;
       slot.command.id = slot.id;
       slot.has_command = false;
-      slot.kick_armed = false;
+      slot.kick = {};
     }
   }
 }
@@ -245,16 +250,17 @@ void World::StageBallHandling() {
     const RobotKinematics k = Kinematics(slot);
     const BallState ball = Ball();
     const RobotCommand& c = slot.command;
-    if (slot.kick_armed && BallAtFront(k, ball.position, params, r, params.kicker.reach)) {
-      const Vec3 v = KickVelocity(k, c.kick, c.kick_speed, c.chip_angle, params.kicker);
+    if (slot.kick.kind != KickKind::kNone && time_ns() > slot.kick.until_ns) slot.kick = {};  // not fired in time
+    if (slot.kick.kind != KickKind::kNone && BallAtFront(k, ball.position, params, r, params.kicker.reach)) {
+      const Vec3 v = KickVelocity(k, slot.kick.kind, slot.kick.speed, slot.kick.chip_angle, params.kicker);
       double* qv = data_->qvel + ball_qvel_;
       qv[0] = v.x;
       qv[1] = v.y;
       qv[2] = v.z;
       qv[3] = qv[4] = qv[5] = 0.0;  // a kicked ball starts sliding
-      slot.kick_armed = false;
       ++slot.kick_count;
-      slot.last_kick = c.kick;
+      slot.last_kick = slot.kick.kind;
+      slot.kick = {};
       continue;
     }
     if (c.dribbler_speed > 0.0 && BallAtFront(k, ball.position, params, r, params.dribbler.capture_distance)) {

@@ -33,6 +33,12 @@ struct PendingCommand {
 
 constexpr int64_t kStatsWindowNs = 1'000'000'000;
 
+// A robot radio acknowledges kick requests and sends a lost one again at once,
+// so link loss delays a kick by a few retries instead of losing it: a team's
+// single kick command always reaches the robot (see the kicker's arm time).
+constexpr int64_t kKickRetryNs = 1'000'000;
+constexpr int kKickTries = 50;
+
 int64_t UnixNowNs() {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
       .count();
@@ -147,7 +153,10 @@ class SimNode::Impl final : private ControlLoop::Node {
     // Valid: now it travels the team's modelled radio link (which may lose it).
     const int t = static_cast<int>(c.team);
     command_stats_[t].Sent();
-    const std::optional<int64_t> due = command_links_[t].Transmit(world_.time_ns());
+    const bool kick = c.kick != KickKind::kNone && c.kick_speed > 0.0;
+    const std::optional<int64_t> due =
+        kick ? command_links_[t].TransmitAcknowledged(world_.time_ns(), kKickRetryNs, kKickTries)
+             : command_links_[t].Transmit(world_.time_ns());
     if (!due) {
       command_stats_[t].Lost();
       return true;
