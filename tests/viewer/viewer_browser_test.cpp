@@ -52,7 +52,9 @@ class LeggedClient {
       : participant_((o.name = "client", o)),
         links_(participant_.MakeReader<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks)),
         world_(participant_.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
-        clock_(participant_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock)) {}
+        clock_(participant_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock)),
+        control_(participant_.MakeWriter<idl::SimControlPubSubType>(dds::Topic::kControl)),
+        reply_(participant_.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)) {}
   void Poll() {
     std::vector<idl::LinkState> l;
     if (links_->Take(&l))
@@ -67,6 +69,26 @@ class LeggedClient {
       Poll();
       return done();
     });
+  }
+  // Sends a control request and waits for its reply.
+  std::optional<idl::SimControlReply> Control(idl::ControlOp op) {
+    idl::SimControl req;
+    req.op(op);
+    req.client("test");
+    req.request_id(++request_id_);
+    if (!WaitFor([&] { return control_->Matched() > 0 && reply_->Matched() > 0; }, 10000)) return std::nullopt;
+    control_->Write(req);
+    std::optional<idl::SimControlReply> found;
+    WaitFor(
+        [&] {
+          std::vector<idl::SimControlReply> replies;
+          reply_->Take(&replies);
+          for (const auto& r : replies)
+            if (r.request_id() == request_id_) found = r;
+          return found.has_value();
+        },
+        5000);
+    return found;
   }
   // The named body's world position, or nullopt.
   std::optional<idl::Vec3> Body(const std::string& robot, const std::string& body) const {
@@ -85,6 +107,9 @@ class LeggedClient {
   std::unique_ptr<dds::Reader<idl::LinkStatePubSubType>> links_;
   std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> world_;
   std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_;
+  std::unique_ptr<dds::Writer<idl::SimControlPubSubType>> control_;
+  std::unique_ptr<dds::Reader<idl::SimControlReplyPubSubType>> reply_;
+  uint64_t request_id_ = 0;
 };
 
 class ViewerBrowser : public ::testing::Test {
@@ -149,6 +174,24 @@ class ViewerBrowser : public ::testing::Test {
     const json p = driver_->Execute("return window.turfViewer.fieldToClient(arguments[0], arguments[1]);", {x, y})
                        .value_or(json{{"x", 0}, {"y", 0}});
     return {static_cast<int>(std::lround(p["x"].get<double>())), static_cast<int>(std::lround(p["y"].get<double>()))};
+  }
+  // The page's newest state: its frame and simulation time (-1: none yet).
+  int64_t PageFrame() {
+    const auto f = driver_->Execute("const s = window.turfViewer.state(); return s ? s.frame : -1;");
+    return f && f->is_number() ? f->get<int64_t>() : -1;
+  }
+  double PageTime() {
+    const auto t = driver_->Execute("const s = window.turfViewer.state(); return s ? s.t : -1;");
+    return t && t->is_number() ? t->get<double>() : -1.0;
+  }
+  bool PagePaused() {
+    const auto p = driver_->Execute("const s = window.turfViewer.state(); return !!(s && s.clock && s.clock.paused);");
+    return p && *p == true;
+  }
+  // How many messages of `type` the page has received.
+  int PageReceived(const std::string& type) {
+    const auto n = driver_->Execute("return window.turfViewer.received()[arguments[0]] || 0;", {type});
+    return n && n->is_number() ? n->get<int>() : -1;
   }
   std::string SimTimeText() {
     const auto element = driver_->Find("#simtime");
@@ -232,16 +275,26 @@ TEST_F(ViewerBrowser, DrawsTheWorldDragsTheBallPausesAndSavesScreenshots) {
   const auto pause = driver_->Find("#pause");
   ASSERT_TRUE(pause);
   ASSERT_TRUE(driver_->Click(*pause)) << driver_->error();
-  EXPECT_TRUE(Within(3000, [&] {
-    client_->Poll();
-    return client_->clock().paused();
-  }));
-  std::this_thread::sleep_for(200ms);  // the last state on its way
-  const std::string paused_at = SimTimeText();
+  // turf-sim's clock says paused (published at the pause's frame), and so does the page.
+  ASSERT_TRUE(client_->WaitClock([](const idl::Clock& c) { return c.paused(); }));
+  const auto paused_frame = static_cast<int64_t>(client_->clock().frame());
   const int64_t sim_paused_at = client_->clock().sim_time_ns();
-  std::this_thread::sleep_for(700ms);
-  client_->Poll();
+  ASSERT_TRUE(Within(3000, [&] { return PagePaused() && PageFrame() == paused_frame; }))
+      << "page at frame " << PageFrame() << ", turf-sim paused at " << paused_frame;
+  const std::string paused_at = SimTimeText();
+  // Time stands still: later requests, each a turn of turf-sim's loop that
+  // would step if it could, are answered at the same frame; the states turf-sim
+  // publishes after them reach the page, still of that frame.
+  const int states_before = PageReceived("state");
+  for (int i = 0; i < 5; ++i) {
+    const auto probe = client_->Control(Op(idl::OP_PAUSE));
+    ASSERT_TRUE(Ok(probe));
+    EXPECT_EQ(static_cast<int64_t>(probe->frame()), paused_frame);
+  }
+  ASSERT_TRUE(Within(3000, [&] { return PageReceived("state") > states_before; }));
+  EXPECT_EQ(PageFrame(), paused_frame);
   EXPECT_EQ(SimTimeText(), paused_at);
+  client_->Poll();
   EXPECT_EQ(client_->clock().sim_time_ns(), sim_paused_at);
   const auto badge = driver_->Execute("return !document.getElementById('paused-badge').classList.contains('hidden');");
   EXPECT_TRUE(badge && *badge == true);
@@ -250,7 +303,11 @@ TEST_F(ViewerBrowser, DrawsTheWorldDragsTheBallPausesAndSavesScreenshots) {
   EXPECT_TRUE(SavePng(driver_->Screenshot(), "viewer_truth.png")) << driver_->error();
   const auto both = driver_->Find("button[data-view=both]");
   ASSERT_TRUE(both && driver_->Click(*both));
-  std::this_thread::sleep_for(100ms);
+  EXPECT_TRUE(Within(2000, [&] {
+    const auto active =
+        driver_->Execute("return document.querySelector('button[data-view=both]').classList.contains('active');");
+    return active && *active == true;
+  }));
   EXPECT_TRUE(SavePng(driver_->Screenshot(), "viewer_both.png")) << driver_->error();
 
   // 5. The sensor model at work: harsh realism, camera view, running again.
@@ -266,10 +323,11 @@ TEST_F(ViewerBrowser, DrawsTheWorldDragsTheBallPausesAndSavesScreenshots) {
   })) << "no camera detections on the page";
   const auto message = driver_->Find("#message");
   EXPECT_TRUE(Within(2000, [&] { return message && driver_->Text(*message).value_or("").rfind("resume", 0) == 0; }));
-  std::this_thread::sleep_for(500ms);
+  // Half a second of simulation with detections on the page before the screenshot.
+  const double detections_from = PageTime();
+  EXPECT_TRUE(Within(5000, [&] { return PageTime() > detections_from + 0.5; }));
   EXPECT_TRUE(SavePng(driver_->Screenshot(), "viewer_cameras.png")) << driver_->error();
-  client_->Poll();
-  EXPECT_FALSE(client_->clock().paused());
+  EXPECT_TRUE(client_->WaitClock([](const idl::Clock& c) { return !c.paused(); }));
 
   // 6. Two pages: each sees the answers to its own requests only, and both
   // see the match. Page A steps the running simulation (turf-sim refuses);
@@ -302,10 +360,14 @@ TEST_F(ViewerBrowser, DrawsTheWorldDragsTheBallPausesAndSavesScreenshots) {
   EXPECT_TRUE(Within(3000, [&] { return message_text().rfind("pause: ok", 0) == 0; })) << message_text();
   EXPECT_EQ(replies(), 1);  // its pause's, not A's step's
   EXPECT_TRUE(Within(3000, [&] { return script_true("return window.turfViewer.state().clock.paused;"); }));
-  std::this_thread::sleep_for(200ms);  // were B's reply sent to A too, it would be there by now
+  // Page A steps again, now accepted. Its reply comes after B's pause's (turf-sim
+  // wrote that first), so A has had both of its replies and, were B's sent to
+  // it too, that one as well.
   ASSERT_TRUE(driver_->SwitchTo(*page_a));
-  EXPECT_EQ(message_text().rfind("turf-sim refused step", 0), 0u) << message_text();
-  EXPECT_EQ(replies(), a_replies + 1);  // its step's, not B's pause's
+  const auto a_step = driver_->Find("#step");
+  ASSERT_TRUE(a_step && driver_->Click(*a_step)) << driver_->error();
+  EXPECT_TRUE(Within(3000, [&] { return message_text().rfind("step: ok", 0) == 0; })) << message_text();
+  EXPECT_EQ(replies(), a_replies + 2);  // its two steps', not B's pause's
   EXPECT_TRUE(Within(3000, [&] { return script_true("return window.turfViewer.state().clock.paused;"); }));
 
   EXPECT_EQ(viewer_->Stop(), 0) << viewer_->Log();  // SIGTERM: a clean exit
@@ -320,6 +382,10 @@ namespace {
 
 // Light grey robot shapes (legged.js shades them 150..245 by height) on green grass.
 bool IsRobotGrey(const json& c) { return c.is_array() && c.size() >= 3 && c[0] > 140 && c[1] > 140 && c[2] > 140; }
+std::string Where(const std::optional<idl::Vec3>& p) {
+  if (!p) return "(nowhere)";
+  return "(" + std::to_string(p->x()) + ", " + std::to_string(p->y()) + ", " + std::to_string(p->z()) + ")";
+}
 bool IsGrass(const json& c) {
   if (!c.is_array() || c.size() < 3) return false;
   const int r = c[0], g = c[1], b = c[2];
@@ -401,18 +467,32 @@ TEST_F(ViewerBrowser, LeggedSceneDrawsRobotsWhereTheirLinksAreAndDragsBallAndRob
         return t && std::hypot(t->x() + 3.0, t->y() - 3.0) < 0.1;
       },
       5000))
-      << "nao_2's torso at (" << truth.Body("nao_2", "torso")->x() << ", " << truth.Body("nao_2", "torso")->y() << ")";
-  std::this_thread::sleep_for(500ms);  // let it settle; a fallen Nao's torso is below 0.15 m
-  truth.Poll();
-  EXPECT_GT(truth.Body("nao_2", "torso")->z(), 0.3) << "nao_2 fell after the teleport";
+      << "nao_2's torso at " << Where(truth.Body("nao_2", "torso"));
+  // Half a second of simulation to settle; a fallen Nao's torso is below 0.15 m.
+  const int64_t moved_at = truth.links["nao_2"].sim_time_ns();
+  ASSERT_TRUE(truth.WaitFor([&] { return truth.links["nao_2"].sim_time_ns() > moved_at + 500'000'000; }, 5000));
+  const std::optional<idl::Vec3> settled = truth.Body("nao_2", "torso");
+  ASSERT_TRUE(settled);
+  EXPECT_GT(settled->z(), 0.3) << "nao_2 fell after the teleport";
 
   // 4. Pause stops time for legged scenes too.
   const auto pause = driver_->Find("#pause");
   ASSERT_TRUE(pause && driver_->Click(*pause)) << driver_->error();
-  EXPECT_TRUE(truth.WaitFor([&] { return truth.clock && truth.clock->paused(); }, 3000));
-  std::this_thread::sleep_for(300ms);
+  ASSERT_TRUE(truth.WaitFor([&] { return truth.clock && truth.clock->paused(); }, 3000));
+  const auto paused_frame = static_cast<int64_t>(truth.clock->frame());
+  ASSERT_TRUE(Within(3000, [&] { return PagePaused() && PageFrame() == paused_frame; }))
+      << "page at frame " << PageFrame() << ", turf-sim paused at " << paused_frame;
   const std::string paused_at = SimTimeText();
-  std::this_thread::sleep_for(500ms);
+  // Later requests are answered at the same frame; the states after them reach
+  // the page, still of that frame.
+  const int states_before = PageReceived("state");
+  for (int i = 0; i < 5; ++i) {
+    const auto probe = truth.Control(idl::OP_PAUSE);
+    ASSERT_TRUE(probe);
+    EXPECT_EQ(static_cast<int64_t>(probe->frame()), paused_frame);
+  }
+  ASSERT_TRUE(Within(3000, [&] { return PageReceived("state") > states_before; }));
+  EXPECT_EQ(PageFrame(), paused_frame);
   EXPECT_EQ(SimTimeText(), paused_at);
   const auto badge = driver_->Execute("return !document.getElementById('paused-badge').classList.contains('hidden');");
   EXPECT_TRUE(badge && *badge == true);
