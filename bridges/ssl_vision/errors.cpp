@@ -22,6 +22,10 @@ const char* VisionErrorName(VisionError error) {
       return "time_not_positive";
     case VisionError::kTimeOrder:
       return "time_order";
+    case VisionError::kNoEpoch:
+      return "no_epoch";
+    case VisionError::kBadEpoch:
+      return "bad_epoch";
   }
   return "unknown_error";
 }

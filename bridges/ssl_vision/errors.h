@@ -17,6 +17,8 @@ enum class VisionError : uint8_t {
   kTooMany,          // more balls, robots or cameras than one datagram should carry
   kTimeNotPositive,  // a wire time would be zero or negative
   kTimeOrder,        // sent before it was captured
+  kNoEpoch,          // run clock: no run epoch from turf-sim yet (or not yet the one after a reset)
+  kBadEpoch,         // run clock: a run epoch that is not a plausible Unix time
 };
 
 // Stable snake_case name, for logs and per-kind counters ("not_finite", ...).

@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <thread>
 
@@ -12,6 +13,11 @@ namespace {
 
 constexpr double kMaxSpeed = 1000.0;  // multiples of real time a client may ask for
 constexpr uint32_t kMaxStepRequest = 1000000;
+
+int64_t UnixNowNs() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
 
 }  // namespace
 
@@ -29,6 +35,8 @@ ControlLoop::ControlLoop(dds::Participant& participant, const SimNodeOptions& op
       rejects_("input") {}
 
 void ControlLoop::Run(const std::function<bool()>& stop) {
+  // The run's epoch: the wall clock once, here; sim time then counts on from it.
+  run_epoch_unix_ns_.store(UnixNowNs() - node_.TimeNs());
   PublishState();
   const int64_t end_ns = options_.duration > 0 ? std::llround(options_.duration * 1e9) : -1;
   pacer_.Anchor(Pacer::Clock::now(), node_.TimeNs());
@@ -171,7 +179,10 @@ std::string ControlLoop::SetTimeMode(idl::TimeMode mode, double speed) {
 }
 
 void ControlLoop::Reset() {
+  const int64_t reached_ns = node_.TimeNs();
   node_.ResetWorld();
+  // The new timeline starts where the old one ended: epoch + sim time stays monotonic.
+  run_epoch_unix_ns_.fetch_add(reached_ns - node_.TimeNs());
   pending_steps_ = 0;
   for (const PendingStep& p : pending_replies_) Reply(p.request, "cancelled by a reset");
   pending_replies_.clear();
@@ -205,8 +216,9 @@ void ControlLoop::AfterStep() {
   }
 }
 
+// The clock goes first: a reader that sees a state (a reset's, say) already has
+// the clock, and so the run epoch, it belongs to.
 void ControlLoop::PublishState() {
-  node_.PublishState();
   idl::Clock clock;
   clock.sim_time_ns(node_.TimeNs());
   clock.frame(node_.Frame());
@@ -215,8 +227,10 @@ void ControlLoop::PublishState() {
   clock.mode(static_cast<idl::TimeMode>(mode_));
   clock.speed(speed_);
   clock.real_time_factor(pacer_.real_time_factor());
+  clock.run_epoch_unix_ns(run_epoch_unix_ns_.load());
   clock_writer_->Write(clock);
   rtf_.store(pacer_.real_time_factor());
+  node_.PublishState();
 }
 
 }  // namespace turf

@@ -4,7 +4,11 @@
 // refused inputs.
 //
 // Publishes (topic names <prefix>/...):
-//   clock          Clock            with every state publication
+//   clock          Clock            with every state publication; carries the
+//                                   run epoch (Unix ns of sim time 0, read from
+//                                   the wall clock once when Run starts and
+//                                   advanced by the sim time reached at each
+//                                   reset), so epoch + sim time never goes back
 //   control_reply  SimControlReply  one per control request
 // Subscribes:
 //   control        SimControl       pause/resume, step, reset, time mode here;
@@ -89,6 +93,8 @@ class ControlLoop {
   TimeMode mode() const { return mode_; }
   double speed() const { return speed_; }
   double real_time_factor() const { return pacer_.real_time_factor(); }
+  // Unix ns of sim time 0 of this run (0 until Run starts).
+  int64_t run_epoch_unix_ns() const { return run_epoch_unix_ns_.load(); }
   uint64_t rejected() const { return rejected_.load(); }
 
   SimNodeStats Stats() const { return {frame_.load(), time_ns_.load(), rejected_.load(), rtf_.load()}; }
@@ -135,6 +141,8 @@ class ControlLoop {
   std::atomic<uint64_t> frame_{0};
   std::atomic<int64_t> time_ns_{0};
   std::atomic<double> rtf_{0.0};
+  // Wall-clock context for the clock topic only: never read by the node or the core.
+  std::atomic<int64_t> run_epoch_unix_ns_{0};
 };
 
 }  // namespace turf

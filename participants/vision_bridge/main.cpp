@@ -13,7 +13,7 @@
 int main(int argc, char** argv) {
   CLI::App app{"turf-vision-bridge: turf's SSL cameras (DDS) out as SSL-Vision UDP packets (SSL_WrapperPacket)"};
   turf::VisionBridgeOptions options;
-  std::string clock = "unix";
+  std::string clock = "run";
   std::string log_level = "info";
   app.add_option("-d,--domain", options.domain, "DDS domain id of turf-sim")
       ->capture_default_str()
@@ -34,9 +34,12 @@ int main(int argc, char** argv) {
                  "send geometry every N capture rounds (also once as soon as the field is known; 0: only then)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--clock", clock, "time stamps: 'unix' (wall clock, like SSL-Vision) or 'sim' (simulation seconds)")
+  app.add_option("--clock", clock,
+                 "time stamps: 'run' (Unix time at which turf-sim's run started + simulation time: Unix-looking, "
+                 "exact at any speed, monotonic across resets), 'unix' (wall clock at sending) or 'sim' "
+                 "(simulation seconds)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"unix", "sim"}));
+      ->check(CLI::IsMember({"run", "unix", "sim"}));
   app.add_flag("--tracked", options.tracked, "also send TrackerWrapperPacket (ground truth) per world state");
   app.add_option("--tracked-address", options.tracked_address, "where tracked packets go")->capture_default_str();
   app.add_option("--tracked-port", options.tracked_port, "UDP port for tracked packets")->capture_default_str();

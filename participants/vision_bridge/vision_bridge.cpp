@@ -1,6 +1,7 @@
 #include "participants/vision_bridge/vision_bridge.h"
 
 #include <spdlog/spdlog.h>
+#include <turf/idl/ClockPubSubTypes.h>
 #include <turf/idl/SslVisionPubSubTypes.h>
 #include <turf/idl/WorldStatePubSubTypes.h>
 
@@ -63,7 +64,11 @@ class VisionBridge::Impl {
         field_reader_(
             participant_.MakeReader<idl::SslFieldPubSubType>(dds::Topic::kSslField, [this] { wakeup_.Notify(); })),
         rejects_("input"),
+        no_epoch_log_("frame (no run epoch from turf-sim's clock yet)"),
         send_errors_log_("datagram") {
+    if (options_.clock == vision::ClockMode::kRun) {
+      clock_reader_ = participant_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock, [this] { wakeup_.Notify(); });
+    }
     if (options_.tracked) {
       state_reader_ =
           participant_.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState, [this] { wakeup_.Notify(); });
@@ -78,7 +83,10 @@ class VisionBridge::Impl {
     while (!stop()) {
       wakeup_.WaitFor(std::chrono::milliseconds(50));
       HandleField();
+      // The clock before the frames: turf-sim writes a reset's epoch before its frames.
+      HandleClock();
       HandleCameras();
+      HandleClock();
       HandleStates();
       HandleOverflow();
       const auto now = std::chrono::steady_clock::now();
@@ -91,12 +99,12 @@ class VisionBridge::Impl {
   }
 
   VisionBridgeStats Stats() const {
-    return {detections_sent_.load(), geometry_sent_.load(), tracked_sent_.load(), rejected_.load(),
-            send_errors_.load()};
+    return {detections_sent_.load(), geometry_sent_.load(), tracked_sent_.load(),
+            rejected_.load(),        send_errors_.load(),   no_epoch_.load()};
   }
   uint64_t Rejected(const std::string& kind) const {
     std::lock_guard<std::mutex> lock(rejects_mutex_);
-    return rejects_.Count(kind);
+    return rejects_.Count(kind) + no_epoch_log_.Count(kind);
   }
 
  private:
@@ -120,6 +128,22 @@ class VisionBridge::Impl {
     std::lock_guard<std::mutex> lock(rejects_mutex_);
     rejects_.Reject(kind, detail);
     rejected_.store(rejects_.Total());
+  }
+
+  // A frame that cannot be stamped yet (run clock): not bad input, but not sent either.
+  void Drop(const std::string& kind, const std::string& detail) {
+    std::lock_guard<std::mutex> lock(rejects_mutex_);
+    no_epoch_log_.Reject(kind, detail);
+    no_epoch_.store(no_epoch_log_.Total());
+  }
+
+  // A frame the wire clock refused: counted as bad input, or as a drop while the epoch is unknown.
+  void RefuseTime(const char* what, vision::VisionError e, const std::string& detail) {
+    const std::string kind = fmt::format("{}.{}", what, vision::VisionErrorName(e));
+    if (e == vision::VisionError::kNoEpoch)
+      Drop(kind, detail);
+    else
+      Reject(kind, detail);
   }
 
   bool Send(const std::vector<uint8_t>& bytes, const UdpEndpoint& to, const char* what) {
@@ -160,6 +184,29 @@ class VisionBridge::Impl {
     if (Send(geometry_bytes_, target_, "geometry")) geometry_sent_.fetch_add(1);
   }
 
+  // --- clock (run clock only) ---
+
+  // Every sample's epoch goes to the wire clock, which keeps the distinct ones
+  // (one per reset). The epoch is another participant's word: garbage is
+  // refused, counted and logged, and the last good epoch stays.
+  void HandleClock() {
+    if (!clock_reader_ || !clock_reader_->Take(&clock_inbox_)) return;
+    for (const idl::Clock& c : clock_inbox_) {
+      const vision::VisionError e = wire_clock_.AddRunEpoch(c.run_epoch_unix_ns());
+      if (e != vision::VisionError::kOk) {
+        Reject(fmt::format("clock.{}", vision::VisionErrorName(e)),
+               fmt::format("run_epoch_unix_ns {} at sim time {} ns is not a Unix time in 2000..2200",
+                           c.run_epoch_unix_ns(), c.sim_time_ns()));
+        continue;
+      }
+      if (!logged_epoch_ || *logged_epoch_ != c.run_epoch_unix_ns()) {
+        spdlog::info("run epoch {:.3f} (Unix s) at sim time {:.3f} s", c.run_epoch_unix_ns() * 1e-9,
+                     c.sim_time_ns() * 1e-9);
+        logged_epoch_ = c.run_epoch_unix_ns();
+      }
+    }
+  }
+
   // --- ssl/camera ---
 
   void HandleCameras() {
@@ -196,12 +243,12 @@ class VisionBridge::Impl {
         }
       }
       vision::FrameTimes times{};
-      const vision::VisionError te =
-          wire_clock_.ForFrame(frame.capture_time_ns(), frame.sent_time_ns(), round->second, &times);
+      const vision::VisionError te = wire_clock_.ForCamera(frame.camera_id(), frame.capture_time_ns(),
+                                                           frame.sent_time_ns(), round->second, &times);
       if (te != vision::VisionError::kOk) {
-        Reject(fmt::format("camera.{}", vision::VisionErrorName(te)),
-               fmt::format("camera {} captured at {} ns, sent at {} ns", frame.camera_id(), frame.capture_time_ns(),
-                           frame.sent_time_ns()));
+        RefuseTime("camera", te,
+                   fmt::format("camera {} captured at {} ns, sent at {} ns", frame.camera_id(), frame.capture_time_ns(),
+                               frame.sent_time_ns()));
         continue;
       }
       const idl::CameraInfo* camera = field_ ? vision::FindCamera(*field_, frame.camera_id()) : nullptr;
@@ -215,9 +262,13 @@ class VisionBridge::Impl {
     if (!state_reader_ || !state_reader_->Take(&state_inbox_)) return;
     for (const idl::WorldState& s : state_inbox_) {
       double timestamp = 0.0;
-      vision::VisionError e = wire_clock_.ForState(s.sim_time_ns(), UnixNow(), &timestamp);
+      vision::VisionError e = wire_clock_.ForWorldState(s.sim_time_ns(), UnixNow(), &timestamp);
       if (e == vision::VisionError::kTimeNotPositive && options_.clock == vision::ClockMode::kSim) {
         continue;  // the state at sim time 0 (start, reset) has no valid sim-clock stamp: skip it quietly
+      }
+      if (e == vision::VisionError::kNoEpoch) {
+        Drop("world_state.no_epoch", fmt::format("frame {} at sim time {} ns", s.frame(), s.sim_time_ns()));
+        continue;
       }
       std::vector<uint8_t> bytes;
       if (e == vision::VisionError::kOk) e = vision::EncodeTracked(s, source_, timestamp, &bytes);
@@ -230,8 +281,9 @@ class VisionBridge::Impl {
   }
 
   void HandleOverflow() {
-    const uint64_t overflow =
-        camera_reader_->Overflowed() + field_reader_->Overflowed() + (state_reader_ ? state_reader_->Overflowed() : 0);
+    const uint64_t overflow = camera_reader_->Overflowed() + field_reader_->Overflowed() +
+                              (state_reader_ ? state_reader_->Overflowed() : 0) +
+                              (clock_reader_ ? clock_reader_->Overflowed() : 0);
     if (overflow > reported_overflow_) {
       Reject("queue_overflow",
              fmt::format("{} samples arrived faster than the loop could take them", overflow - reported_overflow_));
@@ -244,8 +296,9 @@ class VisionBridge::Impl {
   void ReportStartup() const {
     auto name = [this](dds::Topic t) { return participant_.TopicName(t); };
     spdlog::info("DDS domain {}, QoS profiles {}", options_.domain, participant_.options().qos_file);
-    spdlog::info("subscribing {} and {} (latched){}", name(dds::Topic::kSslCamera), name(dds::Topic::kSslField),
-                 options_.tracked ? fmt::format(", {}", name(dds::Topic::kWorldState)) : "");
+    spdlog::info("subscribing {} and {} (latched){}{}", name(dds::Topic::kSslCamera), name(dds::Topic::kSslField),
+                 options_.tracked ? fmt::format(", {}", name(dds::Topic::kWorldState)) : "",
+                 clock_reader_ ? fmt::format(", {} (run epoch)", name(dds::Topic::kClock)) : "");
     const std::string how = IsMulticast(target_)
                                 ? fmt::format("multicast, ttl {}, interface {}", options_.ttl,
                                               options_.interface_ip.empty() ? "default" : options_.interface_ip)
@@ -259,15 +312,26 @@ class VisionBridge::Impl {
       spdlog::info("sending TrackerWrapperPacket to {} ({}) per world state, uuid {}", tracked_target_.ToString(),
                    IsMulticast(tracked_target_) ? "multicast" : "unicast", source_.uuid);
     }
-    spdlog::info(
-        "times: {} clock{}", vision::ClockModeName(options_.clock),
-        options_.clock == vision::ClockMode::kUnix ? " (Unix seconds, like SSL-Vision)" : " (simulation seconds)");
+    const char* meaning = "";
+    switch (options_.clock) {
+      case vision::ClockMode::kRun:
+        meaning = "turf-sim's run epoch + simulation time, in Unix seconds";
+        break;
+      case vision::ClockMode::kUnix:
+        meaning = "wall clock at sending, Unix seconds";
+        break;
+      case vision::ClockMode::kSim:
+        meaning = "simulation seconds";
+        break;
+    }
+    spdlog::info("times: {} clock ({})", vision::ClockModeName(options_.clock), meaning);
     spdlog::info("waiting for turf-sim on domain {} prefix '{}'", options_.domain, options_.prefix);
   }
 
   void ReportStatus() const {
-    spdlog::info("sent detections={} geometry={} tracked={} refused={} send_errors={}", detections_sent_.load(),
-                 geometry_sent_.load(), tracked_sent_.load(), rejected_.load(), send_errors_.load());
+    spdlog::info("sent detections={} geometry={} tracked={} refused={} no_epoch={} send_errors={}",
+                 detections_sent_.load(), geometry_sent_.load(), tracked_sent_.load(), rejected_.load(),
+                 no_epoch_.load(), send_errors_.load());
   }
 
   VisionBridgeOptions options_;
@@ -280,6 +344,7 @@ class VisionBridge::Impl {
   std::unique_ptr<dds::Reader<idl::CameraFramePubSubType>> camera_reader_;
   std::unique_ptr<dds::Reader<idl::SslFieldPubSubType>> field_reader_;
   std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> state_reader_;
+  std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_reader_;  // run clock only
   vision::TrackedSource source_;
 
   std::optional<idl::SslField> field_;
@@ -293,12 +358,16 @@ class VisionBridge::Impl {
   std::vector<idl::CameraFrame> camera_inbox_;
   std::vector<idl::SslField> field_inbox_;
   std::vector<idl::WorldState> state_inbox_;
+  std::vector<idl::Clock> clock_inbox_;
+  std::optional<int64_t> logged_epoch_;
 
   mutable std::mutex rejects_mutex_;
   RejectLog rejects_;
+  RejectLog no_epoch_log_;
   RejectLog send_errors_log_;
   std::atomic<uint64_t> rejected_{0};
   std::atomic<uint64_t> send_errors_{0};
+  std::atomic<uint64_t> no_epoch_{0};
   std::atomic<uint64_t> detections_sent_{0};
   std::atomic<uint64_t> geometry_sent_{0};
   std::atomic<uint64_t> tracked_sent_{0};

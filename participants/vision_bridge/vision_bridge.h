@@ -4,6 +4,8 @@
 //   ssl/camera   CameraFrame  one per camera per capture (60 Hz of sim time)
 //   ssl/field    SslField     latched: field, ball model, cameras
 //   world_state  WorldState   only with `tracked` (100 Hz of sim time)
+//   clock        Clock        only with ClockMode::kRun (the default): the run
+//                             epoch, with every world state
 // Sends (UDP, multicast or unicast):
 //   address:port                  one SSL_WrapperPacket with the detection per
 //                                 camera frame; a geometry-only wrapper once the
@@ -11,11 +13,15 @@
 //                                 capture rounds (default 224.5.23.2:10020)
 //   tracked_address:tracked_port  one TrackerWrapperPacket per world state
 //                                 (default 224.5.23.2:10010, only with `tracked`)
-// Times are Unix seconds by default, simulation seconds with ClockMode::kSim
-// (bridges/ssl_vision/timestamps.h); the cameras of one capture round share
-// one wall-clock reading, so they carry the same t_capture. Every DDS sample is untrusted: one that
-// fails the codec's checks is dropped, counted per kind and logged at a
-// limited rate. Nothing is sent until turf-sim is there.
+// Times (bridges/ssl_vision/timestamps.h): by default turf-sim's run epoch
+// plus simulation time, in Unix seconds, so every bridge and a restarted one
+// stamp alike and the times follow the simulation at any speed; frames that
+// arrive before the epoch is known are dropped and counted (`no_epoch`).
+// ClockMode::kUnix gives the wall clock at sending (the cameras of one capture
+// round share one reading), kSim simulation seconds. Every DDS sample is
+// untrusted: one that fails the codec's checks (a garbage run epoch included)
+// is dropped, counted per kind and logged at a limited rate. Nothing is sent
+// until turf-sim is there.
 #pragma once
 
 #include <cstdint>
@@ -37,7 +43,7 @@ struct VisionBridgeOptions {
   std::string interface_ip;  // multicast interface address; empty: the system's choice
   int ttl = 1;               // multicast hops
   int geometry_every = 120;  // capture rounds between geometry packets; 0: only when the field changes
-  vision::ClockMode clock = vision::ClockMode::kUnix;
+  vision::ClockMode clock = vision::ClockMode::kRun;
   bool tracked = false;
   std::string tracked_address = "224.5.23.2";
   uint16_t tracked_port = 10010;
@@ -50,6 +56,7 @@ struct VisionBridgeStats {
   uint64_t tracked_sent = 0;
   uint64_t rejected = 0;     // dropped samples of every kind
   uint64_t send_errors = 0;  // datagrams the socket refused
+  uint64_t no_epoch = 0;     // frames not sent: no run epoch known for them (yet)
 };
 
 class VisionBridge {
@@ -64,7 +71,8 @@ class VisionBridge {
   // Runs until `stop()` answers true (checked at least every 50 ms).
   void Run(const std::function<bool()>& stop);
   VisionBridgeStats Stats() const;
-  // Drops of one kind, e.g. "camera.not_finite", "field.non_positive_size".
+  // Drops of one kind, e.g. "camera.not_finite", "field.non_positive_size",
+  // "clock.bad_epoch", "camera.no_epoch".
   uint64_t Rejected(const std::string& kind) const;
 
  private:

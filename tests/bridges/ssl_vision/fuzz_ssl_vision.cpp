@@ -163,10 +163,10 @@ void FuzzGeometry(const idl::SslField& field) {
     Require(Finite(c.tx()) && Finite(c.ty()) && Finite(c.tz()) && Finite(c.focal_length()));
 }
 
-void FuzzDetection(const idl::CameraFrame& frame, const idl::SslField& field, vision::ClockMode mode, double now) {
+void FuzzDetection(const idl::CameraFrame& frame, const idl::SslField& field, vision::WireClock clock, double now) {
   if (vision::CheckCameraFrame(frame) != vision::VisionError::kOk) return;
   vision::FrameTimes times{};
-  if (vision::WireClock(mode).ForFrame(frame.capture_time_ns(), frame.sent_time_ns(), now, &times) !=
+  if (clock.ForCamera(frame.camera_id(), frame.capture_time_ns(), frame.sent_time_ns(), now, &times) !=
       vision::VisionError::kOk)
     return;
   Require(times.t_capture > 0.0 && times.t_sent >= times.t_capture);
@@ -185,9 +185,9 @@ void FuzzDetection(const idl::CameraFrame& frame, const idl::SslField& field, vi
               r.robot_id() <= 15 && std::abs(r.orientation()) <= 3.1416f);
 }
 
-void FuzzTracked(const idl::WorldState& state, vision::ClockMode mode, double now) {
+void FuzzTracked(const idl::WorldState& state, vision::WireClock clock, double now) {
   double timestamp = 0.0;
-  if (vision::WireClock(mode).ForState(state.sim_time_ns(), now, &timestamp) != vision::VisionError::kOk) return;
+  if (clock.ForWorldState(state.sim_time_ns(), now, &timestamp) != vision::VisionError::kOk) return;
   std::vector<uint8_t> bytes;
   if (vision::EncodeTracked(state, {"uuid", "fuzz"}, timestamp, &bytes) != vision::VisionError::kOk) {
     Require(bytes.empty());
@@ -203,13 +203,17 @@ void FuzzTracked(const idl::WorldState& state, vision::ClockMode mode, double no
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   Bytes in(data, size);
-  const vision::ClockMode mode = in.Get<uint8_t>() % 2 == 0 ? vision::ClockMode::kUnix : vision::ClockMode::kSim;
+  const uint8_t m = in.Get<uint8_t>() % 3;
+  vision::WireClock clock(m == 0   ? vision::ClockMode::kRun
+                          : m == 1 ? vision::ClockMode::kUnix
+                                   : vision::ClockMode::kSim);
+  clock.AddRunEpoch(in.Get<int64_t>());  // any int64 a rogue clock sample may carry
   const double now = in.Number() * 1e9;
   const idl::SslField field = MakeField(in);
   const idl::CameraFrame frame = MakeFrame(in);
   const idl::WorldState state = MakeState(in);
   FuzzGeometry(field);
-  FuzzDetection(frame, field, mode, now);
-  FuzzTracked(state, mode, now);
+  FuzzDetection(frame, field, clock, now);
+  FuzzTracked(state, clock, now);
   return 0;
 }

@@ -1,7 +1,10 @@
 // turf-vision-bridge in-process: turf-sim's node and the bridge on threads of
 // their own, each test on its own DDS domain and topic prefix, sending unicast
 // to a UDP port the test picked free. Assertions are on the decoded packets.
+// Waits count packets and frames (simulation time), under a deadline that only
+// catches a hang (kPatience): a machine with every core busy is slow, not wrong.
 #include <gtest/gtest.h>
+#include <turf/idl/ClockPubSubTypes.h>
 #include <turf/idl/SimControlPubSubTypes.h>
 #include <turf/idl/SslVisionPubSubTypes.h>
 #include <unistd.h>
@@ -11,9 +14,12 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <thread>
+#include <tuple>
 
 #include "bridges/proto/ssl_vision.pb.h"
 #include "dds/participant.h"
@@ -27,6 +33,18 @@ namespace {
 
 using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
+
+constexpr auto kPatience = 15s;  // the longest any one wait may take
+
+// Polls `done` until it holds or kPatience has passed.
+bool WaitFor(const std::function<bool()>& done) {
+  const auto end = Clock::now() + kPatience;
+  while (!done()) {
+    if (Clock::now() >= end) return false;
+    std::this_thread::sleep_for(2ms);
+  }
+  return true;
+}
 
 int g_test_counter = 0;
 
@@ -59,12 +77,14 @@ class OnThread {
   std::thread thread_;
 };
 
-std::unique_ptr<SimNode> MakeSim(const dds::ParticipantOptions& dds, Scene scene) {
+std::unique_ptr<SimNode> MakeSim(const dds::ParticipantOptions& dds, Scene scene, TimeMode mode = TimeMode::kRealtime,
+                                 double speed = 1.0) {
   SimNodeOptions o;
   o.domain = dds.domain;
   o.prefix = dds.prefix;
   o.qos_file = dds.qos_file;
-  o.mode = TimeMode::kRealtime;
+  o.mode = mode;
+  o.speed = speed;
   return std::make_unique<SimNode>(std::move(scene), o);
 }
 
@@ -102,10 +122,9 @@ class Receiver {
   UdpSocket socket_;
 };
 
-// Receives wrappers until `done` holds or the timeout; false on timeout.
-bool ReceiveUntil(Receiver& rx, const std::function<bool(const wire::vision::SSL_WrapperPacket&)>& done,
-                  std::chrono::milliseconds timeout = 5s) {
-  const auto end = Clock::now() + timeout;
+// Receives wrappers until `done` holds or kPatience has passed; false then.
+bool ReceiveUntil(Receiver& rx, const std::function<bool(const wire::vision::SSL_WrapperPacket&)>& done) {
+  const auto end = Clock::now() + kPatience;
   while (Clock::now() < end) {
     wire::vision::SSL_WrapperPacket p;
     if (rx.Next(&p, 100ms) && done(p)) return true;
@@ -182,10 +201,7 @@ TEST(VisionBridge, DivisionACamerasGeometryAndATeleportedRobot) {
   dds::Participant client(dds);
   auto control = client.MakeWriter<idl::SimControlPubSubType>(dds::Topic::kControl);
   auto replies = client.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply);
-  const auto matched_by = Clock::now() + 5s;
-  while ((control->Matched() == 0 || replies->Matched() == 0) && Clock::now() < matched_by)
-    std::this_thread::sleep_for(5ms);
-  ASSERT_GT(control->Matched(), 0);
+  ASSERT_TRUE(WaitFor([&] { return control->Matched() > 0 && replies->Matched() > 0; }));
   ASSERT_TRUE(control->Write(Teleport(idl::TEAM_BLUE, 0, 3.0, 2.0, 1.0)));
   std::set<uint32_t> seen_by;
   ASSERT_TRUE(ReceiveUntil(rx, [&](const wire::vision::SSL_WrapperPacket& p) {
@@ -204,9 +220,11 @@ TEST(VisionBridge, DivisionACamerasGeometryAndATeleportedRobot) {
     return seen_by.size() >= 1 && p.detection().frame_number() > last_frame[0] + 10;
   }));
   EXPECT_EQ(seen_by, std::set<uint32_t>{0});  // and by no other camera
-  std::vector<idl::SimControlReply> got;
-  replies->Take(&got);
-  ASSERT_FALSE(got.empty());
+  std::vector<idl::SimControlReply> got, taken;
+  ASSERT_TRUE(WaitFor([&] {
+    if (replies->Take(&taken)) got.insert(got.end(), taken.begin(), taken.end());
+    return !got.empty();
+  }));
   EXPECT_EQ(got.back().result(), idl::RESULT_OK);
   EXPECT_EQ(bridge.node().Stats().rejected, 0u);
   EXPECT_EQ(bridge.node().Stats().send_errors, 0u);
@@ -239,7 +257,7 @@ TEST(VisionBridge, SimClockAndTrackedPackets) {
   // Geometry goes out as soon as the field is known, not after 120 rounds.
   EXPECT_LT(geometry_after, 4 * 60);
 
-  const auto end = Clock::now() + 5s;
+  const auto end = Clock::now() + kPatience;
   double last_timestamp = 0.0;
   int tracked = 0;
   while (tracked < 5 && Clock::now() < end) {
@@ -262,6 +280,194 @@ TEST(VisionBridge, SimClockAndTrackedPackets) {
   EXPECT_GT(bridge.node().Stats().tracked_sent, 0u);
 }
 
+// One bridge's detections by (timeline, camera, frame number). Frame numbers
+// restart with a reset, which starts the camera's next timeline; `went_back`
+// counts t_capture values below that camera's previous one.
+struct Detections {
+  struct Times {
+    double t_capture;
+    double t_sent;
+  };
+  std::map<std::tuple<int, uint32_t, uint32_t>, Times> frames;
+  std::map<uint32_t, uint32_t> last_frame;
+  std::map<uint32_t, double> last_capture;
+  std::map<uint32_t, int> timeline;
+  int went_back = 0;
+  int sent_before_captured = 0;
+
+  void Add(const wire::vision::SSL_DetectionFrame& d) {
+    const uint32_t cam = d.camera_id();
+    if (last_frame.count(cam) && d.frame_number() <= last_frame[cam]) ++timeline[cam];
+    if (last_capture.count(cam) && d.t_capture() < last_capture[cam]) ++went_back;
+    if (d.t_sent() < d.t_capture()) ++sent_before_captured;
+    last_frame[cam] = d.frame_number();
+    last_capture[cam] = d.t_capture();
+    frames[{timeline[cam], cam, d.frame_number()}] = {d.t_capture(), d.t_sent()};
+  }
+  // Takes every datagram waiting at `rx` (at most `wait` for the first).
+  void Pump(Receiver& rx, std::chrono::milliseconds wait) {
+    wire::vision::SSL_WrapperPacket p;
+    while (rx.Next(&p, wait)) {
+      if (p.has_detection()) Add(p.detection());
+      wait = 0ms;
+    }
+  }
+};
+
+// Tracked timestamps by world-state frame (before any reset).
+void PumpTracked(Receiver& rx, std::map<uint32_t, double>* out) {
+  wire::vision::TrackerWrapperPacket t;
+  auto wait = 5ms;
+  while (rx.Next(&t, wait)) {
+    (*out)[t.tracked_frame().frame_number()] = t.tracked_frame().timestamp();
+    wait = 0ms;
+  }
+}
+
+// Frames of timeline `timeline` that both bridges sent.
+std::vector<std::pair<Detections::Times, Detections::Times>> Matched(const Detections& a, const Detections& b,
+                                                                     int timeline) {
+  std::vector<std::pair<Detections::Times, Detections::Times>> out;
+  for (const auto& [key, times] : a.frames) {
+    if (std::get<0>(key) != timeline) continue;
+    auto it = b.frames.find(key);
+    if (it != b.frames.end()) out.emplace_back(times, it->second);
+  }
+  return out;
+}
+
+// The newest run epoch on turf-sim's clock topic.
+class EpochWatch {
+ public:
+  explicit EpochWatch(dds::Participant& p) : reader_(p.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock)) {}
+  std::optional<int64_t> Poll() {
+    if (reader_->Take(&inbox_)) {
+      epoch_ = inbox_.back().run_epoch_unix_ns();
+      sim_ns_ = inbox_.back().sim_time_ns();
+    }
+    return epoch_;
+  }
+  int64_t sim_ns() const { return sim_ns_; }
+
+ private:
+  std::unique_ptr<dds::Reader<idl::ClockPubSubType>> reader_;
+  std::vector<idl::Clock> inbox_;
+  std::optional<int64_t> epoch_;
+  int64_t sim_ns_ = 0;
+};
+
+// Unix seconds of epoch + t_s, for comparing with what the bridge sent.
+double EpochPlus(int64_t epoch_ns, double t_s) { return static_cast<double>(epoch_ns) * 1e-9 + t_s; }
+
+// The default clock over DDS: turf-sim at speed 2; a run-clock bridge, a
+// sim-clock bridge and a run-clock bridge started later send the same frames.
+// Each run stamp is exactly the clock topic's epoch + the sim stamp, the late
+// bridge's are bit-identical to the first's, and a reset keeps them monotonic.
+TEST(VisionBridge, RunClockIsTheRunEpochPlusSimTime) {
+  const auto dds = UniqueDds();
+  Receiver run_rx, sim_rx, late_rx, run_tracked_rx, sim_tracked_rx;
+  VisionBridgeOptions run_o = BridgeOptions(dds, run_rx.port());
+  ASSERT_EQ(run_o.clock, vision::ClockMode::kRun);  // the default
+  VisionBridgeOptions sim_o = BridgeOptions(dds, sim_rx.port());
+  sim_o.clock = vision::ClockMode::kSim;
+  for (auto [o, rx] : {std::pair{&run_o, &run_tracked_rx}, std::pair{&sim_o, &sim_tracked_rx}}) {
+    o->tracked = true;
+    o->tracked_address = "127.0.0.1";
+    o->tracked_port = rx->port();
+  }
+  OnThread<VisionBridge> run_bridge(std::make_unique<VisionBridge>(run_o));
+  OnThread<VisionBridge> sim_bridge(std::make_unique<VisionBridge>(sim_o));
+  OnThread<SimNode> sim(MakeSim(dds, test::OneRobot(), TimeMode::kScaled, 2.0));
+  dds::Participant client(dds);
+  EpochWatch clock(client);
+
+  Detections run, sim_times, late;
+  std::map<uint32_t, double> run_tracked, sim_tracked;
+  size_t tracked_matched = 0;
+  ASSERT_TRUE(WaitFor([&] {
+    run.Pump(run_rx, 5ms);
+    sim_times.Pump(sim_rx, 5ms);
+    PumpTracked(run_tracked_rx, &run_tracked);
+    PumpTracked(sim_tracked_rx, &sim_tracked);
+    tracked_matched = 0;
+    for (const auto& [frame, t] : sim_tracked) tracked_matched += run_tracked.count(frame);
+    return clock.Poll().has_value() && Matched(run, sim_times, 0).size() >= 40 && tracked_matched >= 20;
+  })) << Matched(run, sim_times, 0).size()
+      << " frames matched, " << tracked_matched << " tracked";
+  const std::optional<int64_t> epoch0 = clock.Poll();
+  ASSERT_TRUE(epoch0.has_value());
+  const double now = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  EXPECT_LT(std::abs(*epoch0 * 1e-9 - now), 120.0);  // Unix-looking: this run started just now
+  for (const auto& [r, s] : Matched(run, sim_times, 0)) {
+    EXPECT_NEAR(r.t_capture, EpochPlus(*epoch0, s.t_capture), 1e-6);
+    EXPECT_NEAR(r.t_sent, EpochPlus(*epoch0, s.t_sent), 1e-6);
+  }
+  for (const auto& [frame, t] : sim_tracked) {
+    if (run_tracked.count(frame)) {
+      EXPECT_NEAR(run_tracked[frame], EpochPlus(*epoch0, t), 1e-6) << frame;
+    }
+  }
+
+  // A bridge started now (or restarted) stamps the same frames the same.
+  VisionBridgeOptions late_o = BridgeOptions(dds, late_rx.port());
+  OnThread<VisionBridge> late_bridge(std::make_unique<VisionBridge>(late_o));
+  ASSERT_TRUE(WaitFor([&] {
+    run.Pump(run_rx, 5ms);
+    sim_times.Pump(sim_rx, 5ms);
+    late.Pump(late_rx, 5ms);
+    return Matched(late, run, 0).size() >= 20;
+  })) << Matched(late, run, 0).size()
+      << " frames matched";
+  for (const auto& [l, r] : Matched(late, run, 0)) {
+    EXPECT_EQ(l.t_capture, r.t_capture);
+    EXPECT_EQ(l.t_sent, r.t_sent);
+  }
+
+  // Reset: sim time restarts at 0, the epoch advances by the sim time reached.
+  auto control = client.MakeWriter<idl::SimControlPubSubType>(dds::Topic::kControl);
+  auto replies = client.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply);
+  ASSERT_TRUE(WaitFor([&] { return control->Matched() > 0 && replies->Matched() > 0; }));
+  idl::SimControl reset;
+  reset.op(idl::OP_RESET);
+  reset.client("vision-test");
+  reset.request_id(7);
+  clock.Poll();
+  const int64_t sim_before_reset_ns = clock.sim_ns();
+  ASSERT_TRUE(control->Write(reset));
+  std::optional<idl::SimControlReply> reply;
+  std::vector<idl::SimControlReply> got;
+  ASSERT_TRUE(WaitFor([&] {
+    replies->Take(&got);
+    for (const auto& r : got)
+      if (r.request_id() == 7) reply = r;
+    return reply.has_value();
+  }));
+  ASSERT_TRUE(reply.has_value());
+  EXPECT_EQ(reply->result(), idl::RESULT_OK);
+  std::optional<int64_t> epoch1;
+  ASSERT_TRUE(WaitFor([&] {
+    run.Pump(run_rx, 5ms);
+    sim_times.Pump(sim_rx, 5ms);
+    late.Pump(late_rx, 5ms);
+    epoch1 = clock.Poll();
+    return epoch1 != epoch0 && Matched(run, sim_times, 1).size() >= 20 && Matched(late, run, 1).size() >= 20;
+  })) << Matched(run, sim_times, 1).size()
+      << " frames matched after the reset";
+  ASSERT_TRUE(epoch1.has_value());
+  EXPECT_GE(*epoch1 - *epoch0, sim_before_reset_ns);  // advanced by at least the sim time seen before
+  EXPECT_GE(sim_times.went_back, 1);                  // sim seconds restart...
+  EXPECT_EQ(run.went_back, 0);                        // ...run seconds never go back
+  EXPECT_EQ(late.went_back, 0);
+  EXPECT_EQ(run.sent_before_captured, 0);
+  for (const auto& [r, s] : Matched(run, sim_times, 1)) {
+    EXPECT_NEAR(r.t_capture, EpochPlus(*epoch1, s.t_capture), 1e-6);
+    EXPECT_NEAR(r.t_sent, EpochPlus(*epoch1, s.t_sent), 1e-6);
+  }
+  for (const auto& [l, r] : Matched(late, run, 1)) EXPECT_EQ(l.t_capture, r.t_capture);
+  EXPECT_EQ(run_bridge.node().Stats().rejected, 0u);
+  EXPECT_EQ(late_bridge.node().Stats().rejected, 0u);
+}
+
 idl::CameraFrame Frame(uint32_t camera, int64_t capture_ns) {
   idl::CameraFrame f;
   f.camera_id(camera);
@@ -277,6 +483,13 @@ idl::CameraFrame Frame(uint32_t camera, int64_t capture_ns) {
   return f;
 }
 
+idl::Clock ClockWithEpoch(int64_t run_epoch_unix_ns) {
+  idl::Clock c;
+  c.sim_time_ns(1'000'000);
+  c.run_epoch_unix_ns(run_epoch_unix_ns);
+  return c;
+}
+
 TEST(VisionBridge, BadSamplesAreDroppedAndCounted) {
   const auto dds = UniqueDds();
   Receiver rx;
@@ -285,10 +498,20 @@ TEST(VisionBridge, BadSamplesAreDroppedAndCounted) {
   dds::Participant rogue(dds);
   auto cameras = rogue.MakeWriter<idl::CameraFramePubSubType>(dds::Topic::kSslCamera);
   auto fields = rogue.MakeWriter<idl::SslFieldPubSubType>(dds::Topic::kSslField);
-  const auto matched_by = Clock::now() + 5s;
-  while ((cameras->Matched() == 0 || fields->Matched() == 0) && Clock::now() < matched_by)
-    std::this_thread::sleep_for(5ms);
-  ASSERT_GT(cameras->Matched(), 0);
+  auto clocks = rogue.MakeWriter<idl::ClockPubSubType>(dds::Topic::kClock);
+  ASSERT_TRUE(WaitFor([&] { return cameras->Matched() > 0 && fields->Matched() > 0 && clocks->Matched() > 0; }));
+
+  // Before any run epoch: a good frame is not sent with a made-up time, but counted.
+  ASSERT_TRUE(cameras->Write(Frame(2, 1'000'000)));
+  ASSERT_TRUE(WaitFor([&] { return bridge.node().Stats().no_epoch >= 1; }));
+  EXPECT_EQ(bridge.node().Rejected("camera.no_epoch"), 1u);
+  // A good epoch, then garbage ones: each garbage one is counted and the good one stays.
+  constexpr int64_t kEpoch = 1'700'000'000'000'000'000;
+  ASSERT_TRUE(clocks->Write(ClockWithEpoch(kEpoch)));
+  ASSERT_TRUE(clocks->Write(ClockWithEpoch(0)));
+  ASSERT_TRUE(clocks->Write(ClockWithEpoch(-3)));
+  ASSERT_TRUE(clocks->Write(ClockWithEpoch(std::numeric_limits<int64_t>::max())));
+  ASSERT_TRUE(WaitFor([&] { return bridge.node().Rejected("clock.bad_epoch") >= 3; }));
 
   idl::CameraFrame nan = Frame(0, 1'000'000);
   nan.robots()[0].position().y(NAN);
@@ -304,18 +527,23 @@ TEST(VisionBridge, BadSamplesAreDroppedAndCounted) {
   ASSERT_TRUE(cameras->Write(Frame(1, 2'000'000)));  // a good one still goes out
 
   wire::vision::SSL_WrapperPacket p;
-  ASSERT_TRUE(rx.Next(&p, 5000ms));
+  ASSERT_TRUE(rx.Next(&p, std::chrono::duration_cast<std::chrono::milliseconds>(kPatience)));
   ASSERT_TRUE(p.has_detection());  // no geometry: the field was refused
   EXPECT_EQ(p.detection().camera_id(), 1u);
   ASSERT_EQ(p.detection().robots_yellow_size(), 1);
   EXPECT_EQ(p.detection().robots_yellow(0).pixel_x(), 0.0f);  // no camera model without a field
-  const auto end = Clock::now() + 2s;
-  while ((bridge.node().Stats().rejected < 4 || bridge.node().Stats().detections_sent < 1) && Clock::now() < end)
-    std::this_thread::sleep_for(5ms);
+  // Stamped with the good epoch: 1.7e9 s + 2 ms.
+  EXPECT_NEAR(p.detection().t_capture(), 1'700'000'000.002, 1e-6);
+  EXPECT_EQ(p.detection().t_sent(), p.detection().t_capture());
+  ASSERT_TRUE(
+      WaitFor([&] { return bridge.node().Stats().rejected >= 7 && bridge.node().Stats().detections_sent >= 1; }));
   EXPECT_EQ(bridge.node().Rejected("camera.not_finite"), 1u);
   EXPECT_EQ(bridge.node().Rejected("camera.bad_robot_id"), 1u);
   EXPECT_EQ(bridge.node().Rejected("camera.time_not_positive"), 1u);
   EXPECT_EQ(bridge.node().Rejected("field.non_positive_size"), 1u);
+  EXPECT_EQ(bridge.node().Rejected("clock.bad_epoch"), 3u);
+  EXPECT_EQ(bridge.node().Stats().rejected, 7u);
+  EXPECT_EQ(bridge.node().Stats().no_epoch, 1u);
   EXPECT_EQ(bridge.node().Stats().detections_sent, 1u);
   EXPECT_EQ(bridge.node().Stats().geometry_sent, 0u);
 }
