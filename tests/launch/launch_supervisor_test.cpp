@@ -79,7 +79,7 @@ TEST(LaunchSupervisor, RestartsACrashedBridgeAndStopsCleanlyOnCtrlC) {
   const auto killed = SteadyClock::now();
   ASSERT_TRUE(WaitFor([&] { return launch.ChildPid("vision") != vision; }, 5s)) << launch.turf->Log();
   client.Drain(100ms);
-  const auto resumed = client.UntilDetection(5s);
+  const auto resumed = client.UntilDetection(15s);
   ASSERT_TRUE(resumed.has_value()) << launch.turf->Log();
   const auto since_kill = std::chrono::duration_cast<std::chrono::milliseconds>(SteadyClock::now() - killed);
   RecordProperty("vision_after_kill_ms", static_cast<int>(since_kill.count()));

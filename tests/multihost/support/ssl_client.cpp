@@ -5,6 +5,8 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <cmath>
+
 #include "tests/e2e/proto/team_grsim.pb.h"
 #include "tests/e2e/proto/team_vision.pb.h"
 
@@ -61,8 +63,10 @@ bool VisionClient::ReadOne() {
   ++detections;
   last_detection = SteadyClock::now();
   cameras[d.camera_id()] = d.frame_number();
-  for (const auto& r : d.robots_blue()) robots_[{false, r.robot_id()}] = {r.x(), r.y(), d.t_capture()};
-  for (const auto& r : d.robots_yellow()) robots_[{true, r.robot_id()}] = {r.x(), r.y(), d.t_capture()};
+  for (const auto& r : d.robots_blue())
+    robots_[{false, r.robot_id()}] = {r.x(), r.y(), d.t_capture(), d.frame_number()};
+  for (const auto& r : d.robots_yellow())
+    robots_[{true, r.robot_id()}] = {r.x(), r.y(), d.t_capture(), d.frame_number()};
   return true;
 }
 
@@ -131,17 +135,48 @@ void KeepSending(UdpSocket& team, const std::string& packet, const std::string& 
   }
 }
 
+bool SendUntil(UdpSocket& team, const std::string& packet, const std::string& ip, int port, VisionClient& vision,
+               const std::function<bool()>& done, std::chrono::milliseconds timeout) {
+  const auto end = SteadyClock::now() + timeout;
+  while (!done()) {
+    if (SteadyClock::now() > end) return false;
+    team.Send(packet, ip, port);
+    vision.Drain(std::chrono::milliseconds(16));
+  }
+  return true;
+}
+
 std::optional<double> DriveBlueRobot(UdpSocket& team, const std::string& ip, int port, VisionClient& vision, int id,
                                      double x, double y, std::chrono::milliseconds drive) {
-  using std::chrono::milliseconds;
-  KeepSending(team, GrsimPlace(false, id, x, y, 0.0), ip, port, vision, milliseconds(300));
-  KeepSending(team, GrsimMove(false, id, 0.0, 0.0, 0.0), ip, port, vision, milliseconds(100));
-  const auto before = vision.Robot(false, static_cast<uint32_t>(id));
-  KeepSending(team, GrsimMove(false, id, 1.0, 0.0, 0.0), ip, port, vision, drive);
-  const auto after = vision.Robot(false, static_cast<uint32_t>(id));
-  KeepSending(team, GrsimMove(false, id, 0.0, 0.0, 0.0), ip, port, vision, milliseconds(50));
-  if (!before || !after) return std::nullopt;
-  return (after->x - before->x) / 1000.0;
+  using std::chrono::seconds;
+  constexpr double kCameraHz = 60.0;  // the SSL scenes' camera rate
+  const auto robot = [&] { return vision.Robot(false, static_cast<uint32_t>(id)); };
+  // Seen `frames` captures after `since` (simulation time, whatever the pace).
+  const auto later = [&](const Seen& since, uint32_t frames) {
+    return [&robot, &since, frames] {
+      const auto now = robot();
+      return now && now->frame >= since.frame + frames;
+    };
+  };
+  const bool placed = SendUntil(
+      team, GrsimPlace(false, id, x, y, 0.0), ip, port, vision,
+      [&] {
+        const auto now = robot();
+        return now && std::hypot(now->x / 1000.0 - x, now->y / 1000.0 - y) < 0.05;
+      },
+      seconds(10));
+  if (!placed) return std::nullopt;
+  const Seen at_place = *robot();
+  // Standing still for 0.1 s.
+  if (!SendUntil(team, GrsimMove(false, id, 0.0, 0.0, 0.0), ip, port, vision, later(at_place, 6), seconds(10)))
+    return std::nullopt;
+  const Seen before = *robot();
+  const auto frames = static_cast<uint32_t>(std::lround(std::chrono::duration<double>(drive).count() * kCameraHz));
+  if (!SendUntil(team, GrsimMove(false, id, 1.0, 0.0, 0.0), ip, port, vision, later(before, frames), seconds(10)))
+    return std::nullopt;
+  const Seen after = *robot();
+  KeepSending(team, GrsimMove(false, id, 0.0, 0.0, 0.0), ip, port, vision, std::chrono::milliseconds(50));
+  return (after.x - before.x) / 1000.0;
 }
 
 }  // namespace turf::test

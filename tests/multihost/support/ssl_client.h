@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -33,6 +34,7 @@ class UdpSocket {
 
 struct Seen {
   double x = 0, y = 0, t = 0;  // mm, mm, t_capture
+  uint32_t frame = 0;          // frame_number: turf-sim counts captures, 60 a second of simulation time
 };
 
 // The SSL-Vision stream as a team decodes it.
@@ -67,9 +69,15 @@ std::string GrsimPlace(bool yellow, int id, double x, double y, double dir_deg);
 void KeepSending(UdpSocket& team, const std::string& packet, const std::string& ip, int port, VisionClient& vision,
                  std::chrono::milliseconds duration);
 
-// Places robot `id` of blue at (x, y) facing +x, drives it forward at 1 m/s for
-// `drive` and returns how far it moved in x (m) in the vision stream; nullopt
-// if it was never seen.
+// Sends `packet` at ~60 Hz while draining vision, until `done` holds (true) or
+// `timeout` passes (false).
+bool SendUntil(UdpSocket& team, const std::string& packet, const std::string& ip, int port, VisionClient& vision,
+               const std::function<bool()>& done, std::chrono::milliseconds timeout);
+
+// Places robot `id` of blue at (x, y) facing +x (until the vision stream shows
+// it there), drives it forward at 1 m/s for `drive` of simulation time (camera
+// frames) and returns how far it moved in x (m) in the vision stream; nullopt
+// if it was never seen there or the stream stalled (each wait at most 10 s).
 std::optional<double> DriveBlueRobot(UdpSocket& team, const std::string& ip, int port, VisionClient& vision, int id,
                                      double x, double y, std::chrono::milliseconds drive);
 
