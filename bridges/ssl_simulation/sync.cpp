@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "bridges/ssl_simulation/step_planner.h"
 #include "bridges/ssl_vision/detection.h"
 #include "bridges/ssl_vision/timestamps.h"
 
@@ -13,18 +14,15 @@ namespace ws = wire::simulation;
 
 namespace {
 
-// The sync decode's step count, or why there is none.
-void PlanSteps(const ws::SimulationSyncRequest& in, double step_s, Problems* p, uint32_t* steps) {
+// The requested step in nanoseconds, or why there is none. How many physics
+// steps that is depends on the session's carry (StepPlanner), not on the datagram.
+void CheckSimStep(const ws::SimulationSyncRequest& in, double step_s, Problems* p, int64_t* sim_step_ns) {
   if (!in.has_sim_step()) return p->Add(DecodeError::kMissingRequired, "sim_step is absent");
   const double sim_step = in.sim_step();
   if (!p->Check(sim_step, 0.0, kMaxSyncStep, "sim_step (s)")) return;
+  if (!(sim_step > 0.0)) return p->Add(DecodeError::kOutOfRange, "sim_step must be positive, not 0");
   if (!(step_s > 0.0)) return p->Add(DecodeError::kMissingRequired, "turf-sim's physics step is not known yet");
-  const double n = std::round(sim_step / step_s);
-  if (n < 1.0 || std::abs(sim_step / step_s - n) > kStepMultipleTolerance)
-    return p->Add(DecodeError::kOutOfRange, "sim_step = " + std::to_string(sim_step) +
-                                                " s is not a positive multiple of the physics step " +
-                                                std::to_string(step_s) + " s");
-  *steps = static_cast<uint32_t>(n);
+  *sim_step_ns = FloatSecondsToNanoseconds(in.sim_step());
 }
 
 }  // namespace
@@ -39,7 +37,7 @@ SyncDecode DecodeSyncRequest(const uint8_t* data, size_t size, const ControlCont
     return out;
   }
   Problems p;
-  PlanSteps(message, step_s, &p, &out.step_count);
+  CheckSimStep(message, step_s, &p, &out.sim_step_ns);
   ControlContext sync_context = context;
   sync_context.sync = true;
   out.command = ConvertSimulatorCommand(message.simulator_command(), sync_context);
@@ -58,7 +56,7 @@ SyncDecode DecodeSyncRequest(const uint8_t* data, size_t size, const ControlCont
     if (out.error == DecodeError::kOk) out.error = e;
   }
   if (out.error != DecodeError::kOk) {
-    out.step_count = 0;
+    out.sim_step_ns = 0;
     out.command.requests.clear();
     out.robots.commands.clear();
     out.robots.wire_ids.clear();

@@ -7,8 +7,16 @@
 //  - Port: one sync socket (default 10303) for both teams. RobotControl ids
 //    0..15 are blue robots 0..15, ids 16..31 are yellow robots 0..15; feedback
 //    answers with the same ids.
-//  - sim_step must be a positive whole number of physics steps (within 1 % of
-//    a step) and at most kMaxSyncStep seconds; absent is an error.
+//  - sim_step: any positive, finite value up to kMaxSyncStep seconds; absent,
+//    0, negative, NaN, infinite or larger is refused. It need not be a whole
+//    number of physics steps: the bridge's StepPlanner (step_planner.h) runs
+//    the nearest whole number of steps to the session's requested total and
+//    carries the remainder (1/60 s at 2 ms: 8, 9, 8, 8, 9, 8, ...). A request
+//    whose share rounds to zero steps runs none; its commands and teleports
+//    still apply and it answers with no detections.
+//  - The response has no time field (the draft defines none): the time reached
+//    shows in the detections, which are those turf-sim released up to the time
+//    actually reached (not the time asked for).
 //  - Detections: every camera frame turf-sim released during the step, i.e.
 //    what a vision client would have received in that time. With ideal cameras
 //    these are exactly the frames captured in (t_before, t_after]; with a
@@ -38,14 +46,13 @@
 
 namespace turf::simproto {
 
-inline constexpr double kMaxSyncStep = 1.0;             // s of simulation per request
-inline constexpr double kStepMultipleTolerance = 0.01;  // of one physics step
-inline constexpr size_t kMaxResponseBytes = 65507;      // one IPv4 UDP datagram
+inline constexpr double kMaxSyncStep = 1.0;         // s of simulation per request
+inline constexpr size_t kMaxResponseBytes = 65507;  // one IPv4 UDP datagram
 inline constexpr char kSyncResponseTooLarge[] = "TURF_SYNC_RESPONSE_TOO_LARGE";
 
 struct SyncDecode {
   DecodeError error = DecodeError::kOk;
-  uint32_t step_count = 0;  // physics steps to run
+  int64_t sim_step_ns = 0;  // requested simulation time, rounded to ns (0 if refused)
   SimulatorCommandDecode command;
   RobotControlDecode robots;
   std::vector<SimError> errors;  // all of them: the request's own, the command's, the robots'

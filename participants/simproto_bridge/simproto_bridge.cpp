@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <atomic>
 #include <mutex>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "bridges/ssl_simulation/errors.h"
 #include "bridges/ssl_simulation/robot_control.h"
 #include "bridges/ssl_simulation/simulator_command.h"
+#include "bridges/ssl_simulation/step_planner.h"
 #include "bridges/ssl_simulation/sync.h"
 #include "participants/common/process.h"
 #include "participants/common/udp.h"
@@ -188,20 +190,48 @@ class SimprotoBridge::Impl {
       idl::SimControl lockstep;
       lockstep.op(idl::OP_SET_TIME_MODE);
       lockstep.time_mode(idl::TIME_LOCKSTEP);
-      if (!SendRequests(Kind::kSync, {lockstep}, &errors)) return answer({});
+      std::optional<idl::SimControlReply> switched;
+      if (!SendRequests(Kind::kSync, {lockstep}, &errors, &switched)) return answer({});
       spdlog::info("sync request from {}: turf-sim switched to lockstep", d.from.ToString());
+      // turf-sim ran on its own since the session's last step: a new session.
+      // (The same frame: our clock sample was only late.)
+      if (!switched || !sync_.last_frame || switched->frame() != *sync_.last_frame) sync_.Restart();
     }
     if (!SendRequests(Kind::kSync, request.command.requests, &errors)) return answer({});
 
+    const uint32_t steps = sync_.planner.Plan(request.sim_step_ns, sp::ToNanoseconds(view.clock->step_s()));
+    std::vector<idl::SslRobotCommand> commands = sync_.TakeHeld(request.robots.commands);
+    if (steps == 0) {
+      // turf-sim cannot step 0: the commands go with the session's next step,
+      // the same simulation instant (no time passes in between).
+      sync_.held = std::move(commands);
+      spdlog::debug("sync request from {}: {} ns asked, 0 steps (carry {} ns)", d.from.ToString(), request.sim_step_ns,
+                    sync_.planner.carry_ns());
+      return answer({});
+    }
     idl::SimControl step;
     step.op(idl::OP_STEP);
-    step.step_count(request.step_count);
-    step.commands(request.robots.commands);
+    step.step_count(steps);
+    step.commands(std::move(commands));
     // turf-sim publishes a step's frames before its reply, on one participant:
     // the frames that arrive between here and the reply are the step's.
     const uint64_t cursor = link_.FrameCursor();
-    if (!SendRequests(Kind::kSync, {step}, &errors)) return answer({});
-    commands_ += request.robots.commands.size();
+    std::optional<idl::SimControlReply> reply;
+    if (!SendRequests(Kind::kSync, {step}, &errors, &reply) || !reply) {
+      sync_.Restart();  // unknown how far turf-sim got
+      return answer({});
+    }
+    commands_ += step.commands().size();
+    if (sync_.last_frame && reply->frame() != *sync_.last_frame + steps) {
+      spdlog::info(
+          "sync: turf-sim is at frame {}, not {} (reset, restarted or stepped by another client): the "
+          "step carry starts over",
+          reply->frame(), *sync_.last_frame + steps);
+      sync_.planner.Rebase(request.sim_step_ns, steps);
+    }
+    sync_.last_frame = reply->frame();
+    spdlog::debug("sync request from {}: {} ns asked, {} steps, now t = {} ns (carry {} ns)", d.from.ToString(),
+                  request.sim_step_ns, steps, reply->sim_time_ns(), sync_.planner.carry_ns());
     return answer(link_.FramesSince(cursor));
   }
 
@@ -222,7 +252,9 @@ class SimprotoBridge::Impl {
 
   // Sends the requests and waits for their replies; each refusal or missing
   // reply becomes an error. False if any request did not succeed.
-  bool SendRequests(Kind kind, const std::vector<idl::SimControl>& requests, std::vector<sp::SimError>* errors) {
+  // `last`, if given, receives the last request's reply.
+  bool SendRequests(Kind kind, const std::vector<idl::SimControl>& requests, std::vector<sp::SimError>* errors,
+                    std::optional<idl::SimControlReply>* last = nullptr) {
     if (requests.empty()) return true;
     requests_ += requests.size();
     const auto replies = link_.Control(requests, options_.reply_timeout);
@@ -239,6 +271,7 @@ class SimprotoBridge::Impl {
         ok = false;
       }
     }
+    if (last != nullptr && !replies.empty()) *last = replies.back();
     return ok;
   }
 
@@ -272,8 +305,36 @@ class SimprotoBridge::Impl {
     spdlog::info("waiting for turf-sim; until then every datagram is answered with {}", sp::kSimNotAvailable);
   }
 
+  // The sync port's session (its thread only): the step carry, commands of
+  // zero-step requests waiting for the next step, turf-sim's frame after the
+  // last step (to notice when its time did not continue from there).
+  struct SyncSession {
+    sp::StepPlanner planner;
+    std::vector<idl::SslRobotCommand> held;
+    std::optional<uint64_t> last_frame;
+
+    void Restart() {
+      planner.Reset();
+      last_frame.reset();
+    }
+    // The held commands of robots `newer` does not command, then `newer`.
+    std::vector<idl::SslRobotCommand> TakeHeld(const std::vector<idl::SslRobotCommand>& newer) {
+      std::vector<idl::SslRobotCommand> out;
+      for (idl::SslRobotCommand& h : held) {
+        const bool replaced = std::any_of(newer.begin(), newer.end(), [&](const idl::SslRobotCommand& c) {
+          return c.team() == h.team() && c.id() == h.id();
+        });
+        if (!replaced) out.push_back(std::move(h));
+      }
+      held.clear();
+      out.insert(out.end(), newer.begin(), newer.end());
+      return out;
+    }
+  };
+
   SimprotoBridgeOptions options_;
   SimLink link_;
+  SyncSession sync_;
   std::vector<Socket> sockets_;
   std::atomic<bool> stopping_{false};
   std::atomic<uint64_t> datagrams_{0};

@@ -14,6 +14,11 @@
 //                  answers after turf-sim's reply with the detections of the
 //                  frames turf-sim released during the step (ideal cameras:
 //                  those captured in (t_before, t_after]). One request at a time.
+//                  The step count is the session's StepPlanner's (any sim_step:
+//                  the total stays within half a physics step of the total asked
+//                  for); a request whose share is 0 steps sends no step, and its
+//                  robot commands go with the next one. The carry starts over
+//                  when turf-sim's frame did not continue from the last step.
 // Writes (topic names <prefix>/..., QoS profiles in configs/qos/turf_qos.xml):
 //   ssl/command/blue, ssl/command/yellow  SslRobotCommand  one per commanded robot
 //   control                               SimControl       teleports, time mode, pause/resume, step

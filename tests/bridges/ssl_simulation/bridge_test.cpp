@@ -7,6 +7,7 @@
 #include <unistd.h>
 #include "tests/test_domain.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -92,14 +93,22 @@ class Team {
  public:
   Team() {
     std::string error;
-    socket_ = *UdpSocket::Bind("127.0.0.1", 0, false, &error);
+    std::optional<UdpSocket> s = UdpSocket::Bind("127.0.0.1", 0, false, &error);
+    EXPECT_TRUE(s.has_value()) << error;
+    if (s) socket_ = std::move(*s);
   }
+  // nullopt (and a failure) if there is no answer within `timeout`.
   std::optional<std::vector<uint8_t>> Ask(uint16_t port, const std::vector<uint8_t>& bytes,
                                           std::chrono::milliseconds timeout = 3s) {
+    const std::optional<UdpEndpoint> to = MakeEndpoint("127.0.0.1", port);
+    if (!socket_.valid() || !to) {
+      ADD_FAILURE() << "no socket or no endpoint";
+      return std::nullopt;
+    }
     while (socket_.Receive(65536, 0ms)) {
     }  // drop late answers
     std::string error;
-    EXPECT_TRUE(socket_.SendTo(bytes, *MakeEndpoint("127.0.0.1", port), &error)) << error;
+    EXPECT_TRUE(socket_.SendTo(bytes, *to, &error)) << error;
     std::optional<Datagram> d = socket_.Receive(65536, timeout);
     if (!d) return std::nullopt;
     return d->bytes;
@@ -185,6 +194,29 @@ bool HasError(const google::protobuf::RepeatedPtrField<ws::SimulatorError>& erro
   for (const auto& e : errors)
     if (e.code() == code) return true;
   return false;
+}
+
+// A positive marker for negative checks: teleports the ball to (x, y) through
+// the control port and waits for a world state that shows it. turf-sim handles
+// requests in order, so that state comes after everything asked before.
+bool BallMarker(Team& team, uint16_t control_port, Observer& world, float x, float y) {
+  ws::SimulatorCommand c;
+  c.mutable_control()->mutable_teleport_ball()->set_x(x);
+  c.mutable_control()->mutable_teleport_ball()->set_y(y);
+  ws::SimulatorResponse r;
+  if (!team.Ask(control_port, c, &r) || r.errors_size() != 0) {
+    ADD_FAILURE() << "marker teleport refused: " << r.DebugString();
+    return false;
+  }
+  return world.Wait([&](const idl::WorldState& s, const idl::Clock&) {
+    return std::abs(s.ball().position().x() - x) < 1e-3 && std::abs(s.ball().position().y() - y) < 1e-3;
+  });
+}
+
+std::vector<uint8_t> SyncBytes(const ws::SimulationSyncRequest& request) {
+  std::vector<uint8_t> bytes(request.ByteSizeLong());
+  request.SerializeToArray(bytes.data(), static_cast<int>(bytes.size()));
+  return bytes;
 }
 
 TEST(SimprotoBridge, LocalVelocityCommandMovesTheRobotAtOneMetrePerSecond) {
@@ -274,10 +306,18 @@ TEST(SimprotoBridge, TeleportsBallAndRobotsOnAndOffTheField) {
   ASSERT_TRUE(team.Ask(stack.control, outside, &r));
   ASSERT_EQ(r.errors_size(), 1);
   EXPECT_EQ(r.errors(0).code(), "TURF_OUTSIDE_FIELD");
-  std::this_thread::sleep_for(100ms);
+  // Marker: a later teleport of yellow 1; once it shows, the refused one would have too.
+  ws::SimulatorCommand marker;
+  ws::TeleportRobot* y1_marker = marker.mutable_control()->add_teleport_robot();
+  y1_marker->CopyFrom(*y1);
+  y1_marker->set_x(2.5f);
+  ASSERT_TRUE(team.Ask(stack.control, marker, &r));
+  EXPECT_EQ(r.errors_size(), 0) << r.DebugString();
   ASSERT_TRUE(world.Wait([](const idl::WorldState& s, const idl::Clock&) {
-    return std::abs(s.ball().position().x() - 1.0) < 0.05;  // the ball did not go to x = 0
+    return std::abs(FindRobot(s, idl::TEAM_YELLOW, 1).position().x() - 2.5) < 0.01;
   }));
+  EXPECT_NEAR(world.state().ball().position().x(), 1.0, 0.05);  // the ball did not go to x = 0
+  EXPECT_NEAR(FindRobot(world.state(), idl::TEAM_YELLOW, 1).position().y(), 2.0, 0.05);
 }
 
 TEST(SimprotoBridge, SimulationSpeedReallyChangesTurfSimsClock) {
@@ -420,9 +460,7 @@ std::vector<std::vector<uint8_t>> SyncRun(TimeMode start_mode, int n, uint64_t* 
     }
     AddLocal(req.mutable_robot_control(), 0, static_cast<float>(std::sin(0.3 * i)), 0.5f);
     AddLocal(req.mutable_robot_control(), 17, 0.0f, 1.0f);  // yellow 1
-    std::vector<uint8_t> bytes(req.ByteSizeLong());
-    req.SerializeToArray(bytes.data(), static_cast<int>(bytes.size()));
-    const auto answer = team.Ask(stack.sync, bytes);
+    const auto answer = team.Ask(stack.sync, SyncBytes(req));
     EXPECT_TRUE(answer.has_value());
     if (!answer) break;
     responses.push_back(*answer);
@@ -430,8 +468,8 @@ std::vector<std::vector<uint8_t>> SyncRun(TimeMode start_mode, int n, uint64_t* 
   EXPECT_TRUE(world.Wait([&](const idl::WorldState& s, const idl::Clock& c) {
     return c.mode() == idl::TIME_LOCKSTEP && s.frame() >= 8u * n;
   }));
-  std::this_thread::sleep_for(100ms);  // nothing steps on its own in lockstep
-  world.Wait([](auto&, auto&) { return true; });
+  // Nothing steps on its own in lockstep: the frame once a later request has taken effect.
+  EXPECT_TRUE(BallMarker(team, stack.control, world, -1.0f, -2.0f));
   *frame_after = world.state().frame();
   return responses;
 }
@@ -479,6 +517,73 @@ TEST(SimprotoBridge, SyncRequestSwitchesARunningSimToLockstep) {
     ASSERT_TRUE(r.ParseFromArray(bytes.data(), static_cast<int>(bytes.size())));
     EXPECT_EQ(r.robot_control_response().errors_size(), 0) << r.DebugString();
   }
+}
+
+// What every 60 Hz loop sends: 1/60 s is 8.33 physics steps of 2 ms. 60
+// requests reach 1.000 s (within half a step, here exactly 500 steps), every
+// response carries the frames of the time actually reached, and a request whose
+// share rounds to zero steps runs none but still applies its commands.
+TEST(SimprotoBridge, SyncStepsOfASixtiethOfASecondReachOneSecondInSixtyRequests) {
+  const auto dds = UniqueDds();
+  Stack stack(test::Teams(2), dds, TimeMode::kLockstep, 1.0);
+  Team team;
+  Observer world(dds);
+  ASSERT_TRUE(team.WaitReady(stack.control));
+  ws::SimulationSyncRequest sixtieth;
+  sixtieth.set_sim_step(1.0f / 60.0f);
+  AddLocal(sixtieth.mutable_robot_control(), 0, 0.0f);
+  double newest_capture = 0.0;
+  int detections = 0;
+  for (int i = 1; i <= 60; ++i) {
+    SCOPED_TRACE(i);
+    const auto answer = team.Ask(stack.sync, SyncBytes(sixtieth));
+    ASSERT_TRUE(answer.has_value());
+    ws::SimulationSyncResponse r;
+    ASSERT_TRUE(r.ParseFromArray(answer->data(), static_cast<int>(answer->size())));
+    ASSERT_EQ(r.robot_control_response().errors_size(), 0) << r.DebugString();
+    for (const auto& d : r.detection()) {
+      // Captured during this request's steps: each end is within half a step of the time asked for.
+      EXPECT_GT(d.t_capture(), (i - 1) / 60.0 - 0.001 - 1e-9);
+      EXPECT_LE(d.t_capture(), i / 60.0 + 0.001 + 1e-9);
+      EXPECT_GE(d.t_capture(), newest_capture);
+      newest_capture = std::max(newest_capture, d.t_capture());
+      ++detections;
+    }
+  }
+  EXPECT_EQ(stack.bridge().Rejected("sync.out_of_range"), 0u);
+  // Once a later request shows, the world state is that of the last step.
+  ASSERT_TRUE(BallMarker(team, stack.control, world, -1.0f, -2.0f));
+  EXPECT_NEAR(world.state().sim_time_ns(), 1'000'000'000, 1'000'000);  // 1.000 s +- half a step
+  EXPECT_EQ(world.state().frame(), 500u);
+  EXPECT_NEAR(newest_capture, 1.0, 0.001);  // the 60th camera frame, captured at the time reached
+  EXPECT_EQ(detections, 60 * 4);            // 60 Hz for 1 s, four cameras
+
+  // 0.1 ms is 0.05 steps: none run, the command waits for the next step.
+  const idl::RobotState start = FindRobot(world.state(), idl::TEAM_BLUE, 0);
+  ws::SimulationSyncRequest tiny;
+  tiny.set_sim_step(0.0001f);
+  AddLocal(tiny.mutable_robot_control(), 0, 1.0f);
+  const auto tiny_answer = team.Ask(stack.sync, SyncBytes(tiny));
+  ASSERT_TRUE(tiny_answer.has_value());
+  ws::SimulationSyncResponse tr;
+  ASSERT_TRUE(tr.ParseFromArray(tiny_answer->data(), static_cast<int>(tiny_answer->size())));
+  EXPECT_EQ(tr.robot_control_response().errors_size(), 0) << tr.DebugString();
+  EXPECT_EQ(tr.robot_control_response().feedback_size(), 1);
+  EXPECT_EQ(tr.detection_size(), 0);
+  ASSERT_TRUE(BallMarker(team, stack.control, world, -1.5f, -2.0f));
+  EXPECT_EQ(world.state().frame(), 500u);  // no step
+
+  // A step without commands: the held one drives blue 0 forward.
+  ws::SimulationSyncRequest drive;
+  drive.set_sim_step(0.3f);
+  const auto drive_answer = team.Ask(stack.sync, SyncBytes(drive));
+  ASSERT_TRUE(drive_answer.has_value());
+  ASSERT_TRUE(BallMarker(team, stack.control, world, -2.0f, -2.0f));
+  EXPECT_EQ(world.state().frame(), 650u);  // 1.3001 s: 650.05 steps
+  const idl::RobotState& moved = FindRobot(world.state(), idl::TEAM_BLUE, 0);
+  const double forward = (moved.position().x() - start.position().x()) * std::cos(start.yaw()) +
+                         (moved.position().y() - start.position().y()) * std::sin(start.yaw());
+  EXPECT_GT(forward, 0.1);
 }
 
 }  // namespace

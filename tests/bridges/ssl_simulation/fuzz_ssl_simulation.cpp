@@ -11,6 +11,7 @@
 
 #include "bridges/ssl_simulation/robot_control.h"
 #include "bridges/ssl_simulation/simulator_command.h"
+#include "bridges/ssl_simulation/step_planner.h"
 #include "bridges/ssl_simulation/sync.h"
 #include "tests/bridges/ssl_simulation/test_util.h"
 
@@ -81,8 +82,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       const sp::SyncDecode d = sp::DecodeSyncRequest(bytes, n, context, 0.002);
       CheckCommands(d.robots, sp::Port::kSync, 11);
       CheckRequests(d.command);
-      if (d.error != sp::DecodeError::kOk) Require(d.step_count == 0 && d.robots.commands.empty());
-      if (d.error == sp::DecodeError::kOk) Require(d.step_count >= 1 && d.step_count <= 500);
+      if (d.error != sp::DecodeError::kOk) Require(d.sim_step_ns == 0 && d.robots.commands.empty());
+      if (d.error == sp::DecodeError::kOk) Require(d.sim_step_ns >= 0 && d.sim_step_ns <= 1'000'000'000);
+      // Whatever was accepted plans a bounded, sane number of steps.
+      static sp::StepPlanner planner;
+      const uint32_t steps = planner.Plan(d.sim_step_ns, 2'000'000);
+      Require(steps <= 501 && planner.carry_ns() >= -1'000'000 && planner.carry_ns() < 1'000'000);
       RequireParses<ws::SimulationSyncResponse>(sp::EncodeSyncResponse({}, field, d, {}, {}));
       break;
     }

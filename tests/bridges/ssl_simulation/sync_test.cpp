@@ -1,4 +1,4 @@
-// Sync port: SimulationSyncRequest -> step count, command, robot commands;
+// Sync port: SimulationSyncRequest -> requested step (ns), command, robot commands;
 // capture times of a step; SimulationSyncResponse bytes.
 #include <gtest/gtest.h>
 
@@ -36,7 +36,7 @@ class SyncCodec : public ::testing::Test {
   }
   void ExpectRefused(const SyncDecode& d, DecodeError error) {
     EXPECT_EQ(d.error, error) << DecodeErrorName(d.error);
-    EXPECT_EQ(d.step_count, 0u);
+    EXPECT_EQ(d.sim_step_ns, 0);
     EXPECT_TRUE(d.command.requests.empty());
     EXPECT_TRUE(d.robots.commands.empty());
     ASSERT_FALSE(d.errors.empty());
@@ -52,7 +52,7 @@ TEST_F(SyncCodec, StepCommandAndRobots) {
   const std::vector<uint8_t> golden = {0x0D, 0x6F, 0x12, 0x83, 0x3C};
   const SyncDecode bare = DecodeSyncRequest(golden.data(), golden.size(), context_, kStep);
   ASSERT_EQ(bare.error, DecodeError::kOk);
-  EXPECT_EQ(bare.step_count, 8u);
+  EXPECT_EQ(bare.sim_step_ns, 16'000'000);
   EXPECT_EQ(Serialize(Request(0.016f)), golden);
 
   ws::SimulationSyncRequest r = Request(0.016f);
@@ -62,7 +62,7 @@ TEST_F(SyncCodec, StepCommandAndRobots) {
   const SyncDecode d = Decode(r);
   ASSERT_EQ(d.error, DecodeError::kOk);
   EXPECT_TRUE(d.errors.empty());
-  EXPECT_EQ(d.step_count, 8u);
+  EXPECT_EQ(d.sim_step_ns, 16'000'000);
   ASSERT_EQ(d.command.requests.size(), 1u);
   EXPECT_EQ(d.command.requests[0].op(), idl::OP_TELEPORT_BALL);
   ASSERT_EQ(d.robots.commands.size(), 2u);
@@ -70,14 +70,32 @@ TEST_F(SyncCodec, StepCommandAndRobots) {
   EXPECT_EQ(d.robots.commands[1].id(), 2);
 }
 
-TEST_F(SyncCodec, SimStepMustBeAPositiveWholeNumberOfSteps) {
-  EXPECT_EQ(Decode(Request(0.002f)).step_count, 1u);
-  EXPECT_EQ(Decode(Request(1.0f)).step_count, 500u);
-  ExpectRefused(Decode(Request(0.015f)), DecodeError::kOutOfRange);
+TEST_F(SyncCodec, AnyPositiveFiniteSimStepUpToOneSecondIsAccepted) {
+  // What every 60 Hz loop sends: 8.33 physics steps. The planner, not the
+  // codec, decides how many steps each request runs.
+  const SyncDecode sixtieth = Decode(Request(1.0f / 60.0f));
+  ASSERT_EQ(sixtieth.error, DecodeError::kOk) << (sixtieth.errors.empty() ? "" : sixtieth.errors[0].message);
+  EXPECT_TRUE(sixtieth.errors.empty());
+  EXPECT_EQ(sixtieth.sim_step_ns, 16'666'668);  // 0.016666668 as the float reads
+  EXPECT_EQ(Decode(Request(0.015f)).sim_step_ns, 15'000'000);
+  EXPECT_EQ(Decode(Request(0.002f)).sim_step_ns, 2'000'000);
+  EXPECT_EQ(Decode(Request(1.0f)).sim_step_ns, 1'000'000'000);
+  EXPECT_EQ(Decode(Request(1e-9f)).sim_step_ns, 1);
+  const SyncDecode tiny = Decode(Request(1e-12f));  // positive: accepted, rounds to 0 ns (zero steps)
+  EXPECT_EQ(tiny.error, DecodeError::kOk);
+  EXPECT_EQ(tiny.sim_step_ns, 0);
+}
+
+TEST_F(SyncCodec, ZeroNegativeNonFiniteOversizedOrAbsentSimStepIsRefused) {
   ExpectRefused(Decode(Request(0.0f)), DecodeError::kOutOfRange);
+  ExpectRefused(Decode(Request(-0.0f)), DecodeError::kOutOfRange);
+  ExpectRefused(Decode(Request(-1.0f)), DecodeError::kOutOfRange);
   ExpectRefused(Decode(Request(-0.016f)), DecodeError::kOutOfRange);
   ExpectRefused(Decode(Request(1.002f)), DecodeError::kOutOfRange);
+  ExpectRefused(Decode(Request(std::numeric_limits<float>::max())), DecodeError::kOutOfRange);
   ExpectRefused(Decode(Request(std::numeric_limits<float>::quiet_NaN())), DecodeError::kNotFinite);
+  ExpectRefused(Decode(Request(std::numeric_limits<float>::infinity())), DecodeError::kNotFinite);
+  ExpectRefused(Decode(Request(-std::numeric_limits<float>::infinity())), DecodeError::kNotFinite);
   ws::SimulationSyncRequest none;
   AddLocal(&none, 0, 1.0f);
   ExpectRefused(Decode(none), DecodeError::kMissingRequired);
@@ -102,7 +120,7 @@ TEST_F(SyncCodec, AnyFatalPartRefusesTheWholeRequest) {
   for (size_t n = bytes.size() - 10; n < bytes.size(); ++n) {
     const SyncDecode t = DecodeSyncRequest(bytes.data(), n, context_, kStep);
     EXPECT_EQ(t.error, DecodeError::kMalformed) << n;
-    EXPECT_EQ(t.step_count, 0u);
+    EXPECT_EQ(t.sim_step_ns, 0);
     EXPECT_TRUE(t.robots.commands.empty());
   }
 }
@@ -112,7 +130,7 @@ TEST_F(SyncCodec, SpeedInSyncModeIsNamedNotApplied) {
   r.mutable_simulator_command()->mutable_control()->set_simulation_speed(3.0f);
   const SyncDecode d = Decode(r);
   ASSERT_EQ(d.error, DecodeError::kOk);
-  EXPECT_EQ(d.step_count, 8u);
+  EXPECT_EQ(d.sim_step_ns, 16'000'000);
   EXPECT_TRUE(d.command.requests.empty());
   ASSERT_EQ(d.errors.size(), 1u);
   EXPECT_EQ(d.errors[0].code, kUnsupportedSyncSpeed);
