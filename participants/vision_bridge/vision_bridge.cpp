@@ -64,7 +64,6 @@ class VisionBridge::Impl {
         field_reader_(
             participant_.MakeReader<idl::SslFieldPubSubType>(dds::Topic::kSslField, [this] { wakeup_.Notify(); })),
         rejects_("input"),
-        no_epoch_log_("frame (no run epoch from turf-sim's clock yet)"),
         send_errors_log_("datagram") {
     if (options_.clock == vision::ClockMode::kRun) {
       clock_reader_ = participant_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock, [this] { wakeup_.Notify(); });
@@ -104,7 +103,8 @@ class VisionBridge::Impl {
   }
   uint64_t Rejected(const std::string& kind) const {
     std::lock_guard<std::mutex> lock(rejects_mutex_);
-    return rejects_.Count(kind) + no_epoch_log_.Count(kind);
+    const auto waited = no_epoch_counts_.find(kind);
+    return rejects_.Count(kind) + (waited == no_epoch_counts_.end() ? 0 : waited->second);
   }
 
  private:
@@ -130,11 +130,15 @@ class VisionBridge::Impl {
     rejected_.store(rejects_.Total());
   }
 
-  // A frame that cannot be stamped yet (run clock): not bad input, but not sent either.
+  // A frame that cannot be stamped yet (run clock): not bad input, but not sent
+  // either. DDS does not order the camera and clock topics, so frames that
+  // arrive before turf-sim's first clock sample are normal: counted, and told
+  // once at info level, never as a warning.
   void Drop(const std::string& kind, const std::string& detail) {
     std::lock_guard<std::mutex> lock(rejects_mutex_);
-    no_epoch_log_.Reject(kind, detail);
-    no_epoch_.store(no_epoch_log_.Total());
+    if (no_epoch_counts_[kind]++ == 0)
+      spdlog::info("waiting for turf-sim's clock (run epoch): {} not sent yet ({}; counted as {})", kind, detail, kind);
+    no_epoch_.fetch_add(1);
   }
 
   // A frame the wire clock refused: counted as bad input, or as a drop while the epoch is unknown.
@@ -363,7 +367,7 @@ class VisionBridge::Impl {
 
   mutable std::mutex rejects_mutex_;
   RejectLog rejects_;
-  RejectLog no_epoch_log_;
+  std::map<std::string, uint64_t> no_epoch_counts_;  // frames held back before the first epoch, by kind
   RejectLog send_errors_log_;
   std::atomic<uint64_t> rejected_{0};
   std::atomic<uint64_t> send_errors_{0};

@@ -170,23 +170,36 @@ TEST(SslEndToEnd, ErForceRealismKnobsChangeTheVisionStream) {
   const team::simulation::SimulatorResponse& response = *answer;
   EXPECT_EQ(response.errors_size(), 0) << response.errors(0).code() << ": " << response.errors(0).message();
   // Now every detection left the vision system 20 ms after its capture, and
-  // standing robots jitter by about a centimetre.
-  v.robots.clear();
-  v.send_delays.clear();
-  std::vector<double> xs;
-  // 400 detections (about 0.4 s of simulation time), however fast the machine.
+  // standing robots jitter by about a centimetre. Frames captured before the
+  // change may still be on their way: count from the first delayed one on.
+  auto delayed = [](double dt) { return std::abs(dt - 0.020) < 0.0005; };
+  std::optional<double> changed_at;
+  size_t first = 0;
   const auto end = Clock::now() + 20s;
-  int delayed = 0, frames = 0;
-  while (Clock::now() < end && v.send_delays.size() < 400) {
+  while (Clock::now() < end && !changed_at) {
     v.Drain(50ms);
-    if (auto r = v.Robot(0, 10)) xs.push_back(r->x);
+    for (; first < v.send_delays.size() && !changed_at; ++first)
+      if (delayed(v.send_delays[first])) changed_at = v.capture_times[first];
   }
-  for (double dt : v.send_delays) {
+  ASSERT_TRUE(changed_at) << "no detection was ever delayed by 20 ms";
+  // 400 detections captured a frame or more later (about 0.4 s of simulation time).
+  const double from = *changed_at + 0.02;
+  auto after = [&] {
+    return std::count_if(v.capture_times.begin(), v.capture_times.end(), [&](double t) { return t >= from; });
+  };
+  while (Clock::now() < end && after() < 400) v.Drain(50ms);
+  ASSERT_GE(after(), 400);
+  int frames = 0, late = 0;
+  for (size_t i = 0; i < v.send_delays.size(); ++i) {
+    if (v.capture_times[i] < from) continue;
     ++frames;
-    delayed += std::abs(dt - 0.020) < 0.0005;
+    late += delayed(v.send_delays[i]);
   }
-  ASSERT_GT(frames, 100);
-  EXPECT_GT(delayed, frames * 9 / 10);
+  EXPECT_EQ(late, frames);
+  std::vector<double> xs;
+  for (const Seen& r : v.blue_tracks[10])
+    if (r.t >= from) xs.push_back(r.x);
+  ASSERT_GT(xs.size(), 50u);
   double mean = 0, ss = 0;
   for (double x : xs) mean += x / xs.size();
   for (double x : xs) ss += (x - mean) * (x - mean);

@@ -94,7 +94,11 @@ class VisionClient {
       cameras[d.camera_id()] = d.frame_number();
       if (d.t_sent() < d.t_capture() || d.t_capture() <= 0) ++bad_times;
       send_delays.push_back(d.t_sent() - d.t_capture());
-      for (const auto& r : d.robots_blue()) robots[{0, r.robot_id()}] = {r.x(), r.y(), r.orientation(), d.t_capture()};
+      capture_times.push_back(d.t_capture());
+      for (const auto& r : d.robots_blue()) {
+        robots[{0, r.robot_id()}] = {r.x(), r.y(), r.orientation(), d.t_capture()};
+        blue_tracks[r.robot_id()].push_back(robots[{0, r.robot_id()}]);
+      }
       for (const auto& r : d.robots_yellow())
         robots[{1, r.robot_id()}] = {r.x(), r.y(), r.orientation(), d.t_capture()};
       for (const auto& b : d.balls()) {
@@ -114,8 +118,10 @@ class VisionClient {
   std::optional<team::vision::SSL_GeometryData> geometry;
   Seen ball;
   std::vector<Seen> ball_track;
-  std::vector<double> send_delays;  // t_sent - t_capture of every detection
-  double latest_t = 0;              // the newest t_capture seen (s)
+  std::vector<double> send_delays;                    // t_sent - t_capture of every detection
+  std::vector<double> capture_times;                  // t_capture of every detection, as send_delays
+  std::map<uint32_t, std::vector<Seen>> blue_tracks;  // every detection of each blue robot
+  double latest_t = 0;                                // the newest t_capture seen (s)
   int frames = 0, unparseable = 0, bad_times = 0;
 
  private:
