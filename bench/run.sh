@@ -42,7 +42,7 @@ simspark_run() {
   "$BUILD_DIR/participants/simspark_bridge/turf-simspark-bridge" -d "$domain" -p "$prefix" --listen 127.0.0.1 \
     --agent-port "$port" --monitor-port $((port + 1)) $sync_flag --log-level warn &
   local bridge=$!
-  sleep 1
+  # The agents connect as soon as the bridge listens and wait for turf-sim to be ready (no fixed sleep).
   "$BUILD_DIR/bench/turf-bench-simspark" --port "$port" --agents "$agents" --seconds "$SECONDS_SIM" \
     --motion "$motion" --label "$agents agents, $mode, $motion" $header || true
   kill -INT "$bridge" "$sim" 2>/dev/null || true

@@ -4,6 +4,12 @@
 // answer every perception with all 22 hinge velocities (a slow sway) and
 // (syn) (--motion upper: legs hold, the robots stand). Prints simulated
 // seconds per wall second over the measured stretch.
+//
+// Started together with the bridge and turf-sim: the agents connect as soon
+// as the bridge listens and wait for their first perception until turf-sim
+// has loaded its scene and the bridge has attached to it (seconds on a busy
+// machine; --startup bounds it). Each agent acts on its own perceptions, in
+// whatever order they come, like separate agent processes.
 #include <poll.h>
 
 #include <CLI/CLI.hpp>
@@ -11,6 +17,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "tests/simspark/agent_client.h"
@@ -38,6 +45,7 @@ int main(int argc, char** argv) {
   bool header = false;
   std::string label = "";
   std::string motion = "all";
+  double startup_s = 60.0;
   app.add_option("--port", port, "the bridge's agent port")->capture_default_str();
   app.add_option("--agents", agents, "agents (two teams, up to 22)")->capture_default_str()->check(CLI::Range(1, 22));
   app.add_option("--seconds", seconds, "simulated seconds to measure")->capture_default_str();
@@ -47,10 +55,24 @@ int main(int argc, char** argv) {
                  "all: every joint sways (the robots fall and lie); upper: head and arms sway, legs hold (they stand)")
       ->capture_default_str()
       ->check(CLI::IsMember({"all", "upper"}));
+  app.add_option("--startup", startup_s,
+                 "seconds to wait for the bridge's port and every agent's first perception (turf-sim loading its "
+                 "scene, the bridge attaching: up to its 30 s attach timeout)")
+      ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
+  const auto startup_deadline =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(startup_s));
   std::vector<turf::test::AgentClient> clients(agents);
-  for (int i = 0; i < agents; ++i) {
+  // The bridge process may not listen yet: try again until it does.
+  while (!clients[0].Connect(static_cast<uint16_t>(port))) {
+    if (Clock::now() >= startup_deadline) {
+      std::fprintf(stderr, "agent 0 cannot connect to port %d within %.0f s\n", port, startup_s);
+      return 1;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  for (int i = 1; i < agents; ++i) {
     if (!clients[i].Connect(static_cast<uint16_t>(port))) {
       std::fprintf(stderr, "agent %d cannot connect to port %d\n", i, port);
       return 1;
@@ -58,14 +80,6 @@ int main(int argc, char** argv) {
   }
   for (int i = 0; i < agents; ++i)
     clients[i].Send("(scene rsg/agent/nao/nao_hetero.rsg " + std::to_string(kTypes[i % 11]) + ")");
-  for (int i = 0; i < agents; ++i) {
-    if (!clients[i].Receive()) {
-      std::fprintf(stderr, "agent %d got no perception\n", i);
-      return 1;
-    }
-    const std::string team = i % 2 == 0 ? "BenchA" : "BenchB";
-    clients[i].Send("(init (unum " + std::to_string(i / 2 + 1) + ")(teamname " + team + "))(syn)");
-  }
   std::vector<pollfd> fds(agents);
   for (int i = 0; i < agents; ++i) fds[i] = {clients[i].fd(), POLLIN, 0};
   std::vector<uint64_t> perceptions(agents, 0);
@@ -74,7 +88,13 @@ int main(int argc, char** argv) {
   Clock::time_point wall_start;
   uint64_t bytes = 0;
   const auto give_up = Clock::now() + std::chrono::seconds(static_cast<int>(seconds * 20 + 60));
+  int started = 0;  // agents with a first perception
   while (Clock::now() < give_up) {
+    if (started < agents && Clock::now() >= startup_deadline) {
+      for (int i = 0; i < agents; ++i)
+        if (perceptions[i] == 0) std::fprintf(stderr, "agent %d got no perception within %.0f s\n", i, startup_s);
+      return 1;
+    }
     if (poll(fds.data(), fds.size(), 1000) <= 0) continue;
     for (int i = 0; i < agents; ++i) {
       if (!(fds[i].revents & POLLIN)) continue;
@@ -87,6 +107,11 @@ int main(int argc, char** argv) {
         const double t = NowIn(*m);
         ++perceptions[i];
         std::string answer;
+        if (perceptions[i] == 1) {
+          ++started;
+          const std::string team = i % 2 == 0 ? "BenchA" : "BenchB";
+          answer = "(init (unum " + std::to_string(i / 2 + 1) + ")(teamname " + team + "))";
+        }
         if (perceptions[i] == 3)
           answer = "(beam " + std::to_string(-2.0 - i / 2) + " " + std::to_string(i % 5 - 2) + " 0)";
         for (int j = 0; j < 22; ++j) {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <condition_variable>
 #include <mutex>
 #include <stdexcept>
 #include <vector>
@@ -99,6 +100,13 @@ class SimSparkBridge::Impl {
     return stats_;
   }
 
+  SimSparkBridgeStats WaitForStats(const std::function<bool(const SimSparkBridgeStats&)>& done,
+                                   std::chrono::milliseconds timeout) const {
+    std::unique_lock<std::mutex> lock(stats_mutex_);
+    stats_changed_.wait_for(lock, timeout, [&] { return done(stats_); });
+    return stats_;
+  }
+
  private:
   bool Attach(const std::function<bool()>& stop) {
     if (session_) {
@@ -165,6 +173,7 @@ class SimSparkBridge::Impl {
     stats_.agents = session_->agents();
     stats_.refused = rejects_.Total();
     stats_.refused_by_kind = rejects_.counts();
+    stats_changed_.notify_all();
     return true;
   }
 
@@ -211,6 +220,9 @@ class SimSparkBridge::Impl {
         c.agent = session_->Connect();
         spdlog::info("agent {} connected from {}", c.agent, address);
         clients_.emplace(fd, std::move(c));
+        std::lock_guard<std::mutex> lock(stats_mutex_);
+        stats_.agents = session_->agents();
+        stats_changed_.notify_all();
       }
     }
   }
@@ -274,6 +286,8 @@ class SimSparkBridge::Impl {
       clients_.erase(it);
       std::lock_guard<std::mutex> lock(stats_mutex_);
       ++stats_.dropped_clients;
+      stats_.agents = session_->agents();
+      stats_changed_.notify_all();
     }
     drops_.clear();
   }
@@ -310,6 +324,7 @@ class SimSparkBridge::Impl {
   } split_;
   RejectLog rejects_;
   mutable std::mutex stats_mutex_;
+  mutable std::condition_variable stats_changed_;
   SimSparkBridgeStats stats_;
 };
 
@@ -319,5 +334,9 @@ uint16_t SimSparkBridge::agent_port() const { return impl_->agent_port(); }
 uint16_t SimSparkBridge::monitor_port() const { return impl_->monitor_port(); }
 bool SimSparkBridge::Run(const std::function<bool()>& stop) { return impl_->Run(stop); }
 SimSparkBridgeStats SimSparkBridge::Stats() const { return impl_->Stats(); }
+SimSparkBridgeStats SimSparkBridge::WaitForStats(const std::function<bool(const SimSparkBridgeStats&)>& done,
+                                                 std::chrono::milliseconds timeout) const {
+  return impl_->WaitForStats(done, timeout);
+}
 
 }  // namespace turf

@@ -9,6 +9,9 @@
 // cycle as soon as every agent with a robot has sent (syn), none while no agent
 // has a robot, so a run depends on the agents' messages alone. Agents may connect
 // at any time, all at once; each gets a parked robot of the scene at `scene`.
+// The agent port listens from the start: agents that connect while turf-sim is
+// still loading its scene (seconds on a busy machine) wait and are served once
+// the bridge has attached (attach_timeout), so a team need not time its start.
 //
 // Untrusted input: a frame longer than 64 KiB, or a client that stops reading
 // (more than max_unsent bytes waiting), drops that client; a malformed message or predicate
@@ -45,7 +48,7 @@ struct SimSparkBridgeOptions {
 struct SimSparkBridgeStats {
   uint64_t cycles = 0;
   double sim_time = 0.0;
-  int agents = 0;
+  int agents = 0;  // connected agents
   uint64_t dropped_clients = 0;
   uint64_t refused = 0;  // refused input of every kind
   std::map<std::string, uint64_t> refused_by_kind;
@@ -64,6 +67,10 @@ class SimSparkBridge {
   // Until stop() (polled), a trainer's (killsim) or a fatal DDS error; false on an error.
   bool Run(const std::function<bool()>& stop);
   SimSparkBridgeStats Stats() const;
+  // Waits until `done` holds for the stats (they change after each cycle and
+  // when a client comes or goes) or the timeout passes; the stats then.
+  SimSparkBridgeStats WaitForStats(const std::function<bool(const SimSparkBridgeStats&)>& done,
+                                   std::chrono::milliseconds timeout) const;
 
  private:
   class Impl;

@@ -4,8 +4,10 @@
 // ball and away, sync mode's one cycle per (syn) round, 22 agents at once,
 // bad input, and the trainer port.
 #include <gtest/gtest.h>
+#include <poll.h>
 #include <sys/socket.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -30,7 +32,8 @@ using test::AgentClient;
 // turf-sim (legged node) and the bridge, each on its own thread.
 class Match {
  public:
-  explicit Match(bool sync, size_t max_unsent = 1 << 20) : sync_(sync) {
+  // start_sim false: the bridge waits for turf-sim until StartSim().
+  explicit Match(bool sync, size_t max_unsent = 1 << 20, bool start_sim = true) : sync_(sync) {
     static int counter = 0;
     const std::string prefix = "simspark" + std::to_string(getpid()) + "_" + std::to_string(++counter);
     const std::string qos = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
@@ -38,7 +41,7 @@ class Match {
     sim_options_.prefix = prefix;
     sim_options_.qos_file = qos;
     sim_options_.mode = TimeMode::kLockstep;
-    StartSim();
+    if (start_sim) StartSim();
     SimSparkBridgeOptions o;
     o.domain = sim_options_.domain;
     o.prefix = prefix;
@@ -280,6 +283,142 @@ TEST(SimSparkBridgeTest, TwentyTwoAgentsConnectAtOnceAndAllPlay) {
   }
   EXPECT_TRUE(saw_other_team);
   EXPECT_EQ(match.bridge().Stats().agents, 22);
+}
+
+// Sync mode with a team's worth of agents at once, each acting on its own
+// perceptions as separate processes would: (init) and (syn) after the first
+// perception, (syn) after every other one.
+class Teams {
+ public:
+  static constexpr int kAgents = 22;
+
+  // Connects every agent and sends every (scene), before anyone reads.
+  explicit Teams(uint16_t port) : agents_(kAgents), state_(kAgents) {
+    constexpr int kTypes[11] = {0, 0, 0, 0, 0, 0, 0, 1, 1, 2, 3};  // the team composition rules
+    for (AgentClient& a : agents_) EXPECT_TRUE(a.Connect(port));
+    for (int i = 0; i < kAgents; ++i)
+      agents_[i].Send("(scene rsg/agent/nao/nao_hetero.rsg " + std::to_string(kTypes[i / 2]) + ")");
+  }
+
+  // As the benchmark's agent did: reads each agent's first perception in
+  // turn, before that agent has sent anything but (scene). false: agent
+  // `*failed` got none by the deadline.
+  bool FirstPerceptionsInTurn(std::chrono::steady_clock::time_point deadline, int* failed) {
+    for (int i = 0; i < kAgents; ++i) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Now());
+      auto m = agents_[i].Receive(std::max(left, 0ms));
+      if (!m) {
+        *failed = i;
+        return false;
+      }
+      Answer(i, *m);
+    }
+    return true;
+  }
+
+  // Answers every agent's perceptions as they come until each has been told
+  // its unum (init was applied) and had one more perception after it.
+  // Returns the agents that did not get there by the deadline.
+  std::vector<int> PlayUntilAllJoined(std::chrono::steady_clock::time_point deadline) {
+    std::vector<pollfd> fds;
+    for (const AgentClient& a : agents_) fds.push_back({a.fd(), POLLIN, 0});
+    while (Now() < deadline && !Missing().empty()) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Now());
+      if (poll(fds.data(), fds.size(), static_cast<int>(std::clamp<int64_t>(left.count(), 0, 1000))) <= 0) continue;
+      for (int i = 0; i < kAgents; ++i) {
+        if (fds[i].revents == 0) continue;
+        if (!agents_[i].ReadSome()) fds[i].fd = -1;  // closed by the bridge: it stays missing
+        while (auto m = agents_[i].Next()) Answer(i, *m);
+      }
+    }
+    return Missing();
+  }
+
+  int perceptions(int agent) const { return state_[agent].perceptions; }
+
+ private:
+  struct State {
+    int perceptions = 0;
+    bool told_unum = false;
+    int after_unum = 0;
+  };
+  static std::chrono::steady_clock::time_point Now() { return std::chrono::steady_clock::now(); }
+
+  void Answer(int i, const std::string& perception) {
+    State& s = state_[i];
+    ++s.perceptions;
+    if (s.told_unum) ++s.after_unum;
+    const std::string unum = std::to_string(i / 2 + 1);
+    if (perception.find("(GS (unum " + unum + ")") != std::string::npos) s.told_unum = true;
+    if (s.perceptions == 1) {
+      agents_[i].Send("(init (unum " + unum + ")(teamname " + (i % 2 ? "Beta" : "Alpha") + "))(syn)");
+    } else {
+      agents_[i].Send("(syn)");
+    }
+  }
+
+  std::vector<int> Missing() const {
+    std::vector<int> out;
+    for (int i = 0; i < kAgents; ++i)
+      if (state_[i].after_unum < 1) out.push_back(i);
+    return out;
+  }
+
+  std::vector<AgentClient> agents_;
+  std::vector<State> state_;
+};
+
+std::string Join(const std::vector<int>& v) {
+  std::string out;
+  for (int i : v) out += (out.empty() ? "" : " ") + std::to_string(i);
+  return out;
+}
+
+// Issue 11: 22 agents connecting in the same instant in sync mode, again and
+// again on one bridge; every one gets perceptions and plays, every round.
+// Even rounds read each first perception in turn (the benchmark's agent);
+// odd rounds answer whichever agent's perception comes first.
+TEST(SimSparkBridgeTest, TwentyTwoAgentsConnectingAtOnceInSyncModeAllGetPerceptions) {
+  Match match(/*sync=*/true);
+  constexpr int kRounds = 50;
+  int good_rounds = 0;
+  for (int round = 0; round < kRounds; ++round) {
+    {
+      Teams teams(match.bridge().agent_port());
+      const auto deadline = std::chrono::steady_clock::now() + 20s;
+      int failed = -1;
+      if (round % 2 == 0 && !teams.FirstPerceptionsInTurn(deadline, &failed)) {
+        ADD_FAILURE() << "round " << round << ": agent " << failed << " got no perception";
+        break;
+      }
+      const std::vector<int> missing = teams.PlayUntilAllJoined(deadline);
+      if (!missing.empty()) {
+        ADD_FAILURE() << "round " << round << ": agents " << Join(missing) << " did not join and play (agent "
+                      << missing.front() << " had " << teams.perceptions(missing.front()) << " perceptions)";
+        break;
+      }
+      ++good_rounds;
+    }  // every agent disconnects
+    // The bridge has let them all go (their robots are free for the next round).
+    const uint64_t gone = static_cast<uint64_t>(Teams::kAgents) * (round + 1);
+    const SimSparkBridgeStats stats =
+        match.bridge().WaitForStats([&](const SimSparkBridgeStats& s) { return s.dropped_clients >= gone; }, 20s);
+    ASSERT_GE(stats.dropped_clients, gone) << "round " << round;
+    ASSERT_EQ(stats.agents, 0) << "round " << round;
+  }
+  EXPECT_EQ(good_rounds, kRounds);
+  EXPECT_EQ(match.bridge().Stats().refused, 0u) << "no init refused, nothing malformed";
+}
+
+// The benchmark's agents connected while turf-sim was still loading its scene
+// (seconds on a busy machine): the bridge holds them and serves them once
+// turf-sim is there.
+TEST(SimSparkBridgeTest, AgentsConnectingBeforeTurfSimIsThereAreServedOnceItIs) {
+  Match match(/*sync=*/true, 1 << 20, /*start_sim=*/false);
+  Teams teams(match.bridge().agent_port());
+  match.StartSim();
+  const std::vector<int> missing = teams.PlayUntilAllJoined(std::chrono::steady_clock::now() + 20s);
+  EXPECT_TRUE(missing.empty()) << "agents " << Join(missing) << " did not join and play";
 }
 
 TEST(SimSparkBridgeTest, BadInputIsRefusedAndOthersCarryOn) {
