@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 
 namespace turf::simspark {
 
@@ -57,53 +58,100 @@ std::string FormatFloat(double v) {
 
 namespace {
 
+// Every number of a perceptor is a single-precision float in the reference
+// (salt::Vector3f, HingeJoint::GetAngle, SimulationServer::GetTime and the
+// game's TTime are float) and its stream prints that float: round to float
+// first so that near-ties round as the reference's do. Beyond float's range
+// the double is printed (the reference would print inf).
+void AppendWire(std::string* out, double v) {
+  if (std::abs(v) <= static_cast<double>(std::numeric_limits<float>::max())) v = static_cast<float>(v);
+  AppendFloat(out, v);
+}
+
 void Append3(std::string* out, const std::array<double, 3>& v) {
   for (const double x : v) {
     out->push_back(' ');
-    AppendFloat(out, x);
+    AppendWire(out, x);
   }
 }
 
 void AppendPol(std::string* out, const Polar& p) {
   out->append("(pol ");
-  AppendFloat(out, p.distance);
+  AppendWire(out, p.distance);
   out->push_back(' ');
-  AppendFloat(out, p.horizontal);
+  AppendWire(out, p.horizontal);
   out->push_back(' ');
-  AppendFloat(out, p.vertical);
+  AppendWire(out, p.vertical);
   out->push_back(')');
 }
 
-std::string FormatSee(const SeeItems& see) {
-  std::string out = "(See";
+// The reference's SexpParser::PredicateToString writes a perceptor as '(',
+// its name, one space, the parameters separated by one space, ')'. The space
+// after the name is written even when there are no parameters: an empty See
+// (RestrictedVisionPerceptor::DynamicAxisPercept always adds the predicate)
+// is "(See )", never "(See)". Sub-lists never have that space.
+void AppendSee(std::string* out, const SeeItems& see) {
+  out->append("(See ");
+  const char* separator = "";
   for (const SeeObject& o : see.objects) {
-    out += " (" + o.label + ' ';
-    AppendPol(&out, o.pol);
-    out.push_back(')');
+    *out += separator;
+    *out += '(' + o.label + ' ';
+    AppendPol(out, o.pol);
+    out->push_back(')');
+    separator = " ";
   }
   for (const SeePlayer& player : see.players) {
-    out += " (P (team " + player.team + ") (id " + std::to_string(player.id) + ')';
+    *out += separator;
+    *out += "(P (team " + player.team + ") (id " + std::to_string(player.id) + ')';
     for (const SeePart& part : player.parts) {
-      out += " (" + part.name + ' ';
-      AppendPol(&out, part.pol);
-      out.push_back(')');
+      *out += " (" + part.name + ' ';
+      AppendPol(out, part.pol);
+      out->push_back(')');
     }
-    out.push_back(')');
+    out->push_back(')');
+    separator = " ";
   }
   for (const SeeLine& line : see.lines) {
-    out += " (L ";
-    AppendPol(&out, line.begin);
-    out.push_back(' ');
-    AppendPol(&out, line.end);
-    out.push_back(')');
+    *out += separator;
+    out->append("(L ");
+    AppendPol(out, line.begin);
+    out->push_back(' ');
+    AppendPol(out, line.end);
+    out->push_back(')');
+    separator = " ";
   }
-  out.push_back(')');
-  return out;
+  out->push_back(')');
 }
 
-std::string FormatHear(const Heard& heard) {
-  return "(hear " + heard.team + ' ' + FormatFloat(heard.game_time) + ' ' +
-         (heard.self ? std::string("self") : FormatFloat(heard.direction)) + ' ' + heard.message + ')';
+// HearPerceptor::Percept: `(hear <team> <t> self|<direction> <msg>)`.
+void AppendHear(std::string* out, const Heard& heard) {
+  *out += "(hear " + heard.team + ' ';
+  AppendWire(out, heard.game_time);
+  out->push_back(' ');
+  if (heard.self) {
+    out->append("self");
+  } else {
+    AppendWire(out, heard.direction);
+  }
+  *out += ' ' + heard.message + ')';
+}
+
+void AppendForce(std::string* out, const ForcePerception& f) {
+  *out += "(FRP (n " + f.name + ") (c";
+  Append3(out, f.point);
+  out->append(") (f");
+  Append3(out, f.force);
+  out->append("))");
+}
+
+// The hinge of the body that carries a foot's FRP (naoleg.rsg / naolegtoe.rsg:
+// the ForceResistancePerceptor is the first child of the foot (toe) transform,
+// the hinge joint rlj6/llj6 (rlj7/llj7) comes after it), so the FRP is written
+// just before that HJ. Empty for other names.
+std::string HingeAfterFoot(const std::string& foot) {
+  if (foot == "rf" || foot == "lf") return foot.substr(0, 1) + "lj6";
+  if (foot == "rf1" || foot == "lf1") return foot.substr(0, 1) + "lj7";
+  return {};
 }
 
 }  // namespace
@@ -111,33 +159,54 @@ std::string FormatHear(const Heard& heard) {
 std::string FormatPerception(const Perception& p) {
   std::string out;
   out.reserve(1024);
-  out += "(time (now " + FormatFloat(p.time) + "))";
-  out += "(GS";
-  if (p.unum) out += " (unum " + std::to_string(*p.unum) + ')';
-  if (p.side) out += std::string(" (team ") + SideName(*p.side) + ')';
-  out += " (sl " + std::to_string(p.score_left) + ") (sr " + std::to_string(p.score_right) + ") (t " +
-         FormatFloat(p.game_time) + ") (pm " + PlayModeName(p.play_mode) + "))";
+  // The order is the reference's: AgentAspect::QueryPerceptors asks the
+  // perceptors in depth-first scene-graph order of nao_hetero.rsg: TimePerceptor,
+  // GameStatePerceptor, HearPerceptor (both under AgentState), GyroRatePerceptor,
+  // Accelerometer, then the head (hj1, hj2, RestrictedVisionPerceptor), the arms
+  // and the legs (..., lj5, FRP, lj6[, FRP toe, lj7]).
+  out += "(time (now ";  // TimePerceptor::Percept
+  AppendWire(&out, p.time);
+  out += "))";
+  // GameStatePerceptor::Percept: unum and team only in the first GS after the
+  // agent has a team; sl and sr always (ReportScore is true in naosoccersim.rb);
+  // then t and pm. Scores and unum are ints.
+  out += "(GS ";
+  if (p.unum) out += "(unum " + std::to_string(*p.unum) + ") ";
+  if (p.side) out += std::string("(team ") + SideName(*p.side) + ") ";
+  out += "(sl " + std::to_string(p.score_left) + ") (sr " + std::to_string(p.score_right) + ") (t ";
+  AppendWire(&out, p.game_time);
+  out += std::string(") (pm ") + PlayModeName(p.play_mode) + "))";
+  // No hear predicate at all when nothing is heard (HearPerceptor::Percept adds one per message).
+  for (const Heard& heard : p.heard) AppendHear(&out, heard);
   out += "(GYR (n torso) (rt";
   Append3(&out, p.gyro_deg_s);
   out += "))(ACC (n torso) (a";
   Append3(&out, p.acc);
   out += "))";
+  // FRP only while touching (ForceResistancePerceptor::Percept returns without a predicate on no contact).
+  std::vector<bool> force_written(p.forces.size(), false);
+  bool see_written = !p.see.has_value();
   for (const auto& [name, deg] : p.joints_deg) {
+    for (size_t i = 0; i < p.forces.size(); ++i) {
+      if (!force_written[i] && HingeAfterFoot(p.forces[i].name) == name) {
+        AppendForce(&out, p.forces[i]);
+        force_written[i] = true;
+      }
+    }
     out += "(HJ (n ";
     out += name;
     out += ") (ax ";
-    AppendFloat(&out, deg);
+    AppendWire(&out, deg);
     out += "))";
+    if (!see_written && name == "hj2") {  // the vision perceptor follows hj2 under the head
+      AppendSee(&out, *p.see);
+      see_written = true;
+    }
   }
-  for (const ForcePerception& f : p.forces) {
-    out += "(FRP (n " + f.name + ") (c";
-    Append3(&out, f.point);
-    out += ") (f";
-    Append3(&out, f.force);
-    out += "))";
-  }
-  if (p.see) out += FormatSee(*p.see);
-  for (const Heard& heard : p.heard) out += FormatHear(heard);
+  // Without those joints: the head's See first, then the feet, as in the scene graph.
+  if (!see_written) AppendSee(&out, *p.see);
+  for (size_t i = 0; i < p.forces.size(); ++i)
+    if (!force_written[i]) AppendForce(&out, p.forces[i]);
   return out;
 }
 

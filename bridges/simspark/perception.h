@@ -1,11 +1,16 @@
 // Server -> agent messages of the SimSpark agent port: one perception per cycle
 // (shared/protocols/simspark.md, "Perceptors of the Nao"). Written exactly as
-// rcssserver3d 0.7.3 writes them: `(name p1 p2 ...)`, one space between
-// parameters, none between top-level predicates, floats fixed with 2 decimals.
+// rcssserver3d 0.7.3 writes them (SexpParser::PredicateToString): `(name p1 p2 ...)`,
+// one space after the name even with no parameters (an empty See is `(See )`),
+// one space between parameters, none between top-level predicates, numbers
+// rounded to float and printed fixed with 2 decimals.
 //
-// Predicate order (clients must not rely on it): time, GS, GYR, ACC, HJ (in
-// `joints_deg` order), FRP, See, hear. Names (joints, teams, messages) are
-// written as given: the caller passes valid atoms (no whitespace or parentheses).
+// Predicate order, the reference's (clients must not rely on it): time, GS,
+// hear, GYR, ACC, HJ (in `joints_deg` order) with See right after hj2 and each
+// foot's FRP right before the hinge of its body (rf before rlj6, lf1 before
+// llj7); See and FRPs without those joints come after the HJs. Names (joints,
+// teams, messages) are written as given: the caller passes valid atoms (no
+// whitespace or parentheses).
 #pragma once
 
 #include <array>
@@ -38,7 +43,7 @@ struct Perception {
   std::vector<std::pair<std::string, double>> joints_deg;  // HJ (n name) (ax deg)
   std::vector<ForcePerception> forces;                     // FRP, only feet touching something
   std::optional<SeeItems> see;                             // See, on vision cycles
-  std::vector<Heard> heard;                                // hear
+  std::vector<Heard> heard;                                // hear, written in this order
 };
 
 // Fixed with exactly 2 decimals ("-0.00" may occur, as the server prints it); a non-finite value -> "0.00".

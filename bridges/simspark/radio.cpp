@@ -6,6 +6,13 @@
 namespace turf::simspark {
 
 void Radio::Say(const Speaker& who, const std::string& message, double game_time) {
+  // One message per speaker and cycle, the last one (the reference's SayEffector::Realize overwrites its message).
+  for (Said& said : said_) {
+    if (said.speaker.side == who.side && said.speaker.unum == who.unum) {
+      said = {who, message, game_time};
+      return;
+    }
+  }
   said_.push_back({who, message, game_time});
 }
 
@@ -25,7 +32,11 @@ std::vector<Heard> Radio::Deliver(const Speaker& listener, uint64_t cycle) {
     cap.cycle = cycle;
   }
 
+  // The reference's HearPerceptor::Percept writes its own message first, then
+  // the teammate's, then the opponent's.
   std::vector<Heard> heard;
+  std::vector<Heard> teammates;
+  std::vector<Heard> opponents;
   for (const Said& said : said_) {
     const Speaker& speaker = said.speaker;
     if (speaker.side == listener.side && speaker.unum == listener.unum) {
@@ -34,14 +45,17 @@ std::vector<Heard> Radio::Deliver(const Speaker& listener, uint64_t cycle) {
     }
     const Eigen::Vector3d relative = speaker.position - listener.position;
     if (relative.norm() > params_.max_distance) continue;
-    int& budget = speaker.side == listener.side ? cap.teammates : cap.opponents;
+    const bool teammate = speaker.side == listener.side;
+    int& budget = teammate ? cap.teammates : cap.opponents;
     if (budget < params_.capacity_cost) continue;
     budget -= params_.capacity_cost;
     Eigen::Vector2d delta = relative.head<2>();
     if (listener.side == Side::kRight) delta = -delta;
     const double direction = std::atan2(delta.y(), delta.x()) * 180.0 / M_PI;
-    heard.push_back({speaker.team, said.game_time, false, direction, said.message});
+    (teammate ? teammates : opponents).push_back({speaker.team, said.game_time, false, direction, said.message});
   }
+  heard.insert(heard.end(), teammates.begin(), teammates.end());
+  heard.insert(heard.end(), opponents.begin(), opponents.end());
   return heard;
 }
 

@@ -37,9 +37,10 @@ class Radio {
  public:
   explicit Radio(RadioParams params = {}) : params_(params) {}
 
-  // Collected until EndCycle; heard in the order said.
+  // Collected until EndCycle; a speaker's later message in the same cycle replaces its earlier one.
   void Say(const Speaker& who, const std::string& message, double game_time);
-  // The messages for one listener this cycle (call once per listener per cycle).
+  // The messages for one listener this cycle (call once per listener per cycle):
+  // its own, then teammates', then opponents', each in the order said.
   std::vector<Heard> Deliver(const Speaker& listener, uint64_t cycle);
   // Forgets this cycle's messages (the listeners' capacities persist).
   void EndCycle();

@@ -58,10 +58,10 @@ TEST(Radio, OneTeammateAndOneOpponentMessagePerTwoCycles) {
   radio.Say(Right(5, 3, 0), "d", 0);  // lost
   radio.Say(listener, "me", 0);       // self: always
   std::vector<Heard> heard = radio.Deliver(listener, 10);
-  ASSERT_EQ(heard.size(), 3u);
-  EXPECT_EQ(heard[0].message, "a");
-  EXPECT_EQ(heard[1].message, "c");
-  EXPECT_EQ(heard[2].message, "me");
+  ASSERT_EQ(heard.size(), 3u);  // as the reference's HearPerceptor: self, teammate, opponent
+  EXPECT_EQ(heard[0].message, "me");
+  EXPECT_EQ(heard[1].message, "a");
+  EXPECT_EQ(heard[2].message, "c");
   radio.EndCycle();
 
   radio.Say(Left(2, 1, 0), "e", 0.02);
@@ -77,6 +77,21 @@ TEST(Radio, OneTeammateAndOneOpponentMessagePerTwoCycles) {
   EXPECT_EQ(heard[0].message, "f");
   // Another listener's capacity is its own.
   EXPECT_EQ(radio.Deliver(Left(4, 0, 0), 12).size(), 1u);
+}
+
+// The reference's SayEffector keeps one message per agent and cycle: the last.
+TEST(Radio, ASpeakersLastMessageOfTheCycleIsTheOneSaid) {
+  Radio radio;
+  const Speaker listener = Left(1, 0, 0);
+  radio.Say(Right(4, 3, 0), "first", 0);
+  radio.Say(listener, "mine1", 0);
+  radio.Say(Right(4, 3, 0), "second", 0);
+  radio.Say(listener, "mine2", 0);
+  const std::vector<Heard> heard = radio.Deliver(listener, 1);
+  ASSERT_EQ(heard.size(), 2u);
+  EXPECT_EQ(heard[0].message, "mine2");
+  EXPECT_TRUE(heard[0].self);
+  EXPECT_EQ(heard[1].message, "second");
 }
 
 TEST(Radio, CapacityRecoversAfterSilenceAndEndCycleForgetsMessages) {

@@ -454,6 +454,33 @@ TEST(SessionPerception, SeeEveryThirdPerceptionPerAgent) {
   EXPECT_EQ(b_sees, (std::vector<bool>{true, false, false, true, false, false, true}));
 }
 
+// A robot lying face down beside the field, feet in the air, on a vision
+// cycle: it sees nothing and hears nothing. The whole message is what the
+// reference sends: no hear, no FRP, and "(See )" right after hj2.
+TEST(SessionPerception, FallenRobotThatSeesNothingGetsTheReferencesMessage) {
+  Harness h(1);
+  const int a = h.Join("", 0);
+  h.Cycle();  // parked
+  FakeWorld::Robot& robot = h.world.robot("nao_1");
+  robot.position.z() = 0.1;
+  robot.orientation = Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX());  // forward (+y) points down
+  robot.left_contact = false;
+  robot.right_contact = false;
+  h.Cycle();
+  h.Cycle();
+  const std::string p = OutputFor(h.Cycle(), a);  // the 4th perception: a vision cycle
+  EXPECT_EQ(p,
+            "(time (now 0.08))(GS (sl 0) (sr 0) (t 0.00) (pm BeforeKickOff))"
+            "(GYR (n torso) (rt 0.00 0.00 0.00))(ACC (n torso) (a 0.00 0.00 9.81))"
+            "(HJ (n hj1) (ax 0.00))(HJ (n hj2) (ax 0.00))(See )"
+            "(HJ (n raj1) (ax 0.00))(HJ (n raj2) (ax 0.00))(HJ (n raj3) (ax 0.00))(HJ (n raj4) (ax 0.00))"
+            "(HJ (n laj1) (ax 0.00))(HJ (n laj2) (ax 0.00))(HJ (n laj3) (ax 0.00))(HJ (n laj4) (ax 0.00))"
+            "(HJ (n rlj1) (ax 0.00))(HJ (n rlj2) (ax 0.00))(HJ (n rlj3) (ax 0.00))(HJ (n rlj4) (ax 0.00))"
+            "(HJ (n rlj5) (ax 0.00))(HJ (n rlj6) (ax 0.00))"
+            "(HJ (n llj1) (ax 0.00))(HJ (n llj2) (ax 0.00))(HJ (n llj3) (ax 0.00))(HJ (n llj4) (ax 0.00))"
+            "(HJ (n llj5) (ax 0.00))(HJ (n llj6) (ax 0.00))");
+}
+
 TEST(SessionPerception, SeeListsBallAndOtherPlayers) {
   SessionOptions options;
   options.vision.noise = false;
