@@ -1,5 +1,6 @@
 #include "bridges/simspark/perception.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -62,9 +63,11 @@ namespace {
 // (salt::Vector3f, HingeJoint::GetAngle, SimulationServer::GetTime and the
 // game's TTime are float) and its stream prints that float: round to float
 // first so that near-ties round as the reference's do. Beyond float's range
-// the double is printed (the reference would print inf).
+// the value saturates at the largest float (the reference would overflow to
+// inf), so no number is longer than 42 characters for an agent's parser.
 void AppendWire(std::string* out, double v) {
-  if (std::abs(v) <= static_cast<double>(std::numeric_limits<float>::max())) v = static_cast<float>(v);
+  constexpr double kMax = std::numeric_limits<float>::max();
+  if (std::isfinite(v)) v = static_cast<float>(std::clamp(v, -kMax, kMax));
   AppendFloat(out, v);
 }
 

@@ -250,7 +250,8 @@ inline std::string SimprotoMove(int id, double forward) {
 
 // Sends a SimulatorCommand to the control port and returns the response.
 // Until the simulation bridge has seen turf-sim (the vision bridge may have
-// been faster) it answers "not available": ask again then.
+// been faster) it answers "not available", and when turf-sim's reply is late
+// "did not answer": ask again then.
 inline std::optional<team::simulation::SimulatorResponse> Command(Udp& team,
                                                                   const team::simulation::SimulatorCommand& cmd,
                                                                   uint16_t port) {
@@ -263,9 +264,12 @@ inline std::optional<team::simulation::SimulatorResponse> Command(Udp& team,
     while (Clock::now() < answer_by && !answered)
       if (auto bytes = team.Receive()) answered = response.ParseFromString(*bytes);
     if (!answered) return std::nullopt;
-    const bool not_yet =
-        response.errors_size() > 0 && response.errors(0).message().find("has not been seen yet") != std::string::npos;
-    if (!not_yet) return response;
+    // Asked too early, or turf-sim (starved on a loaded machine) answered the
+    // bridge late: ask again, as team software would. Commands are idempotent.
+    auto says = [&](const char* what) {
+      return response.errors_size() > 0 && response.errors(0).message().find(what) != std::string::npos;
+    };
+    if (!says("has not been seen yet") && !says("did not answer within")) return response;
     std::this_thread::sleep_for(200ms);
   }
   return std::nullopt;

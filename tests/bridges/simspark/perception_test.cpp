@@ -190,8 +190,10 @@ TEST(Perception, NumbersAreRoundedAsFloats) {
   std::snprintf(as_double, sizeof(as_double), "%.2f", 0.375 - 1e-12);
   ASSERT_STREQ(as_double, "0.37");
   EXPECT_NE(FormatPerception(p).find("(HJ (n hj1) (ax 0.38))"), std::string::npos) << FormatPerception(p);
-  p.joints_deg = {{"hj1", 1e300}};  // beyond float: still a number
-  EXPECT_NE(FormatPerception(p).find("(HJ (n hj1) (ax 1"), std::string::npos);
+  p.joints_deg = {{"hj1", -1e300}};  // beyond float: saturates at the largest float, still a number
+  EXPECT_NE(FormatPerception(p).find("(HJ (n hj1) (ax -340282346638528859811704183484516925440.00))"),
+            std::string::npos)
+      << FormatPerception(p);
 }
 
 TEST(Perception, NonFiniteValuesStayParseable) {
