@@ -65,7 +65,7 @@ for _ in $(seq "$load"); do
   load_pids+=($!)
 done
 
-ctest_args=(--test-dir "$build" -j "$(nproc)" --timeout 300)
+ctest_args=(--test-dir "$build" -j "$(nproc)" --timeout 300 --output-on-failure)
 [ -n "$filter" ] && ctest_args+=(-R "$filter")
 failed_runs=0
 start=$(date +%s)
