@@ -15,6 +15,19 @@ double NormalizeDeg(double deg) {
   return r;
 }
 
+Side Opponent(Side side) { return side == Side::kLeft ? Side::kRight : Side::kLeft; }
+
+// A touch 0.1 s after the kick is a second kick (SoccerRuleAspect::
+// WasLastKickFromFreeKick: "kick duration = 0.1"); the tolerance absorbs the
+// sum of 0.02 s cycles.
+constexpr double kKickDuration = 0.1 - 1e-6;
+// A set piece's touch counts when it comes more than the pause plus 0.03 s
+// into the mode (SoccerRuleAspect::UpdateKickIn / UpdateFreeKick /
+// UpdateCornerKick / UpdateGoalKick: time > lastChange + mKickInPauseTime + 0.03).
+constexpr double kSetPieceTouchMargin = 0.03;
+
+// KickIn, corner, goal kick and the free kicks (offside's rule is compiled out
+// in the reference: SoccerRuleAspect::UpdateOffside is "#if 0").
 bool IsSetPiece(PlayMode mode) {
   switch (mode) {
     case PlayMode::kKickInLeft:
@@ -23,8 +36,6 @@ bool IsSetPiece(PlayMode mode) {
     case PlayMode::kCornerKickRight:
     case PlayMode::kGoalKickLeft:
     case PlayMode::kGoalKickRight:
-    case PlayMode::kOffsideLeft:
-    case PlayMode::kOffsideRight:
     case PlayMode::kFreeKickLeft:
     case PlayMode::kFreeKickRight:
     case PlayMode::kDirectFreeKickLeft:
@@ -143,28 +154,49 @@ bool Game::InPlay() const {
   return mode_ == PlayMode::kPlayOn || mode_ == PlayMode::kPassLeft || mode_ == PlayMode::kPassRight;
 }
 
+double Game::mode_time() const {
+  // GameStateAspect::GetModeTime: mLeadTime in BeforeKickOff, mFupTime in
+  // GameOver, else mTime - mLastModeChange (game time).
+  if (mode_ == PlayMode::kBeforeKickOff || mode_ == PlayMode::kGameOver) return idle_time_;
+  return game_time_ - mode_start_;
+}
+
 void Game::ChangeMode(PlayMode mode) {
   if (mode == mode_) return;
   mode_ = mode;
-  mode_time_ = 0.0;
+  mode_start_ = game_time_;  // GameStateAspect::SetPlayMode: mLastModeChange = mTime
+  idle_time_ = 0.0;
   out_position_.reset();
+  goal_kick_touched_ = false;
+}
+
+void Game::StartKickOff(Side side) {
+  ChangeMode(side == Side::kLeft ? PlayMode::kKickOffLeft : PlayMode::kKickOffRight);
+  last_kick_off_half_ = half_;  // GameStateAspect::KickOff: mLastKickOffGameHalf
 }
 
 Eigen::Vector3d Game::DropPosition(const Eigen::Vector3d& ball) const {
   const double hl = rules_.field_length / 2.0;
   const double hw = rules_.field_width / 2.0;
   const double r = rules_.ball_radius;
-  Eigen::Vector3d p(std::clamp(ball.x(), -hl + r, hl - r), std::clamp(ball.y(), -hw + r, hw - r), r);
+  // x: turf's own clamp (turf drops an out ball; the reference awards a set piece).
+  Eigen::Vector3d p(std::clamp(ball.x(), -hl + r, hl - r), ball.y(), r);
+  // SoccerRuleAspect::DropBall: a ball in a penalty box (edges included) goes to
+  // the box's front corner on its side of the x axis (y < 0: -, else +)...
   const double front = hl - rules_.penalty_depth;
   const double side = rules_.penalty_width / 2.0;
   if (std::abs(p.x()) >= front && std::abs(p.y()) <= side) {
     p.x() = std::copysign(front, p.x());
-    p.y() = std::copysign(side, p.y());
+    p.y() = p.y() < 0.0 ? -side : side;
   }
+  // ...and one on or beyond a touch line to a radius inside it.
+  if (p.y() <= -hw) p.y() = -hw + r;
+  if (p.y() >= hw) p.y() = hw - r;
   return p;
 }
 
 void Game::CheckHalfTime() {
+  // SoccerRuleAspect::CheckTime (SingleHalfTime false, ChangeSidesInSecondHalf false).
   if (half_ == 1 && game_time_ >= rules_.half_time) {
     half_ = 2;
     ChangeMode(PlayMode::kBeforeKickOff);
@@ -173,24 +205,66 @@ void Game::CheckHalfTime() {
   }
 }
 
+void Game::TakeKick(const Toucher& taker) {
+  // SoccerRuleAspect::SetKickTakenValues: the taker and the game time of its touch.
+  kick_check_ = taker.known;
+  kick_taker_ = taker;
+  kick_time_ = game_time_;
+}
+
+void Game::UpdateKickChecks(const Eigen::Vector3d& ball, const std::vector<Toucher>& touchers) {
+  // SoccerRuleAspect::Update, before the mode's rule: the kick-off team may
+  // score once the other team touched the ball or it touched the ball outside
+  // the centre circle (FreeKickDistance).
+  if (kick_off_team_no_score_) {
+    const bool outside_circle = ball.head<2>().norm() > rules_.free_kick_distance;
+    for (const Toucher& t : touchers) {
+      if (!t.known || t.side != *kick_off_team_no_score_ || outside_circle) kick_off_team_no_score_.reset();
+      if (!kick_off_team_no_score_) break;
+    }
+  }
+}
+
 GameUpdate Game::Update(double dt, const Eigen::Vector3d& ball, bool touched) {
+  std::vector<Toucher> touchers;
+  if (touched) touchers.push_back(Toucher{Side::kLeft, 0, false});
+  return Update(dt, ball, touchers);
+}
+
+GameUpdate Game::Update(double dt, const Eigen::Vector3d& ball, const std::vector<Toucher>& touchers) {
   GameUpdate update;
   const auto place = [&](const Eigen::Vector3d& p, bool drop) {
     update.place_ball = p;
     update.dropped_ball = drop;
   };
+  // SoccerRuleAspect::DropBall: the ball moves, the kick checks end, PlayOn.
+  const auto drop_ball = [&](const Eigen::Vector3d& at) {
+    place(DropPosition(at), true);
+    kick_check_ = false;
+    ChangeMode(PlayMode::kPlayOn);
+  };
   if (pending_drop_) {
     pending_drop_ = false;
     place(DropPosition(ball), true);
   }
-  if (mode_ != PlayMode::kBeforeKickOff && mode_ != PlayMode::kGameOver) game_time_ += dt;
-  mode_time_ += dt;
+  // GameStateAspect::UpdateTime: game time stops in BeforeKickOff and GameOver.
+  if (mode_ != PlayMode::kBeforeKickOff && mode_ != PlayMode::kGameOver) {
+    game_time_ += dt;
+  } else {
+    idle_time_ += dt;
+  }
+  CheckHalfTime();  // SoccerRuleAspect::Update checks the time first
+  UpdateKickChecks(ball, touchers);
+  const bool touched = !touchers.empty();
 
   const double hl = rules_.field_length / 2.0;
   const double hw = rules_.field_width / 2.0;
   const double r = rules_.ball_radius;
   switch (mode_) {
     case PlayMode::kBeforeKickOff:
+      // SoccerRuleAspect::UpdateBeforeKickOff: with an agent connected, the ball
+      // is held at the centre; AutomaticKickOff false (naosoccersim.rb), so no
+      // kick-off after WaitBeforeKickOff.
       if (PlayerCount(Side::kLeft) + PlayerCount(Side::kRight) > 0) {
         update.place_ball_at_centre = true;
         place({0.0, 0.0, r}, false);
@@ -198,32 +272,102 @@ GameUpdate Game::Update(double dt, const Eigen::Vector3d& ball, bool touched) {
       break;
     case PlayMode::kKickOffLeft:
     case PlayMode::kKickOffRight:
-      if (touched) {
-        ChangeMode(PlayMode::kPlayOn);
-      } else if (mode_time_ >= rules_.drop_ball_after) {
-        place(DropPosition(ball), true);
+      // SoccerRuleAspect::UpdateKickOff: every cycle the kick checks reset and
+      // the kick-off team may score;
+      kick_check_ = false;
+      kick_off_team_no_score_.reset();
+      if (mode_time() > rules_.drop_ball_time) {
+        // untouched for more than RuleDropBallTime (15 s): drop ball where it
+        // is, PlayOn, for nobody in particular;
+        drop_ball(ball);
+      } else if (touched) {
+        // the first touch: PlayOn. With more than 2 agents (GameControlServer::
+        // GetAgentCount() > 2; here: registered players) the toucher took an
+        // indirect kick and its team may not score yet.
+        if (PlayerCount(Side::kLeft) + PlayerCount(Side::kRight) > 2) {
+          TakeKick(touchers.front());
+          if (touchers.front().known) kick_off_team_no_score_ = touchers.front().side;
+        }
         ChangeMode(PlayMode::kPlayOn);
       }
       break;
     case PlayMode::kGoalLeft:
     case PlayMode::kGoalRight:
-      if (mode_time_ >= rules_.goal_pause) {
-        ChangeMode(mode_ == PlayMode::kGoalLeft ? PlayMode::kKickOffRight : PlayMode::kKickOffLeft);
+      // SoccerRuleAspect::UpdateGoal: after RuleGoalPauseTime (mode time >= 3 s)
+      // the ball goes to the centre and the team scored on kicks off.
+      if (mode_time() >= rules_.goal_pause) {
+        StartKickOff(mode_ == PlayMode::kGoalLeft ? Side::kRight : Side::kLeft);
         update.place_ball_at_centre = true;
         place({0.0, 0.0, r}, false);
       }
       break;
     case PlayMode::kGameOver:
+    case PlayMode::kOffsideLeft:
+    case PlayMode::kOffsideRight:
       break;
     default:
       if (IsSetPiece(mode_)) {
-        if (touched && mode_time_ >= rules_.kick_in_pause) ChangeMode(PlayMode::kPlayOn);
+        // UpdateKickIn / UpdateFreeKick / UpdateCornerKick / UpdateGoalKick:
+        // nothing during RuleKickInPauseTime; then the kick checks reset, a drop
+        // ball after more than RuleDropBallTime, PlayOn at a touch more than
+        // 0.03 s after the pause, the toucher having taken the kick.
+        if (mode_time() < rules_.kick_in_pause) break;
+        kick_check_ = false;
+        if (mode_time() > rules_.drop_ball_time) {
+          drop_ball(ball);
+          break;
+        }
+        const bool counts = touched && mode_time() > rules_.kick_in_pause + kSetPieceTouchMargin;
+        if (mode_ == PlayMode::kGoalKickLeft || mode_ == PlayMode::kGoalKickRight) {
+          // UpdateGoalKick: PlayOn once the ball, touched, is out of the team's
+          // penalty box (or off the field); the last toucher took the kick.
+          if (counts) {
+            goal_kick_touched_ = true;
+            kick_taker_ = touchers.front();
+            kick_time_ = game_time_;
+          }
+          // Out of the box: beyond its front edge or wider than it (strictly),
+          // or off the field (BallStateAspect::UpdateBallOnField).
+          const double front = hl - rules_.penalty_depth;
+          const bool left = mode_ == PlayMode::kGoalKickLeft;
+          const bool off_field = std::abs(ball.x()) >= hl + r + 0.001 || std::abs(ball.y()) >= hw + r + 0.001;
+          const bool out_of_box =
+              (left ? ball.x() > -front : ball.x() < front) || std::abs(ball.y()) > rules_.penalty_width / 2.0;
+          if (goal_kick_touched_ && (off_field || out_of_box)) {
+            const Toucher taker = *kick_taker_;
+            const double at = kick_time_;
+            TakeKick(taker);
+            kick_time_ = at;
+            ChangeMode(PlayMode::kPlayOn);
+          }
+        } else if (counts) {
+          TakeKick(touchers.front());
+          ChangeMode(PlayMode::kPlayOn);
+        }
         break;
       }
-      if ((mode_ == PlayMode::kPassLeft || mode_ == PlayMode::kPassRight) && mode_time_ >= rules_.pass_duration) {
+      // UpdatePassMode: PlayOn after PassModeDuration (4 s) or at a touch; then
+      // the PlayOn rules in the same cycle.
+      if ((mode_ == PlayMode::kPassLeft || mode_ == PlayMode::kPassRight) &&
+          (mode_time() >= rules_.pass_duration || touched)) {
         ChangeMode(PlayMode::kPlayOn);
       }
       if (!InPlay()) break;
+      // UpdatePlayOn -> CheckFreeKickTakerFoul: the kick's taker touching the
+      // ball again 0.1 s or more after its kick, before anybody else did:
+      // indirect free kick for the other team (AwardFreeKick). Another
+      // player's touch ends the check (several at once: not the taker alone).
+      if (kick_check_ && touched) {
+        const bool taker_alone = std::all_of(touchers.begin(), touchers.end(),
+                                             [&](const Toucher& t) { return kick_taker_ && t == *kick_taker_; });
+        if (!taker_alone) {
+          kick_check_ = false;
+        } else if (game_time_ - kick_time_ >= kKickDuration) {
+          kick_check_ = false;
+          ChangeMode(kick_taker_->side == Side::kLeft ? PlayMode::kFreeKickRight : PlayMode::kFreeKickLeft);
+          break;
+        }
+      }
       if (out_position_) {
         out_time_ += dt;
         if (out_time_ >= rules_.kick_in_pause) {
@@ -234,8 +378,19 @@ GameUpdate Game::Update(double dt, const Eigen::Vector3d& ball, bool touched) {
       }
       if (std::abs(ball.x()) > hl + r && std::abs(ball.y()) < rules_.goal_width / 2.0 &&
           ball.z() < rules_.goal_height) {
+        const Side scorer = ball.x() > 0.0 ? Side::kLeft : Side::kRight;
+        if (kick_off_team_no_score_ == scorer) {
+          // CheckGoal -> PunishIndirectKickGoal: the kick-off team scored before
+          // it was allowed to: goal kick for the team scored on, the ball on its
+          // spot GoalKickDist in front of the goal line (AwardGoalKick).
+          const Side defender = Opponent(scorer);
+          ChangeMode(defender == Side::kLeft ? PlayMode::kGoalKickLeft : PlayMode::kGoalKickRight);
+          const double spot = hl - rules_.goal_kick_distance;
+          place({defender == Side::kLeft ? -spot : spot, 0.0, r}, false);
+          break;
+        }
         update.goal = true;
-        update.scored_by = ball.x() > 0.0 ? Side::kLeft : Side::kRight;
+        update.scored_by = scorer;
         ++score_[Index(update.scored_by)];
         ChangeMode(update.scored_by == Side::kLeft ? PlayMode::kGoalLeft : PlayMode::kGoalRight);
       } else if (std::abs(ball.x()) > hl + r || std::abs(ball.y()) > hw + r) {
@@ -244,7 +399,6 @@ GameUpdate Game::Update(double dt, const Eigen::Vector3d& ball, bool touched) {
       }
       break;
   }
-  CheckHalfTime();
   update.play_mode_changed = mode_ != reported_mode_;
   reported_mode_ = mode_;
   return update;
@@ -256,8 +410,17 @@ void Game::SetPlayMode(PlayMode mode) {
 }
 
 void Game::KickOff(std::optional<Side> side, Rng* rng) {
-  if (!side) side = (rng != nullptr && rng->Uniform() >= 0.5) ? Side::kRight : Side::kLeft;
-  ChangeMode(*side == Side::kLeft ? PlayMode::kKickOffLeft : PlayMode::kKickOffRight);
+  if (!side) {
+    // GameStateAspect::KickOff(TI_NONE): a coin toss, except for a half's first
+    // kick-off, which goes to the team stored by the last half's first coin
+    // toss (the other team: ChangeSidesInSecondHalf false).
+    side = (rng != nullptr && rng->Uniform() >= 0.5) ? Side::kRight : Side::kLeft;
+    if (half_ != last_kick_off_half_) {
+      if (next_half_kick_off_) side = *next_half_kick_off_;
+      next_half_kick_off_ = Opponent(*side);
+    }
+  }
+  StartKickOff(*side);
 }
 
 void Game::SetGameTime(double t) { game_time_ = std::max(0.0, t); }
@@ -270,6 +433,7 @@ void Game::SetScore(std::optional<int> left, std::optional<int> right) {
 void Game::DropBall() {
   pending_drop_ = true;
   out_position_.reset();
+  kick_check_ = false;  // SoccerRuleAspect::DropBall -> ResetKickChecks
   ChangeMode(PlayMode::kPlayOn);
 }
 

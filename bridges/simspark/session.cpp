@@ -311,16 +311,19 @@ void Session::Advance(WorldSnapshot snapshot) {
   last_ = std::move(snapshot);
   const WorldSnapshot& world = *last_;
   ++cycle_;
-  // The first touch: a body of a player near the ball.
-  bool touched = false;
+  // The players touching the ball: a body of the player near the ball.
+  std::vector<Toucher> touchers;
   for (const auto& [id, a] : agents_) {
     if (!a.inited || a.robot < 0) continue;
     const RobotSnapshot* robot = world.Find(robots_[a.robot]);
     if (robot == nullptr) continue;
-    for (const RobotSnapshot::Link& l : robot->links)
-      touched = touched || (l.position - world.ball).norm() < kTouchDistance;
+    const bool near = std::any_of(robot->links.begin(), robot->links.end(), [&](const RobotSnapshot::Link& l) {
+      return (l.position - world.ball).norm() < kTouchDistance;
+    });
+    if (near) touchers.push_back(Toucher{a.side, a.unum});
   }
-  const GameUpdate update = game_.Update(0.02, world.ball, touched);
+  const bool touched = !touchers.empty();
+  const GameUpdate update = game_.Update(0.02, world.ball, touchers);
   if (update.place_ball) requests_.ball = BallMove{*update.place_ball, Eigen::Vector3d::Zero()};
   // Every player's seen parts, once per cycle for all agents' vision.
   players_.clear();

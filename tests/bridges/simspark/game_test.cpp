@@ -224,6 +224,235 @@ TEST(GameFlow, KickOffUntouchedDropsBallAfterFifteenSeconds) {
   EXPECT_NEAR(last.place_ball->x(), 0.3, 1e-12);
 }
 
+// rcssserver3d (SoccerRuleAspect::UpdateKickOff, naosoccersim.rb RuleDropBallTime
+// 15): a kick-off nobody touches ends when its mode time is MORE than 15 s: a
+// drop ball where the ball is and PlayOn, nobody's kick-off. dt = 0.25 s sums
+// exactly: at 15.00 s it is still the kick-off, at 15.25 s PlayOn.
+TEST(GameFlow, UntouchedKickOffBecomesPlayOnAfterMoreThanFifteenSecondsOfGameTime) {
+  Game game;
+  game.KickOff(Side::kLeft, nullptr);
+  const Eigen::Vector3d ball(0.2, -0.1, 0.042);
+  for (int i = 0; i < 60; ++i) {
+    const GameUpdate u = game.Update(0.25, ball, false);
+    ASSERT_EQ(game.play_mode(), PlayMode::kKickOffLeft) << i;
+    ASSERT_FALSE(u.place_ball.has_value());
+  }
+  EXPECT_EQ(game.mode_time(), 15.0);
+  const GameUpdate u = game.Update(0.25, ball, false);
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  EXPECT_TRUE(u.play_mode_changed);
+  EXPECT_TRUE(u.dropped_ball);
+  ASSERT_TRUE(u.place_ball.has_value());
+  EXPECT_TRUE(u.place_ball->isApprox(ball));
+  EXPECT_EQ(game.game_time(), 15.25);
+}
+
+// The same in 0.02 s cycles: 750 cycles sum to 15.00 s (not more), the 751st ends it.
+TEST(GameFlow, UntouchedKickOffEndsOnTheCycleAfterFifteenSeconds) {
+  Game game;
+  game.KickOff(Side::kRight, nullptr);
+  EXPECT_EQ(CyclesUntilModeChange(&game, kCentre, 2000), 751);
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+}
+
+// GameStateAspect::GetModeTime is game time since the mode began, so a
+// trainer's time change moves the kick-off's deadline.
+TEST(GameFlow, ModeTimeIsGameTimeSinceTheModeBegan) {
+  Game game;
+  game.KickOff(Side::kLeft, nullptr);
+  game.Update(0.25, kCentre, false);
+  game.SetGameTime(14.9);
+  EXPECT_NEAR(game.mode_time(), 14.9, 1e-12);
+  game.Update(0.25, kCentre, false);  // 15.15 s
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  // BeforeKickOff counts simulation time (the game clock stands).
+  game.SetPlayMode(PlayMode::kBeforeKickOff);
+  game.Update(0.25, kCentre, false);
+  EXPECT_EQ(game.mode_time(), 0.25);
+}
+
+// SoccerRuleAspect::Update runs CheckTime before the mode's rule: the cycle
+// that reaches half time is no longer play.
+TEST(GameFlow, HalfTimeEndsPlayBeforeTheGoalCheck) {
+  Game game;
+  ASSERT_TRUE(game.Init("A", 1, 0).ok);
+  game.SetPlayMode(PlayMode::kPlayOn);
+  game.SetGameTime(299.99);
+  const GameUpdate u = game.Update(kDt, {15.1, 0, 0.042}, false);
+  EXPECT_FALSE(u.goal);
+  EXPECT_EQ(game.score(Side::kLeft), 0);
+  EXPECT_EQ(game.play_mode(), PlayMode::kBeforeKickOff);
+  EXPECT_TRUE(u.place_ball_at_centre);
+}
+
+// UpdateGoal: mode time < 3 s waits; at 3 s the team scored on kicks off.
+TEST(GameFlow, GoalKickOffAtThreeSecondsOfGameTime) {
+  Game game;
+  game.SetPlayMode(PlayMode::kPlayOn);
+  ASSERT_TRUE(game.Update(0.25, {-15.1, 0, 0.042}, false).goal);
+  for (int i = 0; i < 11; ++i) game.Update(0.25, {-15.3, 0, 0.042}, false);
+  EXPECT_EQ(game.play_mode(), PlayMode::kGoalRight);
+  game.Update(0.25, {-15.3, 0, 0.042}, false);
+  EXPECT_EQ(game.play_mode(), PlayMode::kKickOffLeft);
+}
+
+Game FourPlayers() {
+  Game game;
+  for (const char* team : {"A", "B"})
+    for (int unum : {1, 2}) EXPECT_TRUE(game.Init(team, unum, 0).ok);
+  return game;
+}
+
+const Toucher kLeft1{Side::kLeft, 1};
+const Toucher kLeft2{Side::kLeft, 2};
+const Toucher kRight1{Side::kRight, 1};
+
+// CheckFreeKickTakerFoul / WasLastKickFromFreeKick: the kick-off's taker (more
+// than 2 agents) touching the ball again 0.1 s or more after its kick, before
+// anybody else: indirect free kick for the other team.
+TEST(GameKicks, KickOffTakerTouchingTwiceGivesTheOtherTeamAFreeKick) {
+  Game game = FourPlayers();
+  game.KickOff(Side::kLeft, nullptr);
+  const std::vector<Toucher> taker{kLeft1};
+  game.Update(kDt, kCentre, taker);
+  ASSERT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  for (int i = 0; i < 4; ++i) {  // 0.02 .. 0.08 s: still the kick
+    game.Update(kDt, kCentre, taker);
+    ASSERT_EQ(game.play_mode(), PlayMode::kPlayOn) << i;
+  }
+  const GameUpdate u = game.Update(kDt, kCentre, taker);  // 0.10 s
+  EXPECT_EQ(game.play_mode(), PlayMode::kFreeKickRight);
+  EXPECT_TRUE(u.play_mode_changed);
+}
+
+TEST(GameKicks, AnotherTouchEndsTheDoubleTouchCheck) {
+  Game game = FourPlayers();
+  game.KickOff(Side::kRight, nullptr);
+  game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});
+  for (int i = 0; i < 10; ++i) game.Update(kDt, kCentre, false);
+  game.Update(kDt, kCentre, std::vector<Toucher>{kLeft2});
+  for (int i = 0; i < 10; ++i) game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+}
+
+TEST(GameKicks, NoDoubleTouchRuleAtAKickOffWithTwoPlayers) {
+  Game game;
+  ASSERT_TRUE(game.Init("A", 1, 0).ok);
+  ASSERT_TRUE(game.Init("B", 1, 0).ok);
+  game.KickOff(Side::kLeft, nullptr);
+  for (int i = 0; i < 20; ++i) game.Update(kDt, kCentre, std::vector<Toucher>{kLeft1});
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  game.SetPlayMode(PlayMode::kPlayOn);
+  EXPECT_TRUE(game.Update(kDt, {15.1, 0, 0.042}, false).goal);  // and the kick-off team may score
+}
+
+// CheckGoal: the kick-off team may not score before the other team touched the
+// ball or it touched the ball outside the centre circle: goal kick instead,
+// the ball 1 m in front of the goal line (AwardGoalKick, GoalKickDist).
+TEST(GameKicks, KickOffTeamCannotScoreStraightFromTheKickOff) {
+  Game game = FourPlayers();
+  game.KickOff(Side::kLeft, nullptr);
+  game.Update(kDt, kCentre, std::vector<Toucher>{kLeft1});
+  game.Update(kDt, {1.0, 0, 0.042}, std::vector<Toucher>{kLeft2});  // inside the circle
+  const GameUpdate u = game.Update(kDt, {15.1, 0, 0.042}, false);
+  EXPECT_FALSE(u.goal);
+  EXPECT_EQ(game.score(Side::kLeft), 0);
+  EXPECT_EQ(game.play_mode(), PlayMode::kGoalKickRight);
+  ASSERT_TRUE(u.place_ball.has_value());
+  EXPECT_TRUE(u.place_ball->isApprox(Eigen::Vector3d(14, 0, 0.042)));
+}
+
+TEST(GameKicks, KickOffTeamScoresOnceTheBallLeftTheCircleOrTheOtherTeamTouchedIt) {
+  {
+    Game game = FourPlayers();
+    game.KickOff(Side::kLeft, nullptr);
+    game.Update(kDt, kCentre, std::vector<Toucher>{kLeft1});
+    game.Update(kDt, {2.5, 0, 0.042}, std::vector<Toucher>{kLeft2});
+    EXPECT_TRUE(game.Update(kDt, {15.1, 0, 0.042}, false).goal);
+  }
+  {
+    Game game = FourPlayers();
+    game.KickOff(Side::kLeft, nullptr);
+    game.Update(kDt, kCentre, std::vector<Toucher>{kLeft1});
+    game.Update(kDt, {0.5, 0, 0.042}, std::vector<Toucher>{kRight1});
+    EXPECT_TRUE(game.Update(kDt, {15.1, 0, 0.042}, false).goal);
+  }
+}
+
+// UpdateKickIn & co.: untouched for more than 15 s -> drop ball, PlayOn.
+TEST(GameKicks, UntouchedSetPieceBecomesPlayOnAfterMoreThanFifteenSeconds) {
+  for (const PlayMode mode : {PlayMode::kKickInLeft, PlayMode::kCornerKickRight, PlayMode::kGoalKickLeft,
+                              PlayMode::kFreeKickRight, PlayMode::kDirectFreeKickLeft}) {
+    Game game;
+    game.SetPlayMode(mode);
+    for (int i = 0; i < 60; ++i) game.Update(0.25, {3, 9.958, 0.042}, false);
+    EXPECT_EQ(game.play_mode(), mode);
+    const GameUpdate u = game.Update(0.25, {3, 9.958, 0.042}, false);
+    EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn) << PlayModeName(mode);
+    EXPECT_TRUE(u.dropped_ball);
+  }
+}
+
+// A set piece's touch counts more than kick-in pause + 0.03 s into the mode.
+TEST(GameKicks, SetPieceTouchCountsAfterPausePlusThirtyMilliseconds) {
+  Game game;
+  game.SetPlayMode(PlayMode::kKickInRight);
+  for (int i = 0; i < 51; ++i) game.Update(kDt, kCentre, false);  // 1.02 s
+  game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});       // 1.04 s
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  game.SetPlayMode(PlayMode::kKickInRight);
+  for (int i = 0; i < 50; ++i) game.Update(kDt, kCentre, false);
+  game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});  // 1.02 s: too early
+  EXPECT_EQ(game.play_mode(), PlayMode::kKickInRight);
+}
+
+// UpdateGoalKick: after the touch, PlayOn once the ball is out of the box.
+TEST(GameKicks, GoalKickPlaysOnWhenTheTouchedBallLeavesThePenaltyBox) {
+  Game game;
+  game.SetPlayMode(PlayMode::kGoalKickLeft);
+  for (int i = 0; i < 60; ++i) game.Update(kDt, {-14, 0, 0.042}, false);
+  game.Update(kDt, {-14, 0, 0.042}, std::vector<Toucher>{kLeft1});
+  EXPECT_EQ(game.play_mode(), PlayMode::kGoalKickLeft);
+  game.Update(kDt, {-13.3, 0.5, 0.042}, false);
+  EXPECT_EQ(game.play_mode(), PlayMode::kGoalKickLeft);
+  game.Update(kDt, {-13.1, 0.5, 0.042}, false);
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+}
+
+// UpdatePassMode: PlayOn at a touch, before PassModeDuration.
+TEST(GameKicks, PassModeEndsAtATouch) {
+  Game game;
+  game.SetPlayMode(PlayMode::kPassLeft);
+  game.Update(kDt, kCentre, false);
+  EXPECT_EQ(game.play_mode(), PlayMode::kPassLeft);
+  game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+}
+
+// UpdateOffside's body is compiled out: the mode lasts.
+TEST(GameKicks, OffsideModeLastsUntilTheTrainerChangesIt) {
+  Game game;
+  game.SetPlayMode(PlayMode::kOffsideLeft);
+  for (int i = 0; i < 1000; ++i) game.Update(kDt, kCentre, i % 2 == 0);
+  EXPECT_EQ(game.play_mode(), PlayMode::kOffsideLeft);
+}
+
+// GameStateAspect::KickOff(TI_NONE): half 2's first kick-off goes to the team
+// that did not win half 1's coin toss.
+TEST(GameFlow, SecondHalfKickOffGoesToTheOtherTeam) {
+  for (uint64_t seed = 1; seed <= 8; ++seed) {
+    Rng rng(seed);
+    Game game;
+    game.KickOff(std::nullopt, &rng);
+    const PlayMode first = game.play_mode();
+    game.SetGameTime(299.99);
+    game.Update(kDt, kCentre, false);
+    ASSERT_EQ(game.half(), 2);
+    game.KickOff(std::nullopt, &rng);
+    EXPECT_NE(game.play_mode(), first) << seed;
+  }
+}
+
 TEST(GameFlow, CoinTossPicksBothSides) {
   int left = 0;
   Rng rng(1);
@@ -338,10 +567,13 @@ TEST(GameFlow, OutBallDroppedInsideAfterThePause) {
 
 TEST(GameFlow, DropPositionLeavesPenaltyAreas) {
   Game game;
-  EXPECT_TRUE(game.DropPosition({14, 0.5, 0.3}).isApprox(Eigen::Vector3d(13.2, 3, 0.042)));
-  EXPECT_TRUE(game.DropPosition({-15.5, -0.2, 0.042}).isApprox(Eigen::Vector3d(-13.2, -3, 0.042)));
+  // The rule aspect's box is 1.8 deep and 3.9 wide (PenaltyWidth), edges included.
+  EXPECT_TRUE(game.DropPosition({14, 0.5, 0.3}).isApprox(Eigen::Vector3d(13.2, 1.95, 0.042)));
+  EXPECT_TRUE(game.DropPosition({-15.5, -0.2, 0.042}).isApprox(Eigen::Vector3d(-13.2, -1.95, 0.042)));
+  EXPECT_TRUE(game.DropPosition({13.2, 1.95, 0.042}).isApprox(Eigen::Vector3d(13.2, 1.95, 0.042)));
+  EXPECT_TRUE(game.DropPosition({14, 0, 0.042}).isApprox(Eigen::Vector3d(13.2, 1.95, 0.042)));  // y = 0: +
   EXPECT_TRUE(game.DropPosition({5, -12, 0.042}).isApprox(Eigen::Vector3d(5, -9.958, 0.042)));
-  EXPECT_TRUE(game.DropPosition({14, 3.5, 0.042}).isApprox(Eigen::Vector3d(14, 3.5, 0.042)));
+  EXPECT_TRUE(game.DropPosition({14, 2.5, 0.042}).isApprox(Eigen::Vector3d(14, 2.5, 0.042)));
 }
 
 TEST(GameTrainer, DropBallScoreTimeAndModes) {
@@ -351,7 +583,7 @@ TEST(GameTrainer, DropBallScoreTimeAndModes) {
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
   const GameUpdate u = game.Update(kDt, {-14, 0, 0.042}, false);
   ASSERT_TRUE(u.place_ball.has_value());
-  EXPECT_TRUE(u.place_ball->isApprox(Eigen::Vector3d(-13.2, 3, 0.042)));
+  EXPECT_TRUE(u.place_ball->isApprox(Eigen::Vector3d(-13.2, 1.95, 0.042)));
   game.SetScore(2, std::nullopt);
   game.SetScore(std::nullopt, 5);
   EXPECT_EQ(game.score(Side::kLeft), 2);
