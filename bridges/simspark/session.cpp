@@ -134,6 +134,7 @@ void Session::ReleaseRobot(Agent* agent) {
   park.reset_joints = true;
   requests_.moves.push_back(park);
   requests_.joints.erase(robots_[agent->robot]);
+  held_joints_.erase(robots_[agent->robot]);
   robot_owner_[agent->robot] = -1;
   agent->robot = -1;
 }
@@ -238,6 +239,13 @@ std::vector<int> Session::Waiting() const {
 WorldRequests Session::TakeRequests() {
   WorldRequests out = std::move(requests_);
   requests_ = WorldRequests{};
+  // rcssserver3d sends, in cycle n, the perception generated at the end of
+  // cycle n-1, after realizing the messages read at the start of cycle n: an
+  // answer to the state after step k moves the joints from step k+2 on
+  // (shared/protocols/simspark.md, "Order inside cycle"). turf sends a
+  // perception right after its step, so the joint velocities asked in this
+  // cycle go to the world with the next one.
+  std::swap(out.joints, held_joints_);
   for (auto& [id, a] : agents_) a.synced = false;
   return out;
 }

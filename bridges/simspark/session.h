@@ -11,8 +11,10 @@
 //   -- the participant steps the world one cycle --
 //   Advance(snapshot)     game state, then one perception per agent
 //   TakeOutputs()         the perception messages (payloads, unframed)
-// Facts: shared/protocols/simspark.md. Unlike rcssserver3d, an answer is
-// applied before the next step (no extra cycle of latency).
+// Facts: shared/protocols/simspark.md. As in rcssserver3d, an agent's joint
+// velocities act one cycle after the perception they answer: TakeRequests()
+// returns the ones asked in the previous cycle (beams and trainer moves act
+// at once).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -169,6 +171,7 @@ class Session {
   Field3dGeometry field_;
   Rng beam_rng_;
   WorldRequests requests_;
+  std::map<std::string, std::vector<JointVelocity>> held_joints_;  // asked last cycle, for this step
   std::vector<std::pair<int, std::string>> outputs_;
   std::vector<SessionIssue> issues_;
   std::vector<int> kicked_;

@@ -320,13 +320,39 @@ TEST(SessionInit, InitBeforeSceneAndTwiceAreIssues) {
 
 // --- hinge effectors ---
 
+// Joint velocities asked in a cycle reach the world with the next one (the
+// reference's cycle of action latency): the first take has none of them.
+WorldRequests TakeAnswered(Session& s) {
+  EXPECT_TRUE(s.TakeRequests().joints.empty()) << "joint velocities acted in the cycle they were asked";
+  return s.TakeRequests();
+}
+
+TEST(SessionEffectors, AnAnswerMovesTheJointsOneCycleLaterAsTheReference) {
+  Harness h(1);
+  const int a = h.Join("Alpha", 1);
+  h.Cycle();
+  h.session.Receive(a, "(he1 1)");
+  WorldRequests now;
+  h.Cycle(&now);
+  EXPECT_EQ(now.joints.count("nao_1"), 0u);
+  h.session.Receive(a, "(he1 -1)");
+  WorldRequests next;
+  h.Cycle(&next);
+  ASSERT_EQ(next.joints.count("nao_1"), 1u);
+  EXPECT_DOUBLE_EQ(next.joints.at("nao_1").at(0).velocity, 1.0);  // the first answer, not the second
+  WorldRequests after;
+  h.Cycle(&after);
+  ASSERT_EQ(after.joints.count("nao_1"), 1u);
+  EXPECT_DOUBLE_EQ(after.joints.at("nao_1").at(0).velocity, -1.0);
+}
+
 TEST(SessionEffectors, HingeVelocitiesByModelJointNameClampedForType0) {
   Harness h(1);
   const int a = h.Join("Alpha", 1);
   h.Cycle();  // as agents do: effectors after the first perception
   h.session.Receive(a, "(he1 1.5)(rle4 -20)(lae3 20)(lle5 7)");
   h.session.Receive(a, "(he1 0.25)");  // the last for a joint wins
-  const WorldRequests requests = h.session.TakeRequests();
+  const WorldRequests requests = TakeAnswered(h.session);
   ASSERT_EQ(requests.joints.size(), 1u);
   const std::vector<JointVelocity>& v = requests.joints.at("nao_1");
   ASSERT_EQ(v.size(), 4u);
@@ -348,7 +374,7 @@ TEST(SessionEffectors, Type2AnklesHaveTheirOwnLimits) {
   const int a = h.Join("Alpha", 1, 2);
   h.Cycle();
   h.session.Receive(a, "(rle5 20)(lle5 -20)(rle6 20)(lle6 -1)(rle4 20)");
-  const WorldRequests requests = h.session.TakeRequests();
+  const WorldRequests requests = TakeAnswered(h.session);
   const std::vector<JointVelocity>& v = requests.joints.at("nao_1");
   ASSERT_EQ(v.size(), 5u);
   EXPECT_EQ(v[0].joint, "rlj5");
@@ -387,7 +413,7 @@ TEST(SessionEffectors, Type4ToesAreNotAnIssue) {
   h.Cycle();
   h.session.Receive(a, "(lle7 1)(he1 1)");
   EXPECT_TRUE(h.session.TakeIssues().empty());
-  const WorldRequests requests = h.session.TakeRequests();
+  const WorldRequests requests = TakeAnswered(h.session);
   ASSERT_EQ(requests.joints.count("nao_1"), 1u);
   EXPECT_EQ(requests.joints.at("nao_1").back().joint, "hj1");
 }
@@ -736,9 +762,12 @@ TEST(SessionDisconnect, ParksTheRobotDropsItsJointsAndFreesTheSlot) {
   EXPECT_EQ(requests.moves[0].robot, "nao_1");
   EXPECT_TRUE(requests.moves[0].reset_joints);
   EXPECT_TRUE(requests.moves[0].position.isApprox(h.world.Parks()[0].position));
-  EXPECT_EQ(requests.joints.count("nao_1"), 0u);
-  EXPECT_EQ(requests.joints.count("nao_2"), 1u);
+  EXPECT_TRUE(requests.joints.empty());  // answers act one cycle later
   EXPECT_EQ(OutputFor(outputs, a), "");
+  WorldRequests next;
+  h.Cycle(&next);
+  EXPECT_EQ(next.joints.count("nao_1"), 0u);
+  EXPECT_EQ(next.joints.count("nao_2"), 1u);
 
   // A newcomer gets the free robot and the free number.
   const int c = h.Join("Alpha", 1);
