@@ -21,19 +21,21 @@ struct LeggedRates {
   double joint_state_hz = 50.0;  // joints, IMU, force sensors (SimSpark's cycle is 50 Hz)
 };
 
-// Joint servos (per robot). Velocity mode is SimSpark's hinge motor: the
-// target velocity is integrated into a reference angle that a PD holds, so a
-// zero velocity holds the joint still like ODE's motor; torques saturate at
-// max_torque. Position mode uses the command's gains, or these defaults.
+// Joint motors (per robot). Velocity mode is SimSpark's hinge motor (ODE's
+// dParamVel/dParamFMax): a velocity constraint solved with the contacts in
+// each step, reaching the target within the step unless that needs more than
+// max_torque. Position mode is an implicit PD with the command's gains, or
+// these defaults, bounded by max_torque too.
 struct MotorParams {
-  double max_torque = 10.0;    // N m, SimSpark's motor FMax
-  double max_speed = 6.1395;   // rad/s, |target velocity| is clamped to it
-  double velocity_kp = 200.0;  // N m / rad, reference-angle tracking of velocity mode
-  double velocity_kd = 2.0;    // N m s / rad
-  double position_kp = 50.0;   // default gains of position mode
+  double max_torque = 10.0;   // N m, SimSpark's motor FMax
+  double max_speed = 6.1395;  // rad/s, |target velocity| is clamped to it
+  double position_kp = 50.0;  // default gains of position mode
   double position_kd = 1.0;
-  // How far the reference angle may run ahead of a blocked joint.
-  double max_reference_lead = 0.05;  // rad
+  // Unused since velocity mode is a constraint (no reference-angle PD); still
+  // accepted so that scene files that set them keep loading.
+  double velocity_kp = 200.0;
+  double velocity_kd = 2.0;
+  double max_reference_lead = 0.05;
 };
 
 // One placement of a robot model.

@@ -15,6 +15,17 @@ namespace {
 
 constexpr int kErrorSize = 1000;
 
+// A stiff motor row's compliance R relative to its inverse inertia (MuJoCo's
+// largest impedance, mjMAXIMP): a load f creeps through at dt R f. Stiffer
+// rows need far more solver iterations than a match scene affords (measured:
+// 1e-5 spikes at 50 iterations, not at 200), so velocity mode feeds the creep
+// back instead: its target carries (reference - q) / kCreepTime, where the
+// reference angle integrates the commanded velocity and the difference is
+// kept within kCreepLead (a blocked joint does not wind it up).
+constexpr double kStiffCompliance = 1e-4;
+constexpr double kCreepTime = 0.1;   // s
+constexpr double kCreepLead = 0.01;  // rad
+
 // The model from MJCF text, through MuJoCo's virtual file system.
 mjModel* CompileMjcf(const std::string& xml) {
   auto vfs = std::make_unique<mjVFS>();  // ~2 MB: never on the stack
@@ -45,7 +56,8 @@ struct LeggedWorld::JointSlot {
   double hi = 0.0;
   JointCommand command;    // the holding command (joint name unused)
   double reference = 0.0;  // velocity mode: integrated target angle
-  double effort = 0.0;
+  double effort = 0.0;     // the motor row's force in the last step
+  int row = -1;            // its motor's constraint row in this step, -1 if none
 };
 
 struct LeggedWorld::SensorRef {
@@ -134,6 +146,9 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
       js.hi = m->jnt_range[2 * j + 1];
       slot.joints.push_back(js);
     }
+    // Each joint's motor is a constraint row bounded by max_torque: MuJoCo's
+    // dof friction row, whose target velocity and bound the servo stage sets.
+    for (const JointSlot& js : slot.joints) model_->dof_frictionloss[js.dof] = spec.motors.max_torque;
     for (int s = 0; s < m->nsensor; ++s) {
       const char* name = mj_id2name(m, mjOBJ_SENSOR, s);
       if (!StartsWith(name, prefix)) continue;
@@ -159,6 +174,11 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
       }
     }
     robots_.push_back(std::move(slot));
+  }
+  motor_of_dof_.assign(m->nv, {-1, -1});
+  for (size_t r = 0; r < robots_.size(); ++r) {
+    for (size_t j = 0; j < robots_[r].joints.size(); ++j)
+      motor_of_dof_[robots_[r].joints[j].dof] = {static_cast<int>(r), static_cast<int>(j)};
   }
   Reset();
 }
@@ -342,44 +362,85 @@ JointCommandError LeggedWorld::SetJointCommand(int robot, const JointCommand& c)
   return JointCommandError::kOk;
 }
 
-// Stage 1: each joint's command becomes a torque, saturated at max_torque.
+// Stage 1 (between mj_step1 and mj_step2): each joint's command becomes its
+// motor row, as ODE's hinge motor (dParamVel, dParamFMax): a velocity
+// constraint solved with the contacts and limits of this step, whose force is
+// bounded by max_torque; it reaches the target velocity at the end of the step
+// when the bound allows. Position mode is an implicit PD on the same row
+// (force kp (target - q - dt qd') - kd qd', bounded, no faster than
+// max_speed); torque mode drives towards +-max_speed with at most the
+// commanded torque. A motor never turns faster than max_speed by itself.
 void LeggedWorld::StageServos() {
-  const double dt = model_->opt.timestep;
+  const mjModel* m = model_.get();
+  mjData* d = data_.get();
+  const double dt = m->opt.timestep;
   for (RobotSlot& r : robots_) {
-    const MotorParams& m = r.spec->motors;
     for (JointSlot& j : r.joints) {
-      const double q = data_->qpos[j.qpos];
-      const double qd = data_->qvel[j.dof];
-      double torque = 0.0;
+      j.row = -1;
+      d->qfrc_applied[j.dof] = 0.0;
+    }
+  }
+  for (int i = 0; i < d->nefc; ++i) {
+    if (d->efc_type[i] != mjCNSTR_FRICTION_DOF) continue;
+    const auto [robot, joint] = motor_of_dof_[d->efc_id[i]];
+    if (robot >= 0) robots_[robot].joints[joint].row = i;
+  }
+  for (RobotSlot& r : robots_) {
+    const MotorParams& motors = r.spec->motors;
+    for (JointSlot& j : r.joints) {
+      double target = 0.0;  // velocity at the end of the step
+      double bound = motors.max_torque;
+      double gain = 0.0;  // N m s / rad; 0 = stiff (ODE's joint CFM 1e-8)
       switch (j.command.mode) {
         case JointMode::kVelocity: {
-          const double v = j.command.value;
-          double ref = j.reference + v * dt;
-          if (j.limited) ref = std::clamp(ref, j.lo, j.hi);
-          ref = std::clamp(ref, q - m.max_reference_lead, q + m.max_reference_lead);
-          j.reference = ref;
-          torque = m.velocity_kp * (ref - q) + m.velocity_kd * (v - qd);
+          const double q = d->qpos[j.qpos];
+          const double creep = std::clamp(j.reference - q, -kCreepLead, kCreepLead);
+          target = j.command.value + creep / kCreepTime;
+          j.reference = q + creep + j.command.value * dt;
+          if (j.limited) j.reference = std::clamp(j.reference, j.lo, j.hi);
           break;
         }
         case JointMode::kPosition: {
-          const double kp = j.command.kp >= 0 ? j.command.kp : m.position_kp;
-          const double kd = j.command.kd >= 0 ? j.command.kd : m.position_kd;
-          torque = kp * (j.command.value - q) - kd * qd;
+          const double kp = j.command.kp >= 0 ? j.command.kp : motors.position_kp;
+          const double kd = j.command.kd >= 0 ? j.command.kd : motors.position_kd;
+          gain = kp * dt + kd;
+          if (gain > 0) {
+            target = std::clamp(kp * (j.command.value - d->qpos[j.qpos]) / gain, -motors.max_speed, motors.max_speed);
+          } else {
+            bound = 0.0;
+          }
           break;
         }
         case JointMode::kTorque:
-          torque = j.command.value;
+          // A motor with a speed limit (ODE's way of torque control): the
+          // torque drives the joint up to max_speed, and no faster.
+          target = j.command.value >= 0 ? motors.max_speed : -motors.max_speed;
+          bound = std::abs(j.command.value);
           break;
       }
-      j.effort = std::clamp(torque, -m.max_torque, m.max_torque);
-      data_->qfrc_applied[j.dof] = j.effort;
+      j.effort = 0.0;
+      if (j.row < 0) continue;
+      const int i = j.row;
+      d->efc_frictionloss[i] = bound;
+      d->efc_aref[i] = (target - d->efc_vel[i]) / dt;
+      // The row's force is -(J qacc - aref) / R inside the bound: R = 1 / (dt
+      // gain) makes it gain (target - qd'); a stiff row uses MuJoCo's largest
+      // impedance (mjMAXIMP).
+      d->efc_R[i] = gain > 0 ? 1.0 / (dt * gain) : d->efc_diagApprox[i] * kStiffCompliance;
+      d->efc_D[i] = 1.0 / d->efc_R[i];
     }
   }
 }
 
-// Stage 2: one MuJoCo step; false if it produced a non-finite state.
+// Stage 2: the rest of the MuJoCo step (mj_step2: constraint solver and
+// integration); false if it produced a non-finite state.
 bool LeggedWorld::StagePhysics() {
-  mj_step(model_.get(), data_.get());
+  mj_step2(model_.get(), data_.get());
+  for (RobotSlot& r : robots_) {
+    for (JointSlot& j : r.joints) {
+      j.effort = j.row >= 0 ? data_->efc_force[j.row] : 0.0;
+    }
+  }
   for (int i = 0; i < model_->nq; ++i) {
     if (!std::isfinite(data_->qpos[i])) return false;
   }
@@ -390,6 +451,7 @@ bool LeggedWorld::StagePhysics() {
 }
 
 void LeggedWorld::Step() {
+  mj_step1(model_.get(), data_.get());
   StageServos();
   if (StagePhysics()) {
     AcceptState();

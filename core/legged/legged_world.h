@@ -4,7 +4,10 @@
 //
 // A step runs in named stages; inputs enter only between steps:
 //   inputs   SetJointCommand / Reset (validated; a refused input changes nothing)
-//   Step():  1 servos (commands -> joint torques, saturated)  2 physics (mj_step)
+//   Step():  mj_step1 (positions, velocities, constraint rows)
+//            1 servos (commands -> each joint's motor row: target velocity and
+//              force bound, as ODE's hinge motor)
+//            2 physics (mj_step2: one constraint solve, integration)
 //            3 health (a non-finite state is undone)
 //   outputs  State() and the accessors (read-only)
 // Sensor values are MuJoCo's, computed at the start of the last mj_step (or by
@@ -15,6 +18,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/legged/legged_scene.h"
@@ -92,7 +96,7 @@ struct LeggedRobotState {
   std::vector<std::string> joint_names;      // hinge and slide joints, model order
   std::vector<double> joint_positions;
   std::vector<double> joint_velocities;
-  std::vector<double> joint_efforts;              // torque applied by the servo in the last step
+  std::vector<double> joint_efforts;              // torque of the joint's motor in the last step
   bool has_imu = false;                           // the model has a gyro or an accelerometer
   std::array<double, 3> gyro{};                   // rad/s, sensor frame
   std::array<double, 3> accelerometer{};          // m/s^2, proper acceleration, sensor frame
@@ -177,6 +181,7 @@ class LeggedWorld {
   std::unique_ptr<mjModel_, MjDeleter> model_;
   std::unique_ptr<mjData_, MjDeleter> data_;
   std::vector<RobotSlot> robots_;
+  std::vector<std::pair<int, int>> motor_of_dof_;  // dof -> (robot, joint), -1 for none
   int ball_body_ = -1;
   int ball_qvel_ = -1;
   int64_t step_ns_ = 0;

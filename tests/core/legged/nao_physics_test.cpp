@@ -189,8 +189,11 @@ TEST_P(NaoPhysicsTest, RandomVelocityCommandsDoNotExplode) {
 }
 
 TEST_P(NaoPhysicsTest, RandomMixedCommandsDoNotExplode) {
-  // Full torque on a light arm link spins it fast, but never without bound.
-  EXPECT_LT(RunRandomCommands(Scene(2, /*field=*/true), /*mixed=*/true), 100.0);
+  // Torque and position modes drive a joint no faster than max_speed (the
+  // motor's speed limit), but a joint under a small torque is nearly free and
+  // falls and impacts whip its light links (measured 38-40 rad/s; 63-67 before
+  // the motors were speed-limited constraints).
+  EXPECT_LT(RunRandomCommands(Scene(2, /*field=*/true), /*mixed=*/true), 60.0);
 }
 
 // Same scene and command stream: identical state, also after a reset.
