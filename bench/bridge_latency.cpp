@@ -25,9 +25,9 @@
 #include <thread>
 #include <vector>
 
-#include "bridges/grsim/grsim_codec.h"
-#include "bridges/proto/grsim.pb.h"
-#include "bridges/ssl_vision/detection.h"
+#include "codecs/grsim/grsim_codec.h"
+#include "codecs/proto/grsim.pb.h"
+#include "codecs/ssl_vision/detection.h"
 #include "dds/participant.h"
 #include "participants/common/udp.h"
 

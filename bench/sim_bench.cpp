@@ -18,7 +18,7 @@
 #include <cstdio>
 #include <thread>
 
-#include "config/scene_yaml.h"
+#include "loader/scene_yaml.h"
 #include "dds/participant.h"
 #include "participants/common/process.h"
 #include "participants/sim/sim_node.h"

@@ -1,5 +1,5 @@
 // The scene: an immutable, typed description of one SSL world. Plain data with
-// defaults in the declarations; filled by turf_config from a YAML file (or by
+// defaults in the declarations; filled by turf_loader from a YAML file (or by
 // tests directly) and never changed while a world runs. SI units throughout.
 #pragma once
 

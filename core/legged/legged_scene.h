@@ -1,6 +1,6 @@
 // A legged scene: any MJCF robots placed on a ground (optionally the RoboCup
 // 3D soccer field and ball). Plain typed data with defaults; filled by
-// config/legged_scene_yaml.* and checked by ValidateLeggedScene. The robot
+// loader/legged_scene_yaml.* and checked by ValidateLeggedScene. The robot
 // models arrive as MJCF text: core never opens files.
 #pragma once
 

@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "bridges/grsim/robot_status.h"
+#include "codecs/grsim/robot_status.h"
 #include "dds/participant.h"
 #include "dds/request_id.h"
 #include "participants/common/process.h"

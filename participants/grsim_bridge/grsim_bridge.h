@@ -1,5 +1,5 @@
 // turf-grsim-bridge: lets team software that speaks grSim's UDP protocol drive
-// turf-sim. The codec is bridges/grsim/; this is the socket and DDS plumbing.
+// turf-sim. The codec is codecs/grsim/; this is the socket and DDS plumbing.
 //
 // UDP (wire facts: shared/protocols/grsim.md):
 //   listens  <listen>:<port> (0.0.0.0:20011)   grSim_Packet: commands, replacement
@@ -30,7 +30,7 @@
 #include <memory>
 #include <string>
 
-#include "bridges/grsim/grsim_codec.h"
+#include "codecs/grsim/grsim_codec.h"
 
 namespace turf {
 

@@ -9,7 +9,7 @@
 #include <set>
 #include <sstream>
 
-#include "config/realism_yaml.h"
+#include "loader/realism_yaml.h"
 #include "participants/launcher/programs.h"
 
 namespace turf::launch {

@@ -12,9 +12,9 @@
 #include <set>
 #include <sstream>
 
-#include "config/realism_yaml.h"
-#include "config/text_file.h"
-#include "config/yaml_reader.h"
+#include "loader/realism_yaml.h"
+#include "loader/text_file.h"
+#include "loader/yaml_reader.h"
 #include "participants/launcher/programs.h"
 
 namespace turf::launch {

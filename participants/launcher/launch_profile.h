@@ -84,7 +84,7 @@ ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::st
 ProfileLoadResult LoadLaunchProfile(const std::string& name_or_path, const std::string& dir);
 
 // True if the scene file's top level says `kind: legged` (as
-// config/legged_scene_yaml.h's IsLeggedSceneFile, which would link the physics).
+// loader/legged_scene_yaml.h's IsLeggedSceneFile, which would link the physics).
 bool IsLeggedScene(const std::string& path);
 
 // configs/launch/ of this source tree.

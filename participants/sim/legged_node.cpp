@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "config/realism_yaml.h"
+#include "loader/realism_yaml.h"
 #include "core/legged/legged_sensors.h"
 #include "core/legged/legged_world.h"
 #include "dds/participant.h"

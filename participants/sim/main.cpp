@@ -8,9 +8,9 @@
 #include <optional>
 #include <string>
 
-#include "config/legged_scene_yaml.h"
-#include "config/realism_yaml.h"
-#include "config/scene_yaml.h"
+#include "loader/legged_scene_yaml.h"
+#include "loader/realism_yaml.h"
+#include "loader/scene_yaml.h"
 #include "participants/common/process.h"
 #include "participants/sim/legged_node.h"
 #include "participants/sim/sim_node.h"

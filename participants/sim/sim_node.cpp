@@ -9,7 +9,7 @@
 #include <cmath>
 #include <deque>
 
-#include "config/realism_yaml.h"
+#include "loader/realism_yaml.h"
 #include "core/input_limits.h"
 #include "core/link_model.h"
 #include "core/rng.h"

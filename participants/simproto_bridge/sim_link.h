@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "bridges/ssl_simulation/robot_control.h"
+#include "codecs/ssl_simulation/robot_control.h"
 #include "dds/participant.h"
 
 namespace turf {

@@ -10,11 +10,11 @@
 #include <thread>
 #include <vector>
 
-#include "bridges/ssl_simulation/errors.h"
-#include "bridges/ssl_simulation/robot_control.h"
-#include "bridges/ssl_simulation/simulator_command.h"
-#include "bridges/ssl_simulation/step_planner.h"
-#include "bridges/ssl_simulation/sync.h"
+#include "codecs/ssl_simulation/errors.h"
+#include "codecs/ssl_simulation/robot_control.h"
+#include "codecs/ssl_simulation/simulator_command.h"
+#include "codecs/ssl_simulation/step_planner.h"
+#include "codecs/ssl_simulation/sync.h"
 #include "participants/common/process.h"
 #include "participants/common/udp.h"
 #include "participants/simproto_bridge/sim_link.h"

@@ -1,5 +1,5 @@
 // turf-simproto-bridge's node: the SSL simulation protocol (UDP, protobuf) in
-// front of turf-sim (DDS). Codecs: bridges/ssl_simulation/.
+// front of turf-sim (DDS). Codecs: codecs/ssl_simulation/.
 //
 // UDP ports (answers go back to the sender's address and port; 0 disables one):
 //   control 10300  SimulatorCommand -> SimulatorResponse, after turf-sim replied

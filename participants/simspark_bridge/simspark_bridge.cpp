@@ -12,8 +12,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "bridges/simspark/framing.h"
-#include "bridges/simspark/session.h"
+#include "codecs/simspark/framing.h"
+#include "codecs/simspark/session.h"
 #include "participants/common/process.h"
 #include "participants/common/tcp.h"
 #include "participants/simspark_bridge/world_link.h"

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "bridges/simspark/session.h"
+#include "codecs/simspark/session.h"
 #include "dds/participant.h"
 
 namespace turf {

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "bridges/ssl_vision/timestamps.h"
+#include "codecs/ssl_vision/timestamps.h"
 #include "participants/common/process.h"
 #include "participants/vision_bridge/vision_bridge.h"
 

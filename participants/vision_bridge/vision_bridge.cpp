@@ -14,9 +14,9 @@
 #include <random>
 #include <stdexcept>
 
-#include "bridges/ssl_vision/detection.h"
-#include "bridges/ssl_vision/geometry.h"
-#include "bridges/ssl_vision/tracked.h"
+#include "codecs/ssl_vision/detection.h"
+#include "codecs/ssl_vision/geometry.h"
+#include "codecs/ssl_vision/tracked.h"
 #include "dds/participant.h"
 #include "participants/common/process.h"
 #include "participants/common/udp.h"

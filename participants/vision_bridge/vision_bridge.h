@@ -13,7 +13,7 @@
 //                                 capture rounds (default 224.5.23.2:10020)
 //   tracked_address:tracked_port  one TrackerWrapperPacket per world state
 //                                 (default 224.5.23.2:10010, only with `tracked`)
-// Times (bridges/ssl_vision/timestamps.h): by default turf-sim's run epoch
+// Times (codecs/ssl_vision/timestamps.h): by default turf-sim's run epoch
 // plus simulation time, in Unix seconds, so every bridge and a restarted one
 // stamp alike and the times follow the simulation at any speed; frames that
 // arrive before the epoch is known are dropped and counted (`no_epoch`).
@@ -29,7 +29,7 @@
 #include <memory>
 #include <string>
 
-#include "bridges/ssl_vision/timestamps.h"
+#include "codecs/ssl_vision/timestamps.h"
 
 namespace turf {
 

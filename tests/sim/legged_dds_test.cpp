@@ -13,7 +13,7 @@
 #include <optional>
 #include <thread>
 
-#include "config/legged_scene_yaml.h"
+#include "loader/legged_scene_yaml.h"
 #include "dds/participant.h"
 #include "participants/sim/legged_node.h"
 #include "tests/test_domain.h"

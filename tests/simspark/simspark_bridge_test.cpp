@@ -17,7 +17,7 @@
 #include <thread>
 #include <vector>
 
-#include "config/legged_scene_yaml.h"
+#include "loader/legged_scene_yaml.h"
 #include "participants/sim/legged_node.h"
 #include "participants/simspark_bridge/simspark_bridge.h"
 #include "tests/simspark/agent_client.h"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "config/legged_scene_yaml.h"
+#include "loader/legged_scene_yaml.h"
 #include "core/legged/legged_world.h"
 
 namespace turf {

@@ -1,0 +1,216 @@
+// The minimal soccer game state behind GS, init and beam
+// (shared/protocols/simspark.md: "Connection sequence", "Team composition",
+// "Play modes", beam effector). Pure: time arrives as dt, the ball as a
+// position, touches as the players touching it this cycle; the caller applies
+// what an update asks for (ball placement). Not modelled: the auto-referee's
+// positional fouls, offside, clearing players away from the ball, the pass
+// mode's score ban, holding the ball on a set piece's spot.
+//
+// Flow, as rcssserver3d's soccer plugin runs it with naosoccersim.rb's
+// settings (references: SoccerRuleAspect::<function> in
+// plugin/soccer/soccerruleaspect/soccerruleaspect.cpp, GameStateAspect in
+// plugin/soccer/gamestateaspect/gamestateaspect.cpp; settings in
+// rcssserver3d/naosoccersim.rb):
+// - Game time runs in every mode except BeforeKickOff and GameOver
+//   (GameStateAspect::UpdateTime); a mode's time is the game time since the
+//   mode began (GameStateAspect::GetModeTime), the simulation time in those
+//   two. The halves are checked before the mode's rule each cycle
+//   (SoccerRuleAspect::Update -> CheckTime): half 1 ends in BeforeKickOff of
+//   half 2 at half_time, half 2 in GameOver at 2 * half_time. No side change.
+// - No automatic kick-off (AutomaticKickOff false): a trainer calls KickOff.
+//   In BeforeKickOff the ball is held at the centre (once some player is
+//   registered).
+// - KickOff_X -> PlayOn at the first touch; untouched for more than
+//   drop_ball_time -> drop ball where it is, PlayOn, nobody's ball.
+// - Double touch: whoever took a kick-off (with more than 2 players), a kick-in,
+//   corner, goal kick or free kick may not touch the ball again, 0.1 s or more
+//   after the kick, before another player has touched it: indirect free kick
+//   for the other team. A kick-off taker's team may not score before the ball
+//   left the centre circle after its touch or the other team touched it: goal
+//   kick for the defending team instead.
+// - In PlayOn (and pass modes): ball centre beyond a goal line by more than its
+//   radius, inside the goal mouth (|y| < goal_width/2, z < goal_height) ->
+//   Goal_Left if it is in the right goal (left scored), else Goal_Right;
+//   goal_pause later -> KickOff of the other team, ball to the centre.
+// - Ball out elsewhere: who touched it last is not known here, so there is no
+//   kick-in / corner / goal kick. The mode stays PlayOn; after kick_in_pause the
+//   ball is dropped at the point where it left, moved inside the field and out
+//   of the penalty areas (GameUpdate::place_ball). (turf's own rule.)
+// - Set-piece modes (KickIn, corner, goal kick, free kicks) -> PlayOn at the
+//   first touch more than kick_in_pause + 0.03 s into the mode (a goal kick:
+//   once the touched ball has left the team's penalty area); untouched for more
+//   than drop_ball_time -> drop ball. Pass modes -> PlayOn at a touch or after
+//   pass_duration. Offside modes: nothing (the reference's rule is compiled
+//   out), they last until a trainer changes the mode.
+#pragma once
+
+#include <Eigen/Core>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "codecs/simspark/types.h"
+#include "core/rng.h"
+
+namespace turf::simspark {
+
+struct GameRules {
+  double half_time = 300.0;      // s of game time per half (naosoccersim.rb RuleHalfTime 5 * 60)
+  double goal_pause = 3.0;       // s in Goal_X before the kick-off (RuleGoalPauseTime 3)
+  double drop_ball_time = 15.0;  // s untouched in a kick-off / set piece before a drop ball (RuleDropBallTime 15)
+  double kick_in_pause = 1.0;    // s before an out ball is dropped / a set piece may be taken (RuleKickInPauseTime 1)
+  double pass_duration = 4.0;    // s in pass_left/right (PassModeDuration 4)
+  double field_length = 30.0;
+  double field_width = 20.0;
+  double goal_width = 2.1;
+  double goal_height = 0.8;
+  // The rule aspect's penalty box (drop balls, goal kicks): PenaltyLength 1.8 deep,
+  // PenaltyWidth 3.9 wide (SoccerRuleAspect::UpdateCachedInternal); the field's
+  // drawn lines are 6.0 wide (field3d.h).
+  double penalty_depth = 1.8;
+  double penalty_width = 3.9;
+  double free_kick_distance = 2.0;  // m, the centre circle's radius (FreeKickDistance 2)
+  double goal_kick_distance = 1.0;  // m, a goal kick's spot in front of the goal line (GoalKickDist 1)
+  double ball_radius = 0.042;
+  double beam_noise_xy = 0.05;   // m, uniform +-
+  double beam_noise_deg = 10.0;  // deg, uniform +-
+  int max_players = 11;
+  bool check_composition = true;  // robot-type rules at init
+  int max_of_one_type = 7;
+  int max_of_two_types = 9;
+  int min_types = 3;
+};
+
+// Field frame; facing = direction the robot looks, degrees from +x, CCW, in (-180, 180].
+struct Pose2 {
+  double x = 0.0;
+  double y = 0.0;
+  double facing_deg = 0.0;
+};
+
+// A player touching the ball this cycle.
+struct Toucher {
+  Side side = Side::kLeft;
+  int unum = 0;
+  bool known = true;  // false: a touch by a player not identified (Update's bool form)
+  bool operator==(const Toucher& o) const { return known && o.known && side == o.side && unum == o.unum; }
+};
+
+struct InitResult {
+  bool ok = false;
+  std::string error;  // why not, when !ok
+  Side side = Side::kLeft;
+  int unum = 0;
+};
+
+// What one Update asks of the caller.
+struct GameUpdate {
+  bool goal = false;
+  Side scored_by = Side::kLeft;
+  bool place_ball_at_centre = false;  // also sets place_ball to (0, 0, ball_radius)
+  bool play_mode_changed = false;     // since the previous Update (trainer changes included)
+  // Move the ball here (world frame, centre) and zero its velocities.
+  std::optional<Eigen::Vector3d> place_ball;
+  bool dropped_ball = false;  // place_ball is a drop ball (trainer, kick-off / set-piece timeout or out ball)
+};
+
+inline constexpr int kRobotTypes = 5;  // scene types 0..4
+
+class Game {
+ public:
+  explicit Game(GameRules rules = {});
+
+  // Registers a player. The first team name becomes left, the second right, a
+  // third is rejected. unum 0 = lowest free 1..11; others any int, unique per
+  // team; at most max_players; robot type 0..4 and the composition rules
+  // (when check_composition): at most 7 of one type, at most 9 of any two
+  // types, and when the free slots no longer exceed the missing types (of 3),
+  // only an unused type. A rejected init changes nothing (the reference server
+  // keeps a new team name even then).
+  InitResult Init(const std::string& team, int requested_unum, int robot_type);
+  void Leave(Side side, int unum, int robot_type);
+  std::optional<std::string> TeamName(Side side) const;
+  int PlayerCount(Side side) const;
+
+  // Beam is realised only in BeforeKickOff, Goal_Left and Goal_Right.
+  bool BeamAllowed() const;
+  // Team frame (own goal at -x) -> field frame: x, y += U(+-beam_noise_xy),
+  // rot += U(+-beam_noise_deg) (no noise if rng is null), x clamped to
+  // [-length/2, 0], y to [-width/2, width/2]; the right team is point-mirrored
+  // (x, y negated, facing rot + 180).
+  Pose2 BeamPose(Side side, double x, double y, double rot_deg, Rng* rng) const;
+  // Where init puts a player: left (-14.2, 9.2 - 1.2 k) facing +x, k = (unum - 1)
+  // mod 11; right (14.2, 9.2 - 1.2 k) facing -x. The right side is mirrored in
+  // x only, as the reference server does (its right start row also runs from +y
+  // to -y).
+  Pose2 StartPose(Side side, int unum) const;
+
+  // Once per cycle after physics. ball = ball centre, field frame; touchers =
+  // the players touching the ball this cycle.
+  GameUpdate Update(double dt, const Eigen::Vector3d& ball, const std::vector<Toucher>& touchers);
+  // touched = some player whose identity is not known (no double-touch rules).
+  GameUpdate Update(double dt, const Eigen::Vector3d& ball, bool touched);
+
+  // Trainer commands.
+  void SetPlayMode(PlayMode mode);
+  // nullopt = coin toss (left if rng is null), except for the first kick-off of
+  // half 2 when half 1's first kick-off was a coin toss: the other team.
+  void KickOff(std::optional<Side> side, Rng* rng);
+  void SetGameTime(double t);  // clamped to >= 0
+  void SetScore(std::optional<int> left, std::optional<int> right);
+  void DropBall();  // PlayOn now; the next Update places the ball (drop position of where it is)
+
+  PlayMode play_mode() const { return mode_; }
+  double game_time() const { return game_time_; }
+  // s in the current mode: game time since the mode began (a trainer's time
+  // change shifts it); simulation time in BeforeKickOff and GameOver.
+  double mode_time() const;
+  int half() const { return half_; }
+  int score(Side side) const { return score_[Index(side)]; }
+  const GameRules& rules() const { return rules_; }
+
+  // Where a drop ball at `ball` goes: out of the penalty areas (to their front
+  // corner on the ball's side), inside the field, on the ground.
+  Eigen::Vector3d DropPosition(const Eigen::Vector3d& ball) const;
+
+ private:
+  struct Team {
+    std::optional<std::string> name;
+    std::map<int, int> players;  // unum -> robot type
+  };
+
+  static int Index(Side side) { return side == Side::kLeft ? 0 : 1; }
+  std::optional<std::string> CompositionError(const Team& team, int robot_type) const;
+  void ChangeMode(PlayMode mode);
+  void CheckHalfTime();
+  bool InPlay() const;
+  void StartKickOff(Side side);
+  // The double-touch check and the kick-off team's scoring ban, before the mode's rule.
+  void UpdateKickChecks(const Eigen::Vector3d& ball, const std::vector<Toucher>& touchers);
+  void TakeKick(const Toucher& taker);
+
+  GameRules rules_;
+  Team teams_[2];
+  PlayMode mode_ = PlayMode::kBeforeKickOff;
+  PlayMode reported_mode_ = PlayMode::kBeforeKickOff;
+  double game_time_ = 0.0;
+  double mode_start_ = 0.0;  // game time when the mode began
+  double idle_time_ = 0.0;   // simulation time in BeforeKickOff / GameOver
+  int half_ = 1;
+  int last_kick_off_half_ = 0;              // half of the last kick-off (0: none yet)
+  std::optional<Side> next_half_kick_off_;  // set by half 1's coin toss
+  // The double-touch check: the kick's taker and the game time of the kick.
+  bool kick_check_ = false;
+  std::optional<Toucher> kick_taker_;
+  double kick_time_ = 0.0;
+  // The kick-off taker's team while it may not score (nullopt: may score).
+  std::optional<Side> kick_off_team_no_score_;
+  bool goal_kick_touched_ = false;
+  int score_[2] = {0, 0};
+  bool pending_drop_ = false;
+  std::optional<Eigen::Vector3d> out_position_;  // ball left the field here (waiting for kick_in_pause)
+  double out_time_ = 0.0;
+};
+
+}  // namespace turf::simspark

@@ -1,0 +1,436 @@
+#include "codecs/simspark/session.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <type_traits>
+#include <variant>
+
+#include "codecs/simspark/effectors.h"
+#include "codecs/simspark/nao_joints.h"
+#include "codecs/simspark/perception.h"
+#include "codecs/simspark/trainer.h"
+
+namespace turf::simspark {
+
+namespace {
+
+constexpr double kDeg = 180.0 / M_PI;
+constexpr double kBeamHeight = 0.4;  // m, torso centre after beam / init (SimSpark)
+// A player touches the ball when one of its bodies' origins comes this close
+// to the ball's centre (the Nao's feet and shanks are ~0.04 m half thick).
+constexpr double kTouchDistance = 0.15;  // m
+constexpr const char* kSeenParts[] = {"head", "rlowerarm", "llowerarm", "rfoot", "lfoot"};
+
+// The Nao's forward is its model +y: a robot facing `facing_deg` (from field
+// +x) has yaw facing - 90 deg about z.
+Eigen::Quaterniond FacingToOrientation(double facing_deg) {
+  return Eigen::Quaterniond(Eigen::AngleAxisd((facing_deg - 90.0) / kDeg, Eigen::Vector3d::UnitZ()));
+}
+
+std::optional<Side> SideOf(TrainerTeam team) {
+  if (team == TrainerTeam::kLeft) return Side::kLeft;
+  if (team == TrainerTeam::kRight) return Side::kRight;
+  return std::nullopt;
+}
+
+MonitorGameState MonitorState(const Game& game) {
+  MonitorGameState now;
+  now.time = game.game_time();
+  now.half = game.half();
+  now.score_left = game.score(Side::kLeft);
+  now.score_right = game.score(Side::kRight);
+  now.play_mode = game.play_mode();
+  now.team_left = game.TeamName(Side::kLeft).value_or("");
+  now.team_right = game.TeamName(Side::kRight).value_or("");
+  return now;
+}
+
+}  // namespace
+
+const RobotSnapshot::Link* RobotSnapshot::FindLink(const std::string& link) const {
+  for (const Link& l : links)
+    if (l.name == link) return &l;
+  return nullptr;
+}
+
+const RobotSnapshot* WorldSnapshot::Find(const std::string& robot) const {
+  for (const RobotSnapshot& r : robots)
+    if (r.name == robot) return &r;
+  return nullptr;
+}
+
+Session::Session(SessionOptions options, std::vector<std::string> robots, std::vector<RobotMove> park)
+    : options_(std::move(options)),
+      robots_(std::move(robots)),
+      park_(std::move(park)),
+      robot_owner_(robots_.size(), -1),
+      game_(options_.rules),
+      field_(StandardField3d()),
+      beam_rng_(StreamSeed(options_.seed, "simspark/beam")) {
+  park_.resize(robots_.size());
+}
+
+int Session::Connect() {
+  const int id = next_agent_++;
+  Agent& a = agents_[id];
+  a.id = id;
+  a.rng = Rng(StreamSeed(options_.seed, fmt::format("simspark/agent/{}", id)));
+  a.calibration = DrawCalibrationOffset(&a.rng);
+  return id;
+}
+
+Session::Agent* Session::FindAgent(int id) {
+  auto it = agents_.find(id);
+  return it == agents_.end() ? nullptr : &it->second;
+}
+
+Session::Agent* Session::FindPlayer(Side side, int unum) {
+  for (auto& [id, a] : agents_)
+    if (a.inited && a.side == side && a.unum == unum) return &a;
+  return nullptr;
+}
+
+int Session::agents_with_robot() const {
+  int n = 0;
+  for (const auto& [id, a] : agents_) n += a.robot >= 0;
+  return n;
+}
+
+void Session::Issue(int agent, const std::string& kind, const std::string& detail) {
+  issues_.push_back({agent, kind, detail});
+}
+
+void Session::Disconnect(int agent) {
+  Agent* a = FindAgent(agent);
+  if (a == nullptr) return;
+  if (a->inited) {
+    game_.Leave(a->side, a->unum, a->type);
+    radio_.Forget(a->side, a->unum);
+  }
+  ReleaseRobot(a);
+  agents_.erase(agent);
+}
+
+void Session::TakeRobot(Agent* agent, int type) {
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    if (robot_owner_[i] >= 0) continue;
+    robot_owner_[i] = agent->id;
+    agent->robot = static_cast<int>(i);
+    agent->type = type;
+    agent->scene_cycle = cycle_;
+    RobotMove fresh = park_[i];  // a fresh robot: zero pose, standing where it was parked
+    fresh.reset_joints = true;
+    requests_.moves.push_back(fresh);
+    return;
+  }
+  Issue(agent->id, "no_robot_free", fmt::format("all {} robots of the scene are taken", robots_.size()));
+}
+
+void Session::ReleaseRobot(Agent* agent) {
+  if (agent->robot < 0) return;
+  RobotMove park = park_[agent->robot];
+  park.reset_joints = true;
+  requests_.moves.push_back(park);
+  requests_.joints.erase(robots_[agent->robot]);
+  held_joints_.erase(robots_[agent->robot]);
+  robot_owner_[agent->robot] = -1;
+  agent->robot = -1;
+}
+
+void Session::PlaceAgent(Agent* agent, const Pose2& pose) {
+  RobotMove move;
+  move.robot = robots_[agent->robot];
+  move.position = Eigen::Vector3d(pose.x, pose.y, kBeamHeight);
+  move.orientation = FacingToOrientation(pose.facing_deg);
+  requests_.moves.push_back(move);
+}
+
+void Session::Receive(int agent_id, const std::string& payload) {
+  Agent* agent = FindAgent(agent_id);
+  if (agent == nullptr) return;
+  const AgentMessage m = ParseAgentMessage(payload);
+  for (const EffectorIssue& issue : m.issues) Issue(agent_id, EffectorErrorName(issue.error), issue.detail);
+  if (m.scene) {
+    if (agent->robot >= 0) {
+      Issue(agent_id, "scene_twice", "the agent already has a robot");
+    } else {
+      TakeRobot(agent, m.scene->type);
+    }
+  }
+  if (m.init) {
+    if (agent->robot < 0) {
+      Issue(agent_id, "init_before_scene", "send (scene ...) first");
+    } else if (agent->inited) {
+      Issue(agent_id, "init_twice", "the agent is already in a team");
+    } else {
+      const InitResult r = game_.Init(m.init->team, m.init->unum, agent->type);
+      if (!r.ok) {
+        Issue(agent_id, "init_refused", r.error);
+      } else {
+        agent->inited = true;
+        agent->announce = true;
+        agent->side = r.side;
+        agent->unum = r.unum;
+        agent->team = m.init->team;
+        PlaceAgent(agent, game_.StartPose(r.side, r.unum));
+      }
+    }
+  }
+  if (m.beam) {
+    if (!agent->inited) {
+      Issue(agent_id, "beam_before_init", "send (init ...) first");
+    } else if (game_.BeamAllowed()) {
+      PlaceAgent(agent, game_.BeamPose(agent->side, m.beam->x, m.beam->y, m.beam->rot_deg, &beam_rng_));
+    }  // else ignored, as the reference does outside BeforeKickOff and Goal_X
+  }
+  if (!m.hinges.empty() && agent->robot >= 0) {
+    const RobotSnapshot* robot = last_ ? last_->Find(robots_[agent->robot]) : nullptr;
+    for (const HingeEffector& h : m.hinges) {
+      const std::optional<std::string> joint = JointForEffector(h.effector, agent->type);
+      if (!joint) {
+        Issue(agent_id, "unknown_effector", fmt::format("{} (robot type {})", h.effector, agent->type));
+        continue;
+      }
+      // Type 4's toes (lle7, rle7) are accepted but the one Nao model has none.
+      if (robot == nullptr ||
+          std::find(robot->joint_names.begin(), robot->joint_names.end(), *joint) == robot->joint_names.end())
+        continue;
+      // Here, not before the loop: a message without a usable joint asks nothing (no empty command).
+      std::vector<JointVelocity>& targets = requests_.joints[robots_[agent->robot]];
+      const double limit = NaoMaxSpeed(agent->type, *joint);
+      const double v = std::clamp(h.velocity, -limit, limit);
+      bool replaced = false;
+      for (JointVelocity& t : targets) {
+        if (t.joint == *joint) {
+          t.velocity = v;
+          replaced = true;
+        }
+      }
+      if (!replaced) targets.push_back({*joint, v});
+    }
+  }
+  if (m.say && agent->inited && last_) {
+    const RobotSnapshot* robot = last_->Find(robots_[agent->robot]);
+    const RobotSnapshot::Link* torso = robot != nullptr ? robot->FindLink("torso") : nullptr;
+    Speaker who{agent->team, agent->side, agent->unum, torso != nullptr ? torso->position : Eigen::Vector3d::Zero()};
+    radio_.Say(who, *m.say, game_.game_time());
+  }
+  if (m.syn) agent->synced = true;
+}
+
+bool Session::ReadyToStep() const {
+  if (!options_.sync_mode) return true;
+  for (const auto& [id, a] : agents_) {
+    if (a.robot < 0 || a.synced) continue;
+    if (cycle_ - a.scene_cycle >= static_cast<uint64_t>(options_.sync_grace_cycles)) return false;
+  }
+  return true;
+}
+
+std::vector<int> Session::Waiting() const {
+  std::vector<int> out;
+  for (const auto& [id, a] : agents_)
+    if (a.robot >= 0 && !a.synced) out.push_back(id);
+  return out;
+}
+
+WorldRequests Session::TakeRequests() {
+  WorldRequests out = std::move(requests_);
+  requests_ = WorldRequests{};
+  // rcssserver3d sends, in cycle n, the perception generated at the end of
+  // cycle n-1, after realizing the messages read at the start of cycle n: an
+  // answer to the state after step k moves the joints from step k+2 on
+  // (shared/protocols/simspark.md, "Order inside cycle"). turf sends a
+  // perception right after its step, so the joint velocities asked in this
+  // cycle go to the world with the next one.
+  std::swap(out.joints, held_joints_);
+  for (auto& [id, a] : agents_) a.synced = false;
+  return out;
+}
+
+// What the trainer asks, applied to the game and the world requests.
+struct TrainerCommandVisitor {
+  Session* s;
+  void operator()(const MoveAgent& c) const {
+    const std::optional<Side> side = SideOf(c.team);
+    Session::Agent* a = side ? s->FindPlayer(*side, c.unum) : nullptr;
+    if (a == nullptr || a->robot < 0) {
+      s->Issue(-1, "unknown_agent", fmt::format("no player {} of that team", c.unum));
+      return;
+    }
+    RobotMove move;
+    move.robot = s->robots_[a->robot];
+    move.position = Eigen::Vector3d(c.pos[0], c.pos[1], c.pos[2]);
+    move.orientation = Eigen::Quaterniond::Identity();
+    const RobotSnapshot* robot = s->last_ ? s->last_->Find(move.robot) : nullptr;
+    const RobotSnapshot::Link* torso = robot != nullptr ? robot->FindLink("torso") : nullptr;
+    if (c.yaw_deg) {
+      move.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(*c.yaw_deg / kDeg, Eigen::Vector3d::UnitZ()));
+    } else if (torso != nullptr) {
+      move.orientation = torso->orientation;
+    }
+    s->requests_.moves.push_back(move);
+  }
+  void operator()(const SetBall& c) const {
+    BallMove move;
+    move.position = s->last_ ? s->last_->ball : Eigen::Vector3d(0, 0, s->game_.rules().ball_radius);
+    move.velocity = Eigen::Vector3d::Zero();
+    if (c.pos) move.position = Eigen::Vector3d((*c.pos)[0], (*c.pos)[1], (*c.pos)[2]);
+    if (c.vel) move.velocity = Eigen::Vector3d((*c.vel)[0], (*c.vel)[1], (*c.vel)[2]);
+    s->requests_.ball = move;
+  }
+  void operator()(const SetPlayModeCmd& c) const { s->game_.SetPlayMode(c.mode); }
+  void operator()(const KickOffCmd& c) const { s->game_.KickOff(SideOf(c.team), &s->beam_rng_); }
+  void operator()(const DropBallCmd&) const { s->game_.DropBall(); }
+  void operator()(const RequestFullState&) const {}  // every monitor frame is full
+  void operator()(const SetGameTime& c) const { s->game_.SetGameTime(c.time); }
+  void operator()(const SetScoreCmd& c) const { s->game_.SetScore(c.left, c.right); }
+  void operator()(const KillAgent& c) const {
+    const std::optional<Side> side = SideOf(c.team);
+    Session::Agent* a = side ? s->FindPlayer(*side, c.unum) : nullptr;
+    if (a != nullptr) s->kicked_.push_back(a->id);
+  }
+  void operator()(const SelectAgent&) const {}  // selection only matters to a monitor's display
+  void operator()(const ReposAgent& c) const {
+    // Off the ball: 1 m further from it, towards the player's own goal.
+    const std::optional<Side> side = SideOf(c.team);
+    Session::Agent* a = side ? s->FindPlayer(*side, c.unum) : nullptr;
+    if (a == nullptr || a->robot < 0 || !s->last_) return;
+    const RobotSnapshot* robot = s->last_->Find(s->robots_[a->robot]);
+    const RobotSnapshot::Link* torso = robot != nullptr ? robot->FindLink("torso") : nullptr;
+    if (torso == nullptr) return;
+    const double back = a->side == Side::kLeft ? -1.0 : 1.0;
+    s->PlaceAgent(a, {torso->position.x() + back, torso->position.y(), a->side == Side::kLeft ? 0.0 : 180.0});
+  }
+  void operator()(const KillSim&) const { s->quit_ = true; }
+  void operator()(const AgentStateCmd&) const {}
+};
+
+void Session::Trainer(const std::string& payload) {
+  const TrainerMessage m = ParseTrainerMessage(payload);
+  for (const TrainerIssue& issue : m.issues) Issue(-1, "trainer." + issue.error, issue.detail);
+  const TrainerCommandVisitor visitor{this};
+  for (const TrainerCommand& c : m.commands) std::visit(visitor, c);
+}
+
+void Session::Advance(WorldSnapshot snapshot) {
+  last_ = std::move(snapshot);
+  const WorldSnapshot& world = *last_;
+  ++cycle_;
+  // The players touching the ball: a body of the player near the ball.
+  std::vector<Toucher> touchers;
+  for (const auto& [id, a] : agents_) {
+    if (!a.inited || a.robot < 0) continue;
+    const RobotSnapshot* robot = world.Find(robots_[a.robot]);
+    if (robot == nullptr) continue;
+    const bool near = std::any_of(robot->links.begin(), robot->links.end(), [&](const RobotSnapshot::Link& l) {
+      return (l.position - world.ball).norm() < kTouchDistance;
+    });
+    if (near) touchers.push_back(Toucher{a.side, a.unum});
+  }
+  const bool touched = !touchers.empty();
+  const GameUpdate update = game_.Update(0.02, world.ball, touchers);
+  if (update.place_ball) requests_.ball = BallMove{*update.place_ball, Eigen::Vector3d::Zero()};
+  // Every player's seen parts, once per cycle for all agents' vision.
+  players_.clear();
+  for (const auto& [id, other] : agents_) {
+    if (!other.inited || other.robot < 0) continue;
+    const RobotSnapshot* r = world.Find(robots_[other.robot]);
+    if (r == nullptr) continue;
+    VisionPlayer player{other.team, other.unum, {}};
+    for (const char* part : kSeenParts) {
+      const RobotSnapshot::Link* l = r->FindLink(part);
+      if (l != nullptr) player.parts.push_back({part, l->position});
+    }
+    players_.push_back(std::move(player));
+  }
+  for (auto& [id, a] : agents_) {
+    if (a.robot < 0) continue;
+    outputs_.emplace_back(id, Perceive(&a, world, touched));
+  }
+  radio_.EndCycle();
+  if (cycle_ % 2 == 0) monitor_ = FormatMonitorGame(MonitorState(game_), nullptr);
+}
+
+std::string Session::MonitorGreeting() const {
+  return FormatMonitorEnvironment() + FormatMonitorGame(MonitorState(game_), nullptr);
+}
+
+std::string Session::Perceive(Agent* a, const WorldSnapshot& world, bool /*touched*/) {
+  Perception p;
+  p.time = world.time;
+  if (a->announce) {
+    p.unum = a->unum;
+    p.side = a->side;
+    a->announce = false;
+  }
+  p.score_left = game_.score(Side::kLeft);
+  p.score_right = game_.score(Side::kRight);
+  p.game_time = game_.game_time();
+  p.play_mode = game_.play_mode();
+  const RobotSnapshot* robot = world.Find(robots_[a->robot]);
+  if (robot != nullptr) {
+    for (int k = 0; k < 3; ++k) {
+      p.gyro_deg_s[k] = robot->gyro[k] * kDeg;
+      p.acc[k] = robot->accelerometer[k];
+    }
+    const std::vector<NaoJoint>& joints = NaoJoints(a->type);
+    const std::vector<int>& index = HingeIndex(a->type, *robot);
+    for (size_t j = 0; j < joints.size(); ++j) {
+      if (index[j] >= 0) p.joints_deg.emplace_back(joints[j].perceptor, robot->joint_positions[index[j]] * kDeg);
+    }
+    for (const RobotSnapshot::Foot& f : robot->feet) {
+      if (f.contact) p.forces.push_back({f.name, f.point, f.force});
+    }
+    if (a->perceptions % 3 == 0) p.see = See(*a, *robot, world);
+  }
+  if (a->inited && robot != nullptr) {
+    const RobotSnapshot::Link* torso = robot->FindLink("torso");
+    Speaker me{a->team, a->side, a->unum, torso != nullptr ? torso->position : Eigen::Vector3d::Zero()};
+    p.heard = radio_.Deliver(me, cycle_);
+  }
+  ++a->perceptions;
+  return FormatPerception(p);
+}
+
+// Where each of the type's hinges is in the robots' joint arrays (-1: the
+// model lacks it). Every robot of the scene is the same model: found once.
+const std::vector<int>& Session::HingeIndex(int type, const RobotSnapshot& robot) {
+  std::vector<int>& index = hinge_index_[type];
+  if (index.empty() || hinge_joint_count_ != robot.joint_names.size()) {
+    hinge_joint_count_ = robot.joint_names.size();
+    hinge_index_.clear();
+    std::vector<int>& fresh = hinge_index_[type];
+    for (const NaoJoint& j : NaoJoints(type)) {
+      int found = -1;
+      for (size_t i = 0; i < robot.joint_names.size() && found < 0; ++i)
+        if (robot.joint_names[i] == j.perceptor) found = static_cast<int>(i);
+      fresh.push_back(found);
+    }
+    return fresh;
+  }
+  return index;
+}
+
+SeeItems Session::See(const Agent& agent, const RobotSnapshot& robot, const WorldSnapshot& world) {
+  VisionScene scene;
+  const RobotSnapshot::Link* head = robot.FindLink("head");
+  if (head == nullptr) return {};
+  scene.head_position = head->position;
+  scene.head_orientation = head->orientation;
+  scene.calibration_offset = agent.calibration;
+  scene.ball = world.ball;
+  scene.players = players_;
+  VisionParams params = options_.vision;
+  Rng& rng = agents_.at(agent.id).rng;
+  return ComputeSee(scene, field_, params, &rng);
+}
+
+std::vector<std::pair<int, std::string>> Session::TakeOutputs() { return std::exchange(outputs_, {}); }
+std::vector<SessionIssue> Session::TakeIssues() { return std::exchange(issues_, {}); }
+std::vector<int> Session::TakeKicked() { return std::exchange(kicked_, {}); }
+std::string Session::TakeMonitorOutput() { return std::exchange(monitor_, {}); }
+
+}  // namespace turf::simspark

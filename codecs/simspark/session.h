@@ -1,0 +1,188 @@
+// The SimSpark server's behaviour in front of a turf legged world, without
+// sockets, DDS or clocks: agents connect, send effector messages and get
+// perception messages; the trainer (monitor port) moves things and sets play
+// modes. The participant feeds it bytes and world snapshots and carries out
+// the world requests it returns (simspark_bridge.h).
+//
+// One cycle (0.02 s of simulated time):
+//   Receive()/Trainer()   effectors and trainer commands, applied at once
+//   ReadyToStep()         sync mode: every agent with a robot sent (syn)
+//   TakeRequests()        robots and ball to move, joint velocities to set
+//   -- the participant steps the world one cycle --
+//   Advance(snapshot)     game state, then one perception per agent
+//   TakeOutputs()         the perception messages (payloads, unframed)
+// Facts: shared/protocols/simspark.md. As in rcssserver3d, an agent's joint
+// velocities act one cycle after the perception they answer: TakeRequests()
+// returns the ones asked in the previous cycle (beams and trainer moves act
+// at once).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "codecs/simspark/field3d.h"
+#include "codecs/simspark/game.h"
+#include "codecs/simspark/radio.h"
+#include "codecs/simspark/types.h"
+#include "codecs/simspark/vision.h"
+#include "core/rng.h"
+
+namespace turf::simspark {
+
+// One robot of the world after a cycle (from turf-sim's robots/* topics).
+struct RobotSnapshot {
+  std::string name;
+  std::vector<std::string> joint_names;
+  std::vector<double> joint_positions;    // rad
+  std::array<double, 3> gyro{};           // rad/s, torso frame
+  std::array<double, 3> accelerometer{};  // m/s^2
+  struct Foot {
+    std::string name;  // lf, rf
+    bool contact = false;
+    std::array<double, 3> point{};
+    std::array<double, 3> force{};
+  };
+  std::vector<Foot> feet;
+  struct Link {
+    std::string name;
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();
+    Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  };
+  std::vector<Link> links;
+  const Link* FindLink(const std::string& link) const;
+};
+
+struct WorldSnapshot {
+  double time = 0.0;  // s of simulation
+  Eigen::Vector3d ball = Eigen::Vector3d::Zero();
+  Eigen::Vector3d ball_velocity = Eigen::Vector3d::Zero();
+  std::vector<RobotSnapshot> robots;
+  const RobotSnapshot* Find(const std::string& robot) const;
+};
+
+struct RobotMove {
+  std::string robot;
+  Eigen::Vector3d position;  // torso centre
+  Eigen::Quaterniond orientation;
+  bool reset_joints = false;
+};
+
+struct BallMove {
+  Eigen::Vector3d position;
+  Eigen::Vector3d velocity;
+};
+
+struct JointVelocity {
+  std::string joint;      // the model's name (hj1)
+  double velocity = 0.0;  // rad/s, within the robot type's limit
+};
+
+struct WorldRequests {
+  std::vector<RobotMove> moves;
+  std::optional<BallMove> ball;
+  std::map<std::string, std::vector<JointVelocity>> joints;  // by robot
+};
+
+struct SessionOptions {
+  uint64_t seed = 1;
+  bool sync_mode = false;
+  int sync_grace_cycles = 5;  // cycles after `scene` before an agent's (syn) is awaited
+  VisionParams vision;
+  GameRules rules;
+};
+
+// Why an agent's input was refused (counted per kind, logged by the participant).
+struct SessionIssue {
+  int agent = -1;  // -1: the trainer
+  std::string kind;
+  std::string detail;
+};
+
+class Session {
+ public:
+  // robots: the world's robots the agents may take, in order (names); park:
+  // where each waits when no agent uses it (its torso pose at the start).
+  Session(SessionOptions options, std::vector<std::string> robots, std::vector<RobotMove> park);
+
+  int Connect();  // a new agent's id
+  void Disconnect(int agent);
+  void Receive(int agent, const std::string& payload);
+  void Trainer(const std::string& payload);
+
+  bool ReadyToStep() const;
+  WorldRequests TakeRequests();
+  void Advance(WorldSnapshot world);
+  std::vector<std::pair<int, std::string>> TakeOutputs();
+  std::vector<SessionIssue> TakeIssues();
+  std::vector<int> TakeKicked();        // agents to disconnect (trainer kill)
+  std::string TakeMonitorOutput();      // game predicates for monitors, every 2nd cycle (0.04 s)
+  std::string MonitorGreeting() const;  // a new monitor's first frame: environment and game
+  bool quit_requested() const { return quit_; }
+
+  int agents() const { return static_cast<int>(agents_.size()); }
+  int agents_with_robot() const;
+  uint64_t cycle() const { return cycle_; }
+  const Game& game() const { return game_; }
+  // Agents not synced (sync mode), for diagnostics.
+  std::vector<int> Waiting() const;
+
+ private:
+  struct Agent {
+    int id = 0;
+    int robot = -1;  // index into robots_, -1 before `scene`
+    int type = 0;
+    bool inited = false;
+    bool announce = false;  // the next GS carries unum and team
+    Side side = Side::kLeft;
+    int unum = 0;
+    std::string team;
+    uint64_t scene_cycle = 0;
+    uint64_t perceptions = 0;
+    bool synced = false;
+    Eigen::Vector3d calibration = Eigen::Vector3d::Zero();
+    Rng rng;
+    std::optional<std::string> say;
+  };
+
+  Agent* FindAgent(int id);
+  Agent* FindPlayer(Side side, int unum);
+  void Issue(int agent, const std::string& kind, const std::string& detail);
+  void TakeRobot(Agent* agent, int type);
+  void ReleaseRobot(Agent* agent);
+  void PlaceAgent(Agent* agent, const Pose2& pose);
+  std::string Perceive(Agent* agent, const WorldSnapshot& world, bool touched);
+  SeeItems See(const Agent& agent, const RobotSnapshot& robot, const WorldSnapshot& world);
+  const std::vector<int>& HingeIndex(int type, const RobotSnapshot& robot);
+
+  SessionOptions options_;
+  std::vector<std::string> robots_;
+  std::vector<RobotMove> park_;
+  std::vector<int> robot_owner_;  // agent id per robot, -1 free
+  std::map<int, Agent> agents_;
+  int next_agent_ = 1;
+  uint64_t cycle_ = 0;
+  Game game_;
+  Radio radio_;
+  Field3dGeometry field_;
+  Rng beam_rng_;
+  WorldRequests requests_;
+  std::map<std::string, std::vector<JointVelocity>> held_joints_;  // asked last cycle, for this step
+  std::vector<std::pair<int, std::string>> outputs_;
+  std::vector<SessionIssue> issues_;
+  std::vector<int> kicked_;
+  std::string monitor_;
+  bool quit_ = false;
+  std::optional<WorldSnapshot> last_;
+  std::vector<VisionPlayer> players_;            // this cycle's, for every agent's vision
+  std::map<int, std::vector<int>> hinge_index_;  // robot type -> HingeIndex
+  size_t hinge_joint_count_ = 0;
+
+  friend struct TrainerCommandVisitor;
+};
+
+}  // namespace turf::simspark

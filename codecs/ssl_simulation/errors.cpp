@@ -1,0 +1,146 @@
+#include "codecs/ssl_simulation/errors.h"
+
+#include <google/protobuf/descriptor.h>
+#include <google/protobuf/unknown_field_set.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+namespace turf::simproto {
+
+namespace pb = google::protobuf;
+
+const char* DecodeErrorName(DecodeError error) {
+  switch (error) {
+    case DecodeError::kOk:
+      return "ok";
+    case DecodeError::kEmpty:
+      return "empty";
+    case DecodeError::kOversized:
+      return "oversized";
+    case DecodeError::kMalformed:
+      return "malformed";
+    case DecodeError::kMissingRequired:
+      return "missing_required";
+    case DecodeError::kNotFinite:
+      return "not_finite";
+    case DecodeError::kOutOfRange:
+      return "out_of_range";
+    case DecodeError::kOutsideField:
+      return "outside_field";
+    case DecodeError::kUnknownRobot:
+      return "unknown_robot";
+    case DecodeError::kDuplicateRobot:
+      return "duplicate_robot";
+    case DecodeError::kCount:
+      break;
+  }
+  return "unknown";
+}
+
+std::string DecodeErrorCode(DecodeError error) {
+  std::string code = "TURF_";
+  for (const char* c = DecodeErrorName(error); *c != '\0'; ++c)
+    code += static_cast<char>(std::toupper(static_cast<unsigned char>(*c)));
+  return code;
+}
+
+SimError MakeError(DecodeError error, std::string message) { return {DecodeErrorCode(error), std::move(message)}; }
+
+void ToWire(const SimError& error, wire::simulation::SimulatorError* out) {
+  out->set_code(error.code);
+  out->set_message(error.message);
+}
+
+void AppendErrors(const std::vector<SimError>& errors, pb::RepeatedPtrField<wire::simulation::SimulatorError>* out) {
+  for (const SimError& e : errors) ToWire(e, out->Add());
+}
+
+DecodeError CheckSize(size_t size, std::string* why) {
+  if (size == 0) {
+    *why = "empty datagram";
+    return DecodeError::kEmpty;
+  }
+  if (size > kMaxDatagramBytes) {
+    *why = "datagram of " + std::to_string(size) + " bytes; at most " + std::to_string(kMaxDatagramBytes);
+    return DecodeError::kOversized;
+  }
+  return DecodeError::kOk;
+}
+
+DecodeError Parse(const uint8_t* data, size_t size, pb::Message* message, std::string* why) {
+  const DecodeError size_error = CheckSize(size, why);
+  if (size_error != DecodeError::kOk) return size_error;
+  if (!message->ParsePartialFromArray(data, static_cast<int>(size))) {
+    *why = "not a " + message->GetTypeName();
+    return DecodeError::kMalformed;
+  }
+  if (!message->IsInitialized()) {
+    *why = message->GetTypeName() + " lacks required " + message->InitializationErrorString();
+    return DecodeError::kMissingRequired;
+  }
+  return DecodeError::kOk;
+}
+
+namespace {
+
+void CollectUnknown(const pb::Message& message, const std::string& path, std::vector<std::string>* out) {
+  const pb::Reflection* reflection = message.GetReflection();
+  const pb::UnknownFieldSet& unknown = reflection->GetUnknownFields(message);
+  for (int i = 0; i < unknown.field_count(); ++i)
+    out->push_back(path + (path.empty() ? "" : ".") + "#" + std::to_string(unknown.field(i).number()));
+  std::vector<const pb::FieldDescriptor*> fields;
+  reflection->ListFields(message, &fields);
+  for (const pb::FieldDescriptor* f : fields) {
+    if (f->cpp_type() != pb::FieldDescriptor::CPPTYPE_MESSAGE) continue;
+    // google.protobuf.Any payloads are opaque to turf; their own fields are not "unknown".
+    if (f->message_type()->full_name() == "google.protobuf.Any") continue;
+    const std::string name = path + (path.empty() ? "" : ".") + f->name();
+    if (f->is_repeated()) {
+      for (int i = 0; i < reflection->FieldSize(message, f); ++i)
+        CollectUnknown(reflection->GetRepeatedMessage(message, f, i), name + "[" + std::to_string(i) + "]", out);
+    } else {
+      CollectUnknown(reflection->GetMessage(message, f), name, out);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> UnknownFields(const pb::Message& message) {
+  std::vector<std::string> out;
+  CollectUnknown(message, "", &out);
+  return out;
+}
+
+void ReportUnknownFields(const pb::Message& message, std::vector<SimError>* errors) {
+  const std::vector<std::string> unknown = UnknownFields(message);
+  if (unknown.empty()) return;
+  std::string list;
+  for (const std::string& u : unknown) list += (list.empty() ? "" : ", ") + u;
+  errors->push_back({kUnknownField, "fields (or enum values) turf does not know were not applied: " + list});
+}
+
+bool Problems::Check(double value, double lo, double hi, const std::string& what) {
+  if (!std::isfinite(value)) {
+    Add(DecodeError::kNotFinite, what + " is not finite");
+    return false;
+  }
+  if (value < lo || value > hi) {
+    char buf[160];
+    std::snprintf(buf, sizeof(buf), " = %g is outside [%g, %g]", value, lo, hi);
+    Add(DecodeError::kOutOfRange, what + buf);
+    return false;
+  }
+  return true;
+}
+
+void Problems::Add(DecodeError error, std::string message) {
+  if (error_ == DecodeError::kOk) error_ = error;
+  errors_.push_back(MakeError(error, std::move(message)));
+}
+
+void Problems::AddUnsupported(const char* code, std::string message) { errors_.push_back({code, std::move(message)}); }
+
+}  // namespace turf::simproto

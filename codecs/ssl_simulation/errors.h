@@ -1,0 +1,102 @@
+// Named errors of the SSL simulation protocol codec, and the small helpers the
+// decoders share: datagram checks, parsing with required-field checks, unknown
+// field detection, and a collector of value problems.
+//
+// Two kinds of problem, kept apart:
+//  - fatal (a DecodeError other than kOk): the datagram is refused as a whole;
+//    nothing of it reaches turf-sim, no robot moves. The SimulatorErrors say why.
+//  - not supported (a SimulatorError whose code starts TURF_UNSUPPORTED_ or is
+//    TURF_UNKNOWN_FIELD): that part is not applied, the rest is, and the answer
+//    names what was left out. Nothing is ignored silently.
+#pragma once
+
+#include <google/protobuf/message.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "codecs/proto/ssl_simulation.pb.h"
+
+namespace turf::simproto {
+
+enum class DecodeError : uint8_t {
+  kOk,
+  kEmpty,            // zero bytes
+  kOversized,        // more than kMaxDatagramBytes
+  kMalformed,        // not a protobuf message of the expected type
+  kMissingRequired,  // a required field (or one turf needs) is absent
+  kNotFinite,        // NaN or infinity
+  kOutOfRange,       // a value past the sanity limits (core/input_limits.h)
+  kOutsideField,     // a teleport target beyond the field's walls
+  kUnknownRobot,     // id > 15, id >= robots_per_team, or no team
+  kDuplicateRobot,   // one robot twice in one datagram
+  kCount
+};
+
+// "empty", "malformed", ... (snake_case, as turf's other refusal kinds).
+const char* DecodeErrorName(DecodeError error);
+// The SimulatorError code for a fatal error: "TURF_" + upper-case name.
+std::string DecodeErrorCode(DecodeError error);
+
+// Larger datagrams are refused unread. A full SimulatorCommand with geometry
+// is ~3 KB; a RobotControl for 16 robots well under 1 KB.
+inline constexpr size_t kMaxDatagramBytes = 16384;
+
+// Codes for what turf understands but does not do.
+inline constexpr char kUnsupportedGeometry[] = "TURF_UNSUPPORTED_CONFIG_GEOMETRY";
+inline constexpr char kUnsupportedRobotSpecs[] = "TURF_UNSUPPORTED_CONFIG_ROBOT_SPECS";
+inline constexpr char kUnsupportedRealism[] = "TURF_UNSUPPORTED_CONFIG_REALISM";
+inline constexpr char kUnsupportedVisionPort[] = "TURF_UNSUPPORTED_CONFIG_VISION_PORT";
+inline constexpr char kUnsupportedByForce[] = "TURF_UNSUPPORTED_BY_FORCE";
+inline constexpr char kUnsupportedSyncSpeed[] = "TURF_UNSUPPORTED_SPEED_IN_SYNC_MODE";
+inline constexpr char kUnknownField[] = "TURF_UNKNOWN_FIELD";
+// Codes the bridge adds: turf-sim refused a request (the message gives its
+// reason), did not answer in time, or has not been seen yet.
+inline constexpr char kRejectedBySim[] = "TURF_REJECTED_BY_SIM";
+inline constexpr char kNoReply[] = "TURF_NO_REPLY";
+inline constexpr char kSimNotAvailable[] = "TURF_SIM_NOT_AVAILABLE";
+
+struct SimError {
+  std::string code;
+  std::string message;
+  bool operator==(const SimError& o) const { return code == o.code && message == o.message; }
+};
+
+SimError MakeError(DecodeError error, std::string message);
+void ToWire(const SimError& error, wire::simulation::SimulatorError* out);
+void AppendErrors(const std::vector<SimError>& errors,
+                  google::protobuf::RepeatedPtrField<wire::simulation::SimulatorError>* out);
+
+// Empty or oversized: the datagram is refused before parsing.
+DecodeError CheckSize(size_t size, std::string* why);
+
+// Parses `message` from bytes: kMalformed if the bytes are not one, kMissingRequired
+// (naming the fields) if a required field is absent.
+DecodeError Parse(const uint8_t* data, size_t size, google::protobuf::Message* message, std::string* why);
+
+// Paths of fields the parser did not know (e.g. "control.teleport_ball.#12"),
+// anywhere in the message; an unknown enum value of a proto2 field lands here too.
+std::vector<std::string> UnknownFields(const google::protobuf::Message& message);
+// One TURF_UNKNOWN_FIELD error naming them, or none.
+void ReportUnknownFields(const google::protobuf::Message& message, std::vector<SimError>* errors);
+
+// Collects value problems. The first fatal one decides the datagram's error;
+// all are reported.
+class Problems {
+ public:
+  // False (and recorded) if `value` is not finite or outside [lo, hi].
+  bool Check(double value, double lo, double hi, const std::string& what);
+  void Add(DecodeError error, std::string message);
+  void AddUnsupported(const char* code, std::string message);
+  DecodeError error() const { return error_; }
+  bool ok() const { return error_ == DecodeError::kOk; }
+  std::vector<SimError>& errors() { return errors_; }
+
+ private:
+  DecodeError error_ = DecodeError::kOk;
+  std::vector<SimError> errors_;
+};
+
+}  // namespace turf::simproto

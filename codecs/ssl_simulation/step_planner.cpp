@@ -1,0 +1,59 @@
+#include "codecs/ssl_simulation/step_planner.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+
+namespace turf::simproto {
+
+namespace {
+
+// Far above any sync request (kMaxSyncStep is 1 s), far below overflow.
+constexpr int64_t kMaxNs = 1'000'000'000'000;  // 1000 s
+
+int64_t FloorDiv(int64_t a, int64_t b) {  // b > 0
+  const int64_t q = a / b;
+  return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+
+}  // namespace
+
+int64_t ToNanoseconds(double seconds) { return std::llround(seconds * 1e9); }
+
+int64_t FloatSecondsToNanoseconds(float seconds) {
+  if (!std::isfinite(seconds)) return 0;
+  char text[32];
+  for (int digits = 1; digits <= 9; ++digits) {  // 9 significant digits always give the float back
+    std::snprintf(text, sizeof(text), "%.*g", digits, static_cast<double>(seconds));
+    if (std::strtof(text, nullptr) == seconds) break;
+  }
+  return ToNanoseconds(std::strtod(text, nullptr));
+}
+
+uint32_t StepPlanner::Plan(int64_t request_ns, int64_t step_ns) {
+  if (request_ns <= 0 || request_ns > kMaxNs || step_ns <= 0 || step_ns > kMaxNs) return 0;
+  if (step_ns != step_ns_) {
+    step_ns_ = step_ns;
+    carry_ns_ = 0;
+  }
+  const int64_t owed = carry_ns_ + request_ns;
+  // The nearest whole number of steps to `owed` (halves round up), never negative.
+  int64_t steps = FloorDiv(2 * owed + step_ns, 2 * step_ns);
+  if (steps < 0) steps = 0;
+  if (steps > std::numeric_limits<uint32_t>::max()) return 0;
+  carry_ns_ = owed - steps * step_ns;
+  return static_cast<uint32_t>(steps);
+}
+
+void StepPlanner::Rebase(int64_t request_ns, uint32_t steps_run) {
+  if (step_ns_ <= 0 || request_ns <= 0 || request_ns > kMaxNs || steps_run > kMaxNs / step_ns_) return Reset();
+  carry_ns_ = request_ns - static_cast<int64_t>(steps_run) * step_ns_;
+}
+
+void StepPlanner::Reset() {
+  step_ns_ = 0;
+  carry_ns_ = 0;
+}
+
+}  // namespace turf::simproto

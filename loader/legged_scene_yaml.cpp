@@ -1,0 +1,181 @@
+#include "loader/legged_scene_yaml.h"
+#include "loader/text_file.h"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+
+#include "loader/realism_yaml.h"
+#include "loader/yaml_reader.h"
+
+namespace turf {
+
+namespace {
+
+using yaml::Errors;
+using yaml::MapReader;
+
+constexpr uintmax_t kMaxSceneBytes = 1 << 20;
+constexpr uintmax_t kMaxModelBytes = 16 << 20;
+
+void ReadMotors(MapReader m, MotorParams* p) {
+  m.Number("max_torque", &p->max_torque);
+  m.Number("max_speed", &p->max_speed);
+  m.Number("velocity_kp", &p->velocity_kp);
+  m.Number("velocity_kd", &p->velocity_kd);
+  m.Number("position_kp", &p->position_kp);
+  m.Number("position_kd", &p->position_kd);
+  m.Number("max_reference_lead", &p->max_reference_lead);
+  m.Finish();
+}
+
+void ReadField(MapReader m, Field3d* f) {
+  f->enabled = true;
+  m.Number("length", &f->length);
+  m.Number("width", &f->width);
+  m.Number("goal_width", &f->goal_width);
+  m.Number("goal_depth", &f->goal_depth);
+  m.Number("goal_height", &f->goal_height);
+  m.Number("goal_wall", &f->goal_wall);
+  m.Number("ball_radius", &f->ball_radius);
+  m.Number("ball_mass", &f->ball_mass);
+  double start[2] = {f->ball_x, f->ball_y};
+  if (m.Numbers("ball_start", start, 2)) {
+    f->ball_x = start[0];
+    f->ball_y = start[1];
+  }
+  m.Number("wall_distance", &f->wall_distance);
+  m.Finish();
+}
+
+// Model files are read once per path, however many robots use them.
+void ReadRobot(MapReader m, const std::string& base_dir, std::map<std::string, std::string>* models, LeggedRobot* r) {
+  if (!m.String("name", &r->name)) m.Fail("name", "required");
+  m.Int("id", &r->id);
+  if (m.String("model", &r->model)) {
+    const std::string path = (std::filesystem::path(base_dir) / r->model).lexically_normal().string();
+    auto it = models->find(path);
+    if (it == models->end()) {
+      std::string text;
+      std::string error;
+      if (!ReadTextFile(path, kMaxModelBytes, &text, &error)) {
+        m.Fail("model", fmt::format("{}: {}", path, error));
+        text.clear();
+      }
+      it = models->emplace(path, std::move(text)).first;
+    }
+    r->model_xml = it->second;
+  } else {
+    m.Fail("model", "required");
+  }
+  m.Number("x", &r->x);
+  m.Number("y", &r->y);
+  m.Degrees("yaw_deg", &r->yaw);
+  ReadMotors(m.Map("motors"), &r->motors);
+  m.Finish();
+}
+
+void ReadScene(MapReader m, const std::string& base_dir, LeggedScene* s, Errors* errors) {
+  std::string kind;
+  if (!m.String("kind", &kind) || kind != "legged") m.Fail("kind", "must be \"legged\"");
+  m.String("name", &s->name);
+  m.Uint64("seed", &s->seed);
+  m.Number("ground_friction", &s->ground_friction);
+  {
+    MapReader p = m.Map("physics");
+    p.Number("step", &s->physics.step);
+    p.Int("solver_iterations", &s->physics.solver_iterations);
+    p.Finish();
+  }
+  {
+    MapReader r = m.Map("rates");
+    r.Number("joint_state_hz", &s->rates.joint_state_hz);
+    r.Finish();
+  }
+  if (m.Has("field")) ReadField(m.Map("field"), &s->field);
+  ReadSceneRealism(m, &s->realism, errors);  // encoder and imu apply to legged robots
+  const YAML::Node robots = m.Child("robots");
+  if (robots && !robots.IsSequence()) {
+    m.Fail("robots", "expected a list");
+  } else if (robots) {
+    std::map<std::string, std::string> models;
+    for (size_t i = 0; i < robots.size(); ++i) {
+      LeggedRobot r;
+      ReadRobot(MapReader(robots[i], fmt::format("robots[{}]", i), errors), base_dir, &models, &r);
+      s->robots.push_back(std::move(r));
+    }
+  }
+  m.Finish();
+}
+
+LeggedSceneLoadResult Parse(const std::string& yaml_text, const std::string& base_dir) {
+  LeggedSceneLoadResult result;
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(yaml_text);
+  } catch (const YAML::ParserException& e) {
+    result.errors.push_back(
+        fmt::format("malformed YAML at line {}, column {}: {}", e.mark.line + 1, e.mark.column + 1, e.msg));
+    return result;
+  }
+  if (documents.size() != 1 || !documents[0].IsMap()) {
+    result.errors.push_back("expected one YAML document with a map of scene settings");
+    return result;
+  }
+  LeggedScene scene;
+  ReadScene(MapReader(documents[0], "", &result.errors), base_dir, &scene, &result.errors);
+  if (result.errors.empty()) {
+    for (std::string& e : ValidateLeggedScene(scene)) result.errors.push_back(std::move(e));
+  }
+  if (result.errors.empty()) result.scene = std::move(scene);
+  return result;
+}
+
+}  // namespace
+
+bool IsLeggedSceneFile(const std::string& path) {
+  try {
+    std::string text;
+    std::string error;
+    if (!ReadTextFile(path, kMaxSceneBytes, &text, &error)) return false;
+    const YAML::Node root = YAML::Load(text);
+    return root.IsMap() && root["kind"] && root["kind"].IsScalar() && root["kind"].Scalar() == "legged";
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+LeggedSceneLoadResult ParseLeggedSceneYaml(const std::string& yaml_text, const std::string& base_dir) {
+  try {
+    return Parse(yaml_text, base_dir);
+  } catch (const std::exception& e) {
+    LeggedSceneLoadResult result;
+    result.errors.push_back(fmt::format("cannot read the scene: {}", e.what()));
+    return result;
+  }
+}
+
+LeggedSceneLoadResult LoadLeggedSceneFile(const std::string& path) {
+  LeggedSceneLoadResult result;
+  std::string text;
+  std::string error;
+  try {
+    if (ReadTextFile(path, kMaxSceneBytes, &text, &error)) {
+      result = ParseLeggedSceneYaml(text, std::filesystem::path(path).parent_path().string());
+    } else {
+      result.errors.push_back(error);
+    }
+  } catch (const std::exception& e) {
+    result.scene.reset();
+    result.errors.push_back(fmt::format("cannot read: {}", e.what()));
+  }
+  for (std::string& message : result.errors) message = path + ": " + message;
+  return result;
+}
+
+}  // namespace turf

@@ -1,0 +1,135 @@
+#include "loader/realism_yaml.h"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "loader/text_file.h"
+#include "loader/yaml_reader.h"
+
+namespace turf {
+
+using yaml::MapReader;
+
+namespace {
+
+constexpr size_t kMaxRealismBytes = 64 * 1024;
+
+void ReadLink(MapReader m, LinkParams* l) {
+  m.Number("latency", &l->latency);
+  m.Number("jitter", &l->jitter);
+  std::string kind;
+  if (m.String("jitter_kind", &kind)) {
+    if (kind == "gaussian") {
+      l->jitter_kind = JitterKind::kGaussian;
+    } else if (kind == "uniform") {
+      l->jitter_kind = JitterKind::kUniform;
+    } else if (kind == "exponential") {
+      l->jitter_kind = JitterKind::kExponential;
+    } else {
+      m.Fail("jitter_kind", fmt::format("expected gaussian, uniform or exponential, got \"{}\"", kind));
+    }
+  }
+  m.Number("loss", &l->loss);
+  if (m.Has("burst")) {
+    MapReader b = m.Map("burst");
+    l->burst.enabled = true;
+    b.Number("p_good_to_bad", &l->burst.p_good_to_bad);
+    b.Number("p_bad_to_good", &l->burst.p_bad_to_good);
+    b.Number("loss_good", &l->burst.loss_good);
+    b.Number("loss_bad", &l->burst.loss_bad);
+    b.Finish();
+  }
+  m.Finish();
+}
+
+void ReadCamera(MapReader m, CameraRealism* c) {
+  m.Number("robot_position_stddev", &c->robot_position_stddev);
+  m.Number("robot_orientation_stddev", &c->robot_orientation_stddev);
+  m.Number("ball_position_stddev", &c->ball_position_stddev);
+  m.Number("robot_vanish", &c->robot_vanish);
+  m.Number("ball_vanish", &c->ball_vanish);
+  m.Bool("ball_occlusion", &c->ball_occlusion);
+  m.Number("confidence_spread", &c->confidence_spread);
+  m.Number("processing_delay", &c->processing_delay);
+  ReadLink(m.Map("link"), &c->link);
+  m.Finish();
+}
+
+}  // namespace
+
+void ReadRealism(MapReader m, SensorRealism* r) {
+  ReadCamera(m.Map("camera"), &r->camera);
+  ReadLink(m.Map("command"), &r->command);
+  MapReader e = m.Map("encoder");
+  e.Number("resolution", &r->encoder.resolution);
+  e.Number("noise_stddev", &r->encoder.noise_stddev);
+  e.Finish();
+  MapReader i = m.Map("imu");
+  i.Number("gyro_bias", &r->imu.gyro_bias);
+  i.Number("gyro_noise_stddev", &r->imu.gyro_noise_stddev);
+  i.Number("accel_bias", &r->imu.accel_bias);
+  i.Number("accel_noise_stddev", &r->imu.accel_noise_stddev);
+  i.Finish();
+  m.Finish();
+}
+
+void ReadSceneRealism(MapReader& m, SensorRealism* realism, std::vector<std::string>* errors) {
+  if (!m.Has("realism")) return;
+  const YAML::Node node = m.Child("realism");
+  if (node.IsScalar()) {
+    RealismLoadResult preset = LoadRealism(node.as<std::string>());
+    for (const std::string& e : preset.errors) errors->push_back("realism: " + e);
+    if (preset.realism) *realism = *preset.realism;
+  } else {
+    ReadRealism(m.Map("realism"), realism);
+  }
+}
+
+std::string DefaultRealismDir() { return TURF_REALISM_DIR; }
+
+RealismLoadResult ParseRealismYaml(const std::string& yaml_text, const SensorRealism& base) {
+  RealismLoadResult result;
+  if (yaml_text.size() > kMaxRealismBytes) {
+    result.errors.push_back("realism text too large");
+    return result;
+  }
+  try {
+    const YAML::Node root = YAML::Load(yaml_text);
+    if (!root.IsMap() && !root.IsNull()) {
+      result.errors.push_back("expected a map of realism settings");
+      return result;
+    }
+    SensorRealism realism = base;
+    ReadRealism(MapReader(root, "", &result.errors), &realism);
+    if (const char* e = CheckRealism(realism); *e != '\0') result.errors.push_back(e);
+    if (result.errors.empty()) result.realism = realism;
+  } catch (const YAML::Exception& e) {
+    result.errors.push_back(fmt::format("malformed realism YAML: {}", e.what()));
+  } catch (const std::exception& e) {
+    result.errors.push_back(fmt::format("cannot read realism: {}", e.what()));
+  }
+  return result;
+}
+
+RealismLoadResult LoadRealism(const std::string& spec, const std::string& dir, bool allow_paths,
+                              const SensorRealism& base) {
+  if (spec.find(':') != std::string::npos || spec.find('{') != std::string::npos) return ParseRealismYaml(spec, base);
+  const bool is_path =
+      spec.find('/') != std::string::npos || (spec.size() > 5 && spec.substr(spec.size() - 5) == ".yaml");
+  if (is_path && !allow_paths) return {std::nullopt, {"a realism file path is not accepted here; name a preset"}};
+  const bool plain_name = !is_path && !spec.empty() &&
+                          spec.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") == std::string::npos;
+  if (!is_path && !plain_name) return {std::nullopt, {fmt::format("not a realism preset name: \"{}\"", spec)}};
+  const std::string path = is_path ? spec : dir + "/" + spec + ".yaml";
+  std::string text, error;
+  if (!ReadTextFile(path, kMaxRealismBytes, &text, &error)) return {std::nullopt, {path + ": " + error}};
+  RealismLoadResult result = ParseRealismYaml(text);
+  for (std::string& e : result.errors) e = path + ": " + e;
+  return result;
+}
+
+}  // namespace turf

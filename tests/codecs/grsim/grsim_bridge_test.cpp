@@ -1,0 +1,370 @@
+// turf-grsim-bridge in-process: turf-sim and the bridge on threads of their
+// own, each test on its own DDS domain and prefix. The test speaks real grSim
+// UDP on 127.0.0.1 and checks the world over DDS. Waits are bounded.
+#include <gtest/gtest.h>
+#include <turf/idl/WorldStatePubSubTypes.h>
+#include <unistd.h>
+#include "tests/test_domain.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <thread>
+
+#include "codecs/proto/grsim.pb.h"
+#include "dds/participant.h"
+#include "participants/common/udp.h"
+#include "participants/grsim_bridge/grsim_bridge.h"
+#include "participants/sim/sim_node.h"
+#include "tests/core/test_scenes.h"
+
+namespace turf {
+namespace {
+
+namespace wire = turf::wire::grsim;
+using namespace std::chrono_literals;
+using Clock = std::chrono::steady_clock;
+
+constexpr double kFace = 0.08;          // robot centre to its flat front
+constexpr double kBallRadius = 0.0215;  // m
+
+int g_test_counter = 0;
+
+// Domains 10..99 keep Fast DDS's ports (7400 + 250 * domain + ...) below the
+// ephemeral range (32768+): an ephemeral socket of another process on the
+// discovery port would make discovery fail.
+dds::ParticipantOptions UniqueDds() {
+  ++g_test_counter;
+  dds::ParticipantOptions o;
+  o.domain = turf::test::TestDomain();
+  o.prefix = "grsim" + std::to_string(getpid()) + "_" + std::to_string(g_test_counter);
+  o.name = "observer";
+  o.qos_file = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
+  return o;
+}
+
+UdpSocket BindLoopback() {
+  std::string error;
+  std::optional<UdpSocket> s = UdpSocket::Bind("127.0.0.1", 0, false, &error);
+  if (!s) throw std::runtime_error(error);
+  return std::move(*s);
+}
+
+// turf-sim (scaled x2) and the bridge, each on its thread.
+class Stack {
+ public:
+  Stack(Scene scene, const dds::ParticipantOptions& dds, uint16_t blue_status_port, uint16_t yellow_status_port) {
+    SimNodeOptions s;
+    s.domain = dds.domain;
+    s.prefix = dds.prefix;
+    s.qos_file = dds.qos_file;
+    s.mode = TimeMode::kScaled;
+    s.speed = 2.0;
+    sim_ = std::make_unique<SimNode>(std::move(scene), s);
+    GrsimBridgeOptions b;
+    b.domain = dds.domain;
+    b.prefix = dds.prefix;
+    b.qos_file = dds.qos_file;
+    b.listen_ip = "127.0.0.1";
+    b.port = 0;  // any free port
+    b.blue_status_port = blue_status_port;
+    b.yellow_status_port = yellow_status_port;
+    bridge_ = std::make_unique<GrsimBridge>(b);
+    sim_thread_ = std::thread([this] { sim_->Run([this] { return stop_.load(); }); });
+    bridge_thread_ = std::thread([this] { bridge_->Run([this] { return stop_.load(); }); });
+  }
+  ~Stack() {
+    stop_ = true;
+    bridge_thread_.join();
+    sim_thread_.join();
+  }
+  SimNode& sim() { return *sim_; }
+  GrsimBridge& bridge() { return *bridge_; }
+
+ private:
+  std::unique_ptr<SimNode> sim_;
+  std::unique_ptr<GrsimBridge> bridge_;
+  std::atomic<bool> stop_{false};
+  std::thread sim_thread_, bridge_thread_;
+};
+
+// A grSim client: sends packets to the bridge, receives robot status.
+class Team {
+ public:
+  Team() : out_(BindLoopback()), blue_status_(BindLoopback()), yellow_status_(BindLoopback()) {}
+  uint16_t blue_status_port() const { return blue_status_.LocalPort(); }
+  uint16_t yellow_status_port() const { return yellow_status_.LocalPort(); }
+  void Connect(uint16_t bridge_port) { to_ = *MakeEndpoint("127.0.0.1", bridge_port); }
+
+  void Send(const std::vector<uint8_t>& bytes) {
+    std::string error;
+    ASSERT_TRUE(out_.SendTo(bytes, to_, &error)) << error;
+  }
+  void Send(const wire::grSim_Packet& packet) {
+    const std::string s = packet.SerializePartialAsString();
+    Send(std::vector<uint8_t>(s.begin(), s.end()));
+  }
+  // Robot status packets that arrived on the blue port, waiting up to `timeout` for one.
+  std::optional<wire::Robots_Status> BlueStatus(std::chrono::milliseconds timeout) {
+    auto d = blue_status_.Receive(2048, timeout);
+    if (!d) return std::nullopt;
+    wire::Robots_Status status;
+    if (!status.ParseFromArray(d->bytes.data(), static_cast<int>(d->bytes.size()))) return std::nullopt;
+    return status;
+  }
+
+ private:
+  UdpSocket out_, blue_status_, yellow_status_;
+  UdpEndpoint to_;
+};
+
+// Watches the world over DDS, as a test harness would.
+class Observer {
+ public:
+  explicit Observer(const dds::ParticipantOptions& o)
+      : participant_(o), state_(participant_.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState)) {}
+
+  // Polls until `done` holds for a world state, or the timeout; `each`
+  // runs on every poll (about every 16 ms, like a team's frame).
+  bool Wait(const std::function<bool(const idl::WorldState&)>& done, std::chrono::milliseconds timeout = 5s,
+            const std::function<void()>& each = {}) {
+    const auto end = Clock::now() + timeout;
+    while (Clock::now() < end) {
+      if (each) each();
+      // Every state counts, not just the newest of a batch (a kick lasts one state).
+      state_->Take(&states_);
+      for (const idl::WorldState& s : states_) {
+        now_ = s;
+        has_state_ = true;
+        if (done(now_)) return true;
+      }
+      if (states_.empty() && has_state_ && done(now_)) return true;
+      std::this_thread::sleep_for(16ms);
+    }
+    return false;
+  }
+  const idl::WorldState& state() const { return now_; }
+  bool has_state() const { return has_state_; }
+
+ private:
+  dds::Participant participant_;
+  std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> state_;
+  std::vector<idl::WorldState> states_;
+  idl::WorldState now_;
+  bool has_state_ = false;
+};
+
+// Everything a test needs, started and matched.
+struct Fixture {
+  explicit Fixture(Scene scene)
+      : dds(UniqueDds()),
+        stack(std::move(scene), dds, team.blue_status_port(), team.yellow_status_port()),
+        observer(dds) {
+    team.Connect(stack.bridge().port());
+  }
+  // turf-sim matched and its field (robots per team) known to the bridge.
+  ::testing::AssertionResult Ready() {
+    const bool ready = observer.Wait(
+        [&](const idl::WorldState&) {
+          const GrsimBridgeStats s = stack.bridge().Stats();
+          return s.sim_present && s.field_known;
+        },
+        8s);
+    if (ready) return ::testing::AssertionSuccess();
+    const GrsimBridgeStats s = stack.bridge().Stats();
+    return ::testing::AssertionFailure() << "world state seen: " << observer.has_state()
+                                         << ", bridge sees turf-sim: " << s.sim_present
+                                         << ", field known: " << s.field_known;
+  }
+  dds::ParticipantOptions dds;
+  Team team;
+  Stack stack;
+  Observer observer;
+};
+
+wire::grSim_Robot_Command Robot(uint32_t id, float forward = 0, float left = 0, float angular = 0) {
+  wire::grSim_Robot_Command c;
+  c.set_id(id);
+  c.set_kickspeedx(0);
+  c.set_kickspeedz(0);
+  c.set_veltangent(forward);
+  c.set_velnormal(left);
+  c.set_velangular(angular);
+  c.set_spinner(false);
+  c.set_wheelsspeed(false);
+  return c;
+}
+
+wire::grSim_Packet Commands(bool yellow, const std::vector<wire::grSim_Robot_Command>& robots) {
+  wire::grSim_Packet p;
+  p.mutable_commands()->set_timestamp(0.0);
+  p.mutable_commands()->set_isteamyellow(yellow);
+  for (const auto& r : robots) *p.mutable_commands()->add_robot_commands() = r;
+  return p;
+}
+
+wire::grSim_RobotReplacement Placed(uint32_t id, bool yellow, double x, double y, double dir_degrees) {
+  wire::grSim_RobotReplacement r;
+  r.set_id(id);
+  r.set_yellowteam(yellow);
+  r.set_x(x);
+  r.set_y(y);
+  r.set_dir(dir_degrees);
+  return r;
+}
+
+const idl::RobotState* FindRobot(const idl::WorldState& s, idl::Team team, int id) {
+  for (const auto& r : s.robots())
+    if (r.team() == team && r.id() == id) return &r;
+  return nullptr;
+}
+
+double BallSpeed(const idl::WorldState& s) { return std::hypot(s.ball().velocity().x(), s.ball().velocity().y()); }
+
+TEST(GrsimBridge, EachTeamDrivesAtTheCommandedSpeed) {
+  Fixture f(test::Teams(1));  // blue 0 at (-1, -3.5), yellow 0 at (1, -3.5), both facing +x
+  ASSERT_TRUE(f.Ready());
+  // Blue forward, yellow to its left, 1 m/s each, at a team's 60 Hz; measured after the ramp.
+  int64_t t0 = -1, t_start = -1;
+  double blue_x = 0, yellow_y = 0;
+  const bool done = f.observer.Wait(
+      [&](const idl::WorldState& s) {
+        if (t0 < 0) t0 = s.sim_time_ns();
+        if (t_start < 0 && s.sim_time_ns() - t0 > 700'000'000) {
+          t_start = s.sim_time_ns();
+          blue_x = FindRobot(s, idl::TEAM_BLUE, 0)->position().x();
+          yellow_y = FindRobot(s, idl::TEAM_YELLOW, 0)->position().y();
+        }
+        return t_start >= 0 && s.sim_time_ns() - t_start >= 600'000'000;
+      },
+      8s,
+      [&] {
+        f.team.Send(Commands(false, {Robot(0, 1.0f)}));
+        f.team.Send(Commands(true, {Robot(0, 0.0f, 1.0f)}));
+      });
+  ASSERT_TRUE(done);
+  const idl::WorldState& s = f.observer.state();
+  const double dt = (s.sim_time_ns() - t_start) * 1e-9;
+  EXPECT_NEAR((FindRobot(s, idl::TEAM_BLUE, 0)->position().x() - blue_x) / dt, 1.0, 0.05);
+  EXPECT_NEAR((FindRobot(s, idl::TEAM_YELLOW, 0)->position().y() - yellow_y) / dt, 1.0, 0.05);
+  EXPECT_NEAR(FindRobot(s, idl::TEAM_BLUE, 0)->linear_velocity().x(), 1.0, 0.05);
+  EXPECT_NEAR(FindRobot(s, idl::TEAM_YELLOW, 0)->linear_velocity().y(), 1.0, 0.05);
+  EXPECT_EQ(f.stack.bridge().Stats().refused, 0u);
+  EXPECT_EQ(f.stack.sim().Stats().rejected, 0u);
+}
+
+TEST(GrsimBridge, ReplacementPlacesBallAndRobots) {
+  Fixture f(test::Teams(2));
+  ASSERT_TRUE(f.Ready());
+  wire::grSim_Packet p;
+  *p.mutable_replacement()->add_robots() = Placed(0, false, 2.0, 1.0, 90.0);
+  wire::grSim_RobotReplacement off = Placed(1, true, 0, 0, 0);
+  off.set_turnon(false);
+  *p.mutable_replacement()->add_robots() = off;
+  p.mutable_replacement()->mutable_ball()->set_x(-1.0);
+  p.mutable_replacement()->mutable_ball()->set_y(0.5);
+  p.mutable_replacement()->mutable_ball()->set_vx(0.0);
+  p.mutable_replacement()->mutable_ball()->set_vy(0.0);
+  f.team.Send(p);
+  ASSERT_TRUE(f.observer.Wait([](const idl::WorldState& s) {
+    const idl::RobotState* blue = FindRobot(s, idl::TEAM_BLUE, 0);
+    const idl::RobotState* yellow = FindRobot(s, idl::TEAM_YELLOW, 1);
+    return std::abs(s.ball().position().x() + 1.0) < 1e-3 && std::abs(s.ball().position().y() - 0.5) < 1e-3 &&
+           std::abs(blue->position().x() - 2.0) < 1e-3 && std::abs(blue->position().y() - 1.0) < 1e-3 &&
+           std::abs(blue->yaw() - M_PI / 2) < 1e-3 && !yellow->on_field();
+  })) << "ball ("
+      << f.observer.state().ball().position().x() << ", " << f.observer.state().ball().position().y() << ")";
+  EXPECT_EQ(f.stack.bridge().Stats().controls, 3u);
+
+  // A ball outside the walls: turf-sim refuses it, the bridge reports the refusal.
+  wire::grSim_Packet outside;
+  outside.mutable_replacement()->mutable_ball()->set_x(50.0);
+  f.team.Send(outside);
+  EXPECT_TRUE(
+      f.observer.Wait([&](const idl::WorldState&) { return f.stack.bridge().Rejected("control_rejected") == 1; }, 15s));
+  EXPECT_NEAR(f.observer.state().ball().position().x(), -1.0, 1e-3);
+}
+
+TEST(GrsimBridge, KickAndRobotStatus) {
+  Fixture f(test::OneRobot());  // blue 0 at the origin facing +x
+  ASSERT_TRUE(f.Ready());
+  // A first command tells the bridge where blue's status goes.
+  ASSERT_TRUE(f.observer.Wait([&](const idl::WorldState&) { return f.stack.bridge().Stats().commands > 0; }, 3s,
+                              [&] { f.team.Send(Commands(false, {Robot(0)})); }));
+  // The ball at rest against the front face.
+  wire::grSim_Packet place;
+  *place.mutable_replacement()->add_robots() = Placed(0, false, 0.0, 0.0, 0.0);
+  place.mutable_replacement()->mutable_ball()->set_x(kFace + kBallRadius);
+  place.mutable_replacement()->mutable_ball()->set_y(0.0);
+  f.team.Send(place);
+
+  bool infrared = false;
+  for (auto end = Clock::now() + 15s; !infrared && Clock::now() < end;) {
+    f.team.Send(Commands(false, {Robot(0)}));
+    auto status = f.team.BlueStatus(16ms);
+    if (!status) continue;
+    for (const auto& r : status->robots_status()) infrared |= r.robot_id() == 0 && r.infrared();
+  }
+  ASSERT_TRUE(infrared) << "no status with infrared on the blue status port";
+
+  wire::grSim_Robot_Command kick = Robot(0);
+  kick.set_kickspeedx(4.0f);
+  double fastest = 0;
+  const bool kicked = f.observer.Wait(
+      [&](const idl::WorldState& s) {
+        fastest = std::max(fastest, BallSpeed(s));
+        return fastest > 1.0;
+      },
+      3s, [&] { f.team.Send(Commands(false, {fastest > 1.0 ? Robot(0) : kick})); });
+  ASSERT_TRUE(kicked);
+  // The first world state after the kick (<= 10 ms of sliding later) shows the commanded speed.
+  EXPECT_NEAR(fastest, 4.0, 0.1);
+  EXPECT_GT(f.observer.state().ball().velocity().x(), 3.8);
+
+  bool flat_kick = false;
+  for (auto end = Clock::now() + 15s; !flat_kick && Clock::now() < end;) {
+    auto status = f.team.BlueStatus(16ms);
+    if (!status) continue;
+    for (const auto& r : status->robots_status()) flat_kick |= r.robot_id() == 0 && r.flat_kick();
+  }
+  EXPECT_TRUE(flat_kick);
+}
+
+TEST(GrsimBridge, BadDatagramsChangeNothing) {
+  Fixture f(test::OneRobot());
+  ASSERT_TRUE(f.Ready());
+  wire::grSim_Robot_Command nan = Robot(0, 1.0f);
+  nan.set_velnormal(NAN);
+  const std::vector<uint8_t> garbage = {0xFF, 0xFF, 0xFF, 0x0A, 0x99};
+  int64_t t0 = -1;
+  ASSERT_TRUE(f.observer.Wait(
+      [&](const idl::WorldState& s) {
+        if (t0 < 0) t0 = s.sim_time_ns();
+        return s.sim_time_ns() - t0 > 600'000'000;
+      },
+      5s,
+      [&] {
+        f.team.Send(garbage);
+        f.team.Send(Commands(false, {Robot(0, 1.0f), nan}));  // a good command in a bad datagram
+        f.team.Send(Commands(false, {Robot(7, 1.0f)}));       // robot 7 of a one-robot team
+      }));
+  const idl::RobotState* r = FindRobot(f.observer.state(), idl::TEAM_BLUE, 0);
+  EXPECT_DOUBLE_EQ(r->position().x(), 0.0);
+  EXPECT_DOUBLE_EQ(r->position().y(), 0.0);
+  EXPECT_GT(f.stack.bridge().Rejected("malformed"), 0u);
+  EXPECT_GT(f.stack.bridge().Rejected("not_finite"), 0u);
+  EXPECT_GT(f.stack.bridge().Rejected("unknown_robot"), 0u);  // robots_per_team came from ssl/field
+  EXPECT_TRUE(f.stack.bridge().Stats().field_known);
+  EXPECT_EQ(f.stack.bridge().Stats().commands, 0u);
+  EXPECT_EQ(f.stack.sim().Stats().rejected, 0u);  // nothing bad reached turf-sim
+
+  // The same channel still drives the robot.
+  ASSERT_TRUE(
+      f.observer.Wait([](const idl::WorldState& s) { return FindRobot(s, idl::TEAM_BLUE, 0)->position().x() > 0.05; },
+                      5s, [&] { f.team.Send(Commands(false, {Robot(0, 1.0f)})); }));
+}
+
+}  // namespace
+}  // namespace turf

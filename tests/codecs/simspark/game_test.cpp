@@ -1,0 +1,605 @@
+#include "codecs/simspark/game.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace turf::simspark {
+namespace {
+
+constexpr double kDt = 0.02;
+const Eigen::Vector3d kCentre(0, 0, 0.042);
+
+// Runs cycles with the ball at `ball` until the play mode changes; returns the
+// number of cycles (or `max` if it never does).
+int CyclesUntilModeChange(Game* game, const Eigen::Vector3d& ball, int max, GameUpdate* last = nullptr) {
+  const PlayMode start = game->play_mode();
+  for (int i = 1; i <= max; ++i) {
+    const GameUpdate u = game->Update(kDt, ball, false);
+    if (game->play_mode() != start) {
+      if (last != nullptr) *last = u;
+      return i;
+    }
+  }
+  return max;
+}
+
+TEST(GameInit, FirstTeamLeftSecondRightThirdRejected) {
+  Game game;
+  InitResult a = game.Init("Alpha", 1, 0);
+  ASSERT_TRUE(a.ok) << a.error;
+  EXPECT_EQ(a.side, Side::kLeft);
+  InitResult b = game.Init("Beta", 1, 0);
+  ASSERT_TRUE(b.ok) << b.error;
+  EXPECT_EQ(b.side, Side::kRight);
+  InitResult a2 = game.Init("Alpha", 2, 1);
+  ASSERT_TRUE(a2.ok);
+  EXPECT_EQ(a2.side, Side::kLeft);
+  InitResult c = game.Init("Gamma", 1, 0);
+  EXPECT_FALSE(c.ok);
+  EXPECT_FALSE(c.error.empty());
+  EXPECT_EQ(game.TeamName(Side::kLeft), "Alpha");
+  EXPECT_EQ(game.TeamName(Side::kRight), "Beta");
+  EXPECT_FALSE(game.Init("", 3, 0).ok);
+}
+
+TEST(GameInit, UniformNumbersAutoAllocatedAndUnique) {
+  Game game;
+  EXPECT_EQ(game.Init("A", 0, 0).unum, 1);
+  EXPECT_EQ(game.Init("A", 0, 1).unum, 2);
+  EXPECT_EQ(game.Init("A", 5, 2).unum, 5);
+  EXPECT_EQ(game.Init("A", 0, 0).unum, 3);
+  EXPECT_FALSE(game.Init("A", 5, 1).ok);      // taken
+  EXPECT_EQ(game.Init("A", 42, 1).unum, 42);  // any int is allowed
+  game.Leave(Side::kLeft, 1, 0);
+  EXPECT_EQ(game.Init("A", 0, 2).unum, 1);
+  EXPECT_EQ(game.PlayerCount(Side::kLeft), 5);
+  EXPECT_EQ(game.Init("B", 5, 0).unum, 5);  // numbers are per team
+}
+
+TEST(GameInit, TwelfthPlayerRejected) {
+  GameRules rules;
+  rules.check_composition = false;
+  Game game(rules);
+  for (int i = 0; i < 11; ++i) ASSERT_TRUE(game.Init("A", 0, 0).ok) << i;
+  const InitResult twelfth = game.Init("A", 12, 0);
+  EXPECT_FALSE(twelfth.ok);
+  EXPECT_EQ(game.PlayerCount(Side::kLeft), 11);
+  game.Leave(Side::kLeft, 4, 0);
+  EXPECT_EQ(game.Init("A", 0, 0).unum, 4);
+}
+
+TEST(GameInit, AtMostSevenOfOneType) {
+  Game game;
+  for (int i = 0; i < 7; ++i) ASSERT_TRUE(game.Init("A", 0, 3).ok) << i;
+  EXPECT_FALSE(game.Init("A", 0, 3).ok);
+  EXPECT_TRUE(game.Init("A", 0, 4).ok);
+  EXPECT_TRUE(game.Init("B", 0, 3).ok);  // per team
+}
+
+TEST(GameInit, AtMostNineOfTwoTypesAndThreeTypesInTheEnd) {
+  Game game;
+  for (int i = 0; i < 7; ++i) ASSERT_TRUE(game.Init("A", 0, 0).ok);
+  for (int i = 0; i < 2; ++i) ASSERT_TRUE(game.Init("A", 0, 1).ok);
+  EXPECT_FALSE(game.Init("A", 0, 1).ok);  // types 0 + 1 would be 10
+  EXPECT_TRUE(game.Init("A", 0, 2).ok);
+  EXPECT_TRUE(game.Init("A", 0, 2).ok);
+  EXPECT_EQ(game.PlayerCount(Side::kLeft), 11);
+  EXPECT_FALSE(game.Init("A", 0, 4).ok);  // full
+}
+
+TEST(GameInit, OnlyUnusedTypesWhenFreeSlotsNoLongerExceedMissingTypes) {
+  GameRules rules;
+  rules.max_players = 4;  // small team to reach the rule early
+  Game game(rules);
+  ASSERT_TRUE(game.Init("A", 0, 0).ok);  // 3 free, 2 missing
+  ASSERT_TRUE(game.Init("A", 0, 0).ok);  // 2 free, 2 missing
+  EXPECT_FALSE(game.Init("A", 0, 0).ok);
+  ASSERT_TRUE(game.Init("A", 0, 1).ok);  // 1 free, 1 missing
+  EXPECT_FALSE(game.Init("A", 0, 1).ok);
+  EXPECT_FALSE(game.Init("A", 0, 0).ok);
+  EXPECT_TRUE(game.Init("A", 0, 4).ok);
+}
+
+TEST(GameInit, RobotTypeRangeAndCompositionSwitch) {
+  Game game;
+  EXPECT_FALSE(game.Init("A", 0, 5).ok);
+  EXPECT_FALSE(game.Init("A", 0, -1).ok);
+  EXPECT_FALSE(game.TeamName(Side::kLeft).has_value());  // a rejected init registers nothing
+  GameRules rules;
+  rules.check_composition = false;
+  Game lax(rules);
+  for (int i = 0; i < 11; ++i) EXPECT_TRUE(lax.Init("A", 0, 0).ok);
+}
+
+TEST(GameInit, StartPoses) {
+  Game game;
+  const Pose2 l1 = game.StartPose(Side::kLeft, 1);
+  EXPECT_NEAR(l1.x, -14.2, 1e-12);
+  EXPECT_NEAR(l1.y, 9.2, 1e-12);
+  EXPECT_EQ(l1.facing_deg, 0.0);
+  const Pose2 l3 = game.StartPose(Side::kLeft, 3);
+  EXPECT_NEAR(l3.y, 9.2 - 2.4, 1e-12);
+  const Pose2 r1 = game.StartPose(Side::kRight, 1);
+  EXPECT_NEAR(r1.x, 14.2, 1e-12);
+  EXPECT_NEAR(r1.y, 9.2, 1e-12);
+  EXPECT_EQ(r1.facing_deg, 180.0);
+  const Pose2 l11 = game.StartPose(Side::kLeft, 11);
+  EXPECT_NEAR(l11.y, 9.2 - 12.0, 1e-12);
+  EXPECT_GE(game.StartPose(Side::kLeft, 42).y, -10.0);  // any unum lands on the field
+}
+
+TEST(GameBeam, AllowedOnlyBeforeKickOffAndAfterGoals) {
+  Game game;
+  EXPECT_TRUE(game.BeamAllowed());
+  game.SetPlayMode(PlayMode::kGoalLeft);
+  EXPECT_TRUE(game.BeamAllowed());
+  game.SetPlayMode(PlayMode::kGoalRight);
+  EXPECT_TRUE(game.BeamAllowed());
+  for (PlayMode mode : {PlayMode::kPlayOn, PlayMode::kKickOffLeft, PlayMode::kKickInRight, PlayMode::kGameOver}) {
+    game.SetPlayMode(mode);
+    EXPECT_FALSE(game.BeamAllowed()) << PlayModeName(mode);
+  }
+}
+
+TEST(GameBeam, TeamFrameMirroringAndClamps) {
+  Game game;
+  const Pose2 l = game.BeamPose(Side::kLeft, -5, 1.5, 30, nullptr);
+  EXPECT_DOUBLE_EQ(l.x, -5);
+  EXPECT_DOUBLE_EQ(l.y, 1.5);
+  EXPECT_DOUBLE_EQ(l.facing_deg, 30);
+  const Pose2 r = game.BeamPose(Side::kRight, -5, 1.5, 30, nullptr);
+  EXPECT_DOUBLE_EQ(r.x, 5);
+  EXPECT_DOUBLE_EQ(r.y, -1.5);
+  EXPECT_DOUBLE_EQ(r.facing_deg, -150);
+  const Pose2 r0 = game.BeamPose(Side::kRight, -3, 0, 0, nullptr);
+  EXPECT_DOUBLE_EQ(r0.facing_deg, 180);                                 // faces the left goal
+  const Pose2 clamped = game.BeamPose(Side::kLeft, 3, 12, 0, nullptr);  // no beaming into the opponent half
+  EXPECT_DOUBLE_EQ(clamped.x, 0);
+  EXPECT_DOUBLE_EQ(clamped.y, 10);
+  const Pose2 far = game.BeamPose(Side::kRight, -20, -11, 0, nullptr);
+  EXPECT_DOUBLE_EQ(far.x, 15);
+  EXPECT_DOUBLE_EQ(far.y, 10);
+}
+
+TEST(GameBeam, NoiseWithinBoundsAndClampedAfter) {
+  Game game;
+  Rng rng(9);
+  double max_dx = 0, max_drot = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Pose2 p = game.BeamPose(Side::kLeft, -5, 1.5, 0, &rng);
+    EXPECT_LE(std::abs(p.x + 5), 0.05);
+    EXPECT_LE(std::abs(p.y - 1.5), 0.05);
+    EXPECT_LE(std::abs(p.facing_deg), 10.0);
+    max_dx = std::max(max_dx, std::abs(p.x + 5));
+    max_drot = std::max(max_drot, std::abs(p.facing_deg));
+    const Pose2 edge = game.BeamPose(Side::kLeft, 0, 10, 0, &rng);
+    EXPECT_LE(edge.x, 0.0);
+    EXPECT_LE(edge.y, 10.0);
+  }
+  EXPECT_GT(max_dx, 0.045);
+  EXPECT_GT(max_drot, 9.0);
+  Rng a(4), b(4);
+  EXPECT_EQ(game.BeamPose(Side::kRight, -2, 2, 45, &a).x, game.BeamPose(Side::kRight, -2, 2, 45, &b).x);
+}
+
+TEST(GameFlow, ClockStoppedBeforeKickOffAndBallHeldAtCentre) {
+  Game game;
+  GameUpdate u = game.Update(kDt, {3, 1, 0.042}, false);
+  EXPECT_FALSE(u.place_ball.has_value());  // nobody there yet
+  ASSERT_TRUE(game.Init("A", 0, 0).ok);
+  u = game.Update(kDt, {3, 1, 0.042}, true);
+  EXPECT_TRUE(u.place_ball_at_centre);
+  ASSERT_TRUE(u.place_ball.has_value());
+  EXPECT_TRUE(u.place_ball->isApprox(kCentre));
+  EXPECT_EQ(game.game_time(), 0.0);
+  EXPECT_EQ(game.play_mode(), PlayMode::kBeforeKickOff);  // no automatic kick-off
+}
+
+TEST(GameFlow, KickOffToPlayOnAtFirstTouch) {
+  Game game;
+  game.KickOff(Side::kLeft, nullptr);
+  EXPECT_EQ(game.play_mode(), PlayMode::kKickOffLeft);
+  GameUpdate u = game.Update(kDt, kCentre, false);
+  EXPECT_TRUE(u.play_mode_changed);  // the trainer's change is reported once
+  u = game.Update(kDt, kCentre, false);
+  EXPECT_FALSE(u.play_mode_changed);
+  EXPECT_EQ(game.play_mode(), PlayMode::kKickOffLeft);
+  EXPECT_NEAR(game.game_time(), 2 * kDt, 1e-12);
+  u = game.Update(kDt, kCentre, true);
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  EXPECT_TRUE(u.play_mode_changed);
+  EXPECT_FALSE(u.place_ball.has_value());
+}
+
+TEST(GameFlow, KickOffUntouchedDropsBallAfterFifteenSeconds) {
+  Game game;
+  game.KickOff(Side::kRight, nullptr);
+  GameUpdate last;
+  const int cycles = CyclesUntilModeChange(&game, {0.3, 0.1, 0.042}, 2000, &last);
+  EXPECT_NEAR(cycles, 750, 1);
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  EXPECT_TRUE(last.dropped_ball);
+  ASSERT_TRUE(last.place_ball.has_value());
+  EXPECT_NEAR(last.place_ball->x(), 0.3, 1e-12);
+}
+
+// rcssserver3d (SoccerRuleAspect::UpdateKickOff, naosoccersim.rb RuleDropBallTime
+// 15): a kick-off nobody touches ends when its mode time is MORE than 15 s: a
+// drop ball where the ball is and PlayOn, nobody's kick-off. dt = 0.25 s sums
+// exactly: at 15.00 s it is still the kick-off, at 15.25 s PlayOn.
+TEST(GameFlow, UntouchedKickOffBecomesPlayOnAfterMoreThanFifteenSecondsOfGameTime) {
+  Game game;
+  game.KickOff(Side::kLeft, nullptr);
+  const Eigen::Vector3d ball(0.2, -0.1, 0.042);
+  for (int i = 0; i < 60; ++i) {
+    const GameUpdate u = game.Update(0.25, ball, false);
+    ASSERT_EQ(game.play_mode(), PlayMode::kKickOffLeft) << i;
+    ASSERT_FALSE(u.place_ball.has_value());
+  }
+  EXPECT_EQ(game.mode_time(), 15.0);
+  const GameUpdate u = game.Update(0.25, ball, false);
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  EXPECT_TRUE(u.play_mode_changed);
+  EXPECT_TRUE(u.dropped_ball);
+  ASSERT_TRUE(u.place_ball.has_value());
+  EXPECT_TRUE(u.place_ball->isApprox(ball));
+  EXPECT_EQ(game.game_time(), 15.25);
+}
+
+// The same in 0.02 s cycles: 750 cycles sum to 15.00 s (not more), the 751st ends it.
+TEST(GameFlow, UntouchedKickOffEndsOnTheCycleAfterFifteenSeconds) {
+  Game game;
+  game.KickOff(Side::kRight, nullptr);
+  EXPECT_EQ(CyclesUntilModeChange(&game, kCentre, 2000), 751);
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+}
+
+// GameStateAspect::GetModeTime is game time since the mode began, so a
+// trainer's time change moves the kick-off's deadline.
+TEST(GameFlow, ModeTimeIsGameTimeSinceTheModeBegan) {
+  Game game;
+  game.KickOff(Side::kLeft, nullptr);
+  game.Update(0.25, kCentre, false);
+  game.SetGameTime(14.9);
+  EXPECT_NEAR(game.mode_time(), 14.9, 1e-12);
+  game.Update(0.25, kCentre, false);  // 15.15 s
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  // BeforeKickOff counts simulation time (the game clock stands).
+  game.SetPlayMode(PlayMode::kBeforeKickOff);
+  game.Update(0.25, kCentre, false);
+  EXPECT_EQ(game.mode_time(), 0.25);
+}
+
+// SoccerRuleAspect::Update runs CheckTime before the mode's rule: the cycle
+// that reaches half time is no longer play.
+TEST(GameFlow, HalfTimeEndsPlayBeforeTheGoalCheck) {
+  Game game;
+  ASSERT_TRUE(game.Init("A", 1, 0).ok);
+  game.SetPlayMode(PlayMode::kPlayOn);
+  game.SetGameTime(299.99);
+  const GameUpdate u = game.Update(kDt, {15.1, 0, 0.042}, false);
+  EXPECT_FALSE(u.goal);
+  EXPECT_EQ(game.score(Side::kLeft), 0);
+  EXPECT_EQ(game.play_mode(), PlayMode::kBeforeKickOff);
+  EXPECT_TRUE(u.place_ball_at_centre);
+}
+
+// UpdateGoal: mode time < 3 s waits; at 3 s the team scored on kicks off.
+TEST(GameFlow, GoalKickOffAtThreeSecondsOfGameTime) {
+  Game game;
+  game.SetPlayMode(PlayMode::kPlayOn);
+  ASSERT_TRUE(game.Update(0.25, {-15.1, 0, 0.042}, false).goal);
+  for (int i = 0; i < 11; ++i) game.Update(0.25, {-15.3, 0, 0.042}, false);
+  EXPECT_EQ(game.play_mode(), PlayMode::kGoalRight);
+  game.Update(0.25, {-15.3, 0, 0.042}, false);
+  EXPECT_EQ(game.play_mode(), PlayMode::kKickOffLeft);
+}
+
+Game FourPlayers() {
+  Game game;
+  for (const char* team : {"A", "B"})
+    for (int unum : {1, 2}) EXPECT_TRUE(game.Init(team, unum, 0).ok);
+  return game;
+}
+
+const Toucher kLeft1{Side::kLeft, 1};
+const Toucher kLeft2{Side::kLeft, 2};
+const Toucher kRight1{Side::kRight, 1};
+
+// CheckFreeKickTakerFoul / WasLastKickFromFreeKick: the kick-off's taker (more
+// than 2 agents) touching the ball again 0.1 s or more after its kick, before
+// anybody else: indirect free kick for the other team.
+TEST(GameKicks, KickOffTakerTouchingTwiceGivesTheOtherTeamAFreeKick) {
+  Game game = FourPlayers();
+  game.KickOff(Side::kLeft, nullptr);
+  const std::vector<Toucher> taker{kLeft1};
+  game.Update(kDt, kCentre, taker);
+  ASSERT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  for (int i = 0; i < 4; ++i) {  // 0.02 .. 0.08 s: still the kick
+    game.Update(kDt, kCentre, taker);
+    ASSERT_EQ(game.play_mode(), PlayMode::kPlayOn) << i;
+  }
+  const GameUpdate u = game.Update(kDt, kCentre, taker);  // 0.10 s
+  EXPECT_EQ(game.play_mode(), PlayMode::kFreeKickRight);
+  EXPECT_TRUE(u.play_mode_changed);
+}
+
+TEST(GameKicks, AnotherTouchEndsTheDoubleTouchCheck) {
+  Game game = FourPlayers();
+  game.KickOff(Side::kRight, nullptr);
+  game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});
+  for (int i = 0; i < 10; ++i) game.Update(kDt, kCentre, false);
+  game.Update(kDt, kCentre, std::vector<Toucher>{kLeft2});
+  for (int i = 0; i < 10; ++i) game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+}
+
+TEST(GameKicks, NoDoubleTouchRuleAtAKickOffWithTwoPlayers) {
+  Game game;
+  ASSERT_TRUE(game.Init("A", 1, 0).ok);
+  ASSERT_TRUE(game.Init("B", 1, 0).ok);
+  game.KickOff(Side::kLeft, nullptr);
+  for (int i = 0; i < 20; ++i) game.Update(kDt, kCentre, std::vector<Toucher>{kLeft1});
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  game.SetPlayMode(PlayMode::kPlayOn);
+  EXPECT_TRUE(game.Update(kDt, {15.1, 0, 0.042}, false).goal);  // and the kick-off team may score
+}
+
+// CheckGoal: the kick-off team may not score before the other team touched the
+// ball or it touched the ball outside the centre circle: goal kick instead,
+// the ball 1 m in front of the goal line (AwardGoalKick, GoalKickDist).
+TEST(GameKicks, KickOffTeamCannotScoreStraightFromTheKickOff) {
+  Game game = FourPlayers();
+  game.KickOff(Side::kLeft, nullptr);
+  game.Update(kDt, kCentre, std::vector<Toucher>{kLeft1});
+  game.Update(kDt, {1.0, 0, 0.042}, std::vector<Toucher>{kLeft2});  // inside the circle
+  const GameUpdate u = game.Update(kDt, {15.1, 0, 0.042}, false);
+  EXPECT_FALSE(u.goal);
+  EXPECT_EQ(game.score(Side::kLeft), 0);
+  EXPECT_EQ(game.play_mode(), PlayMode::kGoalKickRight);
+  ASSERT_TRUE(u.place_ball.has_value());
+  EXPECT_TRUE(u.place_ball->isApprox(Eigen::Vector3d(14, 0, 0.042)));
+}
+
+TEST(GameKicks, KickOffTeamScoresOnceTheBallLeftTheCircleOrTheOtherTeamTouchedIt) {
+  {
+    Game game = FourPlayers();
+    game.KickOff(Side::kLeft, nullptr);
+    game.Update(kDt, kCentre, std::vector<Toucher>{kLeft1});
+    game.Update(kDt, {2.5, 0, 0.042}, std::vector<Toucher>{kLeft2});
+    EXPECT_TRUE(game.Update(kDt, {15.1, 0, 0.042}, false).goal);
+  }
+  {
+    Game game = FourPlayers();
+    game.KickOff(Side::kLeft, nullptr);
+    game.Update(kDt, kCentre, std::vector<Toucher>{kLeft1});
+    game.Update(kDt, {0.5, 0, 0.042}, std::vector<Toucher>{kRight1});
+    EXPECT_TRUE(game.Update(kDt, {15.1, 0, 0.042}, false).goal);
+  }
+}
+
+// UpdateKickIn & co.: untouched for more than 15 s -> drop ball, PlayOn.
+TEST(GameKicks, UntouchedSetPieceBecomesPlayOnAfterMoreThanFifteenSeconds) {
+  for (const PlayMode mode : {PlayMode::kKickInLeft, PlayMode::kCornerKickRight, PlayMode::kGoalKickLeft,
+                              PlayMode::kFreeKickRight, PlayMode::kDirectFreeKickLeft}) {
+    Game game;
+    game.SetPlayMode(mode);
+    for (int i = 0; i < 60; ++i) game.Update(0.25, {3, 9.958, 0.042}, false);
+    EXPECT_EQ(game.play_mode(), mode);
+    const GameUpdate u = game.Update(0.25, {3, 9.958, 0.042}, false);
+    EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn) << PlayModeName(mode);
+    EXPECT_TRUE(u.dropped_ball);
+  }
+}
+
+// A set piece's touch counts more than kick-in pause + 0.03 s into the mode.
+TEST(GameKicks, SetPieceTouchCountsAfterPausePlusThirtyMilliseconds) {
+  Game game;
+  game.SetPlayMode(PlayMode::kKickInRight);
+  for (int i = 0; i < 51; ++i) game.Update(kDt, kCentre, false);  // 1.02 s
+  game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});       // 1.04 s
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  game.SetPlayMode(PlayMode::kKickInRight);
+  for (int i = 0; i < 50; ++i) game.Update(kDt, kCentre, false);
+  game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});  // 1.02 s: too early
+  EXPECT_EQ(game.play_mode(), PlayMode::kKickInRight);
+}
+
+// UpdateGoalKick: after the touch, PlayOn once the ball is out of the box.
+TEST(GameKicks, GoalKickPlaysOnWhenTheTouchedBallLeavesThePenaltyBox) {
+  Game game;
+  game.SetPlayMode(PlayMode::kGoalKickLeft);
+  for (int i = 0; i < 60; ++i) game.Update(kDt, {-14, 0, 0.042}, false);
+  game.Update(kDt, {-14, 0, 0.042}, std::vector<Toucher>{kLeft1});
+  EXPECT_EQ(game.play_mode(), PlayMode::kGoalKickLeft);
+  game.Update(kDt, {-13.3, 0.5, 0.042}, false);
+  EXPECT_EQ(game.play_mode(), PlayMode::kGoalKickLeft);
+  game.Update(kDt, {-13.1, 0.5, 0.042}, false);
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+}
+
+// UpdatePassMode: PlayOn at a touch, before PassModeDuration.
+TEST(GameKicks, PassModeEndsAtATouch) {
+  Game game;
+  game.SetPlayMode(PlayMode::kPassLeft);
+  game.Update(kDt, kCentre, false);
+  EXPECT_EQ(game.play_mode(), PlayMode::kPassLeft);
+  game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+}
+
+// UpdateOffside's body is compiled out: the mode lasts.
+TEST(GameKicks, OffsideModeLastsUntilTheTrainerChangesIt) {
+  Game game;
+  game.SetPlayMode(PlayMode::kOffsideLeft);
+  for (int i = 0; i < 1000; ++i) game.Update(kDt, kCentre, i % 2 == 0);
+  EXPECT_EQ(game.play_mode(), PlayMode::kOffsideLeft);
+}
+
+// GameStateAspect::KickOff(TI_NONE): half 2's first kick-off goes to the team
+// that did not win half 1's coin toss.
+TEST(GameFlow, SecondHalfKickOffGoesToTheOtherTeam) {
+  for (uint64_t seed = 1; seed <= 8; ++seed) {
+    Rng rng(seed);
+    Game game;
+    game.KickOff(std::nullopt, &rng);
+    const PlayMode first = game.play_mode();
+    game.SetGameTime(299.99);
+    game.Update(kDt, kCentre, false);
+    ASSERT_EQ(game.half(), 2);
+    game.KickOff(std::nullopt, &rng);
+    EXPECT_NE(game.play_mode(), first) << seed;
+  }
+}
+
+TEST(GameFlow, CoinTossPicksBothSides) {
+  int left = 0;
+  Rng rng(1);
+  for (int i = 0; i < 200; ++i) {
+    Game game;
+    game.KickOff(std::nullopt, &rng);
+    left += game.play_mode() == PlayMode::kKickOffLeft;
+    EXPECT_TRUE(game.play_mode() == PlayMode::kKickOffLeft || game.play_mode() == PlayMode::kKickOffRight);
+  }
+  EXPECT_GT(left, 60);
+  EXPECT_LT(left, 140);
+}
+
+TEST(GameFlow, GoalInTheRightGoalScoresForLeft) {
+  Game game;
+  game.SetPlayMode(PlayMode::kPlayOn);
+  GameUpdate u = game.Update(kDt, {15.03, 0.5, 0.042}, false);  // centre past the line by less than a radius
+  EXPECT_FALSE(u.goal);
+  u = game.Update(kDt, {15.05, 0.5, 0.042}, false);
+  EXPECT_TRUE(u.goal);
+  EXPECT_EQ(u.scored_by, Side::kLeft);
+  EXPECT_EQ(game.play_mode(), PlayMode::kGoalLeft);
+  EXPECT_EQ(game.score(Side::kLeft), 1);
+  EXPECT_EQ(game.score(Side::kRight), 0);
+  u = game.Update(kDt, {15.3, 0.5, 0.042}, false);  // still in the goal: counted once
+  EXPECT_FALSE(u.goal);
+  EXPECT_EQ(game.score(Side::kLeft), 1);
+}
+
+TEST(GameFlow, GoalInTheLeftGoalScoresForRight) {
+  Game game;
+  game.SetPlayMode(PlayMode::kPlayOn);
+  const GameUpdate u = game.Update(kDt, {-15.2, -1.0, 0.7}, false);
+  EXPECT_TRUE(u.goal);
+  EXPECT_EQ(u.scored_by, Side::kRight);
+  EXPECT_EQ(game.play_mode(), PlayMode::kGoalRight);
+  EXPECT_EQ(game.score(Side::kRight), 1);
+}
+
+TEST(GameFlow, WideOrHighIsNoGoal) {
+  for (const Eigen::Vector3d& ball :
+       {Eigen::Vector3d(15.2, 1.1, 0.042), Eigen::Vector3d(15.2, 0, 0.85), Eigen::Vector3d(-15.2, -1.06, 0.042)}) {
+    Game game;
+    game.SetPlayMode(PlayMode::kPlayOn);
+    EXPECT_FALSE(game.Update(kDt, ball, false).goal) << ball.transpose();
+    EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  }
+}
+
+TEST(GameFlow, GoalPauseThenKickOffOfTheOtherTeam) {
+  Game game;
+  game.SetPlayMode(PlayMode::kPlayOn);
+  ASSERT_TRUE(game.Update(kDt, {15.1, 0, 0.042}, false).goal);
+  GameUpdate last;
+  const int cycles = CyclesUntilModeChange(&game, {15.3, 0, 0.042}, 1000, &last);
+  EXPECT_NEAR(cycles, 150, 1);  // 3 s
+  EXPECT_EQ(game.play_mode(), PlayMode::kKickOffRight);
+  EXPECT_TRUE(last.place_ball_at_centre);
+  EXPECT_TRUE(last.play_mode_changed);
+  ASSERT_TRUE(last.place_ball.has_value());
+  EXPECT_TRUE(last.place_ball->isApprox(kCentre));
+
+  game.SetPlayMode(PlayMode::kPlayOn);
+  ASSERT_TRUE(game.Update(kDt, {-15.1, 0, 0.042}, false).goal);
+  CyclesUntilModeChange(&game, {-15.3, 0, 0.042}, 1000);
+  EXPECT_EQ(game.play_mode(), PlayMode::kKickOffLeft);
+}
+
+TEST(GameFlow, HalvesAndGameOver) {
+  Game game;
+  game.KickOff(Side::kLeft, nullptr);
+  game.SetGameTime(299.99);
+  game.Update(kDt, kCentre, false);
+  EXPECT_EQ(game.half(), 2);
+  EXPECT_EQ(game.play_mode(), PlayMode::kBeforeKickOff);
+  const double t = game.game_time();
+  EXPECT_GE(t, 300.0);
+  game.Update(kDt, kCentre, false);
+  EXPECT_EQ(game.game_time(), t);  // stopped
+  game.KickOff(Side::kRight, nullptr);
+  game.Update(kDt, kCentre, true);
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  EXPECT_GT(game.game_time(), t);  // the second half continues the clock
+  game.SetGameTime(599.99);
+  game.Update(kDt, kCentre, false);
+  EXPECT_EQ(game.play_mode(), PlayMode::kGameOver);
+  const double end = game.game_time();
+  game.Update(kDt, kCentre, false);
+  EXPECT_EQ(game.game_time(), end);
+  EXPECT_EQ(game.half(), 2);
+}
+
+TEST(GameFlow, OutBallDroppedInsideAfterThePause) {
+  Game game;
+  game.SetPlayMode(PlayMode::kPlayOn);
+  game.Update(kDt, {3, 5, 0.042}, false);
+  GameUpdate u = game.Update(kDt, {3, 10.1, 0.042}, false);
+  EXPECT_FALSE(u.place_ball.has_value());
+  int cycles = 1;
+  while (!u.place_ball && cycles < 200) {
+    u = game.Update(kDt, {3.5, 11, 0.042}, false);
+    ++cycles;
+  }
+  EXPECT_NEAR(cycles, 50, 1);  // 1 s kick-in pause
+  ASSERT_TRUE(u.place_ball.has_value());
+  EXPECT_TRUE(u.dropped_ball);
+  EXPECT_NEAR(u.place_ball->x(), 3.0, 1e-12);  // where it left
+  EXPECT_NEAR(u.place_ball->y(), 10 - 0.042, 1e-12);
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  EXPECT_FALSE(game.Update(kDt, {3, 9.958, 0.042}, false).place_ball.has_value());
+}
+
+TEST(GameFlow, DropPositionLeavesPenaltyAreas) {
+  Game game;
+  // The rule aspect's box is 1.8 deep and 3.9 wide (PenaltyWidth), edges included.
+  EXPECT_TRUE(game.DropPosition({14, 0.5, 0.3}).isApprox(Eigen::Vector3d(13.2, 1.95, 0.042)));
+  EXPECT_TRUE(game.DropPosition({-15.5, -0.2, 0.042}).isApprox(Eigen::Vector3d(-13.2, -1.95, 0.042)));
+  EXPECT_TRUE(game.DropPosition({13.2, 1.95, 0.042}).isApprox(Eigen::Vector3d(13.2, 1.95, 0.042)));
+  EXPECT_TRUE(game.DropPosition({14, 0, 0.042}).isApprox(Eigen::Vector3d(13.2, 1.95, 0.042)));  // y = 0: +
+  EXPECT_TRUE(game.DropPosition({5, -12, 0.042}).isApprox(Eigen::Vector3d(5, -9.958, 0.042)));
+  EXPECT_TRUE(game.DropPosition({14, 2.5, 0.042}).isApprox(Eigen::Vector3d(14, 2.5, 0.042)));
+}
+
+TEST(GameTrainer, DropBallScoreTimeAndModes) {
+  Game game;
+  game.KickOff(Side::kLeft, nullptr);
+  game.DropBall();
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  const GameUpdate u = game.Update(kDt, {-14, 0, 0.042}, false);
+  ASSERT_TRUE(u.place_ball.has_value());
+  EXPECT_TRUE(u.place_ball->isApprox(Eigen::Vector3d(-13.2, 1.95, 0.042)));
+  game.SetScore(2, std::nullopt);
+  game.SetScore(std::nullopt, 5);
+  EXPECT_EQ(game.score(Side::kLeft), 2);
+  EXPECT_EQ(game.score(Side::kRight), 5);
+  game.SetGameTime(-4);
+  EXPECT_EQ(game.game_time(), 0.0);
+  game.SetPlayMode(PlayMode::kKickInLeft);
+  game.Update(kDt, kCentre, true);  // within the kick-in pause: no change
+  EXPECT_EQ(game.play_mode(), PlayMode::kKickInLeft);
+  for (int i = 0; i < 60; ++i) game.Update(kDt, kCentre, false);
+  game.Update(kDt, kCentre, true);
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  game.SetPlayMode(PlayMode::kPassRight);
+  EXPECT_NEAR(CyclesUntilModeChange(&game, kCentre, 1000), 200, 1);
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+}
+
+}  // namespace
+}  // namespace turf::simspark

@@ -1,0 +1,892 @@
+#include "codecs/simspark/session.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "codecs/simspark/nao_joints.h"
+
+namespace turf::simspark {
+namespace {
+
+// A legged world without physics: N Naos (nao_1..nao_N) that stand wherever the
+// last requests put them, joints where a test sets them.
+class FakeWorld {
+ public:
+  struct Robot {
+    std::string name;
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();  // torso centre
+    Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+    std::vector<double> joints;  // rad, in NaoJoints(0) order
+    std::array<double, 3> gyro{};
+    std::array<double, 3> accelerometer{0.0, 0.0, 9.81};
+    bool left_contact = true;
+    bool right_contact = true;
+  };
+
+  explicit FakeWorld(int n) {
+    for (int i = 0; i < n; ++i) {
+      Robot r;
+      r.name = "nao_" + std::to_string(i + 1);
+      // Parked beside the field, one metre apart.
+      r.position = Eigen::Vector3d(-10.0 + i, -11.5, 0.4);
+      r.joints.assign(NaoJoints(0).size(), 0.0);
+      robots_.push_back(r);
+    }
+  }
+
+  std::vector<std::string> Names() const {
+    std::vector<std::string> names;
+    for (const Robot& r : robots_) names.push_back(r.name);
+    return names;
+  }
+
+  std::vector<RobotMove> Parks() const {
+    std::vector<RobotMove> parks;
+    for (const Robot& r : robots_) parks.push_back({r.name, r.position, r.orientation, false});
+    return parks;
+  }
+
+  Robot& robot(const std::string& name) {
+    for (Robot& r : robots_)
+      if (r.name == name) return r;
+    ADD_FAILURE() << "no robot " << name;
+    return robots_.front();
+  }
+
+  // Carries out what the session asked for (moves; joint velocities for one cycle).
+  void Apply(const WorldRequests& requests) {
+    for (const RobotMove& m : requests.moves) {
+      Robot& r = robot(m.robot);
+      r.position = m.position;
+      r.orientation = m.orientation;
+      if (m.reset_joints) std::fill(r.joints.begin(), r.joints.end(), 0.0);
+    }
+    if (requests.ball) ball_ = requests.ball->position;
+    for (const auto& [name, targets] : requests.joints) {
+      Robot& r = robot(name);
+      for (const JointVelocity& t : targets) {
+        const std::vector<NaoJoint>& joints = NaoJoints(0);
+        for (size_t i = 0; i < joints.size(); ++i)
+          if (t.joint == joints[i].perceptor) r.joints[i] += t.velocity * 0.02;
+      }
+    }
+  }
+
+  WorldSnapshot Snapshot() {
+    time_ += 0.02;
+    WorldSnapshot w;
+    w.time = time_;
+    w.ball = ball_;
+    for (const Robot& r : robots_) {
+      RobotSnapshot s;
+      s.name = r.name;
+      for (const NaoJoint& j : NaoJoints(0)) s.joint_names.push_back(j.perceptor);
+      s.joint_positions = r.joints;
+      s.gyro = r.gyro;
+      s.accelerometer = r.accelerometer;
+      s.feet.push_back({"lf", r.left_contact, {0.0, 0.0, -0.01}, {0.0, 0.0, 22.5}});
+      s.feet.push_back({"rf", r.right_contact, {0.0, 0.0, -0.01}, {0.0, 0.0, 22.5}});
+      // Body centres in the torso frame (x right, y forward, z up).
+      const std::pair<const char*, Eigen::Vector3d> links[] = {
+          {"torso", {0.0, 0.0, 0.0}},        {"head", {0.0, 0.0, 0.2}},      {"rlowerarm", {0.1, 0.15, 0.07}},
+          {"llowerarm", {-0.1, 0.15, 0.07}}, {"rfoot", {0.055, 0.0, -0.37}}, {"lfoot", {-0.055, 0.0, -0.37}},
+      };
+      for (const auto& [name, offset] : links)
+        s.links.push_back({name, r.position + r.orientation * offset, r.orientation});
+      w.robots.push_back(s);
+    }
+    return w;
+  }
+
+ private:
+  std::vector<Robot> robots_;
+  Eigen::Vector3d ball_{0.0, 0.0, 0.042};
+  double time_ = 0.0;
+};
+
+// A session in front of a fake world: one Cycle() = requests to the world,
+// a step, the perceptions back.
+struct Harness {
+  explicit Harness(int robots, SessionOptions options = {})
+      : world(robots), session(options, world.Names(), world.Parks()) {}
+
+  // Requests taken and applied, then one Advance; returns the outputs.
+  std::vector<std::pair<int, std::string>> Cycle(WorldRequests* taken = nullptr) {
+    WorldRequests requests = session.TakeRequests();
+    world.Apply(requests);
+    if (taken != nullptr) *taken = requests;
+    session.Advance(world.Snapshot());
+    return session.TakeOutputs();
+  }
+
+  // A new agent with a robot of `type` in team `team` as `unum` (no init when team is empty).
+  int Join(const std::string& team, int unum, int type = 0) {
+    const int id = session.Connect();
+    std::string message = "(scene rsg/agent/nao/nao_hetero.rsg " + std::to_string(type) + ")";
+    if (!team.empty()) message += "(init (unum " + std::to_string(unum) + ")(teamname " + team + "))";
+    session.Receive(id, message);
+    return id;
+  }
+
+  FakeWorld world;
+  Session session;
+};
+
+// The one output for `agent` ("" when none; a failure when more than one).
+std::string OutputFor(const std::vector<std::pair<int, std::string>>& outputs, int agent) {
+  std::string found;
+  int n = 0;
+  for (const auto& [id, text] : outputs) {
+    if (id != agent) continue;
+    found = text;
+    ++n;
+  }
+  EXPECT_LE(n, 1) << "agent " << agent << " got " << n << " perceptions in one cycle";
+  return found;
+}
+
+bool Contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// The number right after `prefix` in `text` (NaN when prefix is absent).
+double NumberAfter(const std::string& text, const std::string& prefix) {
+  const size_t at = text.find(prefix);
+  if (at == std::string::npos) return std::nan("");
+  return std::stod(text.substr(at + prefix.size()));
+}
+
+int Count(const std::string& text, const std::string& part) {
+  int n = 0;
+  for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+  return n;
+}
+
+// The GS predicate of a perception.
+std::string Gs(const std::string& perception) {
+  const size_t begin = perception.find("(GS");
+  if (begin == std::string::npos) return "";
+  return perception.substr(begin, perception.find("))", begin) + 2 - begin);
+}
+
+const RobotMove* FindMove(const WorldRequests& requests, const std::string& robot, bool last = true) {
+  const RobotMove* found = nullptr;
+  for (const RobotMove& m : requests.moves) {
+    if (m.robot != robot) continue;
+    found = &m;
+    if (!last) break;
+  }
+  return found;
+}
+
+std::vector<std::string> IssueKinds(const std::vector<SessionIssue>& issues) {
+  std::vector<std::string> kinds;
+  for (const SessionIssue& i : issues) kinds.push_back(i.kind);
+  return kinds;
+}
+
+// The angle in degrees between where the robot's forward (model +y) points and `field_direction`.
+double ForwardErrorDeg(const Eigen::Quaterniond& orientation, const Eigen::Vector3d& field_direction) {
+  const Eigen::Vector3d forward = orientation * Eigen::Vector3d::UnitY();
+  return std::acos(std::clamp(forward.dot(field_direction.normalized()), -1.0, 1.0)) * 180.0 / M_PI;
+}
+
+// --- scene, init ---
+
+TEST(SessionScene, ParksRobotWithResetJointsAndPerceivesAfterNextAdvance) {
+  Harness h(2);
+  const int a = h.Join("", 0);
+  const int idle = h.session.Connect();  // no scene: no robot, no perception
+  EXPECT_EQ(h.session.agents(), 2);
+  EXPECT_EQ(h.session.agents_with_robot(), 1);
+  EXPECT_TRUE(h.session.TakeOutputs().empty());
+
+  WorldRequests requests;
+  const auto outputs = h.Cycle(&requests);
+  ASSERT_EQ(requests.moves.size(), 1u);
+  const RobotMove& fresh = requests.moves[0];
+  EXPECT_EQ(fresh.robot, "nao_1");
+  EXPECT_TRUE(fresh.reset_joints);
+  EXPECT_TRUE(fresh.position.isApprox(h.world.Parks()[0].position));
+  EXPECT_TRUE(requests.joints.empty());
+  EXPECT_FALSE(requests.ball);
+
+  ASSERT_EQ(outputs.size(), 1u);
+  EXPECT_EQ(outputs[0].first, a);
+  EXPECT_EQ(OutputFor(outputs, idle), "");
+  const std::string& p = outputs[0].second;
+  EXPECT_EQ(p.rfind("(time (now 0.02))", 0), 0u) << p;
+  EXPECT_EQ(Gs(p), "(GS (sl 0) (sr 0) (t 0.00) (pm BeforeKickOff))");
+  EXPECT_TRUE(h.session.TakeIssues().empty());
+}
+
+TEST(SessionScene, SecondSceneAndNoFreeRobotAreIssues) {
+  Harness h(1);
+  const int a = h.Join("", 0);
+  h.session.Receive(a, "(scene rsg/agent/nao/nao.rsg)");
+  const int b = h.Join("", 0);
+  const std::vector<SessionIssue> issues = h.session.TakeIssues();
+  ASSERT_EQ(issues.size(), 2u);
+  EXPECT_EQ(issues[0].agent, a);
+  EXPECT_EQ(issues[0].kind, "scene_twice");
+  EXPECT_EQ(issues[1].agent, b);
+  EXPECT_EQ(issues[1].kind, "no_robot_free");
+  EXPECT_EQ(h.session.agents_with_robot(), 1);
+  WorldRequests requests;
+  h.Cycle(&requests);
+  EXPECT_EQ(requests.moves.size(), 1u);  // only a's robot
+}
+
+TEST(SessionInit, MovesToStartPoseFacingPlusXAndAnnouncesOnce) {
+  Harness h(2);
+  const int a = h.Join("Alpha", 1);
+  EXPECT_TRUE(h.session.TakeIssues().empty());
+  WorldRequests requests;
+  auto outputs = h.Cycle(&requests);
+  ASSERT_EQ(requests.moves.size(), 2u);  // fresh robot, then the start pose
+  EXPECT_TRUE(requests.moves[0].reset_joints);
+  const RobotMove& start = requests.moves[1];
+  EXPECT_EQ(start.robot, "nao_1");
+  EXPECT_FALSE(start.reset_joints);
+  EXPECT_NEAR(start.position.x(), -14.2, 1e-9);
+  EXPECT_NEAR(start.position.y(), 9.2, 1e-9);
+  EXPECT_NEAR(start.position.z(), 0.4, 1e-9);
+  // The Nao's forward is its model +y: it must look along field +x, upright.
+  EXPECT_LT(ForwardErrorDeg(start.orientation, Eigen::Vector3d::UnitX()), 1e-6);
+  EXPECT_TRUE((start.orientation * Eigen::Vector3d::UnitZ()).isApprox(Eigen::Vector3d::UnitZ(), 1e-9));
+
+  EXPECT_EQ(Gs(OutputFor(outputs, a)), "(GS (unum 1) (team left) (sl 0) (sr 0) (t 0.00) (pm BeforeKickOff))");
+  outputs = h.Cycle();
+  EXPECT_EQ(Gs(OutputFor(outputs, a)), "(GS (sl 0) (sr 0) (t 0.00) (pm BeforeKickOff))");
+  EXPECT_EQ(h.session.game().TeamName(Side::kLeft), "Alpha");
+}
+
+TEST(SessionInit, UnumZeroTakesTheLowestFreeNumber) {
+  Harness h(2);
+  h.Join("Alpha", 1);
+  const int b = h.Join("Alpha", 0);
+  WorldRequests requests;
+  const auto outputs = h.Cycle(&requests);
+  EXPECT_TRUE(Contains(Gs(OutputFor(outputs, b)), "(unum 2) (team left)"));
+  const RobotMove* start = FindMove(requests, "nao_2");
+  ASSERT_NE(start, nullptr);
+  EXPECT_NEAR(start->position.y(), 8.0, 1e-9);  // 9.2 - 1.2
+}
+
+TEST(SessionInit, SecondTeamIsRightThirdIsRefused) {
+  Harness h(3);
+  const int a = h.Join("Alpha", 1);
+  const int b = h.Join("Beta", 1);
+  const int c = h.Join("Gamma", 1);
+  const std::vector<SessionIssue> issues = h.session.TakeIssues();
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].agent, c);
+  EXPECT_EQ(issues[0].kind, "init_refused");
+  EXPECT_FALSE(issues[0].detail.empty());
+
+  WorldRequests requests;
+  const auto outputs = h.Cycle(&requests);
+  EXPECT_TRUE(Contains(Gs(OutputFor(outputs, a)), "(unum 1) (team left)"));
+  EXPECT_TRUE(Contains(Gs(OutputFor(outputs, b)), "(unum 1) (team right)"));
+  // The refused agent keeps its robot (it may init again) but is never announced.
+  const std::string gamma = OutputFor(outputs, c);
+  ASSERT_FALSE(gamma.empty());
+  EXPECT_FALSE(Contains(gamma, "(unum"));
+
+  const RobotMove* right = FindMove(requests, "nao_2");
+  ASSERT_NE(right, nullptr);
+  EXPECT_NEAR(right->position.x(), 14.2, 1e-9);
+  EXPECT_NEAR(right->position.y(), 9.2, 1e-9);
+  EXPECT_LT(ForwardErrorDeg(right->orientation, -Eigen::Vector3d::UnitX()), 1e-6);
+  // Gamma's robot only got its fresh (parked) pose.
+  const RobotMove* third = FindMove(requests, "nao_3");
+  ASSERT_NE(third, nullptr);
+  EXPECT_TRUE(third->reset_joints);
+  EXPECT_EQ(requests.moves.size(), 5u);  // 3 fresh robots, 2 start poses
+}
+
+TEST(SessionInit, InitBeforeSceneAndTwiceAreIssues) {
+  Harness h(1);
+  const int a = h.session.Connect();
+  h.session.Receive(a, "(init (unum 1)(teamname Alpha))");
+  h.session.Receive(a, "(scene rsg/agent/nao/nao.rsg)(init (unum 1)(teamname Alpha))");
+  h.session.Receive(a, "(init (unum 2)(teamname Alpha))");
+  EXPECT_EQ(IssueKinds(h.session.TakeIssues()), (std::vector<std::string>{"init_before_scene", "init_twice"}));
+  EXPECT_EQ(h.session.game().PlayerCount(Side::kLeft), 1);
+}
+
+// --- hinge effectors ---
+
+// Joint velocities asked in a cycle reach the world with the next one (the
+// reference's cycle of action latency): the first take has none of them.
+WorldRequests TakeAnswered(Session& s) {
+  EXPECT_TRUE(s.TakeRequests().joints.empty()) << "joint velocities acted in the cycle they were asked";
+  return s.TakeRequests();
+}
+
+TEST(SessionEffectors, AnAnswerMovesTheJointsOneCycleLaterAsTheReference) {
+  Harness h(1);
+  const int a = h.Join("Alpha", 1);
+  h.Cycle();
+  h.session.Receive(a, "(he1 1)");
+  WorldRequests now;
+  h.Cycle(&now);
+  EXPECT_EQ(now.joints.count("nao_1"), 0u);
+  h.session.Receive(a, "(he1 -1)");
+  WorldRequests next;
+  h.Cycle(&next);
+  ASSERT_EQ(next.joints.count("nao_1"), 1u);
+  EXPECT_DOUBLE_EQ(next.joints.at("nao_1").at(0).velocity, 1.0);  // the first answer, not the second
+  WorldRequests after;
+  h.Cycle(&after);
+  ASSERT_EQ(after.joints.count("nao_1"), 1u);
+  EXPECT_DOUBLE_EQ(after.joints.at("nao_1").at(0).velocity, -1.0);
+}
+
+TEST(SessionEffectors, HingeVelocitiesByModelJointNameClampedForType0) {
+  Harness h(1);
+  const int a = h.Join("Alpha", 1);
+  h.Cycle();  // as agents do: effectors after the first perception
+  h.session.Receive(a, "(he1 1.5)(rle4 -20)(lae3 20)(lle5 7)");
+  h.session.Receive(a, "(he1 0.25)");  // the last for a joint wins
+  const WorldRequests requests = TakeAnswered(h.session);
+  ASSERT_EQ(requests.joints.size(), 1u);
+  const std::vector<JointVelocity>& v = requests.joints.at("nao_1");
+  ASSERT_EQ(v.size(), 4u);
+  EXPECT_EQ(v[0].joint, "hj1");
+  EXPECT_DOUBLE_EQ(v[0].velocity, 0.25);
+  EXPECT_EQ(v[1].joint, "rlj4");
+  EXPECT_DOUBLE_EQ(v[1].velocity, -6.1395);
+  EXPECT_EQ(v[2].joint, "laj3");
+  EXPECT_DOUBLE_EQ(v[2].velocity, 6.1395);
+  EXPECT_EQ(v[3].joint, "llj5");
+  EXPECT_DOUBLE_EQ(v[3].velocity, 6.1395);
+  EXPECT_TRUE(h.session.TakeIssues().empty());
+  // Taken: the next cycle asks nothing new.
+  EXPECT_TRUE(h.session.TakeRequests().joints.empty());
+}
+
+TEST(SessionEffectors, Type2AnklesHaveTheirOwnLimits) {
+  Harness h(1);
+  const int a = h.Join("Alpha", 1, 2);
+  h.Cycle();
+  h.session.Receive(a, "(rle5 20)(lle5 -20)(rle6 20)(lle6 -1)(rle4 20)");
+  const WorldRequests requests = TakeAnswered(h.session);
+  const std::vector<JointVelocity>& v = requests.joints.at("nao_1");
+  ASSERT_EQ(v.size(), 5u);
+  EXPECT_EQ(v[0].joint, "rlj5");
+  EXPECT_DOUBLE_EQ(v[0].velocity, 8.80667);
+  EXPECT_EQ(v[1].joint, "llj5");
+  EXPECT_DOUBLE_EQ(v[1].velocity, -8.80667);
+  EXPECT_EQ(v[2].joint, "rlj6");
+  EXPECT_DOUBLE_EQ(v[2].velocity, 3.47234);
+  EXPECT_EQ(v[3].joint, "llj6");
+  EXPECT_DOUBLE_EQ(v[3].velocity, -1.0);
+  EXPECT_EQ(v[4].joint, "rlj4");
+  EXPECT_DOUBLE_EQ(v[4].velocity, 6.1395);
+}
+
+TEST(SessionEffectors, UnknownEffectorIsAnIssueAndRequestsNothing) {
+  Harness h(1);
+  const int a = h.Join("Alpha", 1);
+  h.Cycle();
+  h.session.Receive(a, "(lle7 1)");  // toes: type 4 only
+  h.session.Receive(a, "(xyz 1)");   // no robot type has it
+  const std::vector<SessionIssue> issues = h.session.TakeIssues();
+  ASSERT_EQ(issues.size(), 2u);
+  for (const SessionIssue& i : issues) {
+    EXPECT_EQ(i.agent, a);
+    EXPECT_EQ(i.kind, "unknown_effector");
+  }
+  EXPECT_TRUE(Contains(issues[0].detail, "lle7"));
+  const WorldRequests requests = h.session.TakeRequests();
+  EXPECT_TRUE(requests.joints.empty());
+  EXPECT_TRUE(requests.moves.empty());
+}
+
+TEST(SessionEffectors, Type4ToesAreNotAnIssue) {
+  Harness h(1);
+  const int a = h.Join("Alpha", 1, 4);
+  h.Cycle();
+  h.session.Receive(a, "(lle7 1)(he1 1)");
+  EXPECT_TRUE(h.session.TakeIssues().empty());
+  const WorldRequests requests = TakeAnswered(h.session);
+  ASSERT_EQ(requests.joints.count("nao_1"), 1u);
+  EXPECT_EQ(requests.joints.at("nao_1").back().joint, "hj1");
+}
+
+TEST(SessionEffectors, HingesWithoutRobotAreDropped) {
+  Harness h(1);
+  const int a = h.session.Connect();
+  h.session.Receive(a, "(he1 1)");
+  EXPECT_TRUE(h.session.TakeRequests().joints.empty());
+}
+
+TEST(SessionEffectors, ParseErrorIsAnIssue) {
+  Harness h(1);
+  const int a = h.Join("Alpha", 1);
+  h.Cycle();
+  h.session.Receive(a, "(he1 1");
+  const std::vector<SessionIssue> issues = h.session.TakeIssues();
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].kind, "parse");
+  EXPECT_TRUE(h.session.TakeRequests().joints.empty());
+}
+
+// --- perception ---
+
+TEST(SessionPerception, JointsInDegreesGyroInDegPerSecondForcesOnlyInContact) {
+  Harness h(1);
+  const int a = h.Join("Alpha", 1);
+  h.Cycle();
+  FakeWorld::Robot& robot = h.world.robot("nao_1");
+  robot.joints[0] = 0.5;    // hj1
+  robot.joints[13] = -1.0;  // rlj4
+  robot.gyro = {1.0, 0.0, -0.5};
+  robot.accelerometer = {0.1, -0.2, 9.81};
+  robot.left_contact = true;
+  robot.right_contact = false;
+  const std::string p = OutputFor(h.Cycle(), a);
+  EXPECT_TRUE(Contains(p, "(HJ (n hj1) (ax 28.65))")) << p;
+  EXPECT_TRUE(Contains(p, "(HJ (n rlj4) (ax -57.30))")) << p;
+  EXPECT_TRUE(Contains(p, "(HJ (n hj2) (ax 0.00))")) << p;
+  EXPECT_EQ(Count(p, "(HJ "), 22);
+  EXPECT_TRUE(Contains(p, "(GYR (n torso) (rt 57.30 0.00 -28.65))")) << p;
+  EXPECT_TRUE(Contains(p, "(ACC (n torso) (a 0.10 -0.20 9.81))")) << p;
+  EXPECT_TRUE(Contains(p, "(FRP (n lf) (c 0.00 0.00 -0.01) (f 0.00 0.00 22.50))")) << p;
+  EXPECT_FALSE(Contains(p, "(FRP (n rf)")) << p;
+  EXPECT_FALSE(Contains(p, "(HJ (n llj7)"));
+
+  robot.left_contact = false;
+  const std::string airborne = OutputFor(h.Cycle(), a);
+  EXPECT_FALSE(Contains(airborne, "(FRP")) << airborne;
+}
+
+TEST(SessionPerception, SeeEveryThirdPerceptionPerAgent) {
+  Harness h(2);
+  const int a = h.Join("Alpha", 1);
+  std::vector<bool> a_sees, b_sees;
+  int b = -1;
+  for (int cycle = 1; cycle <= 8; ++cycle) {
+    const auto outputs = h.Cycle();
+    a_sees.push_back(Contains(OutputFor(outputs, a), "(See"));
+    if (b >= 0) b_sees.push_back(Contains(OutputFor(outputs, b), "(See"));
+    if (cycle == 1) b = h.Join("Alpha", 2);  // one cycle later: another phase
+  }
+  EXPECT_EQ(a_sees, (std::vector<bool>{true, false, false, true, false, false, true, false}));
+  EXPECT_EQ(b_sees, (std::vector<bool>{true, false, false, true, false, false, true}));
+}
+
+// A robot lying face down beside the field, feet in the air, on a vision
+// cycle: it sees nothing and hears nothing. The whole message is what the
+// reference sends: no hear, no FRP, and "(See )" right after hj2.
+TEST(SessionPerception, FallenRobotThatSeesNothingGetsTheReferencesMessage) {
+  Harness h(1);
+  const int a = h.Join("", 0);
+  h.Cycle();  // parked
+  FakeWorld::Robot& robot = h.world.robot("nao_1");
+  robot.position.z() = 0.1;
+  robot.orientation = Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX());  // forward (+y) points down
+  robot.left_contact = false;
+  robot.right_contact = false;
+  h.Cycle();
+  h.Cycle();
+  const std::string p = OutputFor(h.Cycle(), a);  // the 4th perception: a vision cycle
+  EXPECT_EQ(p,
+            "(time (now 0.08))(GS (sl 0) (sr 0) (t 0.00) (pm BeforeKickOff))"
+            "(GYR (n torso) (rt 0.00 0.00 0.00))(ACC (n torso) (a 0.00 0.00 9.81))"
+            "(HJ (n hj1) (ax 0.00))(HJ (n hj2) (ax 0.00))(See )"
+            "(HJ (n raj1) (ax 0.00))(HJ (n raj2) (ax 0.00))(HJ (n raj3) (ax 0.00))(HJ (n raj4) (ax 0.00))"
+            "(HJ (n laj1) (ax 0.00))(HJ (n laj2) (ax 0.00))(HJ (n laj3) (ax 0.00))(HJ (n laj4) (ax 0.00))"
+            "(HJ (n rlj1) (ax 0.00))(HJ (n rlj2) (ax 0.00))(HJ (n rlj3) (ax 0.00))(HJ (n rlj4) (ax 0.00))"
+            "(HJ (n rlj5) (ax 0.00))(HJ (n rlj6) (ax 0.00))"
+            "(HJ (n llj1) (ax 0.00))(HJ (n llj2) (ax 0.00))(HJ (n llj3) (ax 0.00))(HJ (n llj4) (ax 0.00))"
+            "(HJ (n llj5) (ax 0.00))(HJ (n llj6) (ax 0.00))");
+}
+
+TEST(SessionPerception, SeeListsBallAndOtherPlayers) {
+  SessionOptions options;
+  options.vision.noise = false;
+  Harness h(2, options);
+  const int a = h.Join("Alpha", 1);
+  h.Join("Beta", 1);
+  h.Cycle();  // both at their start poses now
+  // In PlayOn (BeforeKickOff holds the ball at the centre), the ball 2 m in
+  // front of a (facing +x, head 0.6 m high) and b 3 m in front of it.
+  h.session.Trainer("(playMode PlayOn)(ball (pos -12.2 9.2 0.042))(agent (unum 1) (team Right) (pos -11.2 9.2 0.4))");
+  h.Cycle();
+  h.Cycle();
+  const std::string p = OutputFor(h.Cycle(), a);  // a's 4th perception
+  ASSERT_TRUE(Contains(p, "(See")) << p;
+  // Distances within the calibration offset (each axis +-0.005 m).
+  EXPECT_NEAR(NumberAfter(p, "(B (pol "), std::hypot(2.0, 0.6 - 0.042), 0.01) << p;
+  EXPECT_NEAR(NumberAfter(p, "(P (team Beta) (id 1) (head (pol "), 3.0, 0.01) << p;
+  EXPECT_TRUE(Contains(p, "(P (team Alpha) (id 1) (rlowerarm (pol ")) << p;  // its own arms
+  EXPECT_FALSE(Contains(p, "(P (team Alpha) (id 1) (head")) << p;            // never its own head
+}
+
+// --- beam ---
+
+TEST(SessionBeam, AllowedBeforeKickOffMovesTheRobot) {
+  Harness h(1);
+  const int a = h.Join("Alpha", 1);
+  h.Cycle();
+  h.session.Receive(a, "(beam -2 1 90)");
+  const WorldRequests requests = h.session.TakeRequests();
+  ASSERT_EQ(requests.moves.size(), 1u);
+  const RobotMove& m = requests.moves[0];
+  EXPECT_EQ(m.robot, "nao_1");
+  EXPECT_FALSE(m.reset_joints);
+  EXPECT_NEAR(m.position.x(), -2.0, 0.05 + 1e-9);
+  EXPECT_NEAR(m.position.y(), 1.0, 0.05 + 1e-9);
+  EXPECT_NEAR(m.position.z(), 0.4, 1e-9);
+  EXPECT_LE(ForwardErrorDeg(m.orientation, Eigen::Vector3d::UnitY()), 10.0 + 1e-6);  // rot 90 = facing +y
+  EXPECT_TRUE(h.session.TakeIssues().empty());
+}
+
+TEST(SessionBeam, RightTeamIsMirrored) {
+  Harness h(2);
+  h.Join("Alpha", 1);
+  const int b = h.Join("Beta", 1);
+  h.Cycle();
+  h.session.Receive(b, "(beam -2 1 0)");
+  const RobotMove* m = FindMove(h.session.TakeRequests(), "nao_2");
+  ASSERT_NE(m, nullptr);
+  EXPECT_NEAR(m->position.x(), 2.0, 0.05 + 1e-9);
+  EXPECT_NEAR(m->position.y(), -1.0, 0.05 + 1e-9);
+  EXPECT_LE(ForwardErrorDeg(m->orientation, -Eigen::Vector3d::UnitX()), 10.0 + 1e-6);
+}
+
+TEST(SessionBeam, IgnoredInPlayOn) {
+  Harness h(1);
+  const int a = h.Join("Alpha", 1);
+  h.Cycle();
+  h.session.Trainer("(playMode PlayOn)");
+  h.session.Receive(a, "(beam -2 1 90)");
+  EXPECT_TRUE(h.session.TakeRequests().moves.empty());
+  EXPECT_TRUE(h.session.TakeIssues().empty());
+  EXPECT_EQ(Gs(OutputFor(h.Cycle(), a)), "(GS (sl 0) (sr 0) (t 0.02) (pm PlayOn))");
+}
+
+TEST(SessionBeam, BeforeInitIsAnIssue) {
+  Harness h(1);
+  const int a = h.Join("", 0);
+  h.Cycle();
+  h.session.Receive(a, "(beam -2 1 90)");
+  const std::vector<SessionIssue> issues = h.session.TakeIssues();
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].agent, a);
+  EXPECT_EQ(issues[0].kind, "beam_before_init");
+  EXPECT_TRUE(h.session.TakeRequests().moves.empty());
+}
+
+// --- sync mode ---
+
+TEST(SessionSync, WaitsForSynAfterTheGraceCycles) {
+  SessionOptions options;
+  options.sync_mode = true;
+  options.sync_grace_cycles = 3;
+  Harness h(2, options);
+  const int idle = h.session.Connect();  // no robot: never awaited
+  const int a = h.Join("Alpha", 1);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_TRUE(h.session.ReadyToStep()) << "grace cycle " << i;
+    h.Cycle();
+  }
+  EXPECT_FALSE(h.session.ReadyToStep());
+  EXPECT_EQ(h.session.Waiting(), std::vector<int>{a});  // not idle
+  h.session.Receive(a, "(syn)");
+  EXPECT_TRUE(h.session.ReadyToStep());
+  EXPECT_TRUE(h.session.Waiting().empty());
+  EXPECT_EQ(h.session.agents(), 2);
+  h.session.Receive(idle, "(syn)");  // a robotless agent's syn changes nothing
+  h.session.TakeRequests();
+  EXPECT_FALSE(h.session.ReadyToStep());  // a new cycle needs a new (syn)
+  h.session.Receive(a, "(he1 1)");
+  EXPECT_FALSE(h.session.ReadyToStep());
+  h.session.Receive(a, "(he1 1)(syn)");
+  EXPECT_TRUE(h.session.ReadyToStep());
+}
+
+TEST(SessionSync, EveryAgentWithARobotIsAwaited) {
+  SessionOptions options;
+  options.sync_mode = true;
+  options.sync_grace_cycles = 0;
+  Harness h(2, options);
+  const int a = h.Join("Alpha", 1);
+  const int b = h.Join("Alpha", 2);
+  EXPECT_FALSE(h.session.ReadyToStep());
+  EXPECT_EQ(h.session.Waiting(), (std::vector<int>{a, b}));
+  h.session.Receive(b, "(syn)");
+  EXPECT_FALSE(h.session.ReadyToStep());
+  EXPECT_EQ(h.session.Waiting(), std::vector<int>{a});
+  h.session.Receive(a, "(syn)");
+  EXPECT_TRUE(h.session.ReadyToStep());
+  // A leaving agent is no longer awaited.
+  h.session.TakeRequests();
+  h.session.Receive(a, "(syn)");
+  h.session.Disconnect(b);
+  EXPECT_TRUE(h.session.ReadyToStep());
+}
+
+TEST(SessionSync, OffMeansAlwaysReady) {
+  SessionOptions options;
+  options.sync_grace_cycles = 0;
+  Harness h(1, options);
+  h.Join("Alpha", 1);
+  h.Cycle();
+  EXPECT_TRUE(h.session.ReadyToStep());
+}
+
+// --- trainer ---
+
+TEST(SessionTrainer, BallPositionAndVelocity) {
+  Harness h(1);
+  h.session.Trainer("(ball (pos 1 2 0.042) (vel 0 0 0))");
+  WorldRequests requests = h.session.TakeRequests();
+  ASSERT_TRUE(requests.ball);
+  EXPECT_TRUE(requests.ball->position.isApprox(Eigen::Vector3d(1, 2, 0.042)));
+  EXPECT_TRUE(requests.ball->velocity.isZero());
+  EXPECT_TRUE(h.session.TakeIssues().empty());
+
+  // Velocity only: the ball stays where the world last had it.
+  h.world.Apply(requests);
+  h.session.Advance(h.world.Snapshot());  // no player registered: the ball is not held at the centre
+  h.session.Trainer("(ball (vel 1 0 0))");
+  requests = h.session.TakeRequests();
+  ASSERT_TRUE(requests.ball);
+  EXPECT_TRUE(requests.ball->position.isApprox(Eigen::Vector3d(1, 2, 0.042)));
+  EXPECT_TRUE(requests.ball->velocity.isApprox(Eigen::Vector3d(1, 0, 0)));
+}
+
+TEST(SessionTrainer, MoveAgentKeepsItsOrientation) {
+  Harness h(2);
+  h.Join("Alpha", 1);
+  h.Cycle();
+  h.session.Trainer("(agent (unum 1) (team Left) (pos -3 0 0.4))");
+  const WorldRequests requests = h.session.TakeRequests();
+  ASSERT_EQ(requests.moves.size(), 1u);
+  const RobotMove& m = requests.moves[0];
+  EXPECT_EQ(m.robot, "nao_1");
+  EXPECT_TRUE(m.position.isApprox(Eigen::Vector3d(-3, 0, 0.4)));
+  EXPECT_FALSE(m.reset_joints);
+  EXPECT_LT(ForwardErrorDeg(m.orientation, Eigen::Vector3d::UnitX()), 1e-6);  // as init left it
+  EXPECT_TRUE(h.session.TakeIssues().empty());
+}
+
+TEST(SessionTrainer, MoveAgentWithYaw) {
+  Harness h(1);
+  h.Join("Alpha", 1);
+  h.Cycle();
+  h.session.Trainer("(agent (unum 1) (team Left) (move -3 0 0.4 0))");
+  const RobotMove* m = FindMove(h.session.TakeRequests(), "nao_1");
+  ASSERT_NE(m, nullptr);
+  EXPECT_LT(ForwardErrorDeg(m->orientation, Eigen::Vector3d::UnitY()), 1e-6);  // raw yaw 0: model axes
+}
+
+TEST(SessionTrainer, MoveUnknownAgentIsAnIssue) {
+  Harness h(1);
+  h.Join("Alpha", 1);
+  h.Cycle();
+  h.session.Trainer("(agent (unum 2) (team Left) (pos -3 0 0.4))(agent (unum 1) (team Right) (pos -3 0 0.4))");
+  EXPECT_EQ(IssueKinds(h.session.TakeIssues()), (std::vector<std::string>{"unknown_agent", "unknown_agent"}));
+  EXPECT_TRUE(h.session.TakeRequests().moves.empty());
+}
+
+TEST(SessionTrainer, KickOffLeftShowsInTheNextGs) {
+  Harness h(1);
+  const int a = h.Join("Alpha", 1);
+  h.Cycle();
+  h.session.Trainer("(kickOff Left)");
+  EXPECT_EQ(h.session.game().play_mode(), PlayMode::kKickOffLeft);
+  const std::string gs = Gs(OutputFor(h.Cycle(), a));
+  EXPECT_TRUE(Contains(gs, "(pm KickOff_Left)")) << gs;
+  EXPECT_TRUE(Contains(gs, "(t 0.02)")) << gs;  // the clock runs outside BeforeKickOff
+}
+
+TEST(SessionTrainer, KillKicksTheAgentAndKillsimQuits) {
+  Harness h(2);
+  h.Join("Alpha", 1);
+  const int b = h.Join("Alpha", 2);
+  h.session.Trainer("(kill (unum 2) (team Left))");
+  EXPECT_EQ(h.session.TakeKicked(), std::vector<int>{b});
+  EXPECT_TRUE(h.session.TakeKicked().empty());
+  h.session.Trainer("(kill (unum 3) (team Left))");
+  EXPECT_TRUE(h.session.TakeKicked().empty());
+  EXPECT_FALSE(h.session.quit_requested());
+  h.session.Trainer("(killsim)");
+  EXPECT_TRUE(h.session.quit_requested());
+}
+
+TEST(SessionTrainer, ScoreAndTime) {
+  Harness h(1);
+  const int a = h.Join("Alpha", 1);
+  h.session.Trainer("(score (left 2) (right 1))(time 12.5)");
+  const std::string gs = Gs(OutputFor(h.Cycle(), a));
+  EXPECT_TRUE(Contains(gs, "(sl 2) (sr 1) (t 12.50)")) << gs;
+}
+
+TEST(SessionTrainer, MalformedInputIsAnIssue) {
+  Harness h(1);
+  for (const char* bad : {"(ball (pos 1 2))", "(frobnicate 1)", "((", "(playMode NoSuchMode)"}) {
+    h.session.Trainer(bad);
+    const std::vector<SessionIssue> issues = h.session.TakeIssues();
+    ASSERT_EQ(issues.size(), 1u) << bad;
+    EXPECT_EQ(issues[0].agent, -1);
+    EXPECT_EQ(issues[0].kind.rfind("trainer.", 0), 0u) << issues[0].kind;
+  }
+  const WorldRequests requests = h.session.TakeRequests();
+  EXPECT_FALSE(requests.ball);
+  EXPECT_EQ(h.session.game().play_mode(), PlayMode::kBeforeKickOff);
+}
+
+// --- disconnect ---
+
+TEST(SessionDisconnect, ParksTheRobotDropsItsJointsAndFreesTheSlot) {
+  Harness h(2);
+  const int a = h.Join("Alpha", 1);
+  const int b = h.Join("Alpha", 2);
+  h.Cycle();
+  h.session.Receive(a, "(he1 1)");
+  h.session.Receive(b, "(he1 1)");
+  h.session.Disconnect(a);
+  EXPECT_EQ(h.session.agents(), 1);
+  EXPECT_EQ(h.session.game().PlayerCount(Side::kLeft), 1);
+
+  WorldRequests requests;
+  auto outputs = h.Cycle(&requests);
+  ASSERT_EQ(requests.moves.size(), 1u);
+  EXPECT_EQ(requests.moves[0].robot, "nao_1");
+  EXPECT_TRUE(requests.moves[0].reset_joints);
+  EXPECT_TRUE(requests.moves[0].position.isApprox(h.world.Parks()[0].position));
+  EXPECT_TRUE(requests.joints.empty());  // answers act one cycle later
+  EXPECT_EQ(OutputFor(outputs, a), "");
+  WorldRequests next;
+  h.Cycle(&next);
+  EXPECT_EQ(next.joints.count("nao_1"), 0u);
+  EXPECT_EQ(next.joints.count("nao_2"), 1u);
+
+  // A newcomer gets the free robot and the free number.
+  const int c = h.Join("Alpha", 1);
+  EXPECT_TRUE(h.session.TakeIssues().empty());
+  outputs = h.Cycle(&requests);
+  EXPECT_TRUE(Contains(Gs(OutputFor(outputs, c)), "(unum 1) (team left)"));
+  const RobotMove* start = FindMove(requests, "nao_1");
+  ASSERT_NE(start, nullptr);
+  EXPECT_NEAR(start->position.x(), -14.2, 1e-9);
+  // Disconnecting twice or an unknown agent does nothing.
+  h.session.Disconnect(a);
+  h.session.Disconnect(99);
+  EXPECT_EQ(h.session.agents(), 2);
+}
+
+TEST(SessionDisconnect, LastTeamMemberLeavingKeepsOtherAgentsRunning) {
+  Harness h(2);
+  const int a = h.Join("Alpha", 1);
+  const int b = h.Join("Beta", 1);
+  h.Cycle();
+  h.session.Disconnect(b);
+  const auto outputs = h.Cycle();
+  ASSERT_EQ(outputs.size(), 1u);
+  EXPECT_EQ(outputs[0].first, a);
+}
+
+// --- say / hear ---
+
+TEST(SessionRadio, SayIsHeardBySelfTeammateAndOpponent) {
+  Harness h(3);
+  const int a = h.Join("Alpha", 1);  // (-14.2, 9.2)
+  const int b = h.Join("Alpha", 2);  // (-14.2, 8.0)
+  const int c = h.Join("Beta", 2);   // (14.2, 8.0)
+  h.Cycle();
+  h.session.Receive(a, "(say hello)");
+  const auto outputs = h.Cycle();
+  const std::string pa = OutputFor(outputs, a);
+  const std::string pb = OutputFor(outputs, b);
+  const std::string pc = OutputFor(outputs, c);
+  EXPECT_TRUE(Contains(pa, "(hear Alpha 0.00 self hello)")) << pa;
+  EXPECT_EQ(Count(pa, "(hear"), 1);
+  // Direction: speaker - listener in the listener team's frame, degrees.
+  EXPECT_TRUE(Contains(pb, "(hear Alpha 0.00 90.00 hello)")) << pb;
+  // Right team: x, y negated, so (28.4, -1.2): atan2 = -2.42 deg.
+  EXPECT_TRUE(Contains(pc, "(hear Alpha 0.00 -2.42 hello)")) << pc;
+  // Heard once.
+  for (const auto& [id, text] : h.Cycle()) EXPECT_FALSE(Contains(text, "(hear")) << id;
+}
+
+TEST(SessionRadio, SayBeforeInitIsNotHeard) {
+  Harness h(2);
+  const int a = h.Join("", 0);
+  const int b = h.Join("Alpha", 1);
+  h.Cycle();
+  h.session.Receive(a, "(say hello)");
+  const auto outputs = h.Cycle();
+  EXPECT_FALSE(Contains(OutputFor(outputs, a), "(hear"));
+  EXPECT_FALSE(Contains(OutputFor(outputs, b), "(hear"));
+}
+
+// --- determinism ---
+
+std::string RunScript(uint64_t seed) {
+  SessionOptions options;
+  options.seed = seed;
+  Harness h(3, options);
+  const int a = h.Join("Alpha", 1);
+  const int b = h.Join("Alpha", 2);
+  const int c = h.Join("Beta", 1);
+  std::string log;
+  for (int cycle = 0; cycle < 12; ++cycle) {
+    if (cycle == 1) {
+      h.session.Receive(a, "(beam -1 0.5 0)");
+      h.session.Receive(c, "(beam -3 2 45)");
+    }
+    if (cycle == 3) h.session.Trainer("(kickOff None)");
+    h.session.Receive(b, "(he1 " + std::to_string(0.1 * cycle) + ")(say b" + std::to_string(cycle) + ")");
+    for (const auto& [id, text] : h.Cycle()) log += std::to_string(id) + ":" + text + "\n";
+    log += h.session.TakeMonitorOutput() + "\n";
+  }
+  return log;
+}
+
+TEST(SessionDeterminism, SameSeedSameBytes) {
+  const std::string first = RunScript(7);
+  EXPECT_TRUE(Contains(first, "(See")) << "the script must exercise the noisy vision";
+  EXPECT_TRUE(Contains(first, "(pol "));
+  EXPECT_EQ(first, RunScript(7));
+  EXPECT_NE(first, RunScript(8));  // the noise (and beam) do depend on the seed
+}
+
+// --- monitor ---
+
+TEST(SessionMonitor, GameStateEverySecondCycle) {
+  Harness h(1);
+  h.Join("Alpha", 1);
+  std::vector<bool> written;
+  for (int i = 0; i < 4; ++i) {
+    h.Cycle();
+    const std::string frame = h.session.TakeMonitorOutput();
+    written.push_back(!frame.empty());
+    if (i == 1) {
+      EXPECT_TRUE(Contains(frame, "(play_mode 0)")) << frame;
+      EXPECT_TRUE(Contains(frame, "(team_left Alpha)")) << frame;
+    }
+  }
+  EXPECT_EQ(written, (std::vector<bool>{false, true, false, true}));
+  h.session.Trainer("(kickOff Left)");
+  h.Cycle();
+  h.Cycle();
+  EXPECT_TRUE(Contains(h.session.TakeMonitorOutput(), "(play_mode 1)"));
+}
+
+TEST(SessionMonitor, GreetingHasTheEnvironmentAndGame) {
+  Harness h(1);
+  const std::string greeting = h.session.MonitorGreeting();
+  EXPECT_TRUE(Contains(greeting, "(FieldLength 30)")) << greeting;
+  EXPECT_TRUE(Contains(greeting, "(play_mode 0)")) << greeting;
+}
+
+}  // namespace
+}  // namespace turf::simspark

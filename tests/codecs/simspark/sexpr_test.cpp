@@ -1,0 +1,179 @@
+#include "codecs/simspark/sexpr.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace turf::simspark {
+namespace {
+
+TEST(SExpr, ParsesNestedListsAndConcatenatedPredicates) {
+  const SExprParse p = ParseSExprs("(GS (t 0.00) (pm PlayOn))(syn)");
+  ASSERT_EQ(p.error, SExprError::kOk);
+  ASSERT_EQ(p.exprs.size(), 2u);
+  const SExpr& gs = p.exprs[0];
+  EXPECT_TRUE(gs.is_list);
+  ASSERT_EQ(gs.items.size(), 3u);
+  EXPECT_EQ(gs.items[0].atom, "GS");
+  EXPECT_TRUE(gs.IsCall("GS"));
+  EXPECT_FALSE(gs.IsCall("G"));
+  ASSERT_NE(gs.Child("pm"), nullptr);
+  ASSERT_EQ(gs.Child("pm")->items.size(), 2u);
+  EXPECT_EQ(gs.Child("pm")->items[1].atom, "PlayOn");
+  EXPECT_EQ(gs.Child("t")->items[1].atom, "0.00");
+  EXPECT_EQ(gs.Child("sl"), nullptr);
+  EXPECT_EQ(gs.Head(), "GS");
+  EXPECT_TRUE(p.exprs[1].IsCall("syn"));
+  EXPECT_EQ(p.exprs[1].items.size(), 1u);
+}
+
+TEST(SExpr, AnyWhitespaceSeparatesTokens) {
+  const SExprParse p = ParseSExprs(" \t(\nbeam\r\n-5.0\v1.5\f0.0 )  ( syn )\n");
+  ASSERT_EQ(p.error, SExprError::kOk);
+  ASSERT_EQ(p.exprs.size(), 2u);
+  ASSERT_EQ(p.exprs[0].items.size(), 4u);
+  EXPECT_EQ(p.exprs[0].items[1].atom, "-5.0");
+  EXPECT_EQ(p.exprs[0].items[2].atom, "1.5");
+  EXPECT_EQ(p.exprs[0].items[3].atom, "0.0");
+  EXPECT_TRUE(p.exprs[1].IsCall("syn"));
+}
+
+TEST(SExpr, EmptyInputAndEmptyListsAreFine) {
+  EXPECT_EQ(ParseSExprs("").error, SExprError::kOk);
+  EXPECT_TRUE(ParseSExprs("  \n ").exprs.empty());
+  const SExprParse p = ParseSExprs("()(())");
+  ASSERT_EQ(p.error, SExprError::kOk);
+  ASSERT_EQ(p.exprs.size(), 2u);
+  EXPECT_TRUE(p.exprs[0].items.empty());
+  EXPECT_EQ(p.exprs[0].Head(), "");
+  EXPECT_FALSE(p.exprs[0].IsCall(""));
+  EXPECT_EQ(p.exprs[1].Head(), "");  // headed by a list
+}
+
+TEST(SExpr, ParenthesesEndAtomsWithoutSpace) {
+  const SExprParse p = ParseSExprs("(a(b)c)");
+  ASSERT_EQ(p.error, SExprError::kOk);
+  ASSERT_EQ(p.exprs[0].items.size(), 3u);
+  EXPECT_EQ(p.exprs[0].items[0].atom, "a");
+  EXPECT_TRUE(p.exprs[0].items[1].IsCall("b"));
+  EXPECT_EQ(p.exprs[0].items[2].atom, "c");
+}
+
+void ExpectError(std::string_view text, SExprError error, size_t offset, const SExprLimits& limits = {}) {
+  const SExprParse p = ParseSExprs(text, limits);
+  EXPECT_EQ(p.error, error) << text;
+  EXPECT_EQ(p.offset, offset) << text;
+  EXPECT_TRUE(p.exprs.empty()) << text;  // all or nothing
+}
+
+TEST(SExpr, UnbalancedOpenReportsTheEnd) {
+  ExpectError("(syn)(he1 1", SExprError::kUnbalancedOpen, 11);
+  ExpectError("(", SExprError::kUnbalancedOpen, 1);
+}
+
+TEST(SExpr, UnbalancedCloseReportsItsByte) {
+  ExpectError("(syn))", SExprError::kUnbalancedClose, 5);
+  ExpectError(")", SExprError::kUnbalancedClose, 0);
+}
+
+TEST(SExpr, DepthIsLimited) {
+  std::string ok(16, '(');
+  ok += std::string(16, ')');
+  EXPECT_EQ(ParseSExprs(ok).error, SExprError::kOk);
+  std::string deep(17, '(');
+  deep += std::string(17, ')');
+  ExpectError(deep, SExprError::kTooDeep, 16);
+  // No stack overflow however deep: refused at the first byte too many.
+  ExpectError(std::string(100000, '('), SExprError::kTooDeep, 16);
+  ExpectError("((a))", SExprError::kTooDeep, 1, SExprLimits{1, 4096, 256});
+}
+
+TEST(SExpr, NodeCountIsLimited) {
+  SExprLimits limits;
+  limits.max_nodes = 4;
+  EXPECT_EQ(ParseSExprs("(a b c)", limits).error, SExprError::kOk);  // 4 nodes
+  ExpectError("(a b c d)", SExprError::kTooManyNodes, 7, limits);
+  ExpectError("(a)(b)(c)", SExprError::kTooManyNodes, 6, limits);
+  std::string many;
+  for (int i = 0; i < 3000; ++i) many += "(x)";
+  EXPECT_EQ(ParseSExprs(many).error, SExprError::kTooManyNodes);  // default 4096
+}
+
+TEST(SExpr, AtomLengthIsLimited) {
+  const std::string at_limit = "(" + std::string(256, 'a') + ")";
+  const SExprParse p = ParseSExprs(at_limit);
+  ASSERT_EQ(p.error, SExprError::kOk);
+  EXPECT_EQ(p.exprs[0].items[0].atom.size(), 256u);
+  ExpectError("(say " + std::string(257, 'a') + ")", SExprError::kAtomTooLong, 5);
+}
+
+TEST(SExpr, BytesOutsidePrintableAsciiAreRefused) {
+  ExpectError(std::string("(say a\0b)", 9), SExprError::kBadByte, 6);
+  ExpectError("(say \x80)", SExprError::kBadByte, 5);
+  ExpectError("(say \xff)", SExprError::kBadByte, 5);
+  ExpectError("\x01(syn)", SExprError::kBadByte, 0);
+  ExpectError("(syn)\x7f", SExprError::kBadByte, 5);
+}
+
+TEST(SExpr, AtomsOutsideListsAreRefused) {
+  ExpectError("syn", SExprError::kTopLevelAtom, 0);
+  ExpectError("(syn) x", SExprError::kTopLevelAtom, 6);
+}
+
+TEST(SExpr, ErrorNames) {
+  EXPECT_STREQ(SExprErrorName(SExprError::kOk), "ok");
+  EXPECT_STREQ(SExprErrorName(SExprError::kUnbalancedOpen), "unbalanced_open");
+  EXPECT_STREQ(SExprErrorName(SExprError::kUnbalancedClose), "unbalanced_close");
+  EXPECT_STREQ(SExprErrorName(SExprError::kTooDeep), "too_deep");
+  EXPECT_STREQ(SExprErrorName(SExprError::kTooManyNodes), "too_many_nodes");
+  EXPECT_STREQ(SExprErrorName(SExprError::kAtomTooLong), "atom_too_long");
+  EXPECT_STREQ(SExprErrorName(SExprError::kBadByte), "bad_byte");
+  EXPECT_STREQ(SExprErrorName(SExprError::kTopLevelAtom), "top_level_atom");
+}
+
+TEST(SExprNumbers, DecimalNumbersParseWhole) {
+  struct Case {
+    const char* text;
+    double value;
+  };
+  for (const Case& c : {Case{"1.5", 1.5}, Case{"-2", -2.0}, Case{"+3", 3.0}, Case{".5", 0.5}, Case{"1.", 1.0},
+                        Case{"1e3", 1000.0}, Case{"-2.5E-1", -0.25}, Case{"0", 0.0}, Case{"1e-400", 0.0}}) {
+    double v = -99;
+    EXPECT_EQ(ParseDouble(c.text, &v), NumberError::kOk) << c.text;
+    EXPECT_DOUBLE_EQ(v, c.value) << c.text;
+  }
+}
+
+TEST(SExprNumbers, PartialOrOtherNotationsAreBad) {
+  for (const char* text : {"", "1.0abc", "abc", "0x10", "1e", "1e+", "--1", "+", ".", "1.2.3", " 1", "1,5", "e5"}) {
+    double v = -99;
+    EXPECT_EQ(ParseDouble(text, &v), NumberError::kBad) << text;
+    EXPECT_EQ(v, -99) << text;  // untouched
+  }
+}
+
+TEST(SExprNumbers, NonFiniteIsItsOwnError) {
+  for (const char* text : {"nan", "NaN", "-nan", "inf", "-INF", "+Infinity", "1e999", "-1e400"}) {
+    double v = -99;
+    EXPECT_EQ(ParseDouble(text, &v), NumberError::kNotFinite) << text;
+  }
+}
+
+TEST(SExprNumbers, IntegersAreWholeAndInRange) {
+  int v = 0;
+  EXPECT_TRUE(ParseInt("7", &v));
+  EXPECT_EQ(v, 7);
+  EXPECT_TRUE(ParseInt("-3", &v));
+  EXPECT_EQ(v, -3);
+  EXPECT_TRUE(ParseInt("+12", &v));
+  EXPECT_EQ(v, 12);
+  EXPECT_TRUE(ParseInt("2147483647", &v));
+  EXPECT_EQ(v, 2147483647);
+  EXPECT_TRUE(ParseInt("-2147483648", &v));
+  EXPECT_EQ(v, -2147483647 - 1);
+  for (const char* text : {"2147483648", "-2147483649", "99999999999999999999", "1.0", "1e2", "", "-", "7a", "0x1"})
+    EXPECT_FALSE(ParseInt(text, &v)) << text;
+}
+
+}  // namespace
+}  // namespace turf::simspark

@@ -1,0 +1,590 @@
+// turf-simproto-bridge in process: turf-sim's node and the bridge on threads,
+// a team over real UDP on 127.0.0.1, and a DDS observer of the world. Each test
+// has its own DDS domain, topic prefix and free ports. Waits are bounded.
+#include <gtest/gtest.h>
+#include <turf/idl/ClockPubSubTypes.h>
+#include <turf/idl/WorldStatePubSubTypes.h>
+#include <unistd.h>
+#include "tests/test_domain.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <thread>
+
+#include "codecs/proto/ssl_simulation.pb.h"
+#include "dds/participant.h"
+#include "participants/common/udp.h"
+#include "participants/sim/sim_node.h"
+#include "participants/simproto_bridge/simproto_bridge.h"
+#include "tests/core/test_scenes.h"
+
+namespace turf {
+namespace {
+
+using namespace std::chrono_literals;
+using Clock = std::chrono::steady_clock;
+namespace ws = wire::simulation;
+
+int g_test_counter = 0;
+
+dds::ParticipantOptions UniqueDds() {
+  ++g_test_counter;
+  dds::ParticipantOptions o;
+  o.domain = turf::test::TestDomain(37);
+  o.prefix = "simproto" + std::to_string(getpid()) + "_" + std::to_string(g_test_counter);
+  o.name = "observer";
+  o.qos_file = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
+  return o;
+}
+
+uint16_t FreePort() {
+  std::string error;
+  std::optional<UdpSocket> s = UdpSocket::Bind("127.0.0.1", 0, false, &error);
+  EXPECT_TRUE(s.has_value()) << error;
+  return s ? s->LocalPort() : 0;
+}
+
+// turf-sim's node and the bridge, each on a thread of its own.
+class Stack {
+ public:
+  Stack(Scene scene, const dds::ParticipantOptions& dds, TimeMode mode, double speed = 1.0) {
+    SimNodeOptions so;
+    so.domain = dds.domain;
+    so.prefix = dds.prefix;
+    so.qos_file = dds.qos_file;
+    so.mode = mode;
+    so.speed = speed;
+    sim_ = std::make_unique<SimNode>(std::move(scene), so);
+    SimprotoBridgeOptions bo;
+    bo.domain = dds.domain;
+    bo.prefix = dds.prefix;
+    bo.qos_file = dds.qos_file;
+    bo.listen = "127.0.0.1";
+    bo.control_port = control = FreePort();
+    bo.blue_port = blue = FreePort();
+    bo.yellow_port = yellow = FreePort();
+    bo.sync_port = sync = FreePort();
+    bridge_ = std::make_unique<SimprotoBridge>(bo);
+    sim_thread_ = std::thread([this] { sim_->Run([this] { return stop_.load(); }); });
+    bridge_thread_ = std::thread([this] { bridge_->Run([this] { return stop_.load(); }); });
+  }
+  ~Stack() {
+    stop_ = true;
+    bridge_thread_.join();
+    sim_thread_.join();
+  }
+  SimNode& sim() { return *sim_; }
+  SimprotoBridge& bridge() { return *bridge_; }
+  uint16_t control = 0, blue = 0, yellow = 0, sync = 0;
+
+ private:
+  std::unique_ptr<SimNode> sim_;
+  std::unique_ptr<SimprotoBridge> bridge_;
+  std::atomic<bool> stop_{false};
+  std::thread sim_thread_;
+  std::thread bridge_thread_;
+};
+
+// A team (or training loop) on UDP: one socket, request and answer.
+class Team {
+ public:
+  Team() {
+    std::string error;
+    std::optional<UdpSocket> s = UdpSocket::Bind("127.0.0.1", 0, false, &error);
+    EXPECT_TRUE(s.has_value()) << error;
+    if (s) socket_ = std::move(*s);
+  }
+  // nullopt (and a failure) if there is no answer within `timeout`.
+  std::optional<std::vector<uint8_t>> Ask(uint16_t port, const std::vector<uint8_t>& bytes,
+                                          std::chrono::milliseconds timeout = 3s) {
+    const std::optional<UdpEndpoint> to = MakeEndpoint("127.0.0.1", port);
+    if (!socket_.valid() || !to) {
+      ADD_FAILURE() << "no socket or no endpoint";
+      return std::nullopt;
+    }
+    while (socket_.Receive(65536, 0ms)) {
+    }  // drop late answers
+    std::string error;
+    EXPECT_TRUE(socket_.SendTo(bytes, *to, &error)) << error;
+    std::optional<Datagram> d = socket_.Receive(65536, timeout);
+    if (!d) return std::nullopt;
+    return d->bytes;
+  }
+  template <class Request, class Response>
+  bool Ask(uint16_t port, const Request& request, Response* response) {
+    std::vector<uint8_t> bytes(request.ByteSizeLong());
+    request.SerializePartialToArray(bytes.data(), static_cast<int>(bytes.size()));
+    const auto answer = Ask(port, bytes);
+    return answer && response->ParseFromArray(answer->data(), static_cast<int>(answer->size()));
+  }
+  // Until the bridge has seen turf-sim (an empty control command answers without errors).
+  bool WaitReady(uint16_t control_port) {
+    const auto end = Clock::now() + 8s;
+    while (Clock::now() < end) {
+      ws::SimulatorCommand ping;
+      ping.mutable_control();
+      ws::SimulatorResponse r;
+      if (Ask(control_port, ping, &r) && r.errors_size() == 0) return true;
+      std::this_thread::sleep_for(20ms);
+    }
+    return false;
+  }
+
+ private:
+  UdpSocket socket_;
+};
+
+// Watches world_state and clock over DDS, as any participant could.
+class Observer {
+ public:
+  explicit Observer(const dds::ParticipantOptions& o)
+      : participant_(o),
+        state_(participant_.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
+        clock_(participant_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock)) {}
+  bool Wait(const std::function<bool(const idl::WorldState&, const idl::Clock&)>& done,
+            std::chrono::milliseconds timeout = 5s) {
+    const auto end = Clock::now() + timeout;
+    while (Clock::now() < end) {
+      std::vector<idl::WorldState> states;
+      if (state_->Take(&states)) {
+        state_now_ = states.back();
+        has_state_ = true;
+      }
+      std::vector<idl::Clock> clocks;
+      if (clock_->Take(&clocks)) clock_now_ = clocks.back();
+      if (has_state_ && done(state_now_, clock_now_)) return true;
+      std::this_thread::sleep_for(2ms);
+    }
+    return false;
+  }
+  const idl::WorldState& state() const { return state_now_; }
+  const idl::Clock& clock() const { return clock_now_; }
+
+ private:
+  dds::Participant participant_;
+  std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> state_;
+  std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_;
+  idl::WorldState state_now_;
+  bool has_state_ = false;
+  idl::Clock clock_now_;
+};
+
+const idl::RobotState& FindRobot(const idl::WorldState& s, idl::Team team, int id) {
+  for (const auto& r : s.robots())
+    if (r.team() == team && r.id() == id) return r;
+  static const idl::RobotState none;
+  ADD_FAILURE() << "no robot " << id;
+  return none;
+}
+
+ws::RobotCommand* AddLocal(ws::RobotControl* rc, uint32_t id, float forward, float left = 0.0f) {
+  ws::RobotCommand* c = rc->add_robot_commands();
+  c->set_id(id);
+  auto* v = c->mutable_move_command()->mutable_local_velocity();
+  v->set_forward(forward);
+  v->set_left(left);
+  v->set_angular(0.0f);
+  return c;
+}
+
+bool HasError(const google::protobuf::RepeatedPtrField<ws::SimulatorError>& errors, const std::string& code) {
+  for (const auto& e : errors)
+    if (e.code() == code) return true;
+  return false;
+}
+
+// A positive marker for negative checks: teleports the ball to (x, y) through
+// the control port and waits for a world state that shows it. turf-sim handles
+// requests in order, so that state comes after everything asked before.
+bool BallMarker(Team& team, uint16_t control_port, Observer& world, float x, float y) {
+  ws::SimulatorCommand c;
+  c.mutable_control()->mutable_teleport_ball()->set_x(x);
+  c.mutable_control()->mutable_teleport_ball()->set_y(y);
+  ws::SimulatorResponse r;
+  if (!team.Ask(control_port, c, &r) || r.errors_size() != 0) {
+    ADD_FAILURE() << "marker teleport refused: " << r.DebugString();
+    return false;
+  }
+  return world.Wait([&](const idl::WorldState& s, const idl::Clock&) {
+    return std::abs(s.ball().position().x() - x) < 1e-3 && std::abs(s.ball().position().y() - y) < 1e-3;
+  });
+}
+
+std::vector<uint8_t> SyncBytes(const ws::SimulationSyncRequest& request) {
+  std::vector<uint8_t> bytes(request.ByteSizeLong());
+  request.SerializeToArray(bytes.data(), static_cast<int>(bytes.size()));
+  return bytes;
+}
+
+TEST(SimprotoBridge, LocalVelocityCommandMovesTheRobotAtOneMetrePerSecond) {
+  const auto dds = UniqueDds();
+  Stack stack(test::OneRobot(), dds, TimeMode::kScaled, 2.0);
+  Team team;
+  Observer world(dds);
+  ASSERT_TRUE(team.WaitReady(stack.control));
+  ws::RobotControl rc;
+  AddLocal(&rc, 0, 1.0f);
+  int64_t t_start = -1;
+  double x_start = 0.0;
+  int answered = 0;
+  ASSERT_TRUE(world.Wait(
+      [&](const idl::WorldState& s, const idl::Clock&) {
+        ws::RobotControlResponse r;
+        if (team.Ask(stack.blue, rc, &r)) {
+          ++answered;
+          EXPECT_EQ(r.errors_size(), 0);
+          EXPECT_EQ(r.feedback_size(), 1);
+        }
+        const idl::RobotState& robot = FindRobot(s, idl::TEAM_BLUE, 0);
+        if (t_start < 0 && s.sim_time_ns() > 700'000'000) {
+          t_start = s.sim_time_ns();
+          x_start = robot.position().x();
+        }
+        return t_start >= 0 && s.sim_time_ns() - t_start >= 700'000'000;
+      },
+      10s));
+  const idl::WorldState& s = world.state();
+  const double speed =
+      (FindRobot(s, idl::TEAM_BLUE, 0).position().x() - x_start) / ((s.sim_time_ns() - t_start) * 1e-9);
+  EXPECT_NEAR(speed, 1.0, 0.05);
+  EXPECT_NEAR(FindRobot(s, idl::TEAM_BLUE, 0).position().y(), 0.0, 0.01);
+  EXPECT_GT(answered, 20);
+}
+
+TEST(SimprotoBridge, TeleportsBallAndRobotsOnAndOffTheField) {
+  const auto dds = UniqueDds();
+  Stack stack(test::Teams(2), dds, TimeMode::kScaled, 2.0);
+  Team team;
+  Observer world(dds);
+  ASSERT_TRUE(team.WaitReady(stack.control));
+  ws::SimulatorCommand c;
+  auto* ball = c.mutable_control()->mutable_teleport_ball();
+  ball->set_x(1.0f);
+  ball->set_y(-2.0f);
+  ws::TeleportRobot* on = c.mutable_control()->add_teleport_robot();
+  on->mutable_id()->set_id(0);
+  on->mutable_id()->set_team(ws::BLUE);
+  on->set_x(-3.0f);
+  on->set_y(1.5f);
+  on->set_orientation(1.0f);
+  on->set_present(true);
+  ws::TeleportRobot* off = c.mutable_control()->add_teleport_robot();
+  off->mutable_id()->set_id(1);
+  off->mutable_id()->set_team(ws::YELLOW);
+  off->set_present(false);
+  ws::SimulatorResponse r;
+  ASSERT_TRUE(team.Ask(stack.control, c, &r));
+  EXPECT_EQ(r.errors_size(), 0) << r.DebugString();
+  ASSERT_TRUE(world.Wait([](const idl::WorldState& s, const idl::Clock&) {
+    const idl::RobotState& b0 = FindRobot(s, idl::TEAM_BLUE, 0);
+    return std::abs(b0.position().x() + 3.0) < 0.01 && std::abs(b0.position().y() - 1.5) < 0.01 &&
+           std::abs(b0.yaw() - 1.0) < 0.01 && !FindRobot(s, idl::TEAM_YELLOW, 1).on_field() &&
+           std::abs(s.ball().position().x() - 1.0) < 0.01 && std::abs(s.ball().position().y() + 2.0) < 0.01;
+  }));
+
+  // Back on the field where it was asked for; a teleport beyond the walls is refused as a whole.
+  ws::SimulatorCommand back;
+  ws::TeleportRobot* y1 = back.mutable_control()->add_teleport_robot();
+  y1->mutable_id()->set_id(1);
+  y1->mutable_id()->set_team(ws::YELLOW);
+  y1->set_x(2.0f);
+  y1->set_y(2.0f);
+  y1->set_present(true);
+  ASSERT_TRUE(team.Ask(stack.control, back, &r));
+  EXPECT_EQ(r.errors_size(), 0) << r.DebugString();
+  ASSERT_TRUE(world.Wait([](const idl::WorldState& s, const idl::Clock&) {
+    const idl::RobotState& y = FindRobot(s, idl::TEAM_YELLOW, 1);
+    return y.on_field() && std::abs(y.position().x() - 2.0) < 0.01;
+  }));
+  ws::SimulatorCommand outside;
+  outside.mutable_control()->mutable_teleport_ball()->set_x(0.0f);
+  outside.mutable_control()->add_teleport_robot()->CopyFrom(*y1);
+  outside.mutable_control()->mutable_teleport_robot(0)->set_x(50.0f);
+  ASSERT_TRUE(team.Ask(stack.control, outside, &r));
+  ASSERT_EQ(r.errors_size(), 1);
+  EXPECT_EQ(r.errors(0).code(), "TURF_OUTSIDE_FIELD");
+  // Marker: a later teleport of yellow 1; once it shows, the refused one would have too.
+  ws::SimulatorCommand marker;
+  ws::TeleportRobot* y1_marker = marker.mutable_control()->add_teleport_robot();
+  y1_marker->CopyFrom(*y1);
+  y1_marker->set_x(2.5f);
+  ASSERT_TRUE(team.Ask(stack.control, marker, &r));
+  EXPECT_EQ(r.errors_size(), 0) << r.DebugString();
+  ASSERT_TRUE(world.Wait([](const idl::WorldState& s, const idl::Clock&) {
+    return std::abs(FindRobot(s, idl::TEAM_YELLOW, 1).position().x() - 2.5) < 0.01;
+  }));
+  EXPECT_NEAR(world.state().ball().position().x(), 1.0, 0.05);  // the ball did not go to x = 0
+  EXPECT_NEAR(FindRobot(world.state(), idl::TEAM_YELLOW, 1).position().y(), 2.0, 0.05);
+}
+
+TEST(SimprotoBridge, SimulationSpeedReallyChangesTurfSimsClock) {
+  const auto dds = UniqueDds();
+  Stack stack(test::OneRobot(), dds, TimeMode::kRealtime);
+  Team team;
+  Observer world(dds);
+  ASSERT_TRUE(team.WaitReady(stack.control));
+  auto speed = [&](float s) {
+    ws::SimulatorCommand c;
+    c.mutable_control()->set_simulation_speed(s);
+    ws::SimulatorResponse r;
+    EXPECT_TRUE(team.Ask(stack.control, c, &r));
+    EXPECT_EQ(r.errors_size(), 0) << r.DebugString();
+  };
+  speed(2.0f);
+  EXPECT_TRUE(world.Wait([](const idl::WorldState&, const idl::Clock& c) {
+    return c.mode() == idl::TIME_SCALED && c.speed() == 2.0 && !c.paused();
+  }));
+  speed(0.0f);
+  EXPECT_TRUE(world.Wait([](const idl::WorldState&, const idl::Clock& c) { return c.paused(); }));
+  speed(1.0f);
+  EXPECT_TRUE(world.Wait(
+      [](const idl::WorldState&, const idl::Clock& c) { return c.mode() == idl::TIME_REALTIME && !c.paused(); }));
+}
+
+TEST(SimprotoBridge, TeamPortsCommandOnlyTheirTeamAndAnswerContactForEveryRobot) {
+  const auto dds = UniqueDds();
+  Scene scene = test::Teams(2);
+  scene.ball_start_x = scene.robots[0].pose.x + 0.08 + 0.0215 + 0.001;  // at blue 0's front face
+  scene.ball_start_y = scene.robots[0].pose.y;
+  Stack stack(scene, dds, TimeMode::kScaled, 2.0);
+  Team team;
+  Observer world(dds);
+  ASSERT_TRUE(team.WaitReady(stack.control));
+  ws::RobotControl rc;
+  AddLocal(&rc, 0, 0.0f)->set_dribbler_speed(1000.0f);
+  AddLocal(&rc, 1, 0.0f, 1.0f);  // blue 1 drives left; yellow 1 must not
+  ASSERT_TRUE(world.Wait([](auto&, auto&) { return true; }));
+  const idl::RobotState yellow_start = FindRobot(world.state(), idl::TEAM_YELLOW, 1);
+  bool contact_seen = false;
+  const int64_t t0 = world.state().sim_time_ns();
+  ASSERT_TRUE(world.Wait(
+      [&](const idl::WorldState& s, const idl::Clock&) {
+        ws::RobotControlResponse r;
+        if (team.Ask(stack.blue, rc, &r)) {
+          EXPECT_EQ(r.errors_size(), 0);
+          EXPECT_EQ(r.feedback_size(), 2);  // every commanded robot
+          for (const auto& f : r.feedback())
+            if (f.id() == 0 && f.dribbler_ball_contact()) contact_seen = true;
+        }
+        return s.sim_time_ns() - t0 > 800'000'000;
+      },
+      8s));
+  EXPECT_TRUE(contact_seen);
+  const idl::WorldState& s = world.state();
+  EXPECT_GT(FindRobot(s, idl::TEAM_BLUE, 1).position().y() - scene.robots[1].pose.y, 0.3);
+  EXPECT_NEAR(FindRobot(s, idl::TEAM_YELLOW, 1).position().y(), yellow_start.position().y(), 1e-6);
+  EXPECT_NEAR(FindRobot(s, idl::TEAM_YELLOW, 1).position().x(), yellow_start.position().x(), 1e-6);
+}
+
+TEST(SimprotoBridge, BadDatagramsAreAnsweredAndChangeNothing) {
+  const auto dds = UniqueDds();
+  Stack stack(test::OneRobot(), dds, TimeMode::kScaled, 2.0);
+  Team team;
+  Observer world(dds);
+  ASSERT_TRUE(team.WaitReady(stack.control));
+  ASSERT_TRUE(world.Wait([](auto&, auto&) { return true; }));
+  const idl::WorldState before = world.state();
+
+  ws::RobotControl nan_cmd;
+  AddLocal(&nan_cmd, 0, std::nanf(""));
+  ws::RobotControl good_and_16;
+  AddLocal(&good_and_16, 0, 1.0f);
+  AddLocal(&good_and_16, 16, 1.0f);
+  ws::SimulatorCommand nan_teleport;
+  nan_teleport.mutable_control()->mutable_teleport_ball()->set_x(0.0f);
+  nan_teleport.mutable_control()->mutable_teleport_ball()->set_y(std::nanf(""));
+  ws::SimulatorCommand geometry;
+  geometry.mutable_config()->set_vision_port(10006);
+  const std::vector<uint8_t> garbage = {0xFF, 0xFF, 0x01, 0x02};
+  for (int round = 0; round < 3; ++round) {
+    ws::RobotControlResponse r;
+    ASSERT_TRUE(team.Ask(stack.blue, nan_cmd, &r));
+    EXPECT_TRUE(HasError(r.errors(), "TURF_NOT_FINITE"));
+    EXPECT_EQ(r.feedback_size(), 0);
+    ASSERT_TRUE(team.Ask(stack.blue, good_and_16, &r));
+    EXPECT_TRUE(HasError(r.errors(), "TURF_UNKNOWN_ROBOT"));
+    const auto g = team.Ask(stack.yellow, garbage);
+    ASSERT_TRUE(g.has_value());
+    ASSERT_TRUE(r.ParseFromArray(g->data(), static_cast<int>(g->size())));
+    EXPECT_TRUE(HasError(r.errors(), "TURF_MALFORMED"));
+    ws::SimulatorResponse sr;
+    ASSERT_TRUE(team.Ask(stack.control, nan_teleport, &sr));
+    EXPECT_TRUE(HasError(sr.errors(), "TURF_NOT_FINITE"));
+    ASSERT_TRUE(team.Ask(stack.control, geometry, &sr));
+    EXPECT_TRUE(HasError(sr.errors(), "TURF_UNSUPPORTED_CONFIG_VISION_PORT"));
+    ASSERT_TRUE(team.Ask(stack.control, std::vector<uint8_t>{}).has_value());  // empty: answered too
+    ws::SimulationSyncResponse sync;
+    const auto sg = team.Ask(stack.sync, garbage);
+    ASSERT_TRUE(sg.has_value());
+    ASSERT_TRUE(sync.ParseFromArray(sg->data(), static_cast<int>(sg->size())));
+    EXPECT_TRUE(HasError(sync.robot_control_response().errors(), "TURF_MALFORMED"));
+  }
+  const int64_t t0 = world.state().sim_time_ns();
+  ASSERT_TRUE(
+      world.Wait([&](const idl::WorldState& s, const idl::Clock&) { return s.sim_time_ns() - t0 > 300'000'000; }));
+  const idl::RobotState& r = FindRobot(world.state(), idl::TEAM_BLUE, 0);
+  EXPECT_DOUBLE_EQ(r.position().x(), FindRobot(before, idl::TEAM_BLUE, 0).position().x());
+  EXPECT_DOUBLE_EQ(r.position().y(), FindRobot(before, idl::TEAM_BLUE, 0).position().y());
+  EXPECT_DOUBLE_EQ(world.state().ball().position().x(), before.ball().position().x());
+  EXPECT_EQ(world.clock().mode(), idl::TIME_SCALED);  // the sync garbage did not switch to lockstep
+  EXPECT_EQ(stack.bridge().Rejected("blue.not_finite"), 3u);
+  EXPECT_EQ(stack.bridge().Rejected("blue.unknown_robot"), 3u);
+  EXPECT_EQ(stack.bridge().Rejected("yellow.malformed"), 3u);
+  EXPECT_EQ(stack.bridge().Rejected("control.not_finite"), 3u);
+  EXPECT_EQ(stack.bridge().Rejected("control.unsupported"), 3u);
+  EXPECT_EQ(stack.bridge().Rejected("control.empty"), 3u);
+  EXPECT_EQ(stack.bridge().Rejected("sync.malformed"), 3u);
+  EXPECT_EQ(stack.sim().Stats().rejected, 0u);  // nothing bad reached turf-sim
+}
+
+// N sync requests of 16 ms: exactly N x 8 physics steps, the frames captured in
+// each step in its response, and the same bytes on a second run.
+std::vector<std::vector<uint8_t>> SyncRun(TimeMode start_mode, int n, uint64_t* frame_after) {
+  const auto dds = UniqueDds();
+  Stack stack(test::Teams(2), dds, start_mode, 1.0);
+  Team team;
+  Observer world(dds);
+  EXPECT_TRUE(team.WaitReady(stack.control));
+  std::vector<std::vector<uint8_t>> responses;
+  for (int i = 0; i < n; ++i) {
+    ws::SimulationSyncRequest req;
+    req.set_sim_step(0.016f);
+    if (i == 0) {
+      auto* ball = req.mutable_simulator_command()->mutable_control()->mutable_teleport_ball();
+      ball->set_x(1.0f);
+      ball->set_y(0.5f);
+      ball->set_vx(-1.0f);
+    }
+    AddLocal(req.mutable_robot_control(), 0, static_cast<float>(std::sin(0.3 * i)), 0.5f);
+    AddLocal(req.mutable_robot_control(), 17, 0.0f, 1.0f);  // yellow 1
+    const auto answer = team.Ask(stack.sync, SyncBytes(req));
+    EXPECT_TRUE(answer.has_value());
+    if (!answer) break;
+    responses.push_back(*answer);
+  }
+  EXPECT_TRUE(world.Wait([&](const idl::WorldState& s, const idl::Clock& c) {
+    return c.mode() == idl::TIME_LOCKSTEP && s.frame() >= 8u * n;
+  }));
+  // Nothing steps on its own in lockstep: the frame once a later request has taken effect.
+  EXPECT_TRUE(BallMarker(team, stack.control, world, -1.0f, -2.0f));
+  *frame_after = world.state().frame();
+  return responses;
+}
+
+TEST(SimprotoBridge, SyncModeStepsExactlyAndIsReproducible) {
+  constexpr int kRequests = 12;
+  uint64_t frame_a = 0, frame_b = 0;
+  const auto a = SyncRun(TimeMode::kLockstep, kRequests, &frame_a);
+  const auto b = SyncRun(TimeMode::kLockstep, kRequests, &frame_b);
+  EXPECT_EQ(frame_a, 8u * kRequests);
+  EXPECT_EQ(frame_b, 8u * kRequests);
+  ASSERT_EQ(a.size(), static_cast<size_t>(kRequests));
+  ASSERT_EQ(b.size(), a.size());
+  int detections = 0;
+  for (int i = 0; i < kRequests; ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(a[i], b[i]);  // the same requests give the same bytes
+    ws::SimulationSyncResponse r;
+    ASSERT_TRUE(r.ParseFromArray(a[i].data(), static_cast<int>(a[i].size())));
+    EXPECT_EQ(r.robot_control_response().errors_size(), 0) << r.DebugString();
+    ASSERT_EQ(r.robot_control_response().feedback_size(), 2);
+    EXPECT_EQ(r.robot_control_response().feedback(1).id(), 17u);
+    for (const auto& d : r.detection()) {
+      EXPECT_GT(d.t_capture(), 0.016 * i - 1e-9);  // captured during this request's step
+      EXPECT_LE(d.t_capture(), 0.016 * (i + 1) + 1e-9);
+      ++detections;
+    }
+  }
+  // 60 Hz over 12 x 16 ms: captures at 18, 34, ..., 184 ms (11), four cameras each.
+  EXPECT_EQ(detections, 11 * 4);
+  ws::SimulationSyncResponse last;
+  ASSERT_TRUE(last.ParseFromArray(a.back().data(), static_cast<int>(a.back().size())));
+  ASSERT_EQ(last.detection_size(), 4);
+  int yellow_seen = 0;
+  for (const auto& d : last.detection()) yellow_seen += d.robots_yellow_size();
+  EXPECT_EQ(yellow_seen, 2);
+}
+
+TEST(SimprotoBridge, SyncRequestSwitchesARunningSimToLockstep) {
+  uint64_t frame = 0;
+  const auto responses = SyncRun(TimeMode::kRealtime, 3, &frame);
+  ASSERT_EQ(responses.size(), 3u);
+  for (const auto& bytes : responses) {
+    ws::SimulationSyncResponse r;
+    ASSERT_TRUE(r.ParseFromArray(bytes.data(), static_cast<int>(bytes.size())));
+    EXPECT_EQ(r.robot_control_response().errors_size(), 0) << r.DebugString();
+  }
+}
+
+// What every 60 Hz loop sends: 1/60 s is 8.33 physics steps of 2 ms. 60
+// requests reach 1.000 s (within half a step, here exactly 500 steps), every
+// response carries the frames of the time actually reached, and a request whose
+// share rounds to zero steps runs none but still applies its commands.
+TEST(SimprotoBridge, SyncStepsOfASixtiethOfASecondReachOneSecondInSixtyRequests) {
+  const auto dds = UniqueDds();
+  Stack stack(test::Teams(2), dds, TimeMode::kLockstep, 1.0);
+  Team team;
+  Observer world(dds);
+  ASSERT_TRUE(team.WaitReady(stack.control));
+  ws::SimulationSyncRequest sixtieth;
+  sixtieth.set_sim_step(1.0f / 60.0f);
+  AddLocal(sixtieth.mutable_robot_control(), 0, 0.0f);
+  double newest_capture = 0.0;
+  int detections = 0;
+  for (int i = 1; i <= 60; ++i) {
+    SCOPED_TRACE(i);
+    const auto answer = team.Ask(stack.sync, SyncBytes(sixtieth));
+    ASSERT_TRUE(answer.has_value());
+    ws::SimulationSyncResponse r;
+    ASSERT_TRUE(r.ParseFromArray(answer->data(), static_cast<int>(answer->size())));
+    ASSERT_EQ(r.robot_control_response().errors_size(), 0) << r.DebugString();
+    for (const auto& d : r.detection()) {
+      // Captured during this request's steps: each end is within half a step of the time asked for.
+      EXPECT_GT(d.t_capture(), (i - 1) / 60.0 - 0.001 - 1e-9);
+      EXPECT_LE(d.t_capture(), i / 60.0 + 0.001 + 1e-9);
+      EXPECT_GE(d.t_capture(), newest_capture);
+      newest_capture = std::max(newest_capture, d.t_capture());
+      ++detections;
+    }
+  }
+  EXPECT_EQ(stack.bridge().Rejected("sync.out_of_range"), 0u);
+  // Once a later request shows, the world state is that of the last step.
+  ASSERT_TRUE(BallMarker(team, stack.control, world, -1.0f, -2.0f));
+  EXPECT_NEAR(world.state().sim_time_ns(), 1'000'000'000, 1'000'000);  // 1.000 s +- half a step
+  EXPECT_EQ(world.state().frame(), 500u);
+  EXPECT_NEAR(newest_capture, 1.0, 0.001);  // the 60th camera frame, captured at the time reached
+  EXPECT_EQ(detections, 60 * 4);            // 60 Hz for 1 s, four cameras
+
+  // 0.1 ms is 0.05 steps: none run, the command waits for the next step.
+  const idl::RobotState start = FindRobot(world.state(), idl::TEAM_BLUE, 0);
+  ws::SimulationSyncRequest tiny;
+  tiny.set_sim_step(0.0001f);
+  AddLocal(tiny.mutable_robot_control(), 0, 1.0f);
+  const auto tiny_answer = team.Ask(stack.sync, SyncBytes(tiny));
+  ASSERT_TRUE(tiny_answer.has_value());
+  ws::SimulationSyncResponse tr;
+  ASSERT_TRUE(tr.ParseFromArray(tiny_answer->data(), static_cast<int>(tiny_answer->size())));
+  EXPECT_EQ(tr.robot_control_response().errors_size(), 0) << tr.DebugString();
+  EXPECT_EQ(tr.robot_control_response().feedback_size(), 1);
+  EXPECT_EQ(tr.detection_size(), 0);
+  ASSERT_TRUE(BallMarker(team, stack.control, world, -1.5f, -2.0f));
+  EXPECT_EQ(world.state().frame(), 500u);  // no step
+
+  // A step without commands: the held one drives blue 0 forward.
+  ws::SimulationSyncRequest drive;
+  drive.set_sim_step(0.3f);
+  const auto drive_answer = team.Ask(stack.sync, SyncBytes(drive));
+  ASSERT_TRUE(drive_answer.has_value());
+  ASSERT_TRUE(BallMarker(team, stack.control, world, -2.0f, -2.0f));
+  EXPECT_EQ(world.state().frame(), 650u);  // 1.3001 s: 650.05 steps
+  const idl::RobotState& moved = FindRobot(world.state(), idl::TEAM_BLUE, 0);
+  const double forward = (moved.position().x() - start.position().x()) * std::cos(start.yaw()) +
+                         (moved.position().y() - start.position().y()) * std::sin(start.yaw());
+  EXPECT_GT(forward, 0.1);
+}
+
+}  // namespace
+}  // namespace turf
