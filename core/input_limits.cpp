@@ -16,6 +16,8 @@ const char* InputErrorName(InputError error) {
       return "unknown_robot";
     case InputError::kOutsideField:
       return "outside_field";
+    case InputError::kTeamMismatch:
+      return "team_mismatch";
     case InputError::kCount:
       break;
   }

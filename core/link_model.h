@@ -11,7 +11,7 @@
 
 namespace turf {
 
-enum class JitterKind : uint8_t { kGaussian, kUniform, kExponential };
+enum class JitterKind : uint8_t { kGaussian, kUniform, kExponential, kCount };
 
 // Two-state loss: in "good" samples are lost with loss_good, in "bad" with
 // loss_bad; after each sample the state flips with the given probabilities.
@@ -35,6 +35,9 @@ struct LinkParams {
 // Why link parameters are unusable; empty when they are fine.
 const char* CheckLinkParams(const LinkParams& params);
 
+void SaveLinkParams(const LinkParams& params, StateWriter& out);
+LinkParams RestoreLinkParams(StateReader& in);
+
 struct LinkCounters {
   uint64_t sent = 0;
   uint64_t lost = 0;
@@ -55,6 +58,9 @@ class Link {
   const LinkCounters& counters() const { return counters_; }
   // Restarts the stream from `seed` (a world reset).
   void Reset(uint64_t seed);
+  // Parameters, random stream, burst state and order guarantee, for snapshots.
+  void Save(StateWriter& out) const;
+  void Restore(StateReader& in);
 
  private:
   bool Lost();

@@ -56,4 +56,16 @@ double Rng::Normal() {
   return r * std::cos(2.0 * M_PI * u2);
 }
 
+void Rng::Save(StateWriter& out) const {
+  for (uint64_t word : s_) out.Put(word);
+  out.Put(has_spare_);
+  out.Put(spare_);
+}
+
+void Rng::Restore(StateReader& in) {
+  for (uint64_t& word : s_) word = in.Get<uint64_t>();
+  has_spare_ = in.Bool();
+  spare_ = in.Get<double>();
+}
+
 }  // namespace turf

@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <string_view>
 
+#include "core/state_io.h"
+
 namespace turf {
 
 // Seed of the stream `name` under the scene seed (FNV-1a of the name, mixed).
@@ -26,6 +28,10 @@ class Rng {
   double Normal(double mean, double stddev) { return mean + stddev * Normal(); }
   // Exponential with the given mean.
   double Exponential(double mean) { return -mean * std::log1p(-Uniform()); }
+
+  // The stream's position, for snapshots.
+  void Save(StateWriter& out) const;
+  void Restore(StateReader& in);
 
  private:
   uint64_t s_[4];

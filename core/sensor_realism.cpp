@@ -20,6 +20,9 @@ const char* CheckRealism(const SensorRealism& r) {
   if (!std::isfinite(r.imu.gyro_bias) || !std::isfinite(r.imu.accel_bias) || !nonneg(r.imu.gyro_noise_stddev, 100) ||
       !nonneg(r.imu.accel_noise_stddev, 1000))
     return "IMU bias and noise must be finite and the noise >= 0";
+  for (const LinkParams* link : {&r.encoder.link, &r.imu.link, &r.touch.link}) {
+    if (const char* e = CheckLinkParams(*link); *e != '\0') return e;
+  }
   return "";
 }
 

@@ -20,10 +20,12 @@ struct CameraRealism {
   LinkParams link;                        // vision system to the network, per camera
 };
 
-// Joint encoders: quantised to `resolution` (rad), plus Gaussian noise.
+// Joint encoders: quantised to `resolution` (rad), plus Gaussian noise; the
+// joint-state stream's link (robot bus to the network).
 struct EncoderRealism {
   double resolution = 0.0;
   double noise_stddev = 0.0;
+  LinkParams link;
 };
 
 // IMU: a constant bias plus Gaussian noise, per axis.
@@ -32,6 +34,12 @@ struct ImuRealism {
   double gyro_noise_stddev = 0.0;
   double accel_bias = 0.0;  // m/s^2
   double accel_noise_stddev = 0.0;
+  LinkParams link;  // the IMU stream's link
+};
+
+// Foot touch and force sensors: exact values; the stream's link.
+struct TouchRealism {
+  LinkParams link;
 };
 
 struct SensorRealism {
@@ -39,6 +47,7 @@ struct SensorRealism {
   LinkParams command;  // a team's radio link to its robots
   EncoderRealism encoder;
   ImuRealism imu;
+  TouchRealism touch;
 };
 
 // Why the parameters are unusable; empty when they are fine.

@@ -85,6 +85,9 @@ class SslCameraSystem {
   // What each camera's stream achieved since the last call (sent = captured).
   StreamWindow TakeStats(int camera) { return streams_[camera].stats.Take(); }
   void Reset();
+  // Realism, random streams, links, statistics and frames in flight.
+  void Save(StateWriter& out) const;
+  void Restore(StateReader& in);
 
  private:
   struct Stream {

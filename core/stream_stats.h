@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/state_io.h"
+
 namespace turf {
 
 struct StreamWindow {
@@ -23,6 +25,20 @@ class StreamStats {
     ++delivered_;
     sum_ += latency_s;
     sum_sq_ += latency_s * latency_s;
+  }
+  void Save(StateWriter& out) const {
+    out.Put(sent_);
+    out.Put(lost_);
+    out.Put(delivered_);
+    out.Put(sum_);
+    out.Put(sum_sq_);
+  }
+  void Restore(StateReader& in) {
+    sent_ = in.Get<uint64_t>();
+    lost_ = in.Get<uint64_t>();
+    delivered_ = in.Get<uint64_t>();
+    sum_ = in.Get<double>();
+    sum_sq_ = in.Get<double>();
   }
   // The window so far; starts a new one.
   StreamWindow Take() {

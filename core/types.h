@@ -52,7 +52,8 @@ struct RobotTeleport {
 
 // Why an input was refused. Every refusal is one of these, so callers can
 // count them per kind and say why a robot did not move.
-enum class InputError : uint8_t { kOk, kNotFinite, kOutOfRange, kUnknownRobot, kOutsideField, kCount };
+// kTeamMismatch: a command on one team's stream naming the other team.
+enum class InputError : uint8_t { kOk, kNotFinite, kOutOfRange, kUnknownRobot, kOutsideField, kTeamMismatch, kCount };
 const char* InputErrorName(InputError error);
 
 }  // namespace turf

@@ -13,6 +13,7 @@
 #include "core/drive.h"
 #include "core/input_limits.h"
 #include "core/mjcf.h"
+#include "core/state_fields.h"
 
 namespace turf {
 
@@ -31,12 +32,9 @@ struct World::RobotSlot {
   KickKind last_kick = KickKind::kNone;
 };
 
-void World::MjDeleter::operator()(mjModel_* m) const { mj_deleteModel(m); }
-void World::MjDeleter::operator()(mjData_* d) const { mj_deleteData(d); }
-
 namespace {
 
-std::unique_ptr<mjModel_, World::MjDeleter> CompileModel(const Scene& scene);
+MjModelPtr CompileModel(const Scene& scene);
 
 double WrapAngle(double a) { return std::remainder(a, 2.0 * M_PI); }
 
@@ -109,8 +107,52 @@ void World::Reset() {
   q[4] = q[5] = q[6] = 0.0;
   mj_forward(model_.get(), data_.get());
   floor_normal_force_ = FloorNormalForce();
-  last_good_qpos_.assign(data_->qpos, data_->qpos + model_->nq);
-  last_good_qvel_.assign(data_->qvel, data_->qvel + model_->nv);
+  last_good_.Accept(model_.get(), data_.get());
+}
+
+void World::Save(StateWriter& out) const {
+  out.Tag(StateTag("SSLW"));
+  SaveMjData(model_.get(), data_.get(), out);
+  out.Put(frame_);
+  out.Put(floor_normal_force_);
+  last_good_.Save(out);
+  out.Put(health_.containment_corrections);
+  out.Put(health_.instability_recoveries);
+  for (const RobotSlot& slot : robots_) {
+    out.Put(slot.on_field);
+    SaveCommand(slot.command, out);
+    out.Put(slot.command_time_ns);
+    out.Put(slot.has_command);
+    SaveArmedKick(slot.kick, out);
+    out.Put(slot.ball_contact);
+    out.Put(slot.kick_count);
+    out.Put(slot.last_kick);
+  }
+}
+
+void World::Restore(StateReader& in) {
+  in.Tag(StateTag("SSLW"));
+  RestoreMjData(model_.get(), data_.get(), in);
+  frame_ = in.Get<uint64_t>();
+  if (frame_ > MaxFrame(step_ns_)) {
+    in.Fail("frame out of range");
+    frame_ = 0;
+  }
+  floor_normal_force_ = in.Get<double>();
+  last_good_.Restore(in);
+  health_.containment_corrections = in.Get<uint64_t>();
+  health_.instability_recoveries = in.Get<uint64_t>();
+  for (RobotSlot& slot : robots_) {
+    slot.on_field = in.Bool();
+    slot.command = RestoreCommand(in);
+    if (in.ok() && CheckCommand(slot.command) != InputError::kOk) in.Fail("invalid command");
+    slot.command_time_ns = in.Get<int64_t>();
+    slot.has_command = in.Bool();
+    slot.kick = RestoreArmedKick(in);
+    slot.ball_contact = in.Bool();
+    slot.kick_count = in.Get<uint32_t>();
+    slot.last_kick = in.Enum(static_cast<KickKind>(3));
+  }
 }
 
 void World::PlaceRobot(RobotSlot& slot, double x, double y, double yaw, const Vec3& velocity) {
@@ -300,23 +342,17 @@ double World::FloorNormalForce() const {
 }
 
 bool World::StagePhysics() {
-  std::copy(data_->qpos, data_->qpos + model_->nq, last_good_qpos_.begin());
-  std::copy(data_->qvel, data_->qvel + model_->nv, last_good_qvel_.begin());
+  last_good_.Accept(model_.get(), data_.get());
   const int bad_before = data_->warning[mjWARN_BADQACC].number + data_->warning[mjWARN_BADQVEL].number +
                          data_->warning[mjWARN_BADQPOS].number;
   mj_step(model_.get(), data_.get());
   floor_normal_force_ = FloorNormalForce();
   const int bad_after = data_->warning[mjWARN_BADQACC].number + data_->warning[mjWARN_BADQVEL].number +
                         data_->warning[mjWARN_BADQPOS].number;
-  bool sane = bad_after == bad_before;
-  for (int i = 0; sane && i < model_->nv; ++i) sane = std::isfinite(data_->qvel[i]) && std::abs(data_->qvel[i]) < 1e3;
-  for (int i = 0; sane && i < model_->nq; ++i) sane = std::isfinite(data_->qpos[i]);
-  if (sane) return true;
+  if (bad_after == bad_before && StateFinite(model_.get(), data_.get(), 1e3)) return true;
   // Undo the step and stop everything: a frozen frame beats an exploded world.
   ++health_.instability_recoveries;
-  std::copy(last_good_qpos_.begin(), last_good_qpos_.end(), data_->qpos);
-  std::fill(data_->qvel, data_->qvel + model_->nv, 0.0);
-  mj_forward(model_.get(), data_.get());
+  last_good_.Undo(model_.get(), data_.get());
   floor_normal_force_ = FloorNormalForce();
   return false;
 }
@@ -391,7 +427,7 @@ void World::Snapshot(WorldSnapshot* out) const {
 
 namespace {
 
-std::unique_ptr<mjModel_, World::MjDeleter> CompileModel(const Scene& scene) {
+MjModelPtr CompileModel(const Scene& scene) {
   const std::string xml = BuildMjcf(scene);
   // mjVFS is large (~2 MB): keep it off the stack.
   auto vfs = std::make_unique<mjVFS>();
@@ -404,7 +440,7 @@ std::unique_ptr<mjModel_, World::MjDeleter> CompileModel(const Scene& scene) {
   mjModel* m = mj_loadXML(file, vfs.get(), error, sizeof(error));
   mj_deleteVFS(vfs.get());
   if (m == nullptr) throw std::invalid_argument(fmt::format("MuJoCo rejected the scene model: {}", error));
-  return std::unique_ptr<mjModel_, World::MjDeleter>(m);
+  return MjModelPtr(m);
 }
 
 }  // namespace

@@ -15,11 +15,9 @@
 #include <vector>
 
 #include "core/ball_handling.h"
+#include "core/mj_state.h"
 #include "core/scene.h"
 #include "core/types.h"
-
-struct mjModel_;
-struct mjData_;
 
 namespace turf {
 
@@ -60,12 +58,6 @@ struct WorldHealth {
 
 class World {
  public:
-  // Owns MuJoCo's model and data (RAII).
-  struct MjDeleter {
-    void operator()(mjModel_* m) const;
-    void operator()(mjData_* d) const;
-  };
-
   // Throws std::invalid_argument if the scene fails ValidateScene or MuJoCo
   // cannot compile it; a constructed World is always usable.
   explicit World(Scene scene);
@@ -81,6 +73,13 @@ class World {
   InputError TeleportRobot(const RobotTeleport& teleport);
   // Back to the scene's start: time 0, start poses, no commands.
   void Reset();
+
+  // --- Snapshot: everything mutable (MuJoCo's data, commands, kickers,
+  // counters); a restored world steps on exactly as the saved one. A snapshot
+  // of another scene fails the reader; after a failed read the world is
+  // inconsistent until Reset (the kernel restores its backup).
+  void Save(StateWriter& out) const;
+  void Restore(StateReader& in);
 
   // --- One physics step through all stages. ---
   void Step();
@@ -111,8 +110,8 @@ class World {
   void StageFeedback();
 
   Scene scene_;
-  std::unique_ptr<mjModel_, MjDeleter> model_;
-  std::unique_ptr<mjData_, MjDeleter> data_;
+  MjModelPtr model_;
+  MjDataPtr data_;
   std::vector<RobotSlot> robots_;
   int ball_qpos_ = 0;
   int ball_qvel_ = 0;
@@ -123,8 +122,7 @@ class World {
   double ball_inertia_ = 0.0;
   int64_t step_ns_ = 0;
   uint64_t frame_ = 0;
-  std::vector<double> last_good_qpos_;
-  std::vector<double> last_good_qvel_;
+  LastGoodState last_good_;
   WorldHealth health_;
 };
 

@@ -67,13 +67,18 @@ void ReadRealism(MapReader m, SensorRealism* r) {
   MapReader e = m.Map("encoder");
   e.Number("resolution", &r->encoder.resolution);
   e.Number("noise_stddev", &r->encoder.noise_stddev);
+  ReadLink(e.Map("link"), &r->encoder.link);
   e.Finish();
   MapReader i = m.Map("imu");
   i.Number("gyro_bias", &r->imu.gyro_bias);
   i.Number("gyro_noise_stddev", &r->imu.gyro_noise_stddev);
   i.Number("accel_bias", &r->imu.accel_bias);
   i.Number("accel_noise_stddev", &r->imu.accel_noise_stddev);
+  ReadLink(i.Map("link"), &r->imu.link);
   i.Finish();
+  MapReader t = m.Map("touch");
+  ReadLink(t.Map("link"), &r->touch.link);
+  t.Finish();
   m.Finish();
 }
 

@@ -7,8 +7,9 @@
 //             robot_vanish, ball_vanish, ball_occlusion, confidence_spread,
 //             processing_delay, link: LINK}
 //   command: LINK                      a team's radio link to its robots
-//   encoder: {resolution, noise_stddev}
-//   imu:     {gyro_bias, gyro_noise_stddev, accel_bias, accel_noise_stddev}
+//   encoder: {resolution, noise_stddev, link: LINK}   legged joint-state stream
+//   imu:     {gyro_bias, gyro_noise_stddev, accel_bias, accel_noise_stddev, link: LINK}
+//   touch:   {link: LINK}                              legged foot touch/force stream
 //   LINK:    {latency, jitter, jitter_kind: gaussian|uniform|exponential, loss,
 //             burst: {p_good_to_bad, p_bad_to_good, loss_good, loss_bad}}
 //             (burst present: Gilbert-Elliott loss replaces `loss`)

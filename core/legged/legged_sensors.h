@@ -1,8 +1,9 @@
 // What a legged robot's own sensors report: the joint encoder and IMU models
-// of core/joint_sensors.h applied to a legged world's state. One random
-// stream per robot and sensor (seeded from the scene seed and the robot's
-// name), so a robot's readings never depend on another robot or on timing.
-// Ideal realism (the default) leaves the state exact.
+// of core/joint_sensors.h applied to a legged world's state. The noise is a
+// function of (scene seed, robot, sensor, frame): measuring a frame twice
+// gives the same values, so readings never depend on how often, when or by
+// whom the state is read, nor on another robot. Ideal realism (the default)
+// leaves the state exact.
 #pragma once
 
 #include <cstdint>
@@ -17,17 +18,15 @@ namespace turf {
 
 class LeggedSensors {
  public:
-  LeggedSensors(uint64_t seed, std::vector<std::string> robots);
-  void Reset();  // every stream back to its start (a world reset)
+  LeggedSensors(uint64_t seed, const std::vector<std::string>& robots);
   // Encoders: joint positions quantised and noisy. IMU: gyro and accelerometer
   // with bias and noise. Velocities, efforts, forces and poses stay exact.
-  void Apply(const SensorRealism& realism, LeggedWorldState* state);
+  // The noise of `state->frame`.
+  void Apply(const SensorRealism& realism, LeggedWorldState* state) const;
 
  private:
-  uint64_t seed_;
-  std::vector<std::string> robots_;
-  std::vector<Rng> encoder_;
-  std::vector<Rng> imu_;
+  std::vector<uint64_t> encoder_;  // per robot: the stream's seed
+  std::vector<uint64_t> imu_;
 };
 
 }  // namespace turf

@@ -81,9 +81,6 @@ struct LeggedWorld::RobotSlot {
   std::vector<SensorRef> forces;
 };
 
-void LeggedWorld::MjDeleter::operator()(mjModel_* m) const { mj_deleteModel(m); }
-void LeggedWorld::MjDeleter::operator()(mjData_* d) const { mj_deleteData(d); }
-
 const char* JointCommandErrorName(JointCommandError error) {
   switch (error) {
     case JointCommandError::kOk:
@@ -197,10 +194,7 @@ void LeggedWorld::ResetCommands(RobotSlot* r) {
   }
 }
 
-void LeggedWorld::AcceptState() {
-  last_good_qpos_.assign(data_->qpos, data_->qpos + model_->nq);
-  last_good_qvel_.assign(data_->qvel, data_->qvel + model_->nv);
-}
+void LeggedWorld::AcceptState() { last_good_.Accept(model_.get(), data_.get()); }
 
 const char* PlacementErrorName(PlacementError error) {
   switch (error) {
@@ -297,6 +291,49 @@ std::vector<LeggedGeom> LeggedWorld::RobotGeoms(int robot) const {
     }
   }
   return out;
+}
+
+void LeggedWorld::Save(StateWriter& out) const {
+  out.Tag(StateTag("LEGW"));
+  SaveMjData(model_.get(), data_.get(), out);
+  out.Put(frame_);
+  last_good_.Save(out);
+  out.Put(health_.instability_recoveries);
+  for (const RobotSlot& r : robots_) {
+    for (const JointSlot& j : r.joints) {
+      out.Put(j.command.mode);
+      out.Put(j.command.value);
+      out.Put(j.command.kp);
+      out.Put(j.command.kd);
+      out.Put(j.reference);
+      out.Put(j.effort);
+      out.Put(j.row);
+    }
+  }
+}
+
+void LeggedWorld::Restore(StateReader& in) {
+  in.Tag(StateTag("LEGW"));
+  RestoreMjData(model_.get(), data_.get(), in);
+  frame_ = in.Get<uint64_t>();
+  if (frame_ > MaxFrame(step_ns_)) {
+    in.Fail("frame out of range");
+    frame_ = 0;
+  }
+  last_good_.Restore(in);
+  health_.instability_recoveries = in.Get<uint64_t>();
+  for (RobotSlot& r : robots_) {
+    for (JointSlot& j : r.joints) {
+      j.command.mode = in.Enum(static_cast<JointMode>(3));
+      j.command.value = in.Get<double>();
+      j.command.kp = in.Get<double>();
+      j.command.kd = in.Get<double>();
+      j.reference = in.Get<double>();
+      j.effort = in.Get<double>();
+      j.row = in.Get<int>();
+      if (j.row < -1 || j.row >= model_->njmax) in.Fail("motor row out of range");
+    }
+  }
 }
 
 void LeggedWorld::Reset() {
@@ -441,13 +478,7 @@ bool LeggedWorld::StagePhysics() {
       j.effort = j.row >= 0 ? data_->efc_force[j.row] : 0.0;
     }
   }
-  for (int i = 0; i < model_->nq; ++i) {
-    if (!std::isfinite(data_->qpos[i])) return false;
-  }
-  for (int i = 0; i < model_->nv; ++i) {
-    if (!std::isfinite(data_->qvel[i])) return false;
-  }
-  return true;
+  return StateFinite(model_.get(), data_.get(), INFINITY);
 }
 
 void LeggedWorld::Step() {
@@ -458,9 +489,7 @@ void LeggedWorld::Step() {
   } else {
     // Stage 3: undo a step that blew up, at rest, and hold every joint there.
     ++health_.instability_recoveries;
-    std::copy(last_good_qpos_.begin(), last_good_qpos_.end(), data_->qpos);
-    std::fill(data_->qvel, data_->qvel + model_->nv, 0.0);
-    mj_forward(model_.get(), data_.get());
+    last_good_.Undo(model_.get(), data_.get());
     ResetCommands();
   }
   ++frame_;

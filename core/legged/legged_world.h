@@ -22,9 +22,7 @@
 #include <vector>
 
 #include "core/legged/legged_scene.h"
-
-struct mjModel_;
-struct mjData_;
+#include "core/mj_state.h"
 
 namespace turf {
 
@@ -120,11 +118,6 @@ struct LeggedHealth {
 
 class LeggedWorld {
  public:
-  struct MjDeleter {
-    void operator()(mjModel_* m) const;
-    void operator()(mjData_* d) const;
-  };
-
   // Throws std::invalid_argument if the scene is invalid or MuJoCo cannot
   // compile the composed model; a constructed world is always usable.
   explicit LeggedWorld(LeggedScene scene);
@@ -148,6 +141,11 @@ class LeggedWorld {
   PlacementError PlaceBall(const std::array<double, 3>& position, const std::array<double, 3>& velocity);
   // Back to the scene's start: time 0, start poses, every joint holding.
   void Reset();
+
+  // --- Snapshot: MuJoCo's data, every joint's command and servo reference,
+  // counters. As World::Save/Restore.
+  void Save(StateWriter& out) const;
+  void Restore(StateReader& in);
 
   // --- One physics step through all stages ---
   void Step();
@@ -178,16 +176,15 @@ class LeggedWorld {
 
   LeggedScene scene_;
   std::string mjcf_;
-  std::unique_ptr<mjModel_, MjDeleter> model_;
-  std::unique_ptr<mjData_, MjDeleter> data_;
+  MjModelPtr model_;
+  MjDataPtr data_;
   std::vector<RobotSlot> robots_;
   std::vector<std::pair<int, int>> motor_of_dof_;  // dof -> (robot, joint), -1 for none
   int ball_body_ = -1;
   int ball_qvel_ = -1;
   int64_t step_ns_ = 0;
   uint64_t frame_ = 0;
-  std::vector<double> last_good_qpos_;
-  std::vector<double> last_good_qvel_;
+  LastGoodState last_good_;
   LeggedHealth health_;
 };
 

@@ -2,150 +2,27 @@
 
 #include <spdlog/spdlog.h>
 #include <turf/idl/JointsPubSubTypes.h>
+#include <turf/idl/SensorStatsPubSubTypes.h>
 #include <turf/idl/WorldStatePubSubTypes.h>
 
 #include <cmath>
 
-#include "loader/realism_yaml.h"
-#include "core/legged/legged_sensors.h"
-#include "core/legged/legged_world.h"
 #include "dds/participant.h"
+#include "kernel/legged_kernel.h"
+#include "loader/realism_yaml.h"
 #include "participants/sim/control_loop.h"
+#include "participants/sim/legged_convert.h"
+#include "participants/sim/stats_report.h"
 
 namespace turf {
-
-namespace {
-
-constexpr double kMaxPlacement = 100.0;  // m from the origin, any axis
-constexpr double kMaxBallSpeed = 50.0;   // m/s
-
-idl::Vec3 V3(const std::array<double, 3>& a) {
-  idl::Vec3 v;
-  v.x(a[0]);
-  v.y(a[1]);
-  v.z(a[2]);
-  return v;
-}
-
-idl::Quat Q4(const std::array<double, 4>& a) {
-  idl::Quat q;
-  q.w(a[0]);
-  q.x(a[1]);
-  q.y(a[2]);
-  q.z(a[3]);
-  return q;
-}
-
-std::array<double, 3> A3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
-
-idl::GeomShape ToIdl(LeggedGeom::Shape shape) {
-  switch (shape) {
-    case LeggedGeom::Shape::kBox:
-      return idl::GEOM_BOX;
-    case LeggedGeom::Shape::kSphere:
-      return idl::GEOM_SPHERE;
-    case LeggedGeom::Shape::kCapsule:
-      return idl::GEOM_CAPSULE;
-    case LeggedGeom::Shape::kCylinder:
-      return idl::GEOM_CYLINDER;
-    case LeggedGeom::Shape::kEllipsoid:
-      return idl::GEOM_ELLIPSOID;
-    case LeggedGeom::Shape::kOther:
-      break;
-  }
-  return idl::GEOM_OTHER;
-}
-
-// The world's state as the per-robot samples (reusing out's storage).
-void FillState(const LeggedWorldState& state, idl::LeggedState* out) {
-  const size_t n = state.robots.size();
-  out->sim_time_ns(state.time_ns);
-  out->frame(state.frame);
-  out->joints().resize(n);
-  out->imu().resize(n);
-  out->force().resize(n);
-  out->links().resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    const LeggedRobotState& r = state.robots[i];
-    idl::JointState& joints = out->joints()[i];
-    joints.robot(r.name);
-    joints.id(r.id);
-    joints.sim_time_ns(state.time_ns);
-    joints.frame(state.frame);
-    joints.name(r.joint_names);
-    joints.position(r.joint_positions);
-    joints.velocity(r.joint_velocities);
-    joints.effort(r.joint_efforts);
-
-    idl::ImuState& imu = out->imu()[i];
-    imu.robot(r.name);
-    imu.sim_time_ns(state.time_ns);
-    imu.valid(r.has_imu);
-    imu.orientation(Q4(r.orientation));
-    imu.angular_velocity(V3(r.gyro));
-    imu.linear_acceleration(V3(r.accelerometer));
-    imu.base_position(V3(r.base_position));
-    imu.base_orientation(Q4(r.base_orientation));
-
-    idl::ForceState& force = out->force()[i];
-    force.robot(r.name);
-    force.sim_time_ns(state.time_ns);
-    force.sensors().resize(r.forces.size());
-    for (size_t f = 0; f < r.forces.size(); ++f) {
-      idl::ForceReading& reading = force.sensors()[f];
-      reading.name(r.forces[f].name);
-      reading.values(r.forces[f].values);
-      reading.contact(r.forces[f].contact);
-      reading.force(V3(r.forces[f].force));
-      reading.point(V3(r.forces[f].point));
-    }
-
-    idl::LinkState& links = out->links()[i];
-    links.robot(r.name);
-    links.sim_time_ns(state.time_ns);
-    links.frame(state.frame);
-    links.links().resize(r.links.size());
-    for (size_t l = 0; l < r.links.size(); ++l) {
-      links.links()[l].name(r.links[l].name);
-      links.links()[l].position(V3(r.links[l].position));
-      links.links()[l].orientation(Q4(r.links[l].orientation));
-    }
-  }
-  out->has_ball(state.has_ball);
-  out->ball_position(V3(state.ball_position));
-  out->ball_velocity(V3(state.ball_velocity));
-}
-
-bool FromIdl(const idl::JointTarget& in, JointCommand* out) {
-  out->joint = in.name();
-  switch (in.mode()) {
-    case idl::JOINT_VELOCITY:
-      out->mode = JointMode::kVelocity;
-      break;
-    case idl::JOINT_POSITION:
-      out->mode = JointMode::kPosition;
-      break;
-    case idl::JOINT_TORQUE:
-      out->mode = JointMode::kTorque;
-      break;
-    default:
-      return false;
-  }
-  out->value = in.value();
-  out->kp = in.kp();
-  out->kd = in.kd();
-  return true;
-}
-
-}  // namespace
 
 class LeggedNode::Impl final : private ControlLoop::Node {
  public:
   Impl(LeggedScene scene, SimNodeOptions options)
       : options_(std::move(options)),
-        world_(std::move(scene)),
+        kernel_(std::move(scene)),
         participant_({options_.domain, options_.name, options_.prefix, options_.qos_file}),
-        loop_(participant_, options_, LoopTiming(world_.scene(), world_.step_ns()), *this),
+        loop_(participant_, options_, LoopTiming(kernel_), *this),
         joint_writer_(participant_.MakeWriter<idl::JointStatePubSubType>(dds::Topic::kRobotJointState)),
         imu_writer_(participant_.MakeWriter<idl::ImuStatePubSubType>(dds::Topic::kRobotImu)),
         force_writer_(participant_.MakeWriter<idl::ForceStatePubSubType>(dds::Topic::kRobotForce)),
@@ -153,14 +30,14 @@ class LeggedNode::Impl final : private ControlLoop::Node {
         state_writer_(participant_.MakeWriter<idl::LeggedStatePubSubType>(dds::Topic::kRobotsState)),
         world_writer_(participant_.MakeWriter<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
         scene_writer_(participant_.MakeWriter<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene)),
+        stats_writer_(participant_.MakeWriter<idl::SensorStatsPubSubType>(dds::Topic::kStats)),
         command_reader_(participant_.MakeReader<idl::JointCommandPubSubType>(dds::Topic::kRobotJointCommand,
-                                                                             [this] { loop_.Wake(); })),
-        realism_(world_.scene().realism),
-        sensors_(world_.scene().seed, RobotNames(world_.scene())) {}
+                                                                             [this] { loop_.Wake(); })) {}
 
   void Run(const std::function<bool()>& stop) {
     ReportStartup();
     PublishSceneInfo();
+    PublishReleased();  // the readings of frame 0
     loop_.Run(stop);
   }
 
@@ -168,20 +45,16 @@ class LeggedNode::Impl final : private ControlLoop::Node {
   uint64_t Rejected(const std::string& kind) const { return loop_.Rejected(kind); }
 
  private:
-  static std::vector<std::string> RobotNames(const LeggedScene& s) {
-    std::vector<std::string> names;
-    for (const LeggedRobot& r : s.robots) names.push_back(r.name);
-    return names;
-  }
-
-  static ControlLoop::Timing LoopTiming(const LeggedScene& s, int64_t step_ns) {
-    return {s.physics.step, step_ns, s.rates.joint_state_hz};
+  // The loop publishes the whole frame at every sensor frame.
+  static ControlLoop::Timing LoopTiming(const LeggedKernel& k) {
+    const double step = k.scene().physics.step;
+    return {step, k.world().step_ns(), 1.0 / (step * static_cast<double>(k.sensor_every()))};
   }
 
   // --- ControlLoop::Node ---
 
-  int64_t TimeNs() const override { return world_.time_ns(); }
-  uint64_t Frame() const override { return world_.frame(); }
+  int64_t TimeNs() const override { return kernel_.time_ns(); }
+  uint64_t Frame() const override { return kernel_.frame(); }
 
   void TakeCommands() override {
     if (command_reader_->Take(&command_inbox_)) {
@@ -190,8 +63,15 @@ class LeggedNode::Impl final : private ControlLoop::Node {
   }
 
   uint64_t CommandsOverflowed() const override { return command_reader_->Overflowed(); }
-  void Step() override { world_.Step(); }
-  void AfterStep() override {}
+  void Step() override { kernel_.Step(); }
+
+  void AfterStep() override {
+    PublishReleased();
+    if (kernel_.stats()) {
+      stats_writer_->Write(StatsToIdl(*kernel_.stats()));
+      last_stats_ = *kernel_.stats();
+    }
+  }
 
   std::string ApplyStepCommands(const idl::SimControl& req) override {
     if (!req.commands().empty()) return "legged robots take joint_commands, not SSL commands";
@@ -203,85 +83,93 @@ class LeggedNode::Impl final : private ControlLoop::Node {
     }
     for (const idl::JointCommand& c : req.joint_commands()) {
       CheckCommand(c, &checked_);
-      for (const JointCommand& j : checked_) world_.SetJointCommand(world_.RobotIndex(c.robot()), j);
+      kernel_.SetJointCommands(kernel_.world().RobotIndex(c.robot()), checked_);
     }
     return "";
   }
 
-  std::string TeleportBall(const idl::SimControl& req) override { return PlaceBall(req.ball()); }
-  std::string TeleportRobot(const idl::SimControl& req) override { return PlaceRobot(req.legged()); }
+  std::string TeleportBall(const idl::SimControl& req) override {
+    const std::string e = kernel_.PlaceBall(A3(req.ball().position()), A3(req.ball().velocity()));
+    return e.empty() ? "" : "ball: " + e;
+  }
+
+  std::string TeleportRobot(const idl::SimControl& req) override {
+    const idl::LeggedTeleport& t = req.legged();
+    RobotPlacement p;
+    p.position = A3(t.position());
+    p.orientation = {t.orientation().w(), t.orientation().x(), t.orientation().y(), t.orientation().z()};
+    p.reset_joints = t.reset_joints();
+    const std::string e = kernel_.PlaceRobot(kernel_.world().RobotIndex(t.robot()), p);
+    return e.empty() ? "" : fmt::format("robot '{}': {}", t.robot(), e);
+  }
+
   std::string ChangeRealism(const std::string& spec) override {
     // From the network: preset names and YAML text only, never file paths.
-    const RealismLoadResult loaded = LoadRealism(spec, DefaultRealismDir(), /*allow_paths=*/false, realism_);
+    const RealismLoadResult loaded = LoadRealism(spec, DefaultRealismDir(), /*allow_paths=*/false, kernel_.realism());
     if (!loaded.realism) return loaded.errors.empty() ? "invalid realism" : loaded.errors.front();
-    realism_ = *loaded.realism;
+    if (std::string e = kernel_.SetRealism(*loaded.realism); !e.empty()) return e;
     spdlog::info("sensor realism changed ({})", spec.size() < 40 ? spec : spec.substr(0, 40) + "...");
     return "";
   }
+
   void ResetWorld() override {
-    world_.Reset();
-    sensors_.Reset();
+    kernel_.Reset();
+    PublishReleased();
   }
 
   // --- Inputs ---
 
   // A sample is checked whole first: a refused one changes no joint.
   void ApplyCommand(const idl::JointCommand& in) {
-    const JointCommandError error = CheckCommand(in, &checked_);
+    JointCommandError error = CheckCommand(in, &checked_);
+    if (error == JointCommandError::kOk)
+      error = kernel_.SetJointCommands(kernel_.world().RobotIndex(in.robot()), checked_);
     if (error != JointCommandError::kOk) {
       loop_.Reject(fmt::format("joint_command.{}", JointCommandErrorName(error)),
                    fmt::format("robot '{}', {} joints", in.robot(), in.joints().size()));
-      return;
     }
-    for (const JointCommand& c : checked_) world_.SetJointCommand(world_.RobotIndex(in.robot()), c);
   }
 
   JointCommandError CheckCommand(const idl::JointCommand& in, std::vector<JointCommand>* commands) const {
-    const int robot = world_.RobotIndex(in.robot());
+    const int robot = kernel_.world().RobotIndex(in.robot());
     if (robot < 0) return JointCommandError::kUnknownRobot;
     commands->resize(in.joints().size());
     for (size_t i = 0; i < commands->size(); ++i) {
       if (!FromIdl(in.joints()[i], &(*commands)[i])) return JointCommandError::kOutOfRange;
     }
-    return world_.CheckJointCommands(robot, *commands);
+    return kernel_.world().CheckJointCommands(robot, *commands);
   }
 
-  // OP_TELEPORT_ROBOT: a legged robot's root body.
-  std::string PlaceRobot(const idl::LeggedTeleport& t) {
-    RobotPlacement p;
-    p.position = A3(t.position());
-    p.orientation = {t.orientation().w(), t.orientation().x(), t.orientation().y(), t.orientation().z()};
-    p.reset_joints = t.reset_joints();
-    for (int k = 0; k < 3; ++k) {
-      if (std::abs(p.position[k]) > kMaxPlacement) return fmt::format("position beyond {} m", kMaxPlacement);
+  // --- Outputs ---
+
+  // The sensor streams' samples that arrived (their modelled links).
+  void PublishReleased() {
+    for (const LeggedSample& s : kernel_.released()) {
+      switch (s.stream) {
+        case LeggedStream::kJoints:
+          FillJoints(s.robot_state, s.time_ns, s.frame, &joint_sample_);
+          joint_writer_->Write(joint_sample_);
+          break;
+        case LeggedStream::kImu:
+          FillImu(s.robot_state, s.time_ns, &imu_sample_);
+          imu_writer_->Write(imu_sample_);
+          break;
+        default:
+          FillForce(s.robot_state, s.time_ns, &force_sample_);
+          force_writer_->Write(force_sample_);
+          break;
+      }
     }
-    const PlacementError e = world_.PlaceRobot(world_.RobotIndex(t.robot()), p);
-    return e == PlacementError::kOk ? "" : fmt::format("robot '{}': {}", t.robot(), PlacementErrorName(e));
   }
 
-  std::string PlaceBall(const idl::BallTeleport& b) {
-    const std::array<double, 3> position = A3(b.position());
-    const std::array<double, 3> velocity = A3(b.velocity());
-    for (int k = 0; k < 3; ++k) {
-      if (std::abs(position[k]) > kMaxPlacement) return fmt::format("position beyond {} m", kMaxPlacement);
-      if (std::abs(velocity[k]) > kMaxBallSpeed) return fmt::format("velocity beyond {} m/s", kMaxBallSpeed);
-    }
-    const PlacementError e = world_.PlaceBall(position, velocity);
-    return e == PlacementError::kOk ? "" : fmt::format("ball: {}", PlacementErrorName(e));
-  }
-
+  // The whole frame (sensor noise of this frame, no link delay), body poses
+  // and the ball: what bridges and viewers read.
   void PublishState() override {
-    world_.State(&state_);
-    sensors_.Apply(realism_, &state_);
+    kernel_.Measure(&state_);
     FillState(state_, &frame_sample_);
     // The whole frame first: a lockstep driver (the SimSpark bridge) waits for it.
     state_writer_->Write(frame_sample_);
-    for (size_t i = 0; i < state_.robots.size(); ++i) {
-      joint_writer_->Write(frame_sample_.joints()[i]);
-      imu_writer_->Write(frame_sample_.imu()[i]);
-      force_writer_->Write(frame_sample_.force()[i]);
-      links_writer_->Write(frame_sample_.links()[i]);
-    }
+    for (const idl::LinkState& links : frame_sample_.links()) links_writer_->Write(links);
     if (state_.has_ball) {
       idl::WorldState world;
       world.sim_time_ns(state_.time_ns);
@@ -293,7 +181,7 @@ class LeggedNode::Impl final : private ControlLoop::Node {
   }
 
   void PublishSceneInfo() {
-    const LeggedScene& s = world_.scene();
+    const LeggedScene& s = kernel_.scene();
     idl::LeggedSceneInfo info;
     info.name(s.name);
     info.has_field(s.field.enabled);
@@ -303,12 +191,12 @@ class LeggedNode::Impl final : private ControlLoop::Node {
     info.goal_depth(s.field.goal_depth);
     info.goal_height(s.field.goal_height);
     info.ball_radius(s.field.ball_radius);
-    for (int i = 0; i < world_.RobotCount(); ++i) {
+    for (int i = 0; i < kernel_.world().RobotCount(); ++i) {
       idl::RobotDescription robot;
       robot.robot(s.robots[i].name);
       robot.id(s.robots[i].id);
       robot.model(s.robots[i].model);
-      for (const LeggedGeom& g : world_.RobotGeoms(i)) {
+      for (const LeggedGeom& g : kernel_.world().RobotGeoms(i)) {
         idl::RobotGeom geom;
         geom.body(g.body);
         geom.shape(ToIdl(g.shape));
@@ -323,32 +211,40 @@ class LeggedNode::Impl final : private ControlLoop::Node {
   }
 
   void ReportStartup() const {
-    const LeggedScene& s = world_.scene();
+    const LeggedScene& s = kernel_.scene();
     spdlog::info("legged scene '{}': {} robots, step {} ms, field {}, seed {}", s.name, s.robots.size(),
                  s.physics.step * 1e3, s.field.enabled ? "RoboCup 3D" : "none", s.seed);
-    for (const LeggedRobotState& r : world_.State().robots)
+    for (const LeggedRobotState& r : kernel_.world().State().robots)
       spdlog::info("  robot '{}' (id {}): {} joints, {} force sensors{}", r.name, r.id, r.joint_names.size(),
                    r.forces.size(), r.has_imu ? ", IMU" : "");
     spdlog::info("DDS domain {}, QoS profiles {}", options_.domain, participant_.options().qos_file);
     auto name = [this](dds::Topic t) { return participant_.TopicName(t); };
     spdlog::info(
-        "publishing {}, {}, {}, {}, {} (all four in one sample), {} and {} at {:.0f} Hz of sim time; {}, {} "
-        "(latched)",
+        "publishing {}, {}, {} per robot through their modelled links, at {:.0f} Hz of sim time; {} (all in one "
+        "sample), {}, {} and {} at the same rate; {}, {} every second of sim time, {} (latched)",
         name(dds::Topic::kRobotJointState), name(dds::Topic::kRobotImu), name(dds::Topic::kRobotForce),
-        name(dds::Topic::kRobotLinks), name(dds::Topic::kRobotsState), name(dds::Topic::kWorldState),
-        name(dds::Topic::kClock), s.rates.joint_state_hz, name(dds::Topic::kControlReply),
-        name(dds::Topic::kLeggedScene));
+        s.rates.joint_state_hz, name(dds::Topic::kRobotsState), name(dds::Topic::kRobotLinks),
+        name(dds::Topic::kWorldState), name(dds::Topic::kClock), name(dds::Topic::kControlReply),
+        name(dds::Topic::kStats), name(dds::Topic::kLeggedScene));
+    const SensorRealism& r = kernel_.realism();
+    spdlog::info(
+        "sensor realism: encoders {:.4f} rad steps, noise {:.4f} rad; IMU gyro noise {:.4f} rad/s, accel noise {:.3f} "
+        "m/s^2; links joints {:.1f} ms loss {:.1f}%, IMU {:.1f} ms loss {:.1f}%, touch {:.1f} ms loss {:.1f}%",
+        r.encoder.resolution, r.encoder.noise_stddev, r.imu.gyro_noise_stddev, r.imu.accel_noise_stddev,
+        r.encoder.link.latency * 1e3, r.encoder.link.loss * 100, r.imu.link.latency * 1e3, r.imu.link.loss * 100,
+        r.touch.link.latency * 1e3, r.touch.link.loss * 100);
     spdlog::info("subscribing {}, {}", name(dds::Topic::kRobotJointCommand), name(dds::Topic::kControl));
     loop_.ReportTimeMode();
   }
 
   void ReportStatus() const override {
-    spdlog::info("t={:.1f}s frame={} rtf={:.2f} refused={} recoveries={}", world_.time_ns() * 1e-9, world_.frame(),
-                 loop_.real_time_factor(), loop_.rejected(), world_.health().instability_recoveries);
+    spdlog::info("t={:.1f}s frame={} rtf={:.2f} refused={} recoveries={}", kernel_.time_ns() * 1e-9, kernel_.frame(),
+                 loop_.real_time_factor(), loop_.rejected(), kernel_.world().health().instability_recoveries);
+    ReportStreams(last_stats_);
   }
 
   SimNodeOptions options_;
-  LeggedWorld world_;
+  LeggedKernel kernel_;
   dds::Participant participant_;
   ControlLoop loop_;  // before the readers: their callbacks wake it
   std::unique_ptr<dds::Writer<idl::JointStatePubSubType>> joint_writer_;
@@ -358,12 +254,15 @@ class LeggedNode::Impl final : private ControlLoop::Node {
   std::unique_ptr<dds::Writer<idl::LeggedStatePubSubType>> state_writer_;
   std::unique_ptr<dds::Writer<idl::WorldStatePubSubType>> world_writer_;
   std::unique_ptr<dds::Writer<idl::LeggedSceneInfoPubSubType>> scene_writer_;
+  std::unique_ptr<dds::Writer<idl::SensorStatsPubSubType>> stats_writer_;
   std::unique_ptr<dds::Reader<idl::JointCommandPubSubType>> command_reader_;
 
   LeggedWorldState state_;
   idl::LeggedState frame_sample_;
-  SensorRealism realism_;
-  LeggedSensors sensors_;
+  idl::JointState joint_sample_;
+  idl::ImuState imu_sample_;
+  idl::ForceState force_sample_;
+  StreamReport last_stats_;
   std::vector<JointCommand> checked_;
   std::vector<idl::JointCommand> command_inbox_;
 };

@@ -303,11 +303,11 @@ TEST(CameraSystem, ProcessingDelayAndLatencyDelayTheRelease) {
 }
 
 TEST(JointSensors, EncoderQuantisesAndAddsNoise) {
-  EncoderRealism e{0.01, 0.0};
+  EncoderRealism e{0.01, 0.0, {}};
   Rng rng(1);
   EXPECT_DOUBLE_EQ(MeasureJoint(0.123, e, rng), 0.12);
   EXPECT_DOUBLE_EQ(MeasureJoint(-0.127, e, rng), -0.13);
-  e = {0.0, 0.002};
+  e = {0.0, 0.002, {}};
   std::vector<double> v;
   for (int i = 0; i < kSamples; ++i) v.push_back(MeasureJoint(0.5, e, rng));
   EXPECT_NEAR(Stats(v).mean, 0.5, 1e-4);
@@ -315,7 +315,7 @@ TEST(JointSensors, EncoderQuantisesAndAddsNoise) {
 }
 
 TEST(JointSensors, ImuHasBiasAndNoise) {
-  ImuRealism imu{0.01, 0.005, 0.2, 0.05};
+  ImuRealism imu{0.01, 0.005, 0.2, 0.05, {}};
   Rng rng(2);
   std::vector<double> gz, ax;
   for (int i = 0; i < kSamples; ++i) {

@@ -40,7 +40,7 @@ TEST(LeggedSensorsTest, EncodersQuantiseAndAddNoiseWithTheGivenSpread) {
     EXPECT_NEAR(q / 0.01, std::round(q / 0.01), 1e-9);
     EXPECT_LE(std::abs(q - truth.robots[0].joint_positions[j]), 0.005 + 1e-12);
   }
-  // Noise: 20,000 readings of hj1, stddev within 3 %.
+  // Noise: hj1 at 20,000 frames, stddev within 3 %.
   SensorRealism noisy;
   noisy.encoder.noise_stddev = 0.002;
   const size_t hj1 = static_cast<size_t>(w.JointIndex(0, "hj1"));
@@ -48,6 +48,7 @@ TEST(LeggedSensorsTest, EncodersQuantiseAndAddNoiseWithTheGivenSpread) {
   const int n = 20000;
   for (int i = 0; i < n; ++i) {
     LeggedWorldState r = truth;
+    r.frame = static_cast<uint64_t>(i);
     sensors.Apply(noisy, &r);
     const double e = r.robots[0].joint_positions[hj1] - truth.robots[0].joint_positions[hj1];
     sum += e;
@@ -59,7 +60,7 @@ TEST(LeggedSensorsTest, EncodersQuantiseAndAddNoiseWithTheGivenSpread) {
   EXPECT_NEAR(stddev, 0.002, 0.03 * 0.002);
 }
 
-TEST(LeggedSensorsTest, ImuBiasShiftsTheMeanAndStreamsAreSeeded) {
+TEST(LeggedSensorsTest, ImuBiasShiftsTheMeanAndNoiseIsAFunctionOfSeedRobotAndFrame) {
   LeggedWorld w(NaoScene(2));
   for (int i = 0; i < 200; ++i) w.Step();
   const LeggedWorldState truth = w.State();
@@ -74,7 +75,8 @@ TEST(LeggedSensorsTest, ImuBiasShiftsTheMeanAndStreamsAreSeeded) {
   LeggedWorldState first;
   for (int i = 0; i < n; ++i) {
     LeggedWorldState ra = truth;
-    LeggedWorldState rb = truth;
+    ra.frame = static_cast<uint64_t>(i);
+    LeggedWorldState rb = ra;
     a.Apply(imu, &ra);
     b.Apply(imu, &rb);
     ASSERT_EQ(ra.robots[1].accelerometer, rb.robots[1].accelerometer);  // same seed: same readings
@@ -83,10 +85,15 @@ TEST(LeggedSensorsTest, ImuBiasShiftsTheMeanAndStreamsAreSeeded) {
     if (i == 0) first = ra;
   }
   EXPECT_NEAR(mean_z / n, 0.3, 4 * 0.05 / std::sqrt(n));
-  a.Reset();  // back to the start of every stream
+  // Measuring frame 0 again, after 5,000 other measurements, reads the same.
   LeggedWorldState again = truth;
+  again.frame = 0;
   a.Apply(imu, &again);
   EXPECT_EQ(again.robots[0].gyro, first.robots[0].gyro);
+  LeggedWorldState next = truth;
+  next.frame = 1;
+  a.Apply(imu, &next);
+  EXPECT_NE(next.robots[0].gyro, first.robots[0].gyro);
 }
 
 }  // namespace

@@ -1,0 +1,298 @@
+#include "kernel/legged_kernel.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/state_fields.h"
+#include "kernel/snapshot_envelope.h"
+
+namespace turf {
+
+namespace {
+
+constexpr size_t kMaxInFlight = 1 << 16;
+constexpr size_t kMaxValues = 1 << 12;
+
+std::vector<std::string> RobotNames(const LeggedScene& s) {
+  std::vector<std::string> names;
+  for (const LeggedRobot& r : s.robots) names.push_back(r.name);
+  return names;
+}
+
+const LinkParams& LinkOf(const SensorRealism& r, LeggedStream s) {
+  switch (s) {
+    case LeggedStream::kJoints:
+      return r.encoder.link;
+    case LeggedStream::kImu:
+      return r.imu.link;
+    default:
+      return r.touch.link;
+  }
+}
+
+std::string StreamName(const LeggedScene& scene, int robot, LeggedStream s) {
+  return "legged/" + scene.robots[robot].name + "/" + LeggedStreamName(s);
+}
+
+void SaveArray(const double* v, size_t n, StateWriter& out) {
+  for (size_t i = 0; i < n; ++i) out.Put(v[i]);
+}
+
+void RestoreArray(double* v, size_t n, StateReader& in) {
+  for (size_t i = 0; i < n; ++i) v[i] = in.Get<double>();
+}
+
+// The stream's fields of a sample (legged_kernel.h says which).
+void SaveSampleFields(const LeggedSample& s, StateWriter& out) {
+  const LeggedRobotState& r = s.robot_state;
+  switch (s.stream) {
+    case LeggedStream::kJoints:
+      out.Doubles(r.joint_positions);
+      out.Doubles(r.joint_velocities);
+      out.Doubles(r.joint_efforts);
+      break;
+    case LeggedStream::kImu:
+      SaveArray(r.orientation.data(), 4, out);
+      SaveArray(r.gyro.data(), 3, out);
+      SaveArray(r.accelerometer.data(), 3, out);
+      SaveArray(r.base_position.data(), 3, out);
+      SaveArray(r.base_orientation.data(), 4, out);
+      break;
+    default:
+      for (const ForceReading& f : r.forces) {
+        out.Doubles(f.values);
+        out.Put(f.contact);
+        SaveArray(f.force.data(), 3, out);
+        SaveArray(f.point.data(), 3, out);
+      }
+      break;
+  }
+}
+
+// Reads into `s`, whose robot_state already has the robot's structure.
+void RestoreSampleFields(StateReader& in, LeggedSample* s) {
+  LeggedRobotState& r = s->robot_state;
+  switch (s->stream) {
+    case LeggedStream::kJoints:
+      in.Doubles(&r.joint_positions, r.joint_names.size());
+      in.Doubles(&r.joint_velocities, r.joint_names.size());
+      in.Doubles(&r.joint_efforts, r.joint_names.size());
+      break;
+    case LeggedStream::kImu:
+      RestoreArray(r.orientation.data(), 4, in);
+      RestoreArray(r.gyro.data(), 3, in);
+      RestoreArray(r.accelerometer.data(), 3, in);
+      RestoreArray(r.base_position.data(), 3, in);
+      RestoreArray(r.base_orientation.data(), 4, in);
+      break;
+    default:
+      for (ForceReading& f : r.forces) {
+        f.values.resize(in.Count(kMaxValues));
+        in.Bytes(f.values.data(), f.values.size() * sizeof(double));
+        f.contact = in.Bool();
+        RestoreArray(f.force.data(), 3, in);
+        RestoreArray(f.point.data(), 3, in);
+      }
+      break;
+  }
+}
+
+}  // namespace
+
+const char* LeggedStreamName(LeggedStream stream) {
+  switch (stream) {
+    case LeggedStream::kJoints:
+      return "joint_state";
+    case LeggedStream::kImu:
+      return "imu";
+    case LeggedStream::kTouch:
+      return "force";
+    case LeggedStream::kCount:
+      break;
+  }
+  return "?";
+}
+
+LeggedKernel::LeggedKernel(LeggedScene scene)
+    : world_(std::move(scene)), sensors_(world_.scene().seed, RobotNames(world_.scene())) {
+  const LeggedScene& s = world_.scene();
+  sensor_every_ = std::max<int64_t>(1, std::llround(1.0 / (s.rates.joint_state_hz * s.physics.step)));
+  for (int r = 0; r < world_.RobotCount(); ++r) {
+    for (int k = 0; k < kStreamsPerRobot; ++k) streams_.push_back({Link(LinkParams{}, 0), {}});
+  }
+  realism_ = s.realism;
+  Reset();
+}
+
+JointCommandError LeggedKernel::SetJointCommands(int robot, const std::vector<JointCommand>& commands) {
+  const JointCommandError e = world_.CheckJointCommands(robot, commands);
+  if (e != JointCommandError::kOk) return e;
+  for (const JointCommand& c : commands) world_.SetJointCommand(robot, c);
+  return JointCommandError::kOk;
+}
+
+std::string LeggedKernel::PlaceRobot(int robot, const RobotPlacement& p) {
+  for (double v : p.position) {
+    if (std::abs(v) > kMaxLeggedPlacement) return fmt::format("position beyond {} m", kMaxLeggedPlacement);
+  }
+  const PlacementError e = world_.PlaceRobot(robot, p);
+  return e == PlacementError::kOk ? "" : PlacementErrorName(e);
+}
+
+std::string LeggedKernel::PlaceBall(const std::array<double, 3>& position, const std::array<double, 3>& velocity) {
+  for (int k = 0; k < 3; ++k) {
+    if (std::abs(position[k]) > kMaxLeggedPlacement) return fmt::format("position beyond {} m", kMaxLeggedPlacement);
+    if (std::abs(velocity[k]) > kMaxLeggedBallSpeed) return fmt::format("velocity beyond {} m/s", kMaxLeggedBallSpeed);
+  }
+  const PlacementError e = world_.PlaceBall(position, velocity);
+  return e == PlacementError::kOk ? "" : PlacementErrorName(e);
+}
+
+std::string LeggedKernel::SetRealism(const SensorRealism& realism) {
+  if (const char* e = CheckRealism(realism); *e != '\0') return e;
+  realism_ = realism;
+  for (int r = 0; r < world_.RobotCount(); ++r) {
+    for (int k = 0; k < kStreamsPerRobot; ++k) {
+      const auto s = static_cast<LeggedStream>(k);
+      StreamOf(r, s).link.SetParams(LinkOf(realism_, s));
+    }
+  }
+  return "";
+}
+
+void LeggedKernel::Reset() {
+  world_.Reset();
+  for (int r = 0; r < world_.RobotCount(); ++r) {
+    for (int k = 0; k < kStreamsPerRobot; ++k) {
+      const auto s = static_cast<LeggedStream>(k);
+      Stream& stream = StreamOf(r, s);
+      stream.link = Link(LinkOf(realism_, s), StreamSeed(scene().seed, StreamName(scene(), r, s) + "/link"));
+      stream.stats = StreamStats{};
+    }
+  }
+  in_flight_.clear();
+  next_stats_ns_ = kStatsWindowNs;
+  released_.clear();
+  stats_.reset();
+  SendSensorFrame();
+  Release();
+}
+
+void LeggedKernel::Step() {
+  world_.Step();
+  released_.clear();
+  if (frame() % sensor_every_ == 0) SendSensorFrame();
+  Release();
+  CollectStats();
+}
+
+void LeggedKernel::Measure(LeggedWorldState* out) const {
+  world_.State(out);
+  sensors_.Apply(realism_, out);
+}
+
+// Every robot's readings of this frame enter their streams' links.
+void LeggedKernel::SendSensorFrame() {
+  Measure(&scratch_);
+  for (int r = 0; r < world_.RobotCount(); ++r) {
+    for (int k = 0; k < kStreamsPerRobot; ++k) {
+      const auto s = static_cast<LeggedStream>(k);
+      Stream& stream = StreamOf(r, s);
+      stream.stats.Sent();
+      const std::optional<int64_t> arrival = stream.link.Transmit(time_ns());
+      if (!arrival) {
+        stream.stats.Lost();
+        continue;
+      }
+      if (in_flight_.size() >= kMaxInFlight) in_flight_.pop_front();
+      in_flight_.push_back({*arrival, {s, r, time_ns(), frame(), scratch_.robots[r]}});
+    }
+  }
+}
+
+// Samples whose delay has passed, in the order they were sent.
+void LeggedKernel::Release() {
+  auto due = [this](const InFlight& f) { return f.arrival_ns <= time_ns(); };
+  for (InFlight& f : in_flight_) {
+    if (!due(f)) continue;
+    StreamOf(f.sample.robot, f.sample.stream).stats.Delivered((time_ns() - f.sample.time_ns) * 1e-9);
+    released_.push_back(std::move(f.sample));
+  }
+  in_flight_.erase(std::remove_if(in_flight_.begin(), in_flight_.end(), due), in_flight_.end());
+}
+
+void LeggedKernel::CollectStats() {
+  stats_.reset();
+  if (time_ns() < next_stats_ns_) return;
+  StreamReport report;
+  report.time_ns = time_ns();
+  for (int r = 0; r < world_.RobotCount(); ++r) {
+    for (int k = 0; k < kStreamsPerRobot; ++k) {
+      const auto s = static_cast<LeggedStream>(k);
+      report.streams.emplace_back(StreamName(scene(), r, s), StreamOf(r, s).stats.Take());
+    }
+  }
+  stats_ = std::move(report);
+  next_stats_ns_ = time_ns() + kStatsWindowNs;
+}
+
+std::string LeggedKernel::Save() const {
+  return SaveSnapshot(KernelKind::kLegged, [this](StateWriter& out) { SaveTo(out); });
+}
+
+std::string LeggedKernel::Restore(std::string_view snapshot) {
+  return RestoreSnapshot(
+      KernelKind::kLegged, snapshot, [this](StateReader& in) { RestoreFrom(in); }, [this] { return Save(); });
+}
+
+void LeggedKernel::SaveTo(StateWriter& out) const {
+  world_.Save(out);
+  SaveRealism(realism_, out);
+  out.Tag(StateTag("LSTR"));
+  for (const Stream& s : streams_) {
+    s.link.Save(out);
+    s.stats.Save(out);
+  }
+  out.Put<uint64_t>(in_flight_.size());
+  for (const InFlight& f : in_flight_) {
+    out.Put(f.arrival_ns);
+    out.Put(f.sample.stream);
+    out.Put(f.sample.robot);
+    out.Put(f.sample.time_ns);
+    out.Put(f.sample.frame);
+    SaveSampleFields(f.sample, out);
+  }
+  out.Put(next_stats_ns_);
+}
+
+void LeggedKernel::RestoreFrom(StateReader& in) {
+  world_.Restore(in);
+  realism_ = RestoreRealism(in);
+  in.Tag(StateTag("LSTR"));
+  for (Stream& s : streams_) {
+    s.link.Restore(in);
+    s.stats.Restore(in);
+  }
+  world_.State(&scratch_);  // each robot's structure, for the samples
+  in_flight_.resize(in.Count(kMaxInFlight));
+  for (InFlight& f : in_flight_) {
+    f.arrival_ns = in.Get<int64_t>();
+    f.sample.stream = in.Enum(LeggedStream::kCount);
+    f.sample.robot = in.Get<int>();
+    f.sample.time_ns = in.Get<int64_t>();
+    f.sample.frame = in.Get<uint64_t>();
+    if (f.sample.robot < 0 || f.sample.robot >= world_.RobotCount()) {
+      in.Fail("sample of an unknown robot");
+      return;
+    }
+    f.sample.robot_state = scratch_.robots[f.sample.robot];
+    RestoreSampleFields(in, &f.sample);
+  }
+  next_stats_ns_ = in.Get<int64_t>();
+  released_.clear();
+  stats_.reset();
+}
+
+}  // namespace turf

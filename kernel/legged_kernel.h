@@ -1,0 +1,117 @@
+// The legged simulation kernel: a LeggedWorld plus its robots' sensor
+// streams, as one mutable state with a byte snapshot. No DDS, no sockets, no
+// clock (see ssl_kernel.h for the contract).
+//
+// Inputs (between steps; validated, a refused one changes nothing):
+//   SetJointCommands  one robot's joint targets, all or none
+//   PlaceRobot, PlaceBall, SetRealism, Reset
+// Step(), in stages:
+//   update  the world's physics step (legged_world.h has its own stages)
+//   post    at every sensor frame (1/rates.joint_state_hz of sim time) each
+//           robot's joint, IMU and touch readings are measured (noise keyed
+//           by the frame) and sent into that stream's modelled link; samples
+//           whose delay has passed are released; statistics every second
+// Outputs: Measure() (the state with sensor noise, at the current frame: a
+// pure function, read it as often as you like), released() (stream samples
+// that arrived in the last step or Reset), stats().
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/legged/legged_sensors.h"
+#include "core/legged/legged_world.h"
+#include "core/link_model.h"
+#include "kernel/stream_report.h"
+
+namespace turf {
+
+enum class LeggedStream : uint8_t { kJoints, kImu, kTouch, kCount };
+const char* LeggedStreamName(LeggedStream stream);  // "joint_state", "imu", "force"
+
+// One robot's reading of one stream, as measured at `time_ns`. Only the
+// stream's fields of `robot_state` are meaningful (joints: positions,
+// velocities, efforts; IMU: orientation, gyro, accelerometer, base pose;
+// touch: forces).
+struct LeggedSample {
+  LeggedStream stream = LeggedStream::kJoints;
+  int robot = 0;
+  int64_t time_ns = 0;
+  uint64_t frame = 0;
+  LeggedRobotState robot_state;
+};
+
+// Limits of teleports in legged scenes.
+inline constexpr double kMaxLeggedPlacement = 100.0;  // m from the origin, any axis
+inline constexpr double kMaxLeggedBallSpeed = 50.0;   // m/s
+
+class LeggedKernel {
+ public:
+  // Throws std::invalid_argument for an invalid scene.
+  explicit LeggedKernel(LeggedScene scene);
+
+  const LeggedScene& scene() const { return world_.scene(); }
+  const LeggedWorld& world() const { return world_; }
+  const SensorRealism& realism() const { return realism_; }
+  int64_t time_ns() const { return world_.time_ns(); }
+  uint64_t frame() const { return world_.frame(); }
+  // Physics steps per sensor frame.
+  int64_t sensor_every() const { return sensor_every_; }
+
+  // --- Inputs ---
+  JointCommandError SetJointCommands(int robot, const std::vector<JointCommand>& commands);
+  // Empty on success, else why (beyond kMaxLeggedPlacement, unknown robot...).
+  std::string PlaceRobot(int robot, const RobotPlacement& placement);
+  std::string PlaceBall(const std::array<double, 3>& position, const std::array<double, 3>& velocity);
+  std::string SetRealism(const SensorRealism& realism);
+  void Reset();
+
+  // --- One step through all stages ---
+  void Step();
+
+  // --- Outputs ---
+  void Measure(LeggedWorldState* out) const;
+  const std::vector<LeggedSample>& released() const { return released_; }
+  const std::optional<StreamReport>& stats() const { return stats_; }
+
+  // --- Snapshot (as SslKernel's) ---
+  std::string Save() const;
+  std::string Restore(std::string_view snapshot);
+
+ private:
+  struct Stream {
+    Link link;
+    StreamStats stats;
+  };
+  struct InFlight {
+    int64_t arrival_ns;
+    LeggedSample sample;
+  };
+
+  Stream& StreamOf(int robot, LeggedStream s) { return streams_[robot * kStreamsPerRobot + static_cast<int>(s)]; }
+  void SendSensorFrame();
+  void Release();
+  void CollectStats();
+  void SaveTo(StateWriter& out) const;
+  void RestoreFrom(StateReader& in);
+
+  static constexpr int kStreamsPerRobot = static_cast<int>(LeggedStream::kCount);
+
+  LeggedWorld world_;
+  LeggedSensors sensors_;
+  SensorRealism realism_;
+  int64_t sensor_every_ = 1;
+  std::vector<Stream> streams_;  // robot-major
+  std::deque<InFlight> in_flight_;
+  int64_t next_stats_ns_ = 0;
+
+  mutable LeggedWorldState scratch_;
+  std::vector<LeggedSample> released_;
+  std::optional<StreamReport> stats_;
+};
+
+}  // namespace turf

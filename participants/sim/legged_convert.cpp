@@ -1,0 +1,131 @@
+#include "participants/sim/legged_convert.h"
+
+namespace turf {
+
+idl::Vec3 V3(const std::array<double, 3>& a) {
+  idl::Vec3 v;
+  v.x(a[0]);
+  v.y(a[1]);
+  v.z(a[2]);
+  return v;
+}
+
+idl::Quat Q4(const std::array<double, 4>& a) {
+  idl::Quat q;
+  q.w(a[0]);
+  q.x(a[1]);
+  q.y(a[2]);
+  q.z(a[3]);
+  return q;
+}
+
+std::array<double, 3> A3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+idl::GeomShape ToIdl(LeggedGeom::Shape shape) {
+  switch (shape) {
+    case LeggedGeom::Shape::kBox:
+      return idl::GEOM_BOX;
+    case LeggedGeom::Shape::kSphere:
+      return idl::GEOM_SPHERE;
+    case LeggedGeom::Shape::kCapsule:
+      return idl::GEOM_CAPSULE;
+    case LeggedGeom::Shape::kCylinder:
+      return idl::GEOM_CYLINDER;
+    case LeggedGeom::Shape::kEllipsoid:
+      return idl::GEOM_ELLIPSOID;
+    case LeggedGeom::Shape::kOther:
+      break;
+  }
+  return idl::GEOM_OTHER;
+}
+
+void FillJoints(const LeggedRobotState& r, int64_t time_ns, uint64_t frame, idl::JointState* joints) {
+  joints->robot(r.name);
+  joints->id(r.id);
+  joints->sim_time_ns(time_ns);
+  joints->frame(frame);
+  joints->name(r.joint_names);
+  joints->position(r.joint_positions);
+  joints->velocity(r.joint_velocities);
+  joints->effort(r.joint_efforts);
+}
+
+void FillImu(const LeggedRobotState& r, int64_t time_ns, idl::ImuState* imu) {
+  imu->robot(r.name);
+  imu->sim_time_ns(time_ns);
+  imu->valid(r.has_imu);
+  imu->orientation(Q4(r.orientation));
+  imu->angular_velocity(V3(r.gyro));
+  imu->linear_acceleration(V3(r.accelerometer));
+  imu->base_position(V3(r.base_position));
+  imu->base_orientation(Q4(r.base_orientation));
+}
+
+void FillForce(const LeggedRobotState& r, int64_t time_ns, idl::ForceState* force) {
+  force->robot(r.name);
+  force->sim_time_ns(time_ns);
+  force->sensors().resize(r.forces.size());
+  for (size_t f = 0; f < r.forces.size(); ++f) {
+    idl::ForceReading& reading = force->sensors()[f];
+    reading.name(r.forces[f].name);
+    reading.values(r.forces[f].values);
+    reading.contact(r.forces[f].contact);
+    reading.force(V3(r.forces[f].force));
+    reading.point(V3(r.forces[f].point));
+  }
+}
+
+void FillLinks(const LeggedRobotState& r, int64_t time_ns, uint64_t frame, idl::LinkState* links) {
+  links->robot(r.name);
+  links->sim_time_ns(time_ns);
+  links->frame(frame);
+  links->links().resize(r.links.size());
+  for (size_t l = 0; l < r.links.size(); ++l) {
+    links->links()[l].name(r.links[l].name);
+    links->links()[l].position(V3(r.links[l].position));
+    links->links()[l].orientation(Q4(r.links[l].orientation));
+  }
+}
+
+void FillState(const LeggedWorldState& state, idl::LeggedState* out) {
+  const size_t n = state.robots.size();
+  out->sim_time_ns(state.time_ns);
+  out->frame(state.frame);
+  out->joints().resize(n);
+  out->imu().resize(n);
+  out->force().resize(n);
+  out->links().resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    const LeggedRobotState& r = state.robots[i];
+    FillJoints(r, state.time_ns, state.frame, &out->joints()[i]);
+    FillImu(r, state.time_ns, &out->imu()[i]);
+    FillForce(r, state.time_ns, &out->force()[i]);
+    FillLinks(r, state.time_ns, state.frame, &out->links()[i]);
+  }
+  out->has_ball(state.has_ball);
+  out->ball_position(V3(state.ball_position));
+  out->ball_velocity(V3(state.ball_velocity));
+}
+
+bool FromIdl(const idl::JointTarget& in, JointCommand* out) {
+  out->joint = in.name();
+  switch (in.mode()) {
+    case idl::JOINT_VELOCITY:
+      out->mode = JointMode::kVelocity;
+      break;
+    case idl::JOINT_POSITION:
+      out->mode = JointMode::kPosition;
+      break;
+    case idl::JOINT_TORQUE:
+      out->mode = JointMode::kTorque;
+      break;
+    default:
+      return false;
+  }
+  out->value = in.value();
+  out->kp = in.kp();
+  out->kd = in.kd();
+  return true;
+}
+
+}  // namespace turf
