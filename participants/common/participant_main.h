@@ -31,7 +31,8 @@ enum ExitCode : int {
                        // log level, a scene or realism file that does not load, std::invalid_argument from the body
 };
 
-// Help text of --domain and --prefix: a bridge joins turf-sim's domain, turf-sim defines it.
+// Help text of --domain and --prefix. The defaults suit a bridge, which joins
+// turf-sim's domain and prefix; turf-sim says what its own are for.
 struct CommonFlagHelp {
   std::string domain = "DDS domain id of turf-sim";
   std::string prefix = "topic name prefix of turf-sim";
@@ -56,6 +57,7 @@ class ParticipantMain {
   // is the exit code; an escaping std::invalid_argument is logged as an error
   // and gives kExitBadConfig, any other exception is logged as critical and
   // gives kExitFailure. Logs "stopped cleanly" when the result is kExitClean.
+  // Call it once.
   int Run(int argc, const char* const* argv, const std::function<int()>& body);
 
  private:
