@@ -31,14 +31,13 @@
 #include <string>
 
 #include "codecs/grsim/grsim_codec.h"
+#include "participants/common/participant_options.h"
 
 namespace turf {
 
-struct GrsimBridgeOptions {
-  int domain = 0;
-  std::string prefix = "turf";
-  std::string qos_file;                    // empty: the shipped profiles
-  std::string name = "turf-grsim-bridge";  // DDS participant, and `client` of control requests
+// `name` is the DDS participant's, and the `client` of its control requests.
+struct GrsimBridgeOptions : ParticipantOptions {
+  GrsimBridgeOptions() { name = "turf-grsim-bridge"; }
   std::string listen_ip = "0.0.0.0";
   uint16_t port = 20011;  // 0: any free port (see GrsimBridge::port())
   uint16_t blue_status_port = 30011;

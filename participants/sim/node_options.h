@@ -4,15 +4,13 @@
 #include <cstdint>
 #include <string>
 
+#include "participants/common/participant_options.h"
 #include "participants/sim/pacer.h"
 
 namespace turf {
 
-struct SimNodeOptions {
-  int domain = 0;
-  std::string prefix = "turf";
-  std::string qos_file;  // empty: the shipped profiles
-  std::string name = "turf-sim";
+struct SimNodeOptions : ParticipantOptions {
+  SimNodeOptions() { name = "turf-sim"; }
   TimeMode mode = TimeMode::kRealtime;
   double speed = 1.0;  // for kScaled
   bool start_paused = false;

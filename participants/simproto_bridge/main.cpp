@@ -1,24 +1,19 @@
 // turf-simproto-bridge: the SSL simulation protocol (control, team and sync
 // ports; ER-Force's and grSim's UDP protocol) in front of turf-sim, for team
 // software and tools that speak it. Ports, topics and choices: simproto_bridge.h.
-#include <spdlog/spdlog.h>
-#include <CLI/CLI.hpp>
+#include <chrono>
 
-#include <string>
-
+#include "participants/common/participant_main.h"
 #include "participants/common/process.h"
 #include "participants/simproto_bridge/simproto_bridge.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{"turf-simproto-bridge: the SSL simulation protocol (UDP) in front of turf-sim (DDS)"};
+  turf::ParticipantMain participant(
+      "turf-simproto-bridge", "turf-simproto-bridge: the SSL simulation protocol (UDP) in front of turf-sim (DDS)");
+  CLI::App& app = participant.app();
   turf::SimprotoBridgeOptions options;
-  std::string log_level = "info";
   int reply_timeout_ms = static_cast<int>(options.reply_timeout.count());
-  app.add_option("-d,--domain", options.domain, "DDS domain id of turf-sim")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 232));
-  app.add_option("-p,--prefix", options.prefix, "topic name prefix of turf-sim")->capture_default_str();
-  app.add_option("--qos", options.qos_file, "Fast DDS XML QoS profiles (default: configs/qos/turf_qos.xml)");
+  participant.AddCommonFlags(options);
   app.add_option("--listen", options.listen, "IPv4 address the UDP ports bind to")->capture_default_str();
   app.add_option("--control-port", options.control_port,
                  "UDP port for SimulatorCommand -> SimulatorResponse (teleports, speed, config; 0: off)")
@@ -34,22 +29,9 @@ int main(int argc, char** argv) {
   app.add_option("--reply-timeout-ms", reply_timeout_ms, "how long to wait for turf-sim's reply to a request")
       ->capture_default_str()
       ->check(CLI::Range(10, 60000));
-  app.add_option("--log-level", log_level, "trace, debug, info, warn, error")->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
-
-  if (!turf::SetupLogging("turf-simproto-bridge", log_level)) return 2;
-  options.reply_timeout = std::chrono::milliseconds(reply_timeout_ms);
-  turf::InstallStopSignals();
-  try {
-    turf::SimprotoBridge bridge(options);
-    bridge.Run([] { return turf::StopRequested(); });
-  } catch (const std::invalid_argument& e) {
-    spdlog::error("{}", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    spdlog::critical("{}", e.what());
-    return 1;
-  }
-  spdlog::info("stopped cleanly");
-  return 0;
+  return participant.Run(argc, argv, [&] {
+    options.reply_timeout = std::chrono::milliseconds(reply_timeout_ms);
+    turf::SimprotoBridge(options).Run(turf::StopRequested);
+    return turf::kExitClean;
+  });
 }

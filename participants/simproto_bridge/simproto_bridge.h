@@ -41,13 +41,12 @@
 #include <memory>
 #include <string>
 
+#include "participants/common/participant_options.h"
+
 namespace turf {
 
-struct SimprotoBridgeOptions {
-  int domain = 0;
-  std::string prefix = "turf";
-  std::string qos_file;  // empty: the shipped profiles
-  std::string name = "turf-simproto-bridge";
+struct SimprotoBridgeOptions : ParticipantOptions {
+  SimprotoBridgeOptions() { name = "turf-simproto-bridge"; }
   std::string listen = "0.0.0.0";  // IPv4 address the ports bind to
   uint16_t control_port = 10300;
   uint16_t blue_port = 10301;

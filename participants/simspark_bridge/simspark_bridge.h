@@ -25,12 +25,12 @@
 #include <memory>
 #include <string>
 
+#include "participants/common/participant_options.h"
+
 namespace turf {
 
-struct SimSparkBridgeOptions {
-  int domain = 0;
-  std::string prefix = "turf";
-  std::string qos_file;
+struct SimSparkBridgeOptions : ParticipantOptions {
+  SimSparkBridgeOptions() { name = "turf-simspark-bridge"; }
   std::string listen = "0.0.0.0";
   uint16_t agent_port = 3100;    // 0: any free port (tests)
   uint16_t monitor_port = 3200;  // 0: any free port

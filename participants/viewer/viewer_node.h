@@ -28,13 +28,12 @@
 #include <memory>
 #include <string>
 
+#include "participants/common/participant_options.h"
+
 namespace turf {
 
-struct ViewerOptions {
-  int domain = 0;
-  std::string prefix = "turf";
-  std::string qos_file;  // empty: the shipped profiles
-  std::string name = "turf-viewer";
+struct ViewerOptions : ParticipantOptions {
+  ViewerOptions() { name = "turf-viewer"; }
   std::string listen = "127.0.0.1";
   uint16_t port = 8080;   // 0: any free port (see ViewerNode::port())
   std::string web_root;   // must hold index.html

@@ -30,14 +30,12 @@
 #include <string>
 
 #include "codecs/ssl_vision/timestamps.h"
+#include "participants/common/participant_options.h"
 
 namespace turf {
 
-struct VisionBridgeOptions {
-  int domain = 0;
-  std::string prefix = "turf";
-  std::string qos_file;  // empty: the shipped profiles
-  std::string name = "turf-vision-bridge";
+struct VisionBridgeOptions : ParticipantOptions {
+  VisionBridgeOptions() { name = "turf-vision-bridge"; }
   std::string address = "224.5.23.2";  // multicast group or unicast address
   uint16_t port = 10020;
   std::string interface_ip;  // multicast interface address; empty: the system's choice

@@ -1,0 +1,49 @@
+#include "participants/common/participant_main.h"
+
+#include <spdlog/spdlog.h>
+
+#include <exception>
+#include <stdexcept>
+#include <utility>
+
+#include "participants/common/process.h"
+
+namespace turf {
+
+ParticipantMain::ParticipantMain(std::string process_name, const std::string& description)
+    : process_name_(std::move(process_name)), app_(description) {}
+
+void ParticipantMain::AddCommonFlags(ParticipantOptions& options, const CommonFlagHelp& help) {
+  app_.add_option("-d,--domain", options.domain, help.domain)->capture_default_str()->check(CLI::Range(0, 232));
+  app_.add_option("-p,--prefix", options.prefix, help.prefix)->capture_default_str();
+  app_.add_option("--qos", options.qos_file, "Fast DDS XML QoS profiles (default: configs/qos/turf_qos.xml)");
+}
+
+int ParticipantMain::Run(int argc, const char* const* argv, const std::function<int()>& body) {
+  app_.add_option("--log-level", log_level_, "trace, debug, info, warn, error")->capture_default_str();
+  try {
+    app_.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // Prints the help (stdout) or what was wrong (stderr); 0 only for --help.
+    return app_.exit(e) == 0 ? kExitClean : kExitBadConfig;
+  }
+  if (!SetupLogging(process_name_, log_level_)) return kExitBadConfig;
+  InstallStopSignals();
+  int code = kExitFailure;
+  try {
+    code = body();
+  } catch (const std::invalid_argument& e) {
+    spdlog::error("{}", e.what());
+    return kExitBadConfig;
+  } catch (const std::exception& e) {
+    spdlog::critical("{}", e.what());
+    return kExitFailure;
+  } catch (...) {
+    spdlog::critical("stopped by an exception that is not a std::exception");
+    return kExitFailure;
+  }
+  if (code == kExitClean) spdlog::info("stopped cleanly");
+  return code;
+}
+
+}  // namespace turf

@@ -1,0 +1,116 @@
+#include "participants/sim/sim_startup.h"
+
+#include <mujoco/mujoco.h>
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <exception>
+#include <optional>
+#include <utility>
+
+#include "loader/legged_scene_yaml.h"
+#include "loader/realism_yaml.h"
+#include "loader/scene_yaml.h"
+#include "participants/common/process.h"
+#include "participants/sim/legged_node.h"
+#include "participants/sim/sim_node.h"
+
+namespace turf {
+namespace {
+
+void MujocoWarning(const char* message) { spdlog::warn("MuJoCo: {}", message); }
+
+// The realism preset or file named on the command line.
+std::optional<SensorRealism> LoadRealismOption(const std::string& realism) {
+  const RealismLoadResult r = LoadRealism(realism);
+  if (!r.realism) {
+    spdlog::error("cannot load realism '{}':", realism);
+    for (const std::string& e : r.errors) spdlog::error("  {}", e);
+    return std::nullopt;
+  }
+  spdlog::info("sensor realism from '{}'", realism);
+  return r.realism;
+}
+
+// Scenes with `kind: legged`: any MJCF robots on joint topics (legged_node.h).
+int RunLegged(const SimCommandLine& command_line) {
+  LeggedSceneLoadResult loaded = LoadLeggedSceneFile(command_line.scene_path);
+  if (!loaded.scene) {
+    spdlog::error("cannot load legged scene {}:", command_line.scene_path);
+    for (const std::string& e : loaded.errors) spdlog::error("  {}", e);
+    return kExitBadConfig;
+  }
+  spdlog::info("legged scene file {}", command_line.scene_path);
+  if (!command_line.realism.empty()) {
+    const std::optional<SensorRealism> r = LoadRealismOption(command_line.realism);
+    if (!r) return kExitBadConfig;
+    loaded.scene->realism = *r;  // encoders and IMU
+  }
+  LeggedNode(std::move(*loaded.scene), command_line.node).Run(StopRequested);
+  return kExitClean;
+}
+
+int RunSsl(const SimCommandLine& command_line) {
+  SceneLoadResult loaded = LoadSceneFile(command_line.scene_path);
+  if (!loaded.scene) {
+    spdlog::error("cannot load scene {}:", command_line.scene_path);
+    for (const std::string& e : loaded.errors) spdlog::error("  {}", e);
+    return kExitBadConfig;
+  }
+  spdlog::info("scene file {}", command_line.scene_path);
+  if (!command_line.realism.empty()) {
+    const std::optional<SensorRealism> r = LoadRealismOption(command_line.realism);
+    if (!r) return kExitBadConfig;
+    loaded.scene->realism = *r;
+  }
+  SimNode(std::move(*loaded.scene), command_line.node).Run(StopRequested);
+  return kExitClean;
+}
+
+}  // namespace
+
+void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
+  CLI::App& app = participant.app();
+  SimNodeOptions& node = command_line.node;
+  command_line.scene_path = std::string(TURF_SOURCE_DIR) + "/configs/scenes/ssl_div_a.yaml";
+  app.add_option("-s,--scene", command_line.scene_path, "scene file (YAML)")->capture_default_str();
+  participant.AddCommonFlags(node, {"DDS domain id", "topic name prefix (two matches on one network: use two)"});
+  app.add_option("--speed", command_line.speed, "multiple of real time, or 'max' to run free")->capture_default_str();
+  app.add_flag("--lockstep", command_line.lockstep, "advance only on STEP control requests");
+  app.add_flag("--paused", node.start_paused, "start paused");
+  app.add_option("--realism", command_line.realism,
+                 "sensor realism: a preset (ideal, realistic, harsh in configs/realism/) or a YAML file; "
+                 "overrides the scene's");
+  app.add_option("--duration", node.duration, "stop after this many simulated seconds (0: run until Ctrl-C)")
+      ->check(CLI::NonNegativeNumber);
+}
+
+bool ApplyTimeMode(const std::string& speed, bool lockstep, SimNodeOptions& node) {
+  if (lockstep) {
+    node.mode = TimeMode::kLockstep;
+    return true;
+  }
+  if (speed == "max") {
+    node.mode = TimeMode::kFreeRunning;
+    return true;
+  }
+  try {
+    node.speed = std::stod(speed);
+  } catch (const std::exception&) {
+    node.speed = NAN;
+  }
+  if (!(std::isfinite(node.speed) && node.speed > 0 && node.speed <= 1000)) {
+    spdlog::error("--speed must be a number in (0, 1000] or 'max' (got '{}')", speed);
+    return false;
+  }
+  node.mode = node.speed == 1.0 ? TimeMode::kRealtime : TimeMode::kScaled;
+  return true;
+}
+
+int RunSim(SimCommandLine command_line) {
+  if (!ApplyTimeMode(command_line.speed, command_line.lockstep, command_line.node)) return kExitBadConfig;
+  mju_user_warning = MujocoWarning;
+  return IsLeggedSceneFile(command_line.scene_path) ? RunLegged(command_line) : RunSsl(command_line);
+}
+
+}  // namespace turf

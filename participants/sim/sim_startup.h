@@ -1,0 +1,34 @@
+// turf-sim's start-up, behind main.cpp: its own flags (the common ones:
+// participant_main.h), --speed and --lockstep into a time mode, the scene and
+// realism files, and the node that fits the scene (SSL: sim_node.h; `kind:
+// legged`: legged_node.h).
+#pragma once
+
+#include <string>
+
+#include "participants/common/participant_main.h"
+#include "participants/sim/node_options.h"
+
+namespace turf {
+
+// What turf-sim's command line says, before it is checked and loaded.
+struct SimCommandLine {
+  std::string scene_path;   // -s, --scene; default: configs/scenes/ssl_div_a.yaml of the source tree
+  std::string speed = "1";  // --speed: a multiple of real time, or "max"
+  bool lockstep = false;    // --lockstep
+  std::string realism;      // --realism: a preset or a file; empty: the scene's
+  SimNodeOptions node;      // the common flags, --paused and --duration
+};
+
+// Declares turf-sim's flags on `participant`, in the order --help lists them.
+void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line);
+
+// Sets node.mode (and node.speed) from --speed and --lockstep; false (logged)
+// if --speed is not a number in (0, 1000] or "max".
+bool ApplyTimeMode(const std::string& speed, bool lockstep, SimNodeOptions& node);
+
+// Checks the time mode, loads the scene and realism, then runs the SSL or the
+// legged node until StopRequested(). Returns an ExitCode (participant_main.h).
+int RunSim(SimCommandLine command_line);
+
+}  // namespace turf
