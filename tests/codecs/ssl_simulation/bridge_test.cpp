@@ -20,6 +20,7 @@
 #include "participants/sim/sim_node.h"
 #include "participants/simproto_bridge/simproto_bridge.h"
 #include "tests/core/test_scenes.h"
+#include "tests/support/in_process.h"
 
 namespace turf {
 namespace {
@@ -28,75 +29,41 @@ using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
 namespace ws = wire::simulation;
 
-int g_test_counter = 0;
-
 dds::ParticipantOptions UniqueDds() {
-  ++g_test_counter;
-  dds::ParticipantOptions o;
-  o.domain = turf::test::TestDomain(37);
-  o.prefix = "simproto" + std::to_string(getpid()) + "_" + std::to_string(g_test_counter);
-  o.name = "observer";
-  o.qos_file = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
+  dds::ParticipantOptions o = test::UniqueDds("observer");
+  o.domain = test::TestDomain(37);
   return o;
 }
 
-uint16_t FreePort() {
-  std::string error;
-  std::optional<UdpSocket> s = UdpSocket::Bind("127.0.0.1", 0, false, &error);
-  EXPECT_TRUE(s.has_value()) << error;
-  return s ? s->LocalPort() : 0;
-}
+uint16_t FreePort() { return test::BindLoopback().LocalPort(); }
 
 // turf-sim's node and the bridge, each on a thread of its own.
 class Stack {
  public:
-  Stack(Scene scene, const dds::ParticipantOptions& dds, TimeMode mode, double speed = 1.0) {
-    SimNodeOptions so;
-    so.domain = dds.domain;
-    so.prefix = dds.prefix;
-    so.qos_file = dds.qos_file;
-    so.mode = mode;
-    so.speed = speed;
-    sim_ = std::make_unique<SimNode>(std::move(scene), so);
-    SimprotoBridgeOptions bo;
-    bo.domain = dds.domain;
-    bo.prefix = dds.prefix;
-    bo.qos_file = dds.qos_file;
+  Stack(Scene scene, const dds::ParticipantOptions& dds, TimeMode mode, double speed = 1.0)
+      : sim_(std::move(scene), dds, mode, speed), bridge_(MakeBridge(dds)) {}
+  SimNode& sim() { return sim_.node(); }
+  SimprotoBridge& bridge() { return bridge_.node(); }
+  uint16_t control = 0, blue = 0, yellow = 0, sync = 0;
+
+ private:
+  std::unique_ptr<SimprotoBridge> MakeBridge(const dds::ParticipantOptions& dds) {
+    auto bo = test::OnDds<SimprotoBridgeOptions>(dds);
     bo.listen = "127.0.0.1";
     bo.control_port = control = FreePort();
     bo.blue_port = blue = FreePort();
     bo.yellow_port = yellow = FreePort();
     bo.sync_port = sync = FreePort();
-    bridge_ = std::make_unique<SimprotoBridge>(bo);
-    sim_thread_ = std::thread([this] { sim_->Run([this] { return stop_.load(); }); });
-    bridge_thread_ = std::thread([this] { bridge_->Run([this] { return stop_.load(); }); });
+    return std::make_unique<SimprotoBridge>(bo);
   }
-  ~Stack() {
-    stop_ = true;
-    bridge_thread_.join();
-    sim_thread_.join();
-  }
-  SimNode& sim() { return *sim_; }
-  SimprotoBridge& bridge() { return *bridge_; }
-  uint16_t control = 0, blue = 0, yellow = 0, sync = 0;
-
- private:
-  std::unique_ptr<SimNode> sim_;
-  std::unique_ptr<SimprotoBridge> bridge_;
-  std::atomic<bool> stop_{false};
-  std::thread sim_thread_;
-  std::thread bridge_thread_;
+  test::SimUnderTest sim_;
+  test::OnThread<SimprotoBridge> bridge_;
 };
 
 // A team (or training loop) on UDP: one socket, request and answer.
 class Team {
  public:
-  Team() {
-    std::string error;
-    std::optional<UdpSocket> s = UdpSocket::Bind("127.0.0.1", 0, false, &error);
-    EXPECT_TRUE(s.has_value()) << error;
-    if (s) socket_ = std::move(*s);
-  }
+  Team() : socket_(test::BindLoopback()) {}
   // nullopt (and a failure) if there is no answer within `timeout`.
   std::optional<std::vector<uint8_t>> Ask(uint16_t port, const std::vector<uint8_t>& bytes,
                                           std::chrono::milliseconds timeout = 3s) {
