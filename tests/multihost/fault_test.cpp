@@ -34,6 +34,14 @@ struct LoopbackMatch {
     return DriveBlueRobot(team, "127.0.0.1", match.grsim_port, client, 1, -3.0, 2.0, 600ms).value_or(0);
   }
 
+  // turf-sim, then the bridges; true once vision streams both cameras and geometry.
+  bool StartAll() {
+    sim = match.Sim();
+    grsim = match.Grsim();
+    vision = match.Vision();
+    return client.WaitForStream(2, kStreamTimeout);
+  }
+
   // No detection for 200 ms, after 1 s for those in flight.
   ::testing::AssertionResult VisionStopped() {
     client.Drain(1000ms);
@@ -46,6 +54,7 @@ struct LoopbackMatch {
   Match match;
   VisionClient client;
   UdpSocket team;
+  std::unique_ptr<Process> sim, grsim, vision;
 };
 
 // Records how long vision took to resume, in the test's XML and its output.
@@ -65,51 +74,45 @@ int Complaints(const Process& p, size_t from = 0) {
 // 2 s of the restart, commands work, and turf-sim logs nothing worse than info.
 TEST(Faults, BridgeKilledAndRestartedResumesWithinTwoSeconds) {
   LoopbackMatch m("bridge");
-  auto sim = m.match.Sim();
-  auto grsim = m.match.Grsim();
-  auto vision = m.match.Vision();
-  ASSERT_TRUE(m.client.WaitForStream(2, kStreamTimeout)) << vision->Log();
+  ASSERT_TRUE(m.StartAll()) << m.vision->Log();
   ASSERT_GT(m.Drive(), 0.2);
 
-  const size_t sim_log_before = sim->Log().size();
-  vision->Kill();
-  grsim->Kill();
+  const size_t sim_log_before = m.sim->Log().size();
+  m.vision->Kill();
+  m.grsim->Kill();
   EXPECT_TRUE(m.VisionStopped()) << "a killed vision bridge still sends";
 
-  vision = m.match.Vision("_restarted");
-  grsim = m.match.Grsim("_restarted");
+  m.vision = m.match.Vision("_restarted");
+  m.grsim = m.match.Grsim("_restarted");
   const auto resumed = m.client.UntilDetection(15s);
-  ASSERT_TRUE(resumed.has_value()) << vision->Log();
+  ASSERT_TRUE(resumed.has_value()) << m.vision->Log();
   ReportResumed("vision_after_bridge_restart_ms", "the bridge restarted", *resumed);
   // Known cause when this fails at 2-4 s: the new bridge takes over the dead
   // one's participant id, and with Fast DDS's shared-memory transport it first
   // waits out the dead one's SHM port while turf-sim keeps writing to the stale
   // segment. A UDPv4-only participant profile (and a 0.5 s lease announcement,
   // which bounds a lost discovery reply) brings this to ~0.1 s.
-  EXPECT_LE(resumed->count(), 2000) << vision->Log();
-  EXPECT_GT(m.Drive(), 0.2) << grsim->Log();
-  EXPECT_TRUE(sim->Running());
-  EXPECT_EQ(Complaints(*sim, sim_log_before), 0) << sim->Log().substr(sim_log_before);
+  EXPECT_LE(resumed->count(), 2000) << m.vision->Log();
+  EXPECT_GT(m.Drive(), 0.2) << m.grsim->Log();
+  EXPECT_TRUE(m.sim->Running());
+  EXPECT_EQ(Complaints(*m.sim, sim_log_before), 0) << m.sim->Log().substr(sim_log_before);
 }
 
 // kill -9 turf-sim mid-match and start it again: the running bridges resume by
 // themselves (same processes), and commands reach the new turf-sim.
 TEST(Faults, SimKilledAndRestartedBridgesResumeWithoutRestart) {
   LoopbackMatch m("sim");
-  auto sim = m.match.Sim();
-  auto grsim = m.match.Grsim();
-  auto vision = m.match.Vision();
-  ASSERT_TRUE(m.client.WaitForStream(2, kStreamTimeout)) << vision->Log();
+  ASSERT_TRUE(m.StartAll()) << m.vision->Log();
 
-  sim->Kill();
+  m.sim->Kill();
   EXPECT_TRUE(m.VisionStopped()) << "vision kept flowing without turf-sim";
 
-  sim = m.match.Sim("_restarted");
+  m.sim = m.match.Sim("_restarted");
   const auto resumed = m.client.UntilDetection(10s);
-  ASSERT_TRUE(resumed.has_value()) << vision->Log() << sim->Log();
+  ASSERT_TRUE(resumed.has_value()) << m.vision->Log() << m.sim->Log();
   ReportResumed("vision_after_sim_restart_ms", "turf-sim restarted", *resumed);
-  EXPECT_GT(m.Drive(), 0.2) << grsim->Log();
-  EXPECT_TRUE(grsim->Running() && vision->Running());
+  EXPECT_GT(m.Drive(), 0.2) << m.grsim->Log();
+  EXPECT_TRUE(m.grsim->Running() && m.vision->Running());
 }
 
 // Bridges started first wait quietly (no packets, no warnings) and work once
