@@ -6,9 +6,8 @@
 
 #include <exception>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <map>
+#include <optional>
 
 #include "loader/realism_yaml.h"
 #include "loader/yaml_reader.h"
@@ -86,12 +85,7 @@ void ReadScene(MapReader m, const std::string& base_dir, LeggedScene* s, Errors*
   m.String("name", &s->name);
   m.Uint64("seed", &s->seed);
   m.Number("ground_friction", &s->ground_friction);
-  {
-    MapReader p = m.Map("physics");
-    p.Number("step", &s->physics.step);
-    p.Int("solver_iterations", &s->physics.solver_iterations);
-    p.Finish();
-  }
+  yaml::ReadPhysics(m.Map("physics"), &s->physics);
   {
     MapReader r = m.Map("rates");
     r.Number("joint_state_hz", &s->rates.joint_state_hz);
@@ -115,20 +109,10 @@ void ReadScene(MapReader m, const std::string& base_dir, LeggedScene* s, Errors*
 
 LeggedSceneLoadResult Parse(const std::string& yaml_text, const std::string& base_dir) {
   LeggedSceneLoadResult result;
-  std::vector<YAML::Node> documents;
-  try {
-    documents = YAML::LoadAll(yaml_text);
-  } catch (const YAML::ParserException& e) {
-    result.errors.push_back(
-        fmt::format("malformed YAML at line {}, column {}: {}", e.mark.line + 1, e.mark.column + 1, e.msg));
-    return result;
-  }
-  if (documents.size() != 1 || !documents[0].IsMap()) {
-    result.errors.push_back("expected one YAML document with a map of scene settings");
-    return result;
-  }
+  const std::optional<YAML::Node> document = yaml::LoadSceneDocument(yaml_text, &result.errors);
+  if (!document) return result;
   LeggedScene scene;
-  ReadScene(MapReader(documents[0], "", &result.errors), base_dir, &scene, &result.errors);
+  ReadScene(MapReader(*document, "", &result.errors), base_dir, &scene, &result.errors);
   if (result.errors.empty()) {
     for (std::string& e : ValidateLeggedScene(scene)) result.errors.push_back(std::move(e));
   }
@@ -151,31 +135,13 @@ bool IsLeggedSceneFile(const std::string& path) {
 }
 
 LeggedSceneLoadResult ParseLeggedSceneYaml(const std::string& yaml_text, const std::string& base_dir) {
-  try {
-    return Parse(yaml_text, base_dir);
-  } catch (const std::exception& e) {
-    LeggedSceneLoadResult result;
-    result.errors.push_back(fmt::format("cannot read the scene: {}", e.what()));
-    return result;
-  }
+  return yaml::ParseGuarded<LeggedSceneLoadResult>([&] { return Parse(yaml_text, base_dir); });
 }
 
 LeggedSceneLoadResult LoadLeggedSceneFile(const std::string& path) {
-  LeggedSceneLoadResult result;
-  std::string text;
-  std::string error;
-  try {
-    if (ReadTextFile(path, kMaxSceneBytes, &text, &error)) {
-      result = ParseLeggedSceneYaml(text, std::filesystem::path(path).parent_path().string());
-    } else {
-      result.errors.push_back(error);
-    }
-  } catch (const std::exception& e) {
-    result.scene.reset();
-    result.errors.push_back(fmt::format("cannot read: {}", e.what()));
-  }
-  for (std::string& message : result.errors) message = path + ": " + message;
-  return result;
+  const std::string base_dir = std::filesystem::path(path).parent_path().string();
+  return yaml::LoadFile<LeggedSceneLoadResult>(
+      path, kMaxSceneBytes, [&](const std::string& text) { return ParseLeggedSceneYaml(text, base_dir); });
 }
 
 }  // namespace turf

@@ -20,18 +20,14 @@
 //                position_kd, max_reference_lead}
 #pragma once
 
-#include <optional>
 #include <string>
-#include <vector>
 
 #include "core/legged/legged_scene.h"
+#include "loader/load_result.h"
 
 namespace turf {
 
-struct LeggedSceneLoadResult {
-  std::optional<LeggedScene> scene;  // set only when there are no errors
-  std::vector<std::string> errors;
-};
+using LeggedSceneLoadResult = LoadResult<LeggedScene>;
 
 // True if the YAML file's top level says `kind: legged` (false for SSL
 // scenes, unreadable files and anything else).

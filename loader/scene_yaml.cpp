@@ -4,15 +4,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include <array>
-#include <exception>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <system_error>
+#include <optional>
 #include <utility>
 
 #include "loader/realism_yaml.h"
-#include "loader/text_file.h"
 #include "loader/yaml_reader.h"
 
 namespace turf {
@@ -24,12 +19,6 @@ using yaml::MapReader;
 
 constexpr uintmax_t kMaxFileBytes = 1 << 20;  // scene files are a few kB
 constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
-
-void ReadPhysics(MapReader m, PhysicsParams* p) {
-  m.Number("step", &p->step);
-  m.Int("solver_iterations", &p->solver_iterations);
-  m.Finish();
-}
 
 void ReadRates(MapReader m, RateParams* r) {
   m.Number("world_state_hz", &r->world_state_hz);
@@ -205,7 +194,7 @@ void ReadTeams(MapReader m, Scene* scene, std::vector<RobotSource>* sources, Err
 void ReadScene(MapReader m, Scene* s, std::vector<RobotSource>* sources, Errors* errors) {
   m.String("name", &s->name);
   m.Uint64("seed", &s->seed);
-  ReadPhysics(m.Map("physics"), &s->physics);
+  yaml::ReadPhysics(m.Map("physics"), &s->physics);
   ReadRates(m.Map("rates"), &s->rates);
   ReadField(m.Map("field"), &s->field);
   ReadBall(m.Map("ball"), s);
@@ -228,22 +217,11 @@ std::string WithRobotPath(std::string error, const std::vector<RobotSource>& sou
 
 SceneLoadResult Parse(const std::string& yaml_text) {
   SceneLoadResult result;
-  std::vector<YAML::Node> documents;
-  try {
-    documents = YAML::LoadAll(yaml_text);
-  } catch (const YAML::ParserException& e) {
-    result.errors.push_back(
-        fmt::format("malformed YAML at line {}, column {}: {}", e.mark.line + 1, e.mark.column + 1, e.msg));
-    return result;
-  }
-  if (documents.size() != 1 || !documents[0].IsMap()) {
-    result.errors.push_back(documents.size() > 1 ? fmt::format("expected one YAML document, got {}", documents.size())
-                                                 : "expected a map of scene settings at the top level");
-    return result;
-  }
+  const std::optional<YAML::Node> document = yaml::LoadSceneDocument(yaml_text, &result.errors);
+  if (!document) return result;
   Scene scene;
   std::vector<RobotSource> sources;
-  ReadScene(MapReader(documents[0], "", &result.errors), &scene, &sources, &result.errors);
+  ReadScene(MapReader(*document, "", &result.errors), &scene, &sources, &result.errors);
   for (std::string& error : ValidateScene(scene)) result.errors.push_back(WithRobotPath(std::move(error), sources));
   if (result.errors.empty()) result.scene = std::move(scene);
   return result;
@@ -252,34 +230,11 @@ SceneLoadResult Parse(const std::string& yaml_text) {
 }  // namespace
 
 SceneLoadResult ParseSceneYaml(const std::string& yaml_text) {
-  try {
-    return Parse(yaml_text);
-  } catch (const std::exception& e) {
-    // yaml-cpp may still throw on input we did not foresee; report, never crash.
-    SceneLoadResult result;
-    result.errors.push_back(fmt::format("cannot read the scene: {}", e.what()));
-    return result;
-  }
+  return yaml::ParseGuarded<SceneLoadResult>([&] { return Parse(yaml_text); });
 }
 
-namespace {}  // namespace
-
 SceneLoadResult LoadSceneFile(const std::string& path) {
-  SceneLoadResult result;
-  std::string text;
-  std::string error;
-  try {
-    if (ReadTextFile(path, kMaxFileBytes, &text, &error)) {
-      result = ParseSceneYaml(text);
-    } else {
-      result.errors.push_back(error);
-    }
-  } catch (const std::exception& e) {
-    result.scene.reset();
-    result.errors.push_back(fmt::format("cannot read: {}", e.what()));
-  }
-  for (std::string& message : result.errors) message = path + ": " + message;
-  return result;
+  return yaml::LoadFile<SceneLoadResult>(path, kMaxFileBytes, ParseSceneYaml);
 }
 
 }  // namespace turf

@@ -22,18 +22,14 @@
 //       as in loader/realism_yaml.h
 #pragma once
 
-#include <optional>
 #include <string>
-#include <vector>
 
 #include "core/scene.h"
+#include "loader/load_result.h"
 
 namespace turf {
 
-struct SceneLoadResult {
-  std::optional<Scene> scene;  // set only when there are no errors
-  std::vector<std::string> errors;
-};
+using SceneLoadResult = LoadResult<Scene>;
 
 // Parses a scene from YAML text, then runs ValidateScene. Never throws.
 SceneLoadResult ParseSceneYaml(const std::string& yaml_text);

@@ -288,4 +288,21 @@ void MapReader::Finish() {
   }
 }
 
+std::optional<YAML::Node> LoadSceneDocument(const std::string& text, Errors* errors) {
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::ParserException& e) {
+    errors->push_back(
+        fmt::format("malformed YAML at line {}, column {}: {}", e.mark.line + 1, e.mark.column + 1, e.msg));
+    return std::nullopt;
+  }
+  if (documents.size() != 1 || !documents[0].IsMap()) {
+    errors->push_back(documents.size() > 1 ? fmt::format("expected one YAML document, got {}", documents.size())
+                                           : "expected a map of scene settings at the top level");
+    return std::nullopt;
+  }
+  return documents[0];
+}
+
 }  // namespace turf::yaml

@@ -1,16 +1,21 @@
 // Reading untrusted YAML into typed values. Every problem (wrong type, not
 // finite, unknown or duplicate key) becomes an error that names the key path
-// and line; nothing here throws on bad input. Used by scene_yaml.cpp only.
+// and line; nothing here throws on bad input. Shared by the scene, legged scene
+// and realism readers, with what every kind of scene file reads the same way.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
 
 #include <cstddef>
 #include <cstdint>
+#include <exception>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "loader/text_file.h"
 
 namespace turf::yaml {
 
@@ -74,5 +79,51 @@ class MapReader {
   std::vector<Entry> entries_;
   std::set<std::string> known_;
 };
+
+// The one document of a scene file, when it is a map; otherwise nullopt and an
+// error (malformed YAML at its line and column, several documents, not a map).
+std::optional<YAML::Node> LoadSceneDocument(const std::string& text, Errors* errors);
+
+// physics: the step (s) and the solver's iterations, alike in every kind of scene.
+template <class Physics>
+void ReadPhysics(MapReader m, Physics* p) {
+  m.Number("step", &p->step);
+  m.Int("solver_iterations", &p->solver_iterations);
+  m.Finish();
+}
+
+// `parse()` (a scene's parse); an exception yaml-cpp throws on input nobody
+// foresaw becomes the error "cannot read the scene: ...": report, never crash.
+template <class Result, class Parse>
+Result ParseGuarded(Parse parse) {
+  try {
+    return parse();
+  } catch (const std::exception& e) {
+    Result result;
+    result.errors.push_back("cannot read the scene: " + std::string(e.what()));
+    return result;
+  }
+}
+
+// Reads the file at `path` (at most `max_bytes`) and `parse(text)`s it; every
+// error, a file that cannot be read included, starts with the path.
+template <class Result, class Parse>
+Result LoadFile(const std::string& path, uintmax_t max_bytes, Parse parse) {
+  Result result;
+  std::string text;
+  std::string error;
+  try {
+    if (ReadTextFile(path, max_bytes, &text, &error)) {
+      result = parse(text);
+    } else {
+      result.errors.push_back(error);
+    }
+  } catch (const std::exception& e) {
+    result.scene.reset();
+    result.errors.push_back("cannot read: " + std::string(e.what()));
+  }
+  for (std::string& message : result.errors) message = path + ": " + message;
+  return result;
+}
 
 }  // namespace turf::yaml

@@ -19,6 +19,15 @@ void Advance(World& w, double seconds) {
   for (int i = Steps(w, seconds); i > 0; --i) w.Step();
 }
 
+// A kick command for robot 0 (the chip at `chip_angle`, radians).
+RobotCommand Kick(KickKind kind, double speed, double chip_angle = 0.0) {
+  RobotCommand c;
+  c.kick = kind;
+  c.kick_speed = speed;
+  c.chip_angle = chip_angle;
+  return c;
+}
+
 RobotCommand Move(MoveKind kind, double x, double y, double omega) {
   RobotCommand c;
   c.move = kind;
@@ -146,10 +155,7 @@ void BallAtFace(World& w, double vx = 0.0) {
 TEST(Physics, FlatKickLaunchesBallAtCommandedSpeed) {
   World w(test::OneRobot());
   BallAtFace(w);
-  RobotCommand c;
-  c.kick = KickKind::kFlat;
-  c.kick_speed = 5.0;
-  ASSERT_EQ(w.SetCommand(c), InputError::kOk);
+  ASSERT_EQ(w.SetCommand(Kick(KickKind::kFlat, 5.0)), InputError::kOk);
   ASSERT_TRUE(StepUntilKick(w, 0.05));
   Advance(w, 0.01);  // off the face, sliding
   const WorldSnapshot s = w.Snapshot();
@@ -162,10 +168,7 @@ TEST(Physics, FlatKickLaunchesBallAtCommandedSpeed) {
 TEST(Physics, KickIsClampedToTheConfiguredLimit) {
   World w(test::OneRobot());
   BallAtFace(w);
-  RobotCommand c;
-  c.kick = KickKind::kFlat;
-  c.kick_speed = 12.0;
-  ASSERT_EQ(w.SetCommand(c), InputError::kOk);
+  ASSERT_EQ(w.SetCommand(Kick(KickKind::kFlat, 12.0)), InputError::kOk);
   ASSERT_TRUE(StepUntilKick(w, 0.05));
   EXPECT_NEAR(Speed(w.Snapshot().ball.velocity), w.scene().robot.kicker.max_flat_speed, 0.05);
 }
@@ -173,10 +176,7 @@ TEST(Physics, KickIsClampedToTheConfiguredLimit) {
 TEST(Physics, NoKickWithoutBallAtTheKicker) {
   World w(test::OneRobot());
   ASSERT_EQ(w.TeleportBall({{0.0, 0.3, 0.0}, {0, 0, 0}, false}), InputError::kOk);  // beside, not in front
-  RobotCommand c;
-  c.kick = KickKind::kFlat;
-  c.kick_speed = 5.0;
-  ASSERT_EQ(w.SetCommand(c), InputError::kOk);
+  ASSERT_EQ(w.SetCommand(Kick(KickKind::kFlat, 5.0)), InputError::kOk);
   Advance(w, 0.2);
   EXPECT_LT(Speed(w.Snapshot().ball.velocity), 0.01);
   EXPECT_EQ(Robot0(w.Snapshot()).kick_count, 0u);
@@ -186,11 +186,7 @@ TEST(Physics, ChipLandsWhereAngleAndSpeedPredict) {
   World w(test::OneRobot());
   BallAtFace(w);
   const double speed = 4.0, angle = 50.0 * M_PI / 180.0;
-  RobotCommand c;
-  c.kick = KickKind::kChip;
-  c.kick_speed = speed;
-  c.chip_angle = angle;
-  ASSERT_EQ(w.SetCommand(c), InputError::kOk);
+  ASSERT_EQ(w.SetCommand(Kick(KickKind::kChip, speed, angle)), InputError::kOk);
   const double x0 = w.Snapshot().ball.position.x;
   const double r = w.scene().ball.radius;
   double apex = 0.0, land_x = NAN;

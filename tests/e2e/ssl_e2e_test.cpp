@@ -6,11 +6,29 @@
 namespace turf::test {
 namespace {
 
-TEST(SslEndToEnd, GrsimCommandMovesRobotAtCommandedSpeedInVision) {
+// Every test: turf-sim and the SSL bridges running, the vision stream seen,
+// and the team's socket.
+class SslEndToEnd : public ::testing::Test {
+ protected:
+  void SetUp() override { WaitForVision(m, v); }
+
   Match m;
-  VisionClient v(m.vision_port);
-  WaitForVision(m, v);
+  VisionClient v{m.vision_port};
   Udp team;
+};
+
+// The ball's x (m) when it rests against the front face of a robot at `robot_x` facing +x.
+double BallAtFaceX(double robot_x) { return robot_x + 0.08 + 0.0215 + 0.002; }
+
+// Places blue robot `id` at (x, y) facing +x with the ball resting against its
+// front face; true once vision shows both there.
+bool PlaceBlueWithBall(Udp& team, Match& m, VisionClient& v, int id, double x, double y) {
+  const double ball_x = BallAtFaceX(x);
+  return PlaceAndWait(team, GrsimPlace(false, id, x, y, 0.0, ball_x, y), m.grsim_port, v,
+                      [&](const VisionClient& c) { return RobotSeenAt(c, 0, id, x, y) && BallSeenAt(c, ball_x, y); });
+}
+
+TEST_F(SslEndToEnd, GrsimCommandMovesRobotAtCommandedSpeedInVision) {
   // A free lane of the kick-off formation: y = 2 m, from x = -3 m towards the halfway line.
   ASSERT_TRUE(PlaceAndWait(team, GrsimPlace(false, 3, -3.0, 2.0, 0.0), m.grsim_port, v,
                            [](const VisionClient& c) { return RobotSeenAt(c, 0, 3, -3.0, 2.0); }));
@@ -26,11 +44,7 @@ TEST(SslEndToEnd, GrsimCommandMovesRobotAtCommandedSpeedInVision) {
   EXPECT_EQ(v.geometry->field().field_length(), 12000);
 }
 
-TEST(SslEndToEnd, ReplacementPlacesBallAndRobots) {
-  Match m;
-  VisionClient v(m.vision_port);
-  WaitForVision(m, v);
-  Udp team;
+TEST_F(SslEndToEnd, ReplacementPlacesBallAndRobots) {
   ASSERT_TRUE(
       PlaceAndWait(team, GrsimPlace(true, 4, 2.0, -1.5, 90.0, 1.0, 2.0), m.grsim_port, v,
                    [](const VisionClient& c) { return RobotSeenAt(c, 1, 4, 2.0, -1.5) && BallSeenAt(c, 1.0, 2.0); }));
@@ -43,16 +57,10 @@ TEST(SslEndToEnd, ReplacementPlacesBallAndRobots) {
   EXPECT_NEAR(v.ball.y, 2000.0, 5.0);
 }
 
-TEST(SslEndToEnd, KickGivesTheBallTheCommandedSpeed) {
-  Match m;
-  VisionClient v(m.vision_port);
-  WaitForVision(m, v);
-  Udp team;
+TEST_F(SslEndToEnd, KickGivesTheBallTheCommandedSpeed) {
   // Robot at (1, 0) facing +x, ball resting against its front face.
-  const double ball_x = 1.0 + 0.08 + 0.0215 + 0.002;
-  ASSERT_TRUE(PlaceAndWait(
-      team, GrsimPlace(false, 5, 1.0, 0.0, 0.0, ball_x, 0.0), m.grsim_port, v,
-      [&](const VisionClient& c) { return RobotSeenAt(c, 0, 5, 1.0, 0.0) && BallSeenAt(c, ball_x, 0.0); }));
+  const double ball_x = BallAtFaceX(1.0);
+  ASSERT_TRUE(PlaceBlueWithBall(team, m, v, 5, 1.0, 0.0));
   // One kick command, then plain commands as team software sends them, until
   // the ball has flown 0.6 m.
   v.ball_track.clear();
@@ -76,19 +84,12 @@ TEST(SslEndToEnd, KickGivesTheBallTheCommandedSpeed) {
   EXPECT_NEAR(v.ball.y, 0.0, 20.0);
 }
 
-TEST(SslEndToEnd, StatusPacketsArriveOnTheTeamsPort) {
-  Match m;
-  VisionClient v(m.vision_port);
-  WaitForVision(m, v);
-  Udp team;
+TEST_F(SslEndToEnd, StatusPacketsArriveOnTheTeamsPort) {
   Udp blue_status(m.blue_status_port);
   Udp yellow_status(m.yellow_status_port);
   // The status goes to the address that sent the team's commands: send some first.
   ASSERT_TRUE(KeepForSim(team, GrsimMove(false, 6, 0.0, 0.0, 0.0), m.grsim_port, v, 0.2));
-  const double ball_x = -1.0 + 0.08 + 0.0215 + 0.002;
-  ASSERT_TRUE(PlaceAndWait(
-      team, GrsimPlace(false, 6, -1.0, -1.0, 0.0, ball_x, -1.0), m.grsim_port, v,
-      [&](const VisionClient& c) { return RobotSeenAt(c, 0, 6, -1.0, -1.0) && BallSeenAt(c, ball_x, -1.0); }));
+  ASSERT_TRUE(PlaceBlueWithBall(team, m, v, 6, -1.0, -1.0));
   bool infrared = false;
   const auto end = Clock::now() + 15s;
   while (Clock::now() < end && !infrared) {
@@ -104,11 +105,7 @@ TEST(SslEndToEnd, StatusPacketsArriveOnTheTeamsPort) {
   EXPECT_FALSE(yellow_status.Receive().has_value());
 }
 
-TEST(SslEndToEnd, SimulationProtocolMovesOnlyItsOwnTeam) {
-  Match m;
-  VisionClient v(m.vision_port);
-  WaitForVision(m, v);
-  Udp team;
+TEST_F(SslEndToEnd, SimulationProtocolMovesOnlyItsOwnTeam) {
   // Teleport blue 2 and yellow 2 through the control port.
   team::simulation::SimulatorCommand cmd;
   for (auto [team_id, y] : {std::pair{team::simulation::BLUE, 2.0f}, std::pair{team::simulation::YELLOW, -2.0f}}) {
@@ -153,11 +150,7 @@ TEST(SslEndToEnd, SimulationProtocolMovesOnlyItsOwnTeam) {
   EXPECT_TRUE(feedback);
 }
 
-TEST(SslEndToEnd, ErForceRealismKnobsChangeTheVisionStream) {
-  Match m;
-  VisionClient v(m.vision_port);
-  WaitForVision(m, v);
-  Udp team;
+TEST_F(SslEndToEnd, ErForceRealismKnobsChangeTheVisionStream) {
   team::simulation::RealismConfigErForce knobs;
   knobs.set_vision_processing_time(20'000'000);  // ns
   knobs.set_stddev_robot_p(0.01f);               // m
@@ -206,11 +199,7 @@ TEST(SslEndToEnd, ErForceRealismKnobsChangeTheVisionStream) {
   EXPECT_GT(std::sqrt(ss / xs.size()), 3.0);  // mm
 }
 
-TEST(SslEndToEnd, BadDatagramsChangeNothing) {
-  Match m;
-  VisionClient v(m.vision_port);
-  WaitForVision(m, v);
-  Udp team;
+TEST_F(SslEndToEnd, BadDatagramsChangeNothing) {
   ASSERT_TRUE(PlaceAndWait(team, GrsimPlace(false, 7, 0.5, 4.0, 0.0), m.grsim_port, v,  // a free lane
                            [](const VisionClient& c) { return RobotSeenAt(c, 0, 7, 0.5, 4.0); }));
   const auto before = v.Robot(0, 7);

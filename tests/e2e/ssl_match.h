@@ -23,10 +23,11 @@
 #include <thread>
 #include <vector>
 
-#include "tests/e2e/child_process.h"
 #include "tests/e2e/proto/team_grsim.pb.h"
 #include "tests/e2e/proto/team_simulation.pb.h"
 #include "tests/e2e/proto/team_vision.pb.h"
+#include "tests/support/process.h"
+#include "tests/support/team_packets.h"
 #include "tests/test_domain.h"
 
 namespace turf::test {
@@ -141,35 +142,35 @@ class Match {
   explicit Match(const MatchOptions& options = {}) {
     domain = TestDomain(g_match);
     prefix = "e2e" + std::to_string(getpid()) + "_" + std::to_string(g_match++);
-    grsim_port = FreeUdpPort();
-    vision_port = FreeUdpPort();
-    blue_status_port = FreeUdpPort();
-    yellow_status_port = FreeUdpPort();
-    control_port = FreeUdpPort();
-    blue_port = FreeUdpPort();
-    yellow_port = FreeUdpPort();
-    sync_port = FreeUdpPort();
+    grsim_port = FreePort();
+    vision_port = FreePort();
+    blue_status_port = FreePort();
+    yellow_status_port = FreePort();
+    control_port = FreePort();
+    blue_port = FreePort();
+    yellow_port = FreePort();
+    sync_port = FreePort();
     const std::vector<std::string> dds = {"--domain", std::to_string(domain), "--prefix", prefix};
-    sim = std::make_unique<ChildProcess>(prefix + "_sim", Args("participants/sim/turf-sim", SimArgs(options), dds));
-    grsim = std::make_unique<ChildProcess>(
+    sim = std::make_unique<Process>(prefix + "_sim", Args("participants/sim/turf-sim", SimArgs(options), dds));
+    grsim = std::make_unique<Process>(
         prefix + "_grsim",
         Args("participants/grsim_bridge/turf-grsim-bridge",
              {"--listen", "127.0.0.1", "--port", std::to_string(grsim_port), "--blue-status-port",
               std::to_string(blue_status_port), "--yellow-status-port", std::to_string(yellow_status_port)},
              dds));
-    vision = std::make_unique<ChildProcess>(
+    vision = std::make_unique<Process>(
         prefix + "_vision", Args("participants/vision_bridge/turf-vision-bridge",
                                  // Simulation-time stamps: speeds measured from the stream stay
                                  // right when a loaded machine runs the simulation slower than real time.
                                  {"--address", "127.0.0.1", "--port", std::to_string(vision_port), "--geometry-every",
                                   "30", "--clock", "sim"},
                                  dds));
-    simproto = std::make_unique<ChildProcess>(
-        prefix + "_simproto", Args("participants/simproto_bridge/turf-simproto-bridge",
-                                   {"--listen", "127.0.0.1", "--control-port", std::to_string(control_port),
-                                    "--blue-port", std::to_string(blue_port), "--yellow-port",
-                                    std::to_string(yellow_port), "--sync-port", std::to_string(sync_port)},
-                                   dds));
+    simproto = std::make_unique<Process>(prefix + "_simproto",
+                                         Args("participants/simproto_bridge/turf-simproto-bridge",
+                                              {"--listen", "127.0.0.1", "--control-port", std::to_string(control_port),
+                                               "--blue-port", std::to_string(blue_port), "--yellow-port",
+                                               std::to_string(yellow_port), "--sync-port", std::to_string(sync_port)},
+                                              dds));
   }
   ~Match() {
     // Each process must shut down cleanly on SIGTERM.
@@ -183,7 +184,7 @@ class Match {
   int domain;
   std::string prefix;
   int grsim_port, vision_port, blue_status_port, yellow_status_port, control_port, blue_port, yellow_port, sync_port;
-  std::unique_ptr<ChildProcess> sim, grsim, vision, simproto;
+  std::unique_ptr<Process> sim, grsim, vision, simproto;
 
  private:
   static std::vector<std::string> SimArgs(const MatchOptions& options) {
@@ -194,48 +195,11 @@ class Match {
   }
   static std::vector<std::string> Args(const std::string& bin, std::vector<std::string> args,
                                        const std::vector<std::string>& dds) {
-    args.insert(args.begin(), BuiltBinary(bin));
+    args.insert(args.begin(), Built(bin));
     args.insert(args.end(), dds.begin(), dds.end());
     return args;
   }
 };
-
-inline std::string GrsimMove(bool yellow, int id, double forward, double left, double angular, double kick = 0) {
-  team::grsim::grSim_Packet p;
-  auto* c = p.mutable_commands();
-  c->set_timestamp(0);
-  c->set_isteamyellow(yellow);
-  auto* r = c->add_robot_commands();
-  r->set_id(id);
-  r->set_kickspeedx(static_cast<float>(kick));
-  r->set_kickspeedz(0);
-  r->set_veltangent(static_cast<float>(forward));
-  r->set_velnormal(static_cast<float>(left));
-  r->set_velangular(static_cast<float>(angular));
-  r->set_spinner(false);
-  r->set_wheelsspeed(false);
-  return p.SerializeAsString();
-}
-
-inline std::string GrsimPlace(bool yellow, int id, double x, double y, double dir_deg,
-                              std::optional<double> ball_x = {}, double ball_y = 0) {
-  team::grsim::grSim_Packet p;
-  auto* rep = p.mutable_replacement();
-  auto* r = rep->add_robots();
-  r->set_x(x);
-  r->set_y(y);
-  r->set_dir(dir_deg);
-  r->set_id(id);
-  r->set_yellowteam(yellow);
-  r->set_turnon(true);
-  if (ball_x) {
-    rep->mutable_ball()->set_x(*ball_x);
-    rep->mutable_ball()->set_y(ball_y);
-    rep->mutable_ball()->set_vx(0);
-    rep->mutable_ball()->set_vy(0);
-  }
-  return p.SerializeAsString();
-}
 
 inline std::string SimprotoMove(int id, double forward) {
   team::simulation::RobotControl rc;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "tests/multihost/support/netns.h"
-#include "tests/multihost/support/process.h"
+#include "tests/support/process.h"
 
 namespace turf::test {
 namespace {

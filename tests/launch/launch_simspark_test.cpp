@@ -16,27 +16,14 @@
 #include <string>
 #include <thread>
 
-#include "tests/multihost/support/process.h"
 #include "tests/simspark/agent_client.h"
+#include "tests/support/process.h"
 #include "tests/test_domain.h"
 
 namespace turf::test {
 namespace {
 
 using namespace std::chrono_literals;
-
-// A TCP port that was free a moment ago on 127.0.0.1 (FreePort() probes UDP).
-uint16_t FreeTcpPort() {
-  const int fd = socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof(addr));
-  socklen_t len = sizeof(addr);
-  getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len);
-  close(fd);
-  return ntohs(addr.sin_port);
-}
 
 // The pid `turf` logged for a process's start.
 pid_t ChildPid(const Process& turf, const std::string& process) {
@@ -49,7 +36,7 @@ pid_t ChildPid(const Process& turf, const std::string& process) {
 bool Alive(pid_t pid) { return pid > 0 && kill(pid, 0) == 0; }
 
 TEST(LaunchSimSpark, AnAgentGetsPerceptionsAndCtrlCStopsBoth) {
-  const uint16_t agent_port = FreeTcpPort(), monitor_port = FreeTcpPort();
+  const uint16_t agent_port = FreePort(SOCK_STREAM), monitor_port = FreePort(SOCK_STREAM);
   const std::string prefix = "ls" + std::to_string(getpid());
   Process turf(
       "launch_simspark",

@@ -15,8 +15,8 @@
 #include <thread>
 #include <vector>
 
-#include "tests/multihost/support/process.h"
 #include "tests/multihost/support/ssl_client.h"
+#include "tests/support/process.h"
 #include "tests/test_domain.h"
 
 namespace turf::test {
@@ -54,6 +54,15 @@ struct Launch {
   std::string path;
   std::unique_ptr<Process> turf;
 };
+
+// The process exits within `timeout` with exit status `code`.
+::testing::AssertionResult ExitsWithin(Process& p, std::chrono::milliseconds timeout, int code) {
+  const auto status = p.Wait(timeout);
+  if (!status) return ::testing::AssertionFailure() << "still running\n" << p.Log();
+  if (!WIFEXITED(*status) || WEXITSTATUS(*status) != code)
+    return ::testing::AssertionFailure() << "wait status " << *status << ", expected exit " << code << "\n" << p.Log();
+  return ::testing::AssertionSuccess();
+}
 
 bool Alive(pid_t pid) { return pid > 0 && kill(pid, 0) == 0; }
 
@@ -96,9 +105,7 @@ TEST(LaunchSupervisor, RestartsACrashedBridgeAndStopsCleanlyOnCtrlC) {
 
   const pid_t new_vision = launch.ChildPid("vision");
   launch.turf->Signal(SIGINT);
-  const auto status = launch.turf->Wait(10s);
-  ASSERT_TRUE(status.has_value()) << launch.turf->Log();
-  EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << launch.turf->Log();
+  ASSERT_TRUE(ExitsWithin(*launch.turf, 10s, 0));
   for (pid_t pid : {sim, grsim, new_vision}) EXPECT_FALSE(Alive(pid)) << pid;
   EXPECT_NE(launch.turf->Log().find("sim stopped (exit status 0)"), std::string::npos);
 }
@@ -108,9 +115,7 @@ TEST(LaunchSupervisor, GivesUpWhenAProcessKeepsCrashing) {
   Launch launch("launch_crashloop", TestDomain(), "lc" + std::to_string(getpid()),
                 "restart: {max_restarts: 2, backoff_initial: 0.1, backoff_max: 0.2}\n",
                 {"--set", "vision.address=not-an-address"});
-  const auto status = launch.turf->Wait(20s);
-  ASSERT_TRUE(status.has_value()) << launch.turf->Log();
-  EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 1) << launch.turf->Log();
+  ASSERT_TRUE(ExitsWithin(*launch.turf, 20s, 1));
   const std::string log = launch.turf->Log();
   EXPECT_NE(log.find("vision crashed (exit status 2"), std::string::npos) << log;
   EXPECT_NE(log.find("restart 2 of 2 in 0.20 s"), std::string::npos) << log;
@@ -120,9 +125,7 @@ TEST(LaunchSupervisor, GivesUpWhenAProcessKeepsCrashing) {
 
 TEST(LaunchSupervisor, ACleanExitEndsTheLaunch) {
   Launch launch("launch_duration", TestDomain(), "ld" + std::to_string(getpid()), "sim: {speed: 4, duration: 2}\n");
-  const auto status = launch.turf->Wait(20s);
-  ASSERT_TRUE(status.has_value()) << launch.turf->Log();
-  EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << launch.turf->Log();
+  ASSERT_TRUE(ExitsWithin(*launch.turf, 20s, 0));
   const std::string log = launch.turf->Log();
   EXPECT_NE(log.find("sim exited cleanly"), std::string::npos) << log;
   EXPECT_NE(log.find("vision stopped (exit status 0)"), std::string::npos) << log;

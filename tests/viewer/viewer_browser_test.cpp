@@ -13,8 +13,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "tests/e2e/child_process.h"
 #include "tests/sim/sim_harness.h"
+#include "tests/support/process.h"
 #include "tests/viewer/web_client.h"
 #include "tests/viewer/webdriver.h"
 
@@ -128,16 +128,16 @@ class ViewerBrowser : public ::testing::Test {
     dds_.prefix = "browser" + std::to_string(getpid()) + "_" + std::to_string(++launches_);
     viewer_port_ = FreeTcpPort();
     const std::string domain = std::to_string(dds_.domain);
-    sim_ = std::make_unique<ChildProcess>(
-        "viewer_sim", std::vector<std::string>{BuiltBinary("participants/sim/turf-sim"), "--scene",
+    sim_ = std::make_unique<Process>(
+        "viewer_sim", std::vector<std::string>{Built("participants/sim/turf-sim"), "--scene",
                                                TURF_SOURCE_DIR "/configs/scenes/" + scene, "--domain", domain,
                                                "--prefix", dds_.prefix, "--qos", dds_.qos_file});
-    viewer_ = std::make_unique<ChildProcess>(
-        "viewer",
-        std::vector<std::string>{BuiltBinary("participants/viewer/turf-viewer"), "--port", std::to_string(viewer_port_),
-                                 "--domain", domain, "--prefix", dds_.prefix, "--qos", dds_.qos_file});
+    viewer_ =
+        std::make_unique<Process>("viewer", std::vector<std::string>{Built("participants/viewer/turf-viewer"), "--port",
+                                                                     std::to_string(viewer_port_), "--domain", domain,
+                                                                     "--prefix", dds_.prefix, "--qos", dds_.qos_file});
     const int driver_port = FreeTcpPort();
-    driver_process_ = std::make_unique<ChildProcess>(
+    driver_process_ = std::make_unique<Process>(
         "chromedriver", std::vector<std::string>{chromedriver_, "--port=" + std::to_string(driver_port)});
     profile_ = TURF_BINARY_DIR "/tests/viewer/chrome_profile_" + std::to_string(getpid());
     std::filesystem::remove_all(profile_);
@@ -209,7 +209,7 @@ class ViewerBrowser : public ::testing::Test {
   std::string chromium_, chromedriver_, profile_;
   dds::ParticipantOptions dds_;
   int viewer_port_ = 0;
-  std::unique_ptr<ChildProcess> sim_, viewer_, driver_process_;
+  std::unique_ptr<Process> sim_, viewer_, driver_process_;
   std::unique_ptr<Client> client_;
   std::unique_ptr<WebDriver> driver_;
 };

@@ -7,6 +7,8 @@
 #include <turf/idl/SslVision.h>
 #include <turf/idl/WorldState.h>
 
+#include "tests/support/idl_values.h"
+
 namespace turf::test {
 
 // Division B: 9 x 6 m, boundary 0.3 m, ball 21.5 mm, robot 90 mm, 6 ids a team.
@@ -39,29 +41,18 @@ inline idl::SslField DivBField() {
 }
 
 inline idl::RobotState Robot(idl::Team team, int id, double x, double y, double yaw, bool on = true) {
-  idl::RobotState r;
-  r.team(team);
-  r.id(static_cast<uint8_t>(id));
-  r.on_field(on);
-  r.position().x(x);
-  r.position().y(y);
-  r.yaw(yaw);
+  idl::RobotState r = RobotAt(team, id, x, y, yaw, on);
   r.orientation().w(1.0);
   return r;
 }
 
 // t = 1.5 s: ball in flight at (1, -0.5, 0.3), blue 0 and yellow 3 on the field, yellow 5 off.
 inline idl::WorldState SampleState() {
-  idl::WorldState s;
-  s.sim_time_ns(1'500'000'000);
-  s.frame(750);
-  s.ball().position().x(1.0);
-  s.ball().position().y(-0.5);
-  s.ball().position().z(0.3);
+  idl::WorldState s =
+      StateAt(1'500'000'000, 750, V3(1.0, -0.5, 0.3),
+              {Robot(idl::TEAM_BLUE, 0, -1.25, 0.5, 0.7853981633974483), Robot(idl::TEAM_YELLOW, 3, 2.0, -1.0, 3.14159),
+               Robot(idl::TEAM_YELLOW, 5, 0.0, 0.0, 0.0, false)});
   s.ball().velocity().x(2.0);
-  s.robots().push_back(Robot(idl::TEAM_BLUE, 0, -1.25, 0.5, 0.7853981633974483));
-  s.robots().push_back(Robot(idl::TEAM_YELLOW, 3, 2.0, -1.0, 3.14159));
-  s.robots().push_back(Robot(idl::TEAM_YELLOW, 5, 0.0, 0.0, 0.0, false));
   return s;
 }
 

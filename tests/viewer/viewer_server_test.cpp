@@ -11,6 +11,7 @@
 
 #include "participants/viewer/viewer_node.h"
 #include "tests/sim/sim_harness.h"
+#include "tests/support/in_process.h"
 #include "tests/viewer/web_client.h"
 
 namespace turf::test {
@@ -19,31 +20,27 @@ namespace {
 using nlohmann::json;
 namespace http = boost::beast::http;
 
-class ViewerUnderTest {
+class ViewerUnderTest : public OnThread<ViewerNode> {
  public:
-  explicit ViewerUnderTest(const dds::ParticipantOptions& dds) {
-    ViewerOptions o;
-    o.domain = dds.domain;
-    o.prefix = dds.prefix;
-    o.qos_file = dds.qos_file;
-    o.port = 0;
-    o.web_root = TURF_SOURCE_DIR "/participants/viewer/web";
-    node_ = std::make_unique<ViewerNode>(o);
-    thread_ = std::thread([this] { node_->Run([this] { return stop_.load(); }); });
-  }
-  ~ViewerUnderTest() {
-    stop_ = true;
-    thread_.join();
-  }
-  ViewerNode& node() { return *node_; }
-  int port() const { return node_->port(); }
-  std::string origin() const { return "http://127.0.0.1:" + std::to_string(port()); }
+  explicit ViewerUnderTest(const dds::ParticipantOptions& dds) : OnThread(std::make_unique<ViewerNode>(Options(dds))) {}
+  int port() { return node().port(); }
+  std::string origin() { return "http://127.0.0.1:" + std::to_string(port()); }
 
  private:
-  std::unique_ptr<ViewerNode> node_;
-  std::atomic<bool> stop_{false};
-  std::thread thread_;
+  static ViewerOptions Options(const dds::ParticipantOptions& dds) {
+    auto o = OnDds<ViewerOptions>(dds);
+    o.port = 0;
+    o.web_root = TURF_SOURCE_DIR "/participants/viewer/web";
+    return o;
+  }
 };
+
+// Connects a page's WebSocket to the viewer, as a browser on its page would.
+::testing::AssertionResult Connected(WsClient& ws, ViewerUnderTest& viewer) {
+  std::string error;
+  if (ws.Connect(viewer.port(), viewer.origin(), &error)) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << error;
+}
 
 // Reads until a message of `type` satisfying `also` arrives; returns it.
 std::optional<json> ReadType(
@@ -83,6 +80,11 @@ struct Rig {
   bool Ready() {
     return client.WaitMatched() && Eventually([this] { return viewer.node().Stats().control_matched; });
   }
+  // Ready(), and a page's WebSocket connected to the viewer.
+  ::testing::AssertionResult ReadyAndConnected(WsClient& ws) {
+    if (!Ready()) return ::testing::AssertionFailure() << "turf-sim, the client and the viewer did not all match";
+    return Connected(ws, viewer);
+  }
 };
 
 TEST(ViewerServer, ServesThePageFilesAndNothingElse) {
@@ -110,10 +112,8 @@ TEST(ViewerServer, ServesThePageFilesAndNothingElse) {
 
 TEST(ViewerServer, StreamsTheWorldAndTeleportsTheBall) {
   Rig rig;
-  ASSERT_TRUE(rig.Ready());
   WsClient ws;
-  std::string error;
-  ASSERT_TRUE(ws.Connect(rig.viewer.port(), rig.viewer.origin(), &error)) << error;
+  ASSERT_TRUE(rig.ReadyAndConnected(ws));
   ASSERT_TRUE(ReadType(ws, "hello"));
   const auto field = ReadType(ws, "field");
   ASSERT_TRUE(field);
@@ -147,10 +147,8 @@ TEST(ViewerServer, StreamsTheWorldAndTeleportsTheBall) {
 
 TEST(ViewerServer, PauseStepAndResumeFromThePage) {
   Rig rig;
-  ASSERT_TRUE(rig.Ready());
   WsClient ws;
-  std::string error;
-  ASSERT_TRUE(ws.Connect(rig.viewer.port(), rig.viewer.origin(), &error)) << error;
+  ASSERT_TRUE(rig.ReadyAndConnected(ws));
   ASSERT_TRUE(ws.Send(R"({"op":"pause"})"));
   // The reply gives the simulation time at which it paused; the state of that
   // time follows, and then nothing later.
@@ -190,9 +188,8 @@ TEST(ViewerServer, EachPageSeesOnlyTheRepliesToItsOwnRequests) {
   Rig rig;
   ASSERT_TRUE(rig.Ready());
   WsClient a, b;
-  std::string error;
-  ASSERT_TRUE(a.Connect(rig.viewer.port(), rig.viewer.origin(), &error)) << error;
-  ASSERT_TRUE(b.Connect(rig.viewer.port(), rig.viewer.origin(), &error)) << error;
+  ASSERT_TRUE(Connected(a, rig.viewer));
+  ASSERT_TRUE(Connected(b, rig.viewer));
   ASSERT_TRUE(ReadType(a, "state"));
   ASSERT_TRUE(ReadType(b, "state"));
   // Page A steps a running simulation: turf-sim refuses, and A is told why.
@@ -222,10 +219,8 @@ TEST(ViewerServer, EachPageSeesOnlyTheRepliesToItsOwnRequests) {
 
 TEST(ViewerServer, ThrowsTheBall) {
   Rig rig;
-  ASSERT_TRUE(rig.Ready());
   WsClient ws;
-  std::string error;
-  ASSERT_TRUE(ws.Connect(rig.viewer.port(), rig.viewer.origin(), &error)) << error;
+  ASSERT_TRUE(rig.ReadyAndConnected(ws));
   ASSERT_TRUE(ReadType(ws, "field"));
   ASSERT_TRUE(ws.Send(R"({"op":"throw_ball","x":-1,"y":0.5,"vx":3,"vy":-1})"));
   // It rolls off in the thrown direction, slowing on the carpet.
@@ -244,10 +239,8 @@ TEST(ViewerServer, ThrowsTheBall) {
 
 TEST(ViewerServer, RefusesHostileMessagesAndMovesNothing) {
   Rig rig;
-  ASSERT_TRUE(rig.Ready());
   WsClient ws;
-  std::string error;
-  ASSERT_TRUE(ws.Connect(rig.viewer.port(), rig.viewer.origin(), &error)) << error;
+  ASSERT_TRUE(rig.ReadyAndConnected(ws));
   ASSERT_TRUE(ReadType(ws, "field"));
   rig.client.Poll();
   const idl::WorldState before = rig.client.state();
@@ -293,7 +286,7 @@ TEST(ViewerServer, RefusesHostileMessagesAndMovesNothing) {
   EXPECT_FALSE(ws.ReadUntil([](const std::string&) { return false; }, 2s));
   EXPECT_TRUE(Eventually([&] { return v.Rejected("page.too_large") == 2; }));
   WsClient again;
-  ASSERT_TRUE(again.Connect(rig.viewer.port(), rig.viewer.origin(), &error)) << error;
+  ASSERT_TRUE(Connected(again, rig.viewer));
   EXPECT_TRUE(ReadType(again, "state"));
 
   // Nothing moved: the ball and every robot are where they were.
@@ -314,8 +307,7 @@ TEST(ViewerServer, WithoutTurfSimActionsAreRefusedNotLost) {
   const dds::ParticipantOptions dds = UniqueDds("viewer-alone");
   ViewerUnderTest viewer(dds);
   WsClient ws;
-  std::string error;
-  ASSERT_TRUE(ws.Connect(viewer.port(), viewer.origin(), &error)) << error;
+  ASSERT_TRUE(Connected(ws, viewer));
   ASSERT_TRUE(ReadType(ws, "hello"));
   ASSERT_TRUE(ws.Send(R"({"op":"pause"})"));
   const auto refused = ReadType(ws, "refused");

@@ -94,19 +94,15 @@ bool WsClient::Connect(int port, const std::string& origin, std::string* error) 
   return true;
 }
 
-bool WsClient::Send(const std::string& text) {
-  if (!open_) return false;
-  beast::error_code ec;
-  ws_->text(true);
-  ws_->write(asio::buffer(text), ec);
-  return !ec;
-}
+bool WsClient::Send(const std::string& text) { return Write(text, false); }
 
-bool WsClient::SendBinary(const std::string& bytes) {
+bool WsClient::SendBinary(const std::string& bytes) { return Write(bytes, true); }
+
+bool WsClient::Write(const std::string& message, bool binary) {
   if (!open_) return false;
   beast::error_code ec;
-  ws_->binary(true);
-  ws_->write(asio::buffer(bytes), ec);
+  ws_->binary(binary);
+  ws_->write(asio::buffer(message), ec);
   return !ec;
 }
 

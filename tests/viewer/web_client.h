@@ -48,6 +48,7 @@ class WsClient {
   bool open() const { return open_; }
 
  private:
+  bool Write(const std::string& message, bool binary);  // one text or binary frame
   boost::asio::io_context ioc_;
   std::unique_ptr<boost::beast::websocket::stream<boost::beast::tcp_stream>> ws_;
   boost::beast::flat_buffer buffer_;

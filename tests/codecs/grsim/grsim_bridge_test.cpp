@@ -18,82 +18,50 @@
 #include "participants/common/udp.h"
 #include "participants/grsim_bridge/grsim_bridge.h"
 #include "participants/sim/sim_node.h"
+#include "tests/codecs/grsim/grsim_messages.h"
 #include "tests/core/test_scenes.h"
+#include "tests/support/in_process.h"
 
 namespace turf {
 namespace {
 
 namespace wire = turf::wire::grsim;
+using test::GrsimCommands;
+using test::GrsimRobot;
 using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
+using test::FindRobot;
 
 constexpr double kFace = 0.08;          // robot centre to its flat front
 constexpr double kBallRadius = 0.0215;  // m
 
-int g_test_counter = 0;
-
-// Domains 10..99 keep Fast DDS's ports (7400 + 250 * domain + ...) below the
-// ephemeral range (32768+): an ephemeral socket of another process on the
-// discovery port would make discovery fail.
-dds::ParticipantOptions UniqueDds() {
-  ++g_test_counter;
-  dds::ParticipantOptions o;
-  o.domain = turf::test::TestDomain();
-  o.prefix = "grsim" + std::to_string(getpid()) + "_" + std::to_string(g_test_counter);
-  o.name = "observer";
-  o.qos_file = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
-  return o;
-}
-
-UdpSocket BindLoopback() {
-  std::string error;
-  std::optional<UdpSocket> s = UdpSocket::Bind("127.0.0.1", 0, false, &error);
-  if (!s) throw std::runtime_error(error);
-  return std::move(*s);
-}
-
 // turf-sim (scaled x2) and the bridge, each on its thread.
 class Stack {
  public:
-  Stack(Scene scene, const dds::ParticipantOptions& dds, uint16_t blue_status_port, uint16_t yellow_status_port) {
-    SimNodeOptions s;
-    s.domain = dds.domain;
-    s.prefix = dds.prefix;
-    s.qos_file = dds.qos_file;
-    s.mode = TimeMode::kScaled;
-    s.speed = 2.0;
-    sim_ = std::make_unique<SimNode>(std::move(scene), s);
-    GrsimBridgeOptions b;
-    b.domain = dds.domain;
-    b.prefix = dds.prefix;
-    b.qos_file = dds.qos_file;
+  Stack(Scene scene, const dds::ParticipantOptions& dds, uint16_t blue_status_port, uint16_t yellow_status_port)
+      : sim_(std::move(scene), dds, TimeMode::kScaled, 2.0),
+        bridge_(MakeBridge(dds, blue_status_port, yellow_status_port)) {}
+  SimNode& sim() { return sim_.node(); }
+  GrsimBridge& bridge() { return bridge_.node(); }
+
+ private:
+  static std::unique_ptr<GrsimBridge> MakeBridge(const dds::ParticipantOptions& dds, uint16_t blue_status_port,
+                                                 uint16_t yellow_status_port) {
+    auto b = test::OnDds<GrsimBridgeOptions>(dds);
     b.listen_ip = "127.0.0.1";
     b.port = 0;  // any free port
     b.blue_status_port = blue_status_port;
     b.yellow_status_port = yellow_status_port;
-    bridge_ = std::make_unique<GrsimBridge>(b);
-    sim_thread_ = std::thread([this] { sim_->Run([this] { return stop_.load(); }); });
-    bridge_thread_ = std::thread([this] { bridge_->Run([this] { return stop_.load(); }); });
+    return std::make_unique<GrsimBridge>(b);
   }
-  ~Stack() {
-    stop_ = true;
-    bridge_thread_.join();
-    sim_thread_.join();
-  }
-  SimNode& sim() { return *sim_; }
-  GrsimBridge& bridge() { return *bridge_; }
-
- private:
-  std::unique_ptr<SimNode> sim_;
-  std::unique_ptr<GrsimBridge> bridge_;
-  std::atomic<bool> stop_{false};
-  std::thread sim_thread_, bridge_thread_;
+  test::SimUnderTest sim_;
+  test::OnThread<GrsimBridge> bridge_;
 };
 
 // A grSim client: sends packets to the bridge, receives robot status.
 class Team {
  public:
-  Team() : out_(BindLoopback()), blue_status_(BindLoopback()), yellow_status_(BindLoopback()) {}
+  Team() : out_(test::BindLoopback()), blue_status_(test::BindLoopback()), yellow_status_(test::BindLoopback()) {}
   uint16_t blue_status_port() const { return blue_status_.LocalPort(); }
   uint16_t yellow_status_port() const { return yellow_status_.LocalPort(); }
   void Connect(uint16_t bridge_port) { to_ = *MakeEndpoint("127.0.0.1", bridge_port); }
@@ -159,7 +127,7 @@ class Observer {
 // Everything a test needs, started and matched.
 struct Fixture {
   explicit Fixture(Scene scene)
-      : dds(UniqueDds()),
+      : dds(test::UniqueDds("observer")),
         stack(std::move(scene), dds, team.blue_status_port(), team.yellow_status_port()),
         observer(dds) {
     team.Connect(stack.bridge().port());
@@ -184,27 +152,6 @@ struct Fixture {
   Observer observer;
 };
 
-wire::grSim_Robot_Command Robot(uint32_t id, float forward = 0, float left = 0, float angular = 0) {
-  wire::grSim_Robot_Command c;
-  c.set_id(id);
-  c.set_kickspeedx(0);
-  c.set_kickspeedz(0);
-  c.set_veltangent(forward);
-  c.set_velnormal(left);
-  c.set_velangular(angular);
-  c.set_spinner(false);
-  c.set_wheelsspeed(false);
-  return c;
-}
-
-wire::grSim_Packet Commands(bool yellow, const std::vector<wire::grSim_Robot_Command>& robots) {
-  wire::grSim_Packet p;
-  p.mutable_commands()->set_timestamp(0.0);
-  p.mutable_commands()->set_isteamyellow(yellow);
-  for (const auto& r : robots) *p.mutable_commands()->add_robot_commands() = r;
-  return p;
-}
-
 wire::grSim_RobotReplacement Placed(uint32_t id, bool yellow, double x, double y, double dir_degrees) {
   wire::grSim_RobotReplacement r;
   r.set_id(id);
@@ -213,12 +160,6 @@ wire::grSim_RobotReplacement Placed(uint32_t id, bool yellow, double x, double y
   r.set_y(y);
   r.set_dir(dir_degrees);
   return r;
-}
-
-const idl::RobotState* FindRobot(const idl::WorldState& s, idl::Team team, int id) {
-  for (const auto& r : s.robots())
-    if (r.team() == team && r.id() == id) return &r;
-  return nullptr;
 }
 
 double BallSpeed(const idl::WorldState& s) { return std::hypot(s.ball().velocity().x(), s.ball().velocity().y()); }
@@ -241,8 +182,8 @@ TEST(GrsimBridge, EachTeamDrivesAtTheCommandedSpeed) {
       },
       8s,
       [&] {
-        f.team.Send(Commands(false, {Robot(0, 1.0f)}));
-        f.team.Send(Commands(true, {Robot(0, 0.0f, 1.0f)}));
+        f.team.Send(GrsimCommands(false, {GrsimRobot(0, 1.0f)}));
+        f.team.Send(GrsimCommands(true, {GrsimRobot(0, 0.0f, 1.0f)}));
       });
   ASSERT_TRUE(done);
   const idl::WorldState& s = f.observer.state();
@@ -292,7 +233,7 @@ TEST(GrsimBridge, KickAndRobotStatus) {
   ASSERT_TRUE(f.Ready());
   // A first command tells the bridge where blue's status goes.
   ASSERT_TRUE(f.observer.Wait([&](const idl::WorldState&) { return f.stack.bridge().Stats().commands > 0; }, 3s,
-                              [&] { f.team.Send(Commands(false, {Robot(0)})); }));
+                              [&] { f.team.Send(GrsimCommands(false, {GrsimRobot(0)})); }));
   // The ball at rest against the front face.
   wire::grSim_Packet place;
   *place.mutable_replacement()->add_robots() = Placed(0, false, 0.0, 0.0, 0.0);
@@ -302,14 +243,14 @@ TEST(GrsimBridge, KickAndRobotStatus) {
 
   bool infrared = false;
   for (auto end = Clock::now() + 15s; !infrared && Clock::now() < end;) {
-    f.team.Send(Commands(false, {Robot(0)}));
+    f.team.Send(GrsimCommands(false, {GrsimRobot(0)}));
     auto status = f.team.BlueStatus(16ms);
     if (!status) continue;
     for (const auto& r : status->robots_status()) infrared |= r.robot_id() == 0 && r.infrared();
   }
   ASSERT_TRUE(infrared) << "no status with infrared on the blue status port";
 
-  wire::grSim_Robot_Command kick = Robot(0);
+  wire::grSim_Robot_Command kick = GrsimRobot(0);
   kick.set_kickspeedx(4.0f);
   double fastest = 0;
   const bool kicked = f.observer.Wait(
@@ -317,7 +258,7 @@ TEST(GrsimBridge, KickAndRobotStatus) {
         fastest = std::max(fastest, BallSpeed(s));
         return fastest > 1.0;
       },
-      3s, [&] { f.team.Send(Commands(false, {fastest > 1.0 ? Robot(0) : kick})); });
+      3s, [&] { f.team.Send(GrsimCommands(false, {fastest > 1.0 ? GrsimRobot(0) : kick})); });
   ASSERT_TRUE(kicked);
   // The first world state after the kick (<= 10 ms of sliding later) shows the commanded speed.
   EXPECT_NEAR(fastest, 4.0, 0.1);
@@ -335,7 +276,7 @@ TEST(GrsimBridge, KickAndRobotStatus) {
 TEST(GrsimBridge, BadDatagramsChangeNothing) {
   Fixture f(test::OneRobot());
   ASSERT_TRUE(f.Ready());
-  wire::grSim_Robot_Command nan = Robot(0, 1.0f);
+  wire::grSim_Robot_Command nan = GrsimRobot(0, 1.0f);
   nan.set_velnormal(NAN);
   const std::vector<uint8_t> garbage = {0xFF, 0xFF, 0xFF, 0x0A, 0x99};
   int64_t t0 = -1;
@@ -347,8 +288,8 @@ TEST(GrsimBridge, BadDatagramsChangeNothing) {
       5s,
       [&] {
         f.team.Send(garbage);
-        f.team.Send(Commands(false, {Robot(0, 1.0f), nan}));  // a good command in a bad datagram
-        f.team.Send(Commands(false, {Robot(7, 1.0f)}));       // robot 7 of a one-robot team
+        f.team.Send(GrsimCommands(false, {GrsimRobot(0, 1.0f), nan}));  // a good command in a bad datagram
+        f.team.Send(GrsimCommands(false, {GrsimRobot(7, 1.0f)}));       // robot 7 of a one-robot team
       }));
   const idl::RobotState* r = FindRobot(f.observer.state(), idl::TEAM_BLUE, 0);
   EXPECT_DOUBLE_EQ(r->position().x(), 0.0);
@@ -363,7 +304,7 @@ TEST(GrsimBridge, BadDatagramsChangeNothing) {
   // The same channel still drives the robot.
   ASSERT_TRUE(
       f.observer.Wait([](const idl::WorldState& s) { return FindRobot(s, idl::TEAM_BLUE, 0)->position().x() > 0.05; },
-                      5s, [&] { f.team.Send(Commands(false, {Robot(0, 1.0f)})); }));
+                      5s, [&] { f.team.Send(GrsimCommands(false, {GrsimRobot(0, 1.0f)})); }));
 }
 
 }  // namespace

@@ -12,11 +12,14 @@
 
 #include "codecs/grsim/grsim_codec.h"
 #include "codecs/proto/grsim.pb.h"
+#include "tests/codecs/grsim/grsim_messages.h"
 
 namespace turf::grsim {
 namespace {
 
 namespace wire = turf::wire::grsim;
+using test::GrsimCommands;
+using test::GrsimRobot;
 
 // Blue commands for two robots. Tags are (field << 3) | wire type: VARINT 0,
 // I64 1, LEN 2, I32 5. Floats and doubles are little-endian IEEE 754.
@@ -74,29 +77,8 @@ std::vector<uint8_t> Bytes(const google::protobuf::MessageLite& m) {
   return {s.begin(), s.end()};
 }
 
-wire::grSim_Robot_Command Robot(uint32_t id) {
-  wire::grSim_Robot_Command c;
-  c.set_id(id);
-  c.set_kickspeedx(0);
-  c.set_kickspeedz(0);
-  c.set_veltangent(0);
-  c.set_velnormal(0);
-  c.set_velangular(0);
-  c.set_spinner(false);
-  c.set_wheelsspeed(false);
-  return c;
-}
-
-wire::grSim_Packet Commands(bool yellow, const std::vector<wire::grSim_Robot_Command>& robots) {
-  wire::grSim_Packet p;
-  p.mutable_commands()->set_timestamp(1.0);
-  p.mutable_commands()->set_isteamyellow(yellow);
-  for (const auto& r : robots) *p.mutable_commands()->add_robot_commands() = r;
-  return p;
-}
-
 GrsimDecodeResult DecodeRobot(const wire::grSim_Robot_Command& robot, const GrsimCodecConfig& config = {}) {
-  return DecodeBytes(Bytes(Commands(false, {robot})), config);
+  return DecodeBytes(Bytes(GrsimCommands(false, {robot})), config);
 }
 
 wire::grSim_RobotReplacement Placed(uint32_t id, bool yellow, double x, double y, double dir) {
@@ -174,19 +156,19 @@ TEST(GrsimCodec, GoldenReplacementDecodes) {
 
 // The annotations above are honest: protobuf writes the same bytes for the same values.
 TEST(GrsimCodec, GoldenBytesAreWhatProtobufWrites) {
-  wire::grSim_Robot_Command a = Robot(3);
+  wire::grSim_Robot_Command a = GrsimRobot(3);
   a.set_kickspeedx(4.0f);
   a.set_veltangent(1.0f);
   a.set_velnormal(-0.5f);
   a.set_velangular(2.0f);
   a.set_spinner(true);
-  wire::grSim_Robot_Command b = Robot(5);
+  wire::grSim_Robot_Command b = GrsimRobot(5);
   b.set_wheelsspeed(true);
   b.set_wheel1(1.0f);
   b.set_wheel2(2.0f);
   b.set_wheel3(3.0f);
   b.set_wheel4(4.0f);
-  wire::grSim_Packet commands = Commands(false, {a, b});
+  wire::grSim_Packet commands = GrsimCommands(false, {a, b});
   commands.mutable_commands()->set_timestamp(12.5);
   EXPECT_EQ(Bytes(commands), kCommandsPacket);
 
@@ -233,11 +215,11 @@ TEST(GrsimCodec, EmptyOversizedAndGarbage) {
 }
 
 TEST(GrsimCodec, MissingRequiredFieldsAreNamed) {
-  wire::grSim_Robot_Command robot = Robot(1);
+  wire::grSim_Robot_Command robot = GrsimRobot(1);
   robot.clear_kickspeedz();
-  ExpectRefused(DecodeBytes(Bytes(Commands(false, {robot}))), GrsimError::kMissingRequired, "kickspeedz");
+  ExpectRefused(DecodeBytes(Bytes(GrsimCommands(false, {robot}))), GrsimError::kMissingRequired, "kickspeedz");
 
-  wire::grSim_Packet no_team = Commands(false, {Robot(1)});
+  wire::grSim_Packet no_team = GrsimCommands(false, {GrsimRobot(1)});
   no_team.mutable_commands()->clear_isteamyellow();
   ExpectRefused(DecodeBytes(Bytes(no_team)), GrsimError::kMissingRequired, "isteamyellow");
 
@@ -247,7 +229,7 @@ TEST(GrsimCodec, MissingRequiredFieldsAreNamed) {
   *no_id.mutable_replacement()->add_robots() = placed;
   ExpectRefused(DecodeBytes(Bytes(no_id)), GrsimError::kMissingRequired, "id");
 
-  wire::grSim_Robot_Command three_wheels = Robot(1);
+  wire::grSim_Robot_Command three_wheels = GrsimRobot(1);
   three_wheels.set_wheelsspeed(true);
   three_wheels.set_wheel1(1);
   three_wheels.set_wheel2(1);
@@ -269,14 +251,14 @@ TEST(GrsimCodec, NonFiniteAnywhereRefusesTheDatagram) {
   for (const float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
                           -std::numeric_limits<float>::infinity()}) {
     for (const auto& [name, set] : fields) {
-      wire::grSim_Robot_Command robot = Robot(1);
+      wire::grSim_Robot_Command robot = GrsimRobot(1);
       set(&robot, bad);
       // A good robot before the bad one: the whole datagram goes, so it does not move either.
-      ExpectRefused(DecodeBytes(Bytes(Commands(false, {Robot(0), robot}))), GrsimError::kNotFinite,
+      ExpectRefused(DecodeBytes(Bytes(GrsimCommands(false, {GrsimRobot(0), robot}))), GrsimError::kNotFinite,
                     std::string("robot_commands[1].") + name);
     }
   }
-  wire::grSim_Packet timestamp = Commands(true, {Robot(0)});
+  wire::grSim_Packet timestamp = GrsimCommands(true, {GrsimRobot(0)});
   timestamp.mutable_commands()->set_timestamp(std::numeric_limits<double>::infinity());
   ExpectRefused(DecodeBytes(Bytes(timestamp)), GrsimError::kNotFinite, "timestamp");
 
@@ -289,13 +271,13 @@ TEST(GrsimCodec, NonFiniteAnywhereRefusesTheDatagram) {
 }
 
 TEST(GrsimCodec, UnknownRobotsAreRefused) {
-  ExpectRefused(DecodeRobot(Robot(16)), GrsimError::kUnknownRobot, "id");
-  ExpectRefused(DecodeRobot(Robot(4000000000u)), GrsimError::kUnknownRobot, "id");
+  ExpectRefused(DecodeRobot(GrsimRobot(16)), GrsimError::kUnknownRobot, "id");
+  ExpectRefused(DecodeRobot(GrsimRobot(4000000000u)), GrsimError::kUnknownRobot, "id");
   GrsimCodecConfig six;
   six.robots_per_team = 6;
-  EXPECT_TRUE(DecodeRobot(Robot(5), six).ok());
-  ExpectRefused(DecodeRobot(Robot(6), six), GrsimError::kUnknownRobot, "id");
-  EXPECT_TRUE(DecodeRobot(Robot(15)).ok());
+  EXPECT_TRUE(DecodeRobot(GrsimRobot(5), six).ok());
+  ExpectRefused(DecodeRobot(GrsimRobot(6), six), GrsimError::kUnknownRobot, "id");
+  EXPECT_TRUE(DecodeRobot(GrsimRobot(15)).ok());
   wire::grSim_Packet placed;
   *placed.mutable_replacement()->add_robots() = Placed(16, true, 0, 0, 0);
   ExpectRefused(DecodeBytes(Bytes(placed)), GrsimError::kUnknownRobot, "replacement.robots[0].id");
@@ -304,7 +286,7 @@ TEST(GrsimCodec, UnknownRobotsAreRefused) {
 TEST(GrsimCodec, PastTheSanityLimitsIsOutOfRange) {
   std::vector<std::pair<const char*, wire::grSim_Robot_Command>> cases;
   auto add = [&](const char* field, const std::function<void(wire::grSim_Robot_Command*)>& set) {
-    wire::grSim_Robot_Command c = Robot(2);
+    wire::grSim_Robot_Command c = GrsimRobot(2);
     set(&c);
     cases.emplace_back(field, c);
   };
@@ -336,7 +318,7 @@ TEST(GrsimCodec, PastTheSanityLimitsIsOutOfRange) {
 }
 
 TEST(GrsimCodec, WheelSpeedsBecomeRimSpeedsInTurfOrder) {
-  wire::grSim_Robot_Command c = Robot(0);
+  wire::grSim_Robot_Command c = GrsimRobot(0);
   c.set_wheelsspeed(true);
   c.set_wheel1(10.0f);
   c.set_wheel2(-20.0f);
@@ -360,7 +342,7 @@ TEST(GrsimCodec, WheelSpeedsBecomeRimSpeedsInTurfOrder) {
 }
 
 TEST(GrsimCodec, KicksFlatAndChipped) {
-  wire::grSim_Robot_Command c = Robot(0);
+  wire::grSim_Robot_Command c = GrsimRobot(0);
   c.set_kickspeedx(3.0f);
   c.set_kickspeedz(4.0f);
   GrsimDecodeResult r = DecodeRobot(c);
@@ -394,17 +376,17 @@ TEST(GrsimCodec, KicksFlatAndChipped) {
 }
 
 TEST(GrsimCodec, TeamsAndDribbler) {
-  wire::grSim_Robot_Command c = Robot(4);
+  wire::grSim_Robot_Command c = GrsimRobot(4);
   c.set_spinner(true);
   GrsimCodecConfig config;
   config.dribbler_rpm = 1500;
-  GrsimDecodeResult r = DecodeBytes(Bytes(Commands(true, {c})), config);
+  GrsimDecodeResult r = DecodeBytes(Bytes(GrsimCommands(true, {c})), config);
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(r.requests.command_team, idl::TEAM_YELLOW);
   EXPECT_EQ(r.requests.commands[0].team(), idl::TEAM_YELLOW);
   EXPECT_DOUBLE_EQ(r.requests.commands[0].dribbler_speed(), 1500.0);
   // Commands with no robot still name the team (robot status goes to its sender).
-  r = DecodeBytes(Bytes(Commands(true, {})));
+  r = DecodeBytes(Bytes(GrsimCommands(true, {})));
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(r.requests.command_team, idl::TEAM_YELLOW);
   EXPECT_TRUE(r.requests.commands.empty());

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <initializer_list>
+#include <optional>
 #include <string>
 
 namespace turf::simspark {
@@ -11,6 +13,17 @@ std::vector<EffectorError> Errors(const AgentMessage& m) {
   std::vector<EffectorError> errors;
   for (const EffectorIssue& issue : m.issues) errors.push_back(issue.error);
   return errors;
+}
+
+// Each text is refused with `error` alone and sets no `effector`.
+template <class Effector>
+void ExpectRefused(std::initializer_list<const char*> texts, std::optional<Effector> AgentMessage::*effector,
+                   EffectorError error) {
+  for (const char* text : texts) {
+    const AgentMessage m = ParseAgentMessage(text);
+    EXPECT_FALSE(m.*effector) << text;
+    EXPECT_EQ(Errors(m), std::vector<EffectorError>{error}) << text;
+  }
 }
 
 bool NothingApplied(const AgentMessage& m) {
@@ -54,16 +67,10 @@ TEST(Effectors, Scene) {
 }
 
 TEST(Effectors, SceneErrors) {
-  for (const char* text : {"(scene rsg/agent/nao/nao_hetero.rsg 5)", "(scene rsg/agent/nao/nao_hetero.rsg -1)"}) {
-    const AgentMessage m = ParseAgentMessage(text);
-    EXPECT_FALSE(m.scene) << text;
-    EXPECT_EQ(Errors(m), std::vector<EffectorError>{EffectorError::kBadRobotType}) << text;
-  }
-  for (const char* text : {"(scene)", "(scene a.rsg 1.5)", "(scene a.rsg 1 2)", "(scene (a.rsg))", "(scene a.rsg x)"}) {
-    const AgentMessage m = ParseAgentMessage(text);
-    EXPECT_FALSE(m.scene) << text;
-    EXPECT_EQ(Errors(m), std::vector<EffectorError>{EffectorError::kBadArguments}) << text;
-  }
+  ExpectRefused({"(scene rsg/agent/nao/nao_hetero.rsg 5)", "(scene rsg/agent/nao/nao_hetero.rsg -1)"},
+                &AgentMessage::scene, EffectorError::kBadRobotType);
+  ExpectRefused({"(scene)", "(scene a.rsg 1.5)", "(scene a.rsg 1 2)", "(scene (a.rsg))", "(scene a.rsg x)"},
+                &AgentMessage::scene, EffectorError::kBadArguments);
 }
 
 TEST(Effectors, Init) {
@@ -82,14 +89,10 @@ TEST(Effectors, Init) {
 }
 
 TEST(Effectors, InitErrors) {
-  for (const char* text :
-       {"(init (unum 100)(teamname A))", "(init (unum -1)(teamname A))", "(init (unum 1.0)(teamname A))",
-        "(init (unum x)(teamname A))", "(init (unum 1))", "(init)", "(init (unum 1)(teamname A)(color red))",
-        "(init (unum 1)(teamname A B))", "(init (unum 1) teamname A)", "(init (unum 1)(teamname (A)))"}) {
-    const AgentMessage m = ParseAgentMessage(text);
-    EXPECT_FALSE(m.init) << text;
-    EXPECT_EQ(Errors(m), std::vector<EffectorError>{EffectorError::kBadArguments}) << text;
-  }
+  ExpectRefused({"(init (unum 100)(teamname A))", "(init (unum -1)(teamname A))", "(init (unum 1.0)(teamname A))",
+                 "(init (unum x)(teamname A))", "(init (unum 1))", "(init)", "(init (unum 1)(teamname A)(color red))",
+                 "(init (unum 1)(teamname A B))", "(init (unum 1) teamname A)", "(init (unum 1)(teamname (A)))"},
+                &AgentMessage::init, EffectorError::kBadArguments);
 }
 
 TEST(Effectors, Beam) {
@@ -102,16 +105,10 @@ TEST(Effectors, Beam) {
 }
 
 TEST(Effectors, BeamErrors) {
-  for (const char* text : {"(beam nan 0 0)", "(beam 0 inf 0)", "(beam 0 0 -1e999)"}) {
-    const AgentMessage m = ParseAgentMessage(text);
-    EXPECT_FALSE(m.beam) << text;
-    EXPECT_EQ(Errors(m), std::vector<EffectorError>{EffectorError::kNotFinite}) << text;
-  }
-  for (const char* text : {"(beam 1 2)", "(beam 1 2 3 4)", "(beam 1.0abc 2 3)", "(beam 1 (2) 3)", "(beam nan 0 x)"}) {
-    const AgentMessage m = ParseAgentMessage(text);
-    EXPECT_FALSE(m.beam) << text;
-    EXPECT_EQ(Errors(m), std::vector<EffectorError>{EffectorError::kBadArguments}) << text;
-  }
+  ExpectRefused({"(beam nan 0 0)", "(beam 0 inf 0)", "(beam 0 0 -1e999)"}, &AgentMessage::beam,
+                EffectorError::kNotFinite);
+  ExpectRefused({"(beam 1 2)", "(beam 1 2 3 4)", "(beam 1.0abc 2 3)", "(beam 1 (2) 3)", "(beam nan 0 x)"},
+                &AgentMessage::beam, EffectorError::kBadArguments);
 }
 
 TEST(Effectors, Say) {

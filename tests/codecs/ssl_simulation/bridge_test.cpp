@@ -20,6 +20,7 @@
 #include "participants/sim/sim_node.h"
 #include "participants/simproto_bridge/simproto_bridge.h"
 #include "tests/core/test_scenes.h"
+#include "tests/support/in_process.h"
 
 namespace turf {
 namespace {
@@ -28,75 +29,41 @@ using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
 namespace ws = wire::simulation;
 
-int g_test_counter = 0;
-
 dds::ParticipantOptions UniqueDds() {
-  ++g_test_counter;
-  dds::ParticipantOptions o;
-  o.domain = turf::test::TestDomain(37);
-  o.prefix = "simproto" + std::to_string(getpid()) + "_" + std::to_string(g_test_counter);
-  o.name = "observer";
-  o.qos_file = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
+  dds::ParticipantOptions o = test::UniqueDds("observer");
+  o.domain = test::TestDomain(37);
   return o;
 }
 
-uint16_t FreePort() {
-  std::string error;
-  std::optional<UdpSocket> s = UdpSocket::Bind("127.0.0.1", 0, false, &error);
-  EXPECT_TRUE(s.has_value()) << error;
-  return s ? s->LocalPort() : 0;
-}
+uint16_t FreePort() { return test::BindLoopback().LocalPort(); }
 
 // turf-sim's node and the bridge, each on a thread of its own.
 class Stack {
  public:
-  Stack(Scene scene, const dds::ParticipantOptions& dds, TimeMode mode, double speed = 1.0) {
-    SimNodeOptions so;
-    so.domain = dds.domain;
-    so.prefix = dds.prefix;
-    so.qos_file = dds.qos_file;
-    so.mode = mode;
-    so.speed = speed;
-    sim_ = std::make_unique<SimNode>(std::move(scene), so);
-    SimprotoBridgeOptions bo;
-    bo.domain = dds.domain;
-    bo.prefix = dds.prefix;
-    bo.qos_file = dds.qos_file;
+  Stack(Scene scene, const dds::ParticipantOptions& dds, TimeMode mode, double speed = 1.0)
+      : sim_(std::move(scene), dds, mode, speed), bridge_(MakeBridge(dds)) {}
+  SimNode& sim() { return sim_.node(); }
+  SimprotoBridge& bridge() { return bridge_.node(); }
+  uint16_t control = 0, blue = 0, yellow = 0, sync = 0;
+
+ private:
+  std::unique_ptr<SimprotoBridge> MakeBridge(const dds::ParticipantOptions& dds) {
+    auto bo = test::OnDds<SimprotoBridgeOptions>(dds);
     bo.listen = "127.0.0.1";
     bo.control_port = control = FreePort();
     bo.blue_port = blue = FreePort();
     bo.yellow_port = yellow = FreePort();
     bo.sync_port = sync = FreePort();
-    bridge_ = std::make_unique<SimprotoBridge>(bo);
-    sim_thread_ = std::thread([this] { sim_->Run([this] { return stop_.load(); }); });
-    bridge_thread_ = std::thread([this] { bridge_->Run([this] { return stop_.load(); }); });
+    return std::make_unique<SimprotoBridge>(bo);
   }
-  ~Stack() {
-    stop_ = true;
-    bridge_thread_.join();
-    sim_thread_.join();
-  }
-  SimNode& sim() { return *sim_; }
-  SimprotoBridge& bridge() { return *bridge_; }
-  uint16_t control = 0, blue = 0, yellow = 0, sync = 0;
-
- private:
-  std::unique_ptr<SimNode> sim_;
-  std::unique_ptr<SimprotoBridge> bridge_;
-  std::atomic<bool> stop_{false};
-  std::thread sim_thread_;
-  std::thread bridge_thread_;
+  test::SimUnderTest sim_;
+  test::OnThread<SimprotoBridge> bridge_;
 };
 
 // A team (or training loop) on UDP: one socket, request and answer.
 class Team {
  public:
-  Team() {
-    std::string error;
-    std::optional<UdpSocket> s = UdpSocket::Bind("127.0.0.1", 0, false, &error);
-    EXPECT_TRUE(s.has_value()) << error;
-    if (s) socket_ = std::move(*s);
-  }
+  Team() : socket_(test::BindLoopback()) {}
   // nullopt (and a failure) if there is no answer within `timeout`.
   std::optional<std::vector<uint8_t>> Ask(uint16_t port, const std::vector<uint8_t>& bytes,
                                           std::chrono::milliseconds timeout = 3s) {
@@ -172,6 +139,19 @@ class Observer {
   idl::Clock clock_now_;
 };
 
+// turf-sim and the bridge, a team on UDP and a DDS observer of the world, on
+// the test's own domain and prefix.
+struct Rig {
+  Rig(Scene scene, TimeMode mode, double speed = 1.0) : stack(std::move(scene), dds, mode, speed), world(dds) {}
+  // The bridge answers for turf-sim.
+  bool Ready() { return team.WaitReady(stack.control); }
+
+  const dds::ParticipantOptions dds = UniqueDds();
+  Stack stack;
+  Team team;
+  Observer world;
+};
+
 const idl::RobotState& FindRobot(const idl::WorldState& s, idl::Team team, int id) {
   for (const auto& r : s.robots())
     if (r.team() == team && r.id() == id) return r;
@@ -220,20 +200,17 @@ std::vector<uint8_t> SyncBytes(const ws::SimulationSyncRequest& request) {
 }
 
 TEST(SimprotoBridge, LocalVelocityCommandMovesTheRobotAtOneMetrePerSecond) {
-  const auto dds = UniqueDds();
-  Stack stack(test::OneRobot(), dds, TimeMode::kScaled, 2.0);
-  Team team;
-  Observer world(dds);
-  ASSERT_TRUE(team.WaitReady(stack.control));
+  Rig rig(test::OneRobot(), TimeMode::kScaled, 2.0);
+  ASSERT_TRUE(rig.Ready());
   ws::RobotControl rc;
   AddLocal(&rc, 0, 1.0f);
   int64_t t_start = -1;
   double x_start = 0.0;
   int answered = 0;
-  ASSERT_TRUE(world.Wait(
+  ASSERT_TRUE(rig.world.Wait(
       [&](const idl::WorldState& s, const idl::Clock&) {
         ws::RobotControlResponse r;
-        if (team.Ask(stack.blue, rc, &r)) {
+        if (rig.team.Ask(rig.stack.blue, rc, &r)) {
           ++answered;
           EXPECT_EQ(r.errors_size(), 0);
           EXPECT_EQ(r.feedback_size(), 1);
@@ -246,7 +223,7 @@ TEST(SimprotoBridge, LocalVelocityCommandMovesTheRobotAtOneMetrePerSecond) {
         return t_start >= 0 && s.sim_time_ns() - t_start >= 700'000'000;
       },
       10s));
-  const idl::WorldState& s = world.state();
+  const idl::WorldState& s = rig.world.state();
   const double speed =
       (FindRobot(s, idl::TEAM_BLUE, 0).position().x() - x_start) / ((s.sim_time_ns() - t_start) * 1e-9);
   EXPECT_NEAR(speed, 1.0, 0.05);
@@ -255,11 +232,8 @@ TEST(SimprotoBridge, LocalVelocityCommandMovesTheRobotAtOneMetrePerSecond) {
 }
 
 TEST(SimprotoBridge, TeleportsBallAndRobotsOnAndOffTheField) {
-  const auto dds = UniqueDds();
-  Stack stack(test::Teams(2), dds, TimeMode::kScaled, 2.0);
-  Team team;
-  Observer world(dds);
-  ASSERT_TRUE(team.WaitReady(stack.control));
+  Rig rig(test::Teams(2), TimeMode::kScaled, 2.0);
+  ASSERT_TRUE(rig.Ready());
   ws::SimulatorCommand c;
   auto* ball = c.mutable_control()->mutable_teleport_ball();
   ball->set_x(1.0f);
@@ -276,9 +250,9 @@ TEST(SimprotoBridge, TeleportsBallAndRobotsOnAndOffTheField) {
   off->mutable_id()->set_team(ws::YELLOW);
   off->set_present(false);
   ws::SimulatorResponse r;
-  ASSERT_TRUE(team.Ask(stack.control, c, &r));
+  ASSERT_TRUE(rig.team.Ask(rig.stack.control, c, &r));
   EXPECT_EQ(r.errors_size(), 0) << r.DebugString();
-  ASSERT_TRUE(world.Wait([](const idl::WorldState& s, const idl::Clock&) {
+  ASSERT_TRUE(rig.world.Wait([](const idl::WorldState& s, const idl::Clock&) {
     const idl::RobotState& b0 = FindRobot(s, idl::TEAM_BLUE, 0);
     return std::abs(b0.position().x() + 3.0) < 0.01 && std::abs(b0.position().y() - 1.5) < 0.01 &&
            std::abs(b0.yaw() - 1.0) < 0.01 && !FindRobot(s, idl::TEAM_YELLOW, 1).on_field() &&
@@ -293,9 +267,9 @@ TEST(SimprotoBridge, TeleportsBallAndRobotsOnAndOffTheField) {
   y1->set_x(2.0f);
   y1->set_y(2.0f);
   y1->set_present(true);
-  ASSERT_TRUE(team.Ask(stack.control, back, &r));
+  ASSERT_TRUE(rig.team.Ask(rig.stack.control, back, &r));
   EXPECT_EQ(r.errors_size(), 0) << r.DebugString();
-  ASSERT_TRUE(world.Wait([](const idl::WorldState& s, const idl::Clock&) {
+  ASSERT_TRUE(rig.world.Wait([](const idl::WorldState& s, const idl::Clock&) {
     const idl::RobotState& y = FindRobot(s, idl::TEAM_YELLOW, 1);
     return y.on_field() && std::abs(y.position().x() - 2.0) < 0.01;
   }));
@@ -303,7 +277,7 @@ TEST(SimprotoBridge, TeleportsBallAndRobotsOnAndOffTheField) {
   outside.mutable_control()->mutable_teleport_ball()->set_x(0.0f);
   outside.mutable_control()->add_teleport_robot()->CopyFrom(*y1);
   outside.mutable_control()->mutable_teleport_robot(0)->set_x(50.0f);
-  ASSERT_TRUE(team.Ask(stack.control, outside, &r));
+  ASSERT_TRUE(rig.team.Ask(rig.stack.control, outside, &r));
   ASSERT_EQ(r.errors_size(), 1);
   EXPECT_EQ(r.errors(0).code(), "TURF_OUTSIDE_FIELD");
   // Marker: a later teleport of yellow 1; once it shows, the refused one would have too.
@@ -311,59 +285,53 @@ TEST(SimprotoBridge, TeleportsBallAndRobotsOnAndOffTheField) {
   ws::TeleportRobot* y1_marker = marker.mutable_control()->add_teleport_robot();
   y1_marker->CopyFrom(*y1);
   y1_marker->set_x(2.5f);
-  ASSERT_TRUE(team.Ask(stack.control, marker, &r));
+  ASSERT_TRUE(rig.team.Ask(rig.stack.control, marker, &r));
   EXPECT_EQ(r.errors_size(), 0) << r.DebugString();
-  ASSERT_TRUE(world.Wait([](const idl::WorldState& s, const idl::Clock&) {
+  ASSERT_TRUE(rig.world.Wait([](const idl::WorldState& s, const idl::Clock&) {
     return std::abs(FindRobot(s, idl::TEAM_YELLOW, 1).position().x() - 2.5) < 0.01;
   }));
-  EXPECT_NEAR(world.state().ball().position().x(), 1.0, 0.05);  // the ball did not go to x = 0
-  EXPECT_NEAR(FindRobot(world.state(), idl::TEAM_YELLOW, 1).position().y(), 2.0, 0.05);
+  EXPECT_NEAR(rig.world.state().ball().position().x(), 1.0, 0.05);  // the ball did not go to x = 0
+  EXPECT_NEAR(FindRobot(rig.world.state(), idl::TEAM_YELLOW, 1).position().y(), 2.0, 0.05);
 }
 
 TEST(SimprotoBridge, SimulationSpeedReallyChangesTurfSimsClock) {
-  const auto dds = UniqueDds();
-  Stack stack(test::OneRobot(), dds, TimeMode::kRealtime);
-  Team team;
-  Observer world(dds);
-  ASSERT_TRUE(team.WaitReady(stack.control));
+  Rig rig(test::OneRobot(), TimeMode::kRealtime);
+  ASSERT_TRUE(rig.Ready());
   auto speed = [&](float s) {
     ws::SimulatorCommand c;
     c.mutable_control()->set_simulation_speed(s);
     ws::SimulatorResponse r;
-    EXPECT_TRUE(team.Ask(stack.control, c, &r));
+    EXPECT_TRUE(rig.team.Ask(rig.stack.control, c, &r));
     EXPECT_EQ(r.errors_size(), 0) << r.DebugString();
   };
   speed(2.0f);
-  EXPECT_TRUE(world.Wait([](const idl::WorldState&, const idl::Clock& c) {
+  EXPECT_TRUE(rig.world.Wait([](const idl::WorldState&, const idl::Clock& c) {
     return c.mode() == idl::TIME_SCALED && c.speed() == 2.0 && !c.paused();
   }));
   speed(0.0f);
-  EXPECT_TRUE(world.Wait([](const idl::WorldState&, const idl::Clock& c) { return c.paused(); }));
+  EXPECT_TRUE(rig.world.Wait([](const idl::WorldState&, const idl::Clock& c) { return c.paused(); }));
   speed(1.0f);
-  EXPECT_TRUE(world.Wait(
+  EXPECT_TRUE(rig.world.Wait(
       [](const idl::WorldState&, const idl::Clock& c) { return c.mode() == idl::TIME_REALTIME && !c.paused(); }));
 }
 
 TEST(SimprotoBridge, TeamPortsCommandOnlyTheirTeamAndAnswerContactForEveryRobot) {
-  const auto dds = UniqueDds();
   Scene scene = test::Teams(2);
   scene.ball_start_x = scene.robots[0].pose.x + 0.08 + 0.0215 + 0.001;  // at blue 0's front face
   scene.ball_start_y = scene.robots[0].pose.y;
-  Stack stack(scene, dds, TimeMode::kScaled, 2.0);
-  Team team;
-  Observer world(dds);
-  ASSERT_TRUE(team.WaitReady(stack.control));
+  Rig rig(scene, TimeMode::kScaled, 2.0);
+  ASSERT_TRUE(rig.Ready());
   ws::RobotControl rc;
   AddLocal(&rc, 0, 0.0f)->set_dribbler_speed(1000.0f);
   AddLocal(&rc, 1, 0.0f, 1.0f);  // blue 1 drives left; yellow 1 must not
-  ASSERT_TRUE(world.Wait([](auto&, auto&) { return true; }));
-  const idl::RobotState yellow_start = FindRobot(world.state(), idl::TEAM_YELLOW, 1);
+  ASSERT_TRUE(rig.world.Wait([](auto&, auto&) { return true; }));
+  const idl::RobotState yellow_start = FindRobot(rig.world.state(), idl::TEAM_YELLOW, 1);
   bool contact_seen = false;
-  const int64_t t0 = world.state().sim_time_ns();
-  ASSERT_TRUE(world.Wait(
+  const int64_t t0 = rig.world.state().sim_time_ns();
+  ASSERT_TRUE(rig.world.Wait(
       [&](const idl::WorldState& s, const idl::Clock&) {
         ws::RobotControlResponse r;
-        if (team.Ask(stack.blue, rc, &r)) {
+        if (rig.team.Ask(rig.stack.blue, rc, &r)) {
           EXPECT_EQ(r.errors_size(), 0);
           EXPECT_EQ(r.feedback_size(), 2);  // every commanded robot
           for (const auto& f : r.feedback())
@@ -373,20 +341,17 @@ TEST(SimprotoBridge, TeamPortsCommandOnlyTheirTeamAndAnswerContactForEveryRobot)
       },
       8s));
   EXPECT_TRUE(contact_seen);
-  const idl::WorldState& s = world.state();
+  const idl::WorldState& s = rig.world.state();
   EXPECT_GT(FindRobot(s, idl::TEAM_BLUE, 1).position().y() - scene.robots[1].pose.y, 0.3);
   EXPECT_NEAR(FindRobot(s, idl::TEAM_YELLOW, 1).position().y(), yellow_start.position().y(), 1e-6);
   EXPECT_NEAR(FindRobot(s, idl::TEAM_YELLOW, 1).position().x(), yellow_start.position().x(), 1e-6);
 }
 
 TEST(SimprotoBridge, BadDatagramsAreAnsweredAndChangeNothing) {
-  const auto dds = UniqueDds();
-  Stack stack(test::OneRobot(), dds, TimeMode::kScaled, 2.0);
-  Team team;
-  Observer world(dds);
-  ASSERT_TRUE(team.WaitReady(stack.control));
-  ASSERT_TRUE(world.Wait([](auto&, auto&) { return true; }));
-  const idl::WorldState before = world.state();
+  Rig rig(test::OneRobot(), TimeMode::kScaled, 2.0);
+  ASSERT_TRUE(rig.Ready());
+  ASSERT_TRUE(rig.world.Wait([](auto&, auto&) { return true; }));
+  const idl::WorldState before = rig.world.state();
 
   ws::RobotControl nan_cmd;
   AddLocal(&nan_cmd, 0, std::nanf(""));
@@ -401,53 +366,50 @@ TEST(SimprotoBridge, BadDatagramsAreAnsweredAndChangeNothing) {
   const std::vector<uint8_t> garbage = {0xFF, 0xFF, 0x01, 0x02};
   for (int round = 0; round < 3; ++round) {
     ws::RobotControlResponse r;
-    ASSERT_TRUE(team.Ask(stack.blue, nan_cmd, &r));
+    ASSERT_TRUE(rig.team.Ask(rig.stack.blue, nan_cmd, &r));
     EXPECT_TRUE(HasError(r.errors(), "TURF_NOT_FINITE"));
     EXPECT_EQ(r.feedback_size(), 0);
-    ASSERT_TRUE(team.Ask(stack.blue, good_and_16, &r));
+    ASSERT_TRUE(rig.team.Ask(rig.stack.blue, good_and_16, &r));
     EXPECT_TRUE(HasError(r.errors(), "TURF_UNKNOWN_ROBOT"));
-    const auto g = team.Ask(stack.yellow, garbage);
+    const auto g = rig.team.Ask(rig.stack.yellow, garbage);
     ASSERT_TRUE(g.has_value());
     ASSERT_TRUE(r.ParseFromArray(g->data(), static_cast<int>(g->size())));
     EXPECT_TRUE(HasError(r.errors(), "TURF_MALFORMED"));
     ws::SimulatorResponse sr;
-    ASSERT_TRUE(team.Ask(stack.control, nan_teleport, &sr));
+    ASSERT_TRUE(rig.team.Ask(rig.stack.control, nan_teleport, &sr));
     EXPECT_TRUE(HasError(sr.errors(), "TURF_NOT_FINITE"));
-    ASSERT_TRUE(team.Ask(stack.control, geometry, &sr));
+    ASSERT_TRUE(rig.team.Ask(rig.stack.control, geometry, &sr));
     EXPECT_TRUE(HasError(sr.errors(), "TURF_UNSUPPORTED_CONFIG_VISION_PORT"));
-    ASSERT_TRUE(team.Ask(stack.control, std::vector<uint8_t>{}).has_value());  // empty: answered too
+    ASSERT_TRUE(rig.team.Ask(rig.stack.control, std::vector<uint8_t>{}).has_value());  // empty: answered too
     ws::SimulationSyncResponse sync;
-    const auto sg = team.Ask(stack.sync, garbage);
+    const auto sg = rig.team.Ask(rig.stack.sync, garbage);
     ASSERT_TRUE(sg.has_value());
     ASSERT_TRUE(sync.ParseFromArray(sg->data(), static_cast<int>(sg->size())));
     EXPECT_TRUE(HasError(sync.robot_control_response().errors(), "TURF_MALFORMED"));
   }
-  const int64_t t0 = world.state().sim_time_ns();
+  const int64_t t0 = rig.world.state().sim_time_ns();
   ASSERT_TRUE(
-      world.Wait([&](const idl::WorldState& s, const idl::Clock&) { return s.sim_time_ns() - t0 > 300'000'000; }));
-  const idl::RobotState& r = FindRobot(world.state(), idl::TEAM_BLUE, 0);
+      rig.world.Wait([&](const idl::WorldState& s, const idl::Clock&) { return s.sim_time_ns() - t0 > 300'000'000; }));
+  const idl::RobotState& r = FindRobot(rig.world.state(), idl::TEAM_BLUE, 0);
   EXPECT_DOUBLE_EQ(r.position().x(), FindRobot(before, idl::TEAM_BLUE, 0).position().x());
   EXPECT_DOUBLE_EQ(r.position().y(), FindRobot(before, idl::TEAM_BLUE, 0).position().y());
-  EXPECT_DOUBLE_EQ(world.state().ball().position().x(), before.ball().position().x());
-  EXPECT_EQ(world.clock().mode(), idl::TIME_SCALED);  // the sync garbage did not switch to lockstep
-  EXPECT_EQ(stack.bridge().Rejected("blue.not_finite"), 3u);
-  EXPECT_EQ(stack.bridge().Rejected("blue.unknown_robot"), 3u);
-  EXPECT_EQ(stack.bridge().Rejected("yellow.malformed"), 3u);
-  EXPECT_EQ(stack.bridge().Rejected("control.not_finite"), 3u);
-  EXPECT_EQ(stack.bridge().Rejected("control.unsupported"), 3u);
-  EXPECT_EQ(stack.bridge().Rejected("control.empty"), 3u);
-  EXPECT_EQ(stack.bridge().Rejected("sync.malformed"), 3u);
-  EXPECT_EQ(stack.sim().Stats().rejected, 0u);  // nothing bad reached turf-sim
+  EXPECT_DOUBLE_EQ(rig.world.state().ball().position().x(), before.ball().position().x());
+  EXPECT_EQ(rig.world.clock().mode(), idl::TIME_SCALED);  // the sync garbage did not switch to lockstep
+  EXPECT_EQ(rig.stack.bridge().Rejected("blue.not_finite"), 3u);
+  EXPECT_EQ(rig.stack.bridge().Rejected("blue.unknown_robot"), 3u);
+  EXPECT_EQ(rig.stack.bridge().Rejected("yellow.malformed"), 3u);
+  EXPECT_EQ(rig.stack.bridge().Rejected("control.not_finite"), 3u);
+  EXPECT_EQ(rig.stack.bridge().Rejected("control.unsupported"), 3u);
+  EXPECT_EQ(rig.stack.bridge().Rejected("control.empty"), 3u);
+  EXPECT_EQ(rig.stack.bridge().Rejected("sync.malformed"), 3u);
+  EXPECT_EQ(rig.stack.sim().Stats().rejected, 0u);  // nothing bad reached turf-sim
 }
 
 // N sync requests of 16 ms: exactly N x 8 physics steps, the frames captured in
 // each step in its response, and the same bytes on a second run.
 std::vector<std::vector<uint8_t>> SyncRun(TimeMode start_mode, int n, uint64_t* frame_after) {
-  const auto dds = UniqueDds();
-  Stack stack(test::Teams(2), dds, start_mode, 1.0);
-  Team team;
-  Observer world(dds);
-  EXPECT_TRUE(team.WaitReady(stack.control));
+  Rig rig(test::Teams(2), start_mode, 1.0);
+  EXPECT_TRUE(rig.Ready());
   std::vector<std::vector<uint8_t>> responses;
   for (int i = 0; i < n; ++i) {
     ws::SimulationSyncRequest req;
@@ -460,17 +422,17 @@ std::vector<std::vector<uint8_t>> SyncRun(TimeMode start_mode, int n, uint64_t* 
     }
     AddLocal(req.mutable_robot_control(), 0, static_cast<float>(std::sin(0.3 * i)), 0.5f);
     AddLocal(req.mutable_robot_control(), 17, 0.0f, 1.0f);  // yellow 1
-    const auto answer = team.Ask(stack.sync, SyncBytes(req));
+    const auto answer = rig.team.Ask(rig.stack.sync, SyncBytes(req));
     EXPECT_TRUE(answer.has_value());
     if (!answer) break;
     responses.push_back(*answer);
   }
-  EXPECT_TRUE(world.Wait([&](const idl::WorldState& s, const idl::Clock& c) {
+  EXPECT_TRUE(rig.world.Wait([&](const idl::WorldState& s, const idl::Clock& c) {
     return c.mode() == idl::TIME_LOCKSTEP && s.frame() >= 8u * n;
   }));
   // Nothing steps on its own in lockstep: the frame once a later request has taken effect.
-  EXPECT_TRUE(BallMarker(team, stack.control, world, -1.0f, -2.0f));
-  *frame_after = world.state().frame();
+  EXPECT_TRUE(BallMarker(rig.team, rig.stack.control, rig.world, -1.0f, -2.0f));
+  *frame_after = rig.world.state().frame();
   return responses;
 }
 
@@ -524,11 +486,8 @@ TEST(SimprotoBridge, SyncRequestSwitchesARunningSimToLockstep) {
 // response carries the frames of the time actually reached, and a request whose
 // share rounds to zero steps runs none but still applies its commands.
 TEST(SimprotoBridge, SyncStepsOfASixtiethOfASecondReachOneSecondInSixtyRequests) {
-  const auto dds = UniqueDds();
-  Stack stack(test::Teams(2), dds, TimeMode::kLockstep, 1.0);
-  Team team;
-  Observer world(dds);
-  ASSERT_TRUE(team.WaitReady(stack.control));
+  Rig rig(test::Teams(2), TimeMode::kLockstep, 1.0);
+  ASSERT_TRUE(rig.Ready());
   ws::SimulationSyncRequest sixtieth;
   sixtieth.set_sim_step(1.0f / 60.0f);
   AddLocal(sixtieth.mutable_robot_control(), 0, 0.0f);
@@ -536,7 +495,7 @@ TEST(SimprotoBridge, SyncStepsOfASixtiethOfASecondReachOneSecondInSixtyRequests)
   int detections = 0;
   for (int i = 1; i <= 60; ++i) {
     SCOPED_TRACE(i);
-    const auto answer = team.Ask(stack.sync, SyncBytes(sixtieth));
+    const auto answer = rig.team.Ask(rig.stack.sync, SyncBytes(sixtieth));
     ASSERT_TRUE(answer.has_value());
     ws::SimulationSyncResponse r;
     ASSERT_TRUE(r.ParseFromArray(answer->data(), static_cast<int>(answer->size())));
@@ -550,37 +509,37 @@ TEST(SimprotoBridge, SyncStepsOfASixtiethOfASecondReachOneSecondInSixtyRequests)
       ++detections;
     }
   }
-  EXPECT_EQ(stack.bridge().Rejected("sync.out_of_range"), 0u);
+  EXPECT_EQ(rig.stack.bridge().Rejected("sync.out_of_range"), 0u);
   // Once a later request shows, the world state is that of the last step.
-  ASSERT_TRUE(BallMarker(team, stack.control, world, -1.0f, -2.0f));
-  EXPECT_NEAR(world.state().sim_time_ns(), 1'000'000'000, 1'000'000);  // 1.000 s +- half a step
-  EXPECT_EQ(world.state().frame(), 500u);
+  ASSERT_TRUE(BallMarker(rig.team, rig.stack.control, rig.world, -1.0f, -2.0f));
+  EXPECT_NEAR(rig.world.state().sim_time_ns(), 1'000'000'000, 1'000'000);  // 1.000 s +- half a step
+  EXPECT_EQ(rig.world.state().frame(), 500u);
   EXPECT_NEAR(newest_capture, 1.0, 0.001);  // the 60th camera frame, captured at the time reached
   EXPECT_EQ(detections, 60 * 4);            // 60 Hz for 1 s, four cameras
 
   // 0.1 ms is 0.05 steps: none run, the command waits for the next step.
-  const idl::RobotState start = FindRobot(world.state(), idl::TEAM_BLUE, 0);
+  const idl::RobotState start = FindRobot(rig.world.state(), idl::TEAM_BLUE, 0);
   ws::SimulationSyncRequest tiny;
   tiny.set_sim_step(0.0001f);
   AddLocal(tiny.mutable_robot_control(), 0, 1.0f);
-  const auto tiny_answer = team.Ask(stack.sync, SyncBytes(tiny));
+  const auto tiny_answer = rig.team.Ask(rig.stack.sync, SyncBytes(tiny));
   ASSERT_TRUE(tiny_answer.has_value());
   ws::SimulationSyncResponse tr;
   ASSERT_TRUE(tr.ParseFromArray(tiny_answer->data(), static_cast<int>(tiny_answer->size())));
   EXPECT_EQ(tr.robot_control_response().errors_size(), 0) << tr.DebugString();
   EXPECT_EQ(tr.robot_control_response().feedback_size(), 1);
   EXPECT_EQ(tr.detection_size(), 0);
-  ASSERT_TRUE(BallMarker(team, stack.control, world, -1.5f, -2.0f));
-  EXPECT_EQ(world.state().frame(), 500u);  // no step
+  ASSERT_TRUE(BallMarker(rig.team, rig.stack.control, rig.world, -1.5f, -2.0f));
+  EXPECT_EQ(rig.world.state().frame(), 500u);  // no step
 
   // A step without commands: the held one drives blue 0 forward.
   ws::SimulationSyncRequest drive;
   drive.set_sim_step(0.3f);
-  const auto drive_answer = team.Ask(stack.sync, SyncBytes(drive));
+  const auto drive_answer = rig.team.Ask(rig.stack.sync, SyncBytes(drive));
   ASSERT_TRUE(drive_answer.has_value());
-  ASSERT_TRUE(BallMarker(team, stack.control, world, -2.0f, -2.0f));
-  EXPECT_EQ(world.state().frame(), 650u);  // 1.3001 s: 650.05 steps
-  const idl::RobotState& moved = FindRobot(world.state(), idl::TEAM_BLUE, 0);
+  ASSERT_TRUE(BallMarker(rig.team, rig.stack.control, rig.world, -2.0f, -2.0f));
+  EXPECT_EQ(rig.world.state().frame(), 650u);  // 1.3001 s: 650.05 steps
+  const idl::RobotState& moved = FindRobot(rig.world.state(), idl::TEAM_BLUE, 0);
   const double forward = (moved.position().x() - start.position().x()) * std::cos(start.yaw()) +
                          (moved.position().y() - start.position().y()) * std::sin(start.yaw());
   EXPECT_GT(forward, 0.1);

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/idl_values.h"
+
 namespace turf::simproto::test {
 
 inline idl::SslField DivAField(int robots_per_team = 6) {
@@ -39,30 +41,14 @@ inline idl::SslField DivAField(int robots_per_team = 6) {
   return f;
 }
 
-inline idl::RobotState Robot(idl::Team team, int id, bool on_field, double x, double y, double yaw) {
-  idl::RobotState r;
-  r.team(team);
-  r.id(static_cast<uint8_t>(id));
-  r.on_field(on_field);
-  r.position().x(x);
-  r.position().y(y);
-  r.yaw(yaw);
-  return r;
-}
-
 // Ball at (0.5, -0.5) on the ground; blue 0 at (1, 1), blue 1 off the field,
 // yellow 2 at (-2, 0.5) facing +y.
 inline idl::WorldState World() {
-  idl::WorldState w;
-  w.sim_time_ns(1'000'000'000);
-  w.frame(500);
-  w.ball().position().x(0.5);
-  w.ball().position().y(-0.5);
-  w.ball().position().z(0.0215);
-  w.robots().push_back(Robot(idl::TEAM_BLUE, 0, true, 1.0, 1.0, 0.25));
-  w.robots().push_back(Robot(idl::TEAM_BLUE, 1, false, 0.0, 0.0, 0.0));
-  w.robots().push_back(Robot(idl::TEAM_YELLOW, 2, true, -2.0, 0.5, 1.5707963));
-  return w;
+  using turf::test::RobotAt;
+  return turf::test::StateAt(
+      1'000'000'000, 500, turf::test::V3(0.5, -0.5, 0.0215),
+      {RobotAt(idl::TEAM_BLUE, 0, 1.0, 1.0, 0.25), RobotAt(idl::TEAM_BLUE, 1, 0.0, 0.0, 0.0, false),
+       RobotAt(idl::TEAM_YELLOW, 2, -2.0, 0.5, 1.5707963)});
 }
 
 inline std::vector<uint8_t> Bytes(const std::string& s) { return std::vector<uint8_t>(s.begin(), s.end()); }

@@ -8,24 +8,13 @@
 #include "codecs/proto/ssl_vision.pb.h"
 #include "codecs/ssl_vision/calibration.h"
 #include "codecs/ssl_vision/detection.h"
+#include "tests/support/idl_values.h"
 
 namespace turf::vision {
 namespace {
 
-idl::Vec2 V2(double x, double y) {
-  idl::Vec2 v;
-  v.x(x);
-  v.y(y);
-  return v;
-}
-
-idl::Vec3 V3(double x, double y, double z) {
-  idl::Vec3 v;
-  v.x(x);
-  v.y(y);
-  v.z(z);
-  return v;
-}
+using test::V2;
+using test::V3;
 
 idl::DetectedRobot Robot(idl::Team team, int id, double x, double y, double orientation, float confidence) {
   idl::DetectedRobot r;

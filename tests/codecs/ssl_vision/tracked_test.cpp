@@ -5,17 +5,12 @@
 
 #include "codecs/proto/ssl_vision.pb.h"
 #include "codecs/ssl_vision/tracked.h"
+#include "tests/support/idl_values.h"
 
 namespace turf::vision {
 namespace {
 
-idl::Vec3 V3(double x, double y, double z) {
-  idl::Vec3 v;
-  v.x(x);
-  v.y(y);
-  v.z(z);
-  return v;
-}
+using test::V3;
 
 idl::RobotState Robot(idl::Team team, int id, bool on_field, double x, double y, double yaw) {
   idl::RobotState r;

@@ -27,6 +27,7 @@
 #include "participants/sim/sim_node.h"
 #include "participants/vision_bridge/vision_bridge.h"
 #include "tests/core/test_scenes.h"
+#include "tests/support/in_process.h"
 
 namespace turf {
 namespace {
@@ -46,53 +47,10 @@ bool WaitFor(const std::function<bool()>& done) {
   return true;
 }
 
-int g_test_counter = 0;
-
-dds::ParticipantOptions UniqueDds() {
-  ++g_test_counter;
-  dds::ParticipantOptions o;
-  o.domain = turf::test::TestDomain();
-  o.prefix = "vision" + std::to_string(getpid()) + "_" + std::to_string(g_test_counter);
-  o.name = "test";
-  o.qos_file = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
-  return o;
-}
-
-// Runs `node.Run(stop)` on a thread until destroyed.
-template <class Node>
-class OnThread {
- public:
-  explicit OnThread(std::unique_ptr<Node> node) : node_(std::move(node)) {
-    thread_ = std::thread([this] { node_->Run([this] { return stop_.load(); }); });
-  }
-  ~OnThread() {
-    stop_ = true;
-    thread_.join();
-  }
-  Node& node() { return *node_; }
-
- private:
-  std::unique_ptr<Node> node_;
-  std::atomic<bool> stop_{false};
-  std::thread thread_;
-};
-
-std::unique_ptr<SimNode> MakeSim(const dds::ParticipantOptions& dds, Scene scene, TimeMode mode = TimeMode::kRealtime,
-                                 double speed = 1.0) {
-  SimNodeOptions o;
-  o.domain = dds.domain;
-  o.prefix = dds.prefix;
-  o.qos_file = dds.qos_file;
-  o.mode = mode;
-  o.speed = speed;
-  return std::make_unique<SimNode>(std::move(scene), o);
-}
+using test::OnThread;
 
 VisionBridgeOptions BridgeOptions(const dds::ParticipantOptions& dds, uint16_t port) {
-  VisionBridgeOptions o;
-  o.domain = dds.domain;
-  o.prefix = dds.prefix;
-  o.qos_file = dds.qos_file;
+  auto o = test::OnDds<VisionBridgeOptions>(dds);
   o.address = "127.0.0.1";
   o.port = port;
   return o;
@@ -101,12 +59,7 @@ VisionBridgeOptions BridgeOptions(const dds::ParticipantOptions& dds, uint16_t p
 // A UDP port on loopback, picked free by the kernel.
 class Receiver {
  public:
-  Receiver() {
-    std::string error;
-    auto s = UdpSocket::Bind("127.0.0.1", 0, false, &error);
-    EXPECT_TRUE(s.has_value()) << error;
-    socket_ = std::move(*s);
-  }
+  Receiver() : socket_(test::BindLoopback()) {}
   uint16_t port() const { return socket_.LocalPort(); }
   template <class Packet>
   bool Next(Packet* out, std::chrono::milliseconds timeout = 1000ms) {
@@ -153,12 +106,12 @@ idl::SimControl Teleport(idl::Team team, int id, double x, double y, double orie
 }
 
 TEST(VisionBridge, DivisionACamerasGeometryAndATeleportedRobot) {
-  const auto dds = UniqueDds();
+  const auto dds = test::UniqueDds("test");
   Receiver rx;
   VisionBridgeOptions o = BridgeOptions(dds, rx.port());
   o.geometry_every = 30;  // twice a second at 60 Hz
   OnThread<VisionBridge> bridge(std::make_unique<VisionBridge>(o));
-  OnThread<SimNode> sim(MakeSim(dds, test::OneRobot()));
+  test::SimUnderTest sim(test::OneRobot(), dds, TimeMode::kRealtime);
 
   std::set<uint32_t> cameras;
   std::map<uint32_t, uint32_t> last_frame;
@@ -231,7 +184,7 @@ TEST(VisionBridge, DivisionACamerasGeometryAndATeleportedRobot) {
 }
 
 TEST(VisionBridge, SimClockAndTrackedPackets) {
-  const auto dds = UniqueDds();
+  const auto dds = test::UniqueDds("test");
   Receiver rx, tracked_rx;
   VisionBridgeOptions o = BridgeOptions(dds, rx.port());
   o.clock = vision::ClockMode::kSim;
@@ -239,7 +192,7 @@ TEST(VisionBridge, SimClockAndTrackedPackets) {
   o.tracked_address = "127.0.0.1";
   o.tracked_port = tracked_rx.port();
   OnThread<VisionBridge> bridge(std::make_unique<VisionBridge>(o));
-  OnThread<SimNode> sim(MakeSim(dds, test::OneRobot(-2.0, -1.0, 0.5)));
+  test::SimUnderTest sim(test::OneRobot(-2.0, -1.0, 0.5), dds, TimeMode::kRealtime);
 
   int detections = 0;
   int geometry_after = -1;  // detections before the first geometry packet
@@ -364,7 +317,7 @@ double EpochPlus(int64_t epoch_ns, double t_s) { return static_cast<double>(epoc
 // Each run stamp is exactly the clock topic's epoch + the sim stamp, the late
 // bridge's are bit-identical to the first's, and a reset keeps them monotonic.
 TEST(VisionBridge, RunClockIsTheRunEpochPlusSimTime) {
-  const auto dds = UniqueDds();
+  const auto dds = test::UniqueDds("test");
   Receiver run_rx, sim_rx, late_rx, run_tracked_rx, sim_tracked_rx;
   VisionBridgeOptions run_o = BridgeOptions(dds, run_rx.port());
   ASSERT_EQ(run_o.clock, vision::ClockMode::kRun);  // the default
@@ -377,7 +330,7 @@ TEST(VisionBridge, RunClockIsTheRunEpochPlusSimTime) {
   }
   OnThread<VisionBridge> run_bridge(std::make_unique<VisionBridge>(run_o));
   OnThread<VisionBridge> sim_bridge(std::make_unique<VisionBridge>(sim_o));
-  OnThread<SimNode> sim(MakeSim(dds, test::OneRobot(), TimeMode::kScaled, 2.0));
+  test::SimUnderTest sim(test::OneRobot(), dds, TimeMode::kScaled, 2.0);
   dds::Participant client(dds);
   EpochWatch clock(client);
 
@@ -491,7 +444,7 @@ idl::Clock ClockWithEpoch(int64_t run_epoch_unix_ns) {
 }
 
 TEST(VisionBridge, BadSamplesAreDroppedAndCounted) {
-  const auto dds = UniqueDds();
+  const auto dds = test::UniqueDds("test");
   Receiver rx;
   OnThread<VisionBridge> bridge(std::make_unique<VisionBridge>(BridgeOptions(dds, rx.port())));
   // A rogue participant in turf-sim's place.

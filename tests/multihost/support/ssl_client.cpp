@@ -7,8 +7,8 @@
 
 #include <cmath>
 
-#include "tests/e2e/proto/team_grsim.pb.h"
 #include "tests/e2e/proto/team_vision.pb.h"
+#include "tests/support/team_packets.h"
 
 namespace turf::test {
 
@@ -95,35 +95,6 @@ std::optional<Seen> VisionClient::Robot(bool yellow, uint32_t id) const {
   auto it = robots_.find({yellow, id});
   if (it == robots_.end()) return std::nullopt;
   return it->second;
-}
-
-std::string GrsimMove(bool yellow, int id, double forward, double left, double angular) {
-  team::grsim::grSim_Packet p;
-  auto* c = p.mutable_commands();
-  c->set_timestamp(0);
-  c->set_isteamyellow(yellow);
-  auto* r = c->add_robot_commands();
-  r->set_id(static_cast<uint32_t>(id));
-  r->set_kickspeedx(0);
-  r->set_kickspeedz(0);
-  r->set_veltangent(static_cast<float>(forward));
-  r->set_velnormal(static_cast<float>(left));
-  r->set_velangular(static_cast<float>(angular));
-  r->set_spinner(false);
-  r->set_wheelsspeed(false);
-  return p.SerializeAsString();
-}
-
-std::string GrsimPlace(bool yellow, int id, double x, double y, double dir_deg) {
-  team::grsim::grSim_Packet p;
-  auto* r = p.mutable_replacement()->add_robots();
-  r->set_x(x);
-  r->set_y(y);
-  r->set_dir(dir_deg);
-  r->set_id(static_cast<uint32_t>(id));
-  r->set_yellowteam(yellow);
-  r->set_turnon(true);
-  return p.SerializeAsString();
 }
 
 void KeepSending(UdpSocket& team, const std::string& packet, const std::string& ip, int port, VisionClient& vision,

@@ -12,6 +12,8 @@
 #include <string>
 #include <utility>
 
+#include "tests/support/team_packets.h"
+
 namespace turf::test {
 
 using SteadyClock = std::chrono::steady_clock;
@@ -60,10 +62,6 @@ class VisionClient {
   UdpSocket socket_;
   std::map<std::pair<bool, uint32_t>, Seen> robots_;
 };
-
-// grSim packets: a local-velocity command for one robot, and a replacement.
-std::string GrsimMove(bool yellow, int id, double forward, double left, double angular);
-std::string GrsimPlace(bool yellow, int id, double x, double y, double dir_deg);
 
 // Sends `packet` at ~60 Hz to ip:port for `duration` while draining vision.
 void KeepSending(UdpSocket& team, const std::string& packet, const std::string& ip, int port, VisionClient& vision,

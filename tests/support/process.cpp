@@ -1,10 +1,9 @@
-#include "tests/multihost/support/process.h"
+#include "tests/support/process.h"
 
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <netinet/in.h>
 #include <signal.h>
-#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -86,15 +85,15 @@ std::string Process::Log() const {
 }
 
 std::string LogDir() {
-  const std::string dir = std::string(TURF_BINARY_DIR) + "/tests/multihost_logs";
+  const std::string dir = std::string(TURF_BINARY_DIR) + "/tests/process_logs";
   std::filesystem::create_directories(dir);
   return dir;
 }
 
 std::string Built(const std::string& relative) { return std::string(TURF_BINARY_DIR) + "/" + relative; }
 
-int FreePort() {
-  const int fd = socket(AF_INET, SOCK_DGRAM, 0);
+int FreePort(int type) {
+  const int fd = socket(AF_INET, type, 0);
   sockaddr_in addr{};
   addr.sin_family = AF_INET;
   addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
