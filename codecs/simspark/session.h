@@ -25,11 +25,11 @@
 #include <string>
 #include <vector>
 
-#include "codecs/simspark/field3d.h"
-#include "codecs/simspark/game.h"
-#include "codecs/simspark/radio.h"
-#include "codecs/simspark/types.h"
-#include "codecs/simspark/vision.h"
+#include "kernel/simspark/field3d.h"
+#include "kernel/simspark/game.h"
+#include "kernel/simspark/radio.h"
+#include "kernel/simspark/types.h"
+#include "kernel/simspark/vision.h"
 #include "core/rng.h"
 
 namespace turf::simspark {

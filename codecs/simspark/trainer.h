@@ -11,7 +11,7 @@
 #include <variant>
 #include <vector>
 
-#include "codecs/simspark/types.h"
+#include "kernel/simspark/types.h"
 
 namespace turf::simspark {
 

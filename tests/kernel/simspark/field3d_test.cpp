@@ -1,4 +1,4 @@
-#include "codecs/simspark/field3d.h"
+#include "kernel/simspark/field3d.h"
 
 #include <gtest/gtest.h>
 

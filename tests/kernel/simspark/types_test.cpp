@@ -1,4 +1,4 @@
-#include "codecs/simspark/types.h"
+#include "kernel/simspark/types.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "codecs/simspark/radio.h"
+#include "kernel/simspark/radio.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "codecs/simspark/game.h"
+#include "kernel/simspark/game.h"
 
 #include <algorithm>
 #include <array>

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "codecs/simspark/types.h"
+#include "kernel/simspark/types.h"
 
 namespace turf::simspark {
 

@@ -50,7 +50,7 @@
 #include <string>
 #include <vector>
 
-#include "codecs/simspark/types.h"
+#include "kernel/simspark/types.h"
 #include "core/rng.h"
 
 namespace turf::simspark {

@@ -1,4 +1,4 @@
-#include "codecs/simspark/vision.h"
+#include "kernel/simspark/vision.h"
 
 #include <gtest/gtest.h>
 

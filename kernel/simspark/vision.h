@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "codecs/simspark/field3d.h"
-#include "codecs/simspark/types.h"
+#include "kernel/simspark/field3d.h"
+#include "kernel/simspark/types.h"
 #include "core/rng.h"
 
 namespace turf::simspark {
