@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <turf/idl/ClockPubSubTypes.h>
 #include <turf/idl/JointsPubSubTypes.h>
+#include <turf/idl/SensorStatsPubSubTypes.h>
 #include <turf/idl/SimControlPubSubTypes.h>
 #include <turf/idl/WorldStatePubSubTypes.h>
 
@@ -11,10 +12,12 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <set>
 #include <thread>
 
-#include "loader/legged_scene_yaml.h"
 #include "dds/participant.h"
+#include "loader/legged_scene_yaml.h"
+#include "loader/realism_yaml.h"
 #include "participants/sim/legged_node.h"
 #include "tests/test_domain.h"
 
@@ -34,21 +37,22 @@ dds::ParticipantOptions UniqueDds(const char* name) {
   return o;
 }
 
-LeggedScene SimSparkScene() {
+LeggedScene SimSparkScene(const SensorRealism& realism = {}) {
   LeggedSceneLoadResult r = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/simspark_3d.yaml");
   if (!r.scene) throw std::runtime_error(r.errors.front());
+  r.scene->realism = realism;
   return std::move(*r.scene);
 }
 
 class NodeUnderTest {
  public:
-  NodeUnderTest(const dds::ParticipantOptions& dds, TimeMode mode) {
+  NodeUnderTest(const dds::ParticipantOptions& dds, TimeMode mode, const SensorRealism& realism = {}) {
     SimNodeOptions o;
     o.domain = dds.domain;
     o.prefix = dds.prefix;
     o.qos_file = dds.qos_file;
     o.mode = mode;
-    node_ = std::make_unique<LeggedNode>(SimSparkScene(), o);
+    node_ = std::make_unique<LeggedNode>(SimSparkScene(realism), o);
     thread_ = std::thread([this] { node_->Run([this] { return stop_.load(); }); });
   }
   ~NodeUnderTest() {
@@ -87,6 +91,13 @@ class Client {
       std::this_thread::sleep_for(5ms);
     }
     return false;
+  }
+  // Commands and control matched, the frame-0 IMU sample in (for links that
+  // delay joint states past the start).
+  bool WaitControlMatched() {
+    return WaitFor([&] {
+      return command_->Matched() > 0 && control_->Matched() > 0 && reply_->Matched() > 0 && imu_now_.count("nao_1");
+    });
   }
   void Poll() {
     std::vector<idl::JointState> js;
@@ -389,6 +400,112 @@ TEST(LeggedDdsTest, PauseStopsTimeAndStepAdvancesIt) {
   ASSERT_TRUE(resume);
   EXPECT_EQ(resume->result(), idl::RESULT_OK);
   ASSERT_TRUE(client.WaitFor([&] { return sim.node().Stats().frame > frame + 50; }));
+}
+
+// The realistic preset's encoder and IMU noise, with ideal links (one joint
+// sample per robot at every sensor frame, at once).
+SensorRealism NoisyNoLinks() {
+  RealismLoadResult r = LoadRealism("realistic");
+  if (!r.realism) throw std::runtime_error("no realistic preset");
+  r.realism->encoder.link = {};
+  r.realism->imu.link = {};
+  r.realism->touch.link = {};
+  return *r.realism;
+}
+
+// nao_1's measured joint angles at each of `frames` sensor frames (10 steps
+// each), stepping in lockstep; with `chatter`, every step is followed by
+// control requests that make turf-sim publish its state again (a pause, a
+// refused teleport), as a viewer or a bridge may send.
+std::vector<std::vector<double>> NoisyAngles(int frames, bool chatter) {
+  const auto dds = UniqueDds("sim");
+  NodeUnderTest sim(dds, TimeMode::kLockstep, NoisyNoLinks());
+  Client client(dds);
+  EXPECT_TRUE(client.WaitMatched());
+  std::vector<std::vector<double>> angles;
+  for (int f = 1; f <= frames; ++f) {
+    const auto reply = client.Control(idl::OP_STEP, 10);
+    if (!reply || reply->result() != idl::RESULT_OK) return {};
+    const uint64_t frame = 10u * f;
+    if (!client.WaitFor([&] { return client.joints["nao_1"].frame() == frame; })) return {};
+    angles.push_back(client.joints["nao_1"].position());
+    if (!chatter) continue;
+    EXPECT_TRUE(client.Control(idl::OP_PAUSE));
+    idl::SimControl bad;
+    bad.op(idl::OP_TELEPORT_BALL);
+    bad.ball().position().x(NAN);
+    const auto refused = client.Control(bad);
+    EXPECT_TRUE(refused && refused->result() == idl::RESULT_REJECTED);
+  }
+  return angles;
+}
+
+// The determinism leak of the old node: it drew encoder noise at every state
+// publication, so a viewer's requests changed every later reading.
+TEST(LeggedDdsTest, ControlRequestsDoNotChangeTheSensorNoise) {
+  const auto quiet = NoisyAngles(20, false);
+  const auto chatty = NoisyAngles(20, true);
+  ASSERT_EQ(quiet.size(), 20u);
+  ASSERT_EQ(chatty.size(), 20u);
+  EXPECT_EQ(quiet, chatty);
+  EXPECT_NE(quiet[3], quiet[4]);  // noisy readings of a robot standing still
+}
+
+// A joint-state link with 20 ms latency and 10 % loss, seen by a subscriber
+// in lockstep: no sample arrives before the step that is 20 ms after its
+// measurement, about a tenth never arrive, and the stats topic reports both.
+TEST(LeggedDdsTest, JointStatesArriveWithTheirLinksLatencyAndLoss) {
+  SensorRealism realism;
+  realism.encoder.link.latency = 0.020;
+  realism.encoder.link.loss = 0.10;
+  const auto dds = UniqueDds("sim");
+  NodeUnderTest sim(dds, TimeMode::kLockstep, realism);
+  dds::ParticipantOptions o = dds;
+  o.name = "stats";
+  dds::Participant stats_participant(o);
+  auto stats_reader = stats_participant.MakeReader<idl::SensorStatsPubSubType>(dds::Topic::kStats);
+  Client client(dds);
+  ASSERT_TRUE(client.WaitControlMatched());
+  ASSERT_TRUE(client.WaitFor([&] { return stats_reader->Matched() > 0; }));
+
+  constexpr int64_t kStepNs = 2'000'000;
+  constexpr int kSteps = 2500;  // 5 s: 250 sensor frames of each robot
+  std::set<std::pair<std::string, uint64_t>> received;
+  for (int step = 1; step <= kSteps; ++step) {
+    const auto reply = client.Control(idl::OP_STEP, 1);
+    ASSERT_TRUE(reply && reply->result() == idl::RESULT_OK);
+    // Whatever has arrived by now was released at or before this step.
+    client.Poll();
+    for (const auto& [robot, j] : client.joints) {
+      if (!received.insert({robot, j.frame()}).second) continue;
+      ASSERT_LE(j.sim_time_ns() + 20'000'000, static_cast<int64_t>(reply->sim_time_ns()))
+          << robot << " frame " << j.frame() << " arrived early";
+    }
+  }
+  // Every delivered sample arrives (reliable): wait for the last second's stats.
+  std::vector<idl::SensorStats> windows;
+  ASSERT_TRUE(client.WaitFor([&] {
+    std::vector<idl::SensorStats> more;
+    if (stats_reader->Take(&more)) windows.insert(windows.end(), more.begin(), more.end());
+    return !windows.empty() && windows.back().sim_time_ns() >= 5'000'000'000 - kStepNs;
+  }));
+  uint64_t sent = 0, lost = 0;
+  double latency = 0.0;
+  for (const idl::SensorStats& w : windows) {
+    for (const idl::StreamStats& s : w.streams()) {
+      if (s.name() != "legged/nao_1/joint_state") continue;
+      sent += s.sent();
+      lost += s.lost();
+      latency = s.latency_mean();
+    }
+  }
+  ASSERT_GT(sent, 200u);
+  EXPECT_NEAR(static_cast<double>(lost) / sent, 0.10, 0.05);
+  EXPECT_NEAR(latency, 0.020, 1e-9);  // whole steps: no jitter
+  // The subscriber's own count: about a tenth of nao_1's 250 frames missing.
+  size_t nao_1 = 0;
+  for (const auto& [robot, frame] : received) nao_1 += robot == "nao_1" && frame > 0 && frame <= 2480;
+  EXPECT_NEAR(nao_1 / 248.0, 0.90, 0.06);
 }
 
 }  // namespace
