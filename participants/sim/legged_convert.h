@@ -1,5 +1,5 @@
 // Conversions between the legged kernel's values and the DDS types (topics
-// in legged_node.h). Samples from other participants are untrusted: FromIdl
+// in sim_node.h). Samples from other participants are untrusted: FromIdl
 // names what the kernel's own validation cannot see (an unknown mode).
 #pragma once
 

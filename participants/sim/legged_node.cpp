@@ -1,4 +1,4 @@
-#include "participants/sim/legged_node.h"
+#include "participants/sim/sim_node.h"
 
 #include <spdlog/spdlog.h>
 #include <turf/idl/JointsPubSubTypes.h>
@@ -16,9 +16,11 @@
 
 namespace turf {
 
-class LeggedNode::Impl final : private ControlLoop::Node {
+namespace {
+
+class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
  public:
-  Impl(LeggedScene scene, SimNodeOptions options)
+  LeggedNode(LeggedScene scene, SimNodeOptions options)
       : options_(std::move(options)),
         kernel_(std::move(scene)),
         participant_({options_.domain, options_.name, options_.prefix, options_.qos_file}),
@@ -34,15 +36,15 @@ class LeggedNode::Impl final : private ControlLoop::Node {
         command_reader_(participant_.MakeReader<idl::JointCommandPubSubType>(dds::Topic::kRobotJointCommand,
                                                                              [this] { loop_.Wake(); })) {}
 
-  void Run(const std::function<bool()>& stop) {
+  void Run(const std::function<bool()>& stop) override {
     ReportStartup();
     PublishSceneInfo();
     PublishReleased();  // the readings of frame 0
     loop_.Run(stop);
   }
 
-  SimNodeStats Stats() const { return loop_.Stats(); }
-  uint64_t Rejected(const std::string& kind) const { return loop_.Rejected(kind); }
+  SimNodeStats Stats() const override { return loop_.Stats(); }
+  uint64_t Rejected(const std::string& kind) const override { return loop_.Rejected(kind); }
 
  private:
   // The loop publishes the whole frame at every sensor frame.
@@ -267,11 +269,10 @@ class LeggedNode::Impl final : private ControlLoop::Node {
   std::vector<idl::JointCommand> command_inbox_;
 };
 
-LeggedNode::LeggedNode(LeggedScene scene, SimNodeOptions options)
-    : impl_(std::make_unique<Impl>(std::move(scene), std::move(options))) {}
-LeggedNode::~LeggedNode() = default;
-void LeggedNode::Run(const std::function<bool()>& stop) { impl_->Run(stop); }
-SimNodeStats LeggedNode::Stats() const { return impl_->Stats(); }
-uint64_t LeggedNode::Rejected(const std::string& kind) const { return impl_->Rejected(kind); }
+}  // namespace
+
+std::unique_ptr<SimNode::Impl> MakeLeggedNode(LeggedScene scene, SimNodeOptions options) {
+  return std::make_unique<LeggedNode>(std::move(scene), std::move(options));
+}
 
 }  // namespace turf

@@ -1,6 +1,6 @@
 // turf-sim: the physics participant. Loads a scene, steps the MuJoCo world and
-// publishes it on DDS; see sim_node.h (SSL scenes) and legged_node.h for its
-// topics, sim_startup.h for its flags and how it picks the node.
+// publishes it on DDS; see sim_node.h for its topics (SSL and legged scenes),
+// sim_startup.h for its flags and how it picks the kind of scene.
 #include "participants/common/participant_main.h"
 #include "participants/sim/sim_startup.h"
 

@@ -25,11 +25,9 @@ int64_t UnixNowNs() {
       .count();
 }
 
-}  // namespace
-
-class SimNode::Impl final : private ControlLoop::Node {
+class SslNode final : public SimNode::Impl, private ControlLoop::Node {
  public:
-  Impl(Scene scene, SimNodeOptions options)
+  SslNode(Scene scene, SimNodeOptions options)
       : options_(std::move(options)),
         kernel_(std::move(scene)),
         participant_({options_.domain, options_.name, options_.prefix, options_.qos_file}),
@@ -45,14 +43,14 @@ class SimNode::Impl final : private ControlLoop::Node {
                          participant_.MakeReader<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow,
                                                                                  [this] { loop_.Wake(); })} {}
 
-  void Run(const std::function<bool()>& stop) {
+  void Run(const std::function<bool()>& stop) override {
     ReportStartup();
     field_writer_->Write(FieldToIdl(kernel_.scene(), kernel_.cameras()));
     loop_.Run(stop);
   }
 
-  SimNodeStats Stats() const { return loop_.Stats(); }
-  uint64_t Rejected(const std::string& kind) const { return loop_.Rejected(kind); }
+  SimNodeStats Stats() const override { return loop_.Stats(); }
+  uint64_t Rejected(const std::string& kind) const override { return loop_.Rejected(kind); }
 
  private:
   static ControlLoop::Timing LoopTiming(const Scene& s, int64_t step_ns) {
@@ -215,8 +213,15 @@ class SimNode::Impl final : private ControlLoop::Node {
   std::vector<idl::SslRobotCommand> command_inbox_;
 };
 
-SimNode::SimNode(Scene scene, SimNodeOptions options)
-    : impl_(std::make_unique<Impl>(std::move(scene), std::move(options))) {}
+}  // namespace
+
+std::unique_ptr<SimNode::Impl> MakeSslNode(Scene scene, SimNodeOptions options) {
+  return std::make_unique<SslNode>(std::move(scene), std::move(options));
+}
+
+SimNode::SimNode(Scene scene, SimNodeOptions options) : impl_(MakeSslNode(std::move(scene), std::move(options))) {}
+SimNode::SimNode(LeggedScene scene, SimNodeOptions options)
+    : impl_(MakeLeggedNode(std::move(scene), std::move(options))) {}
 SimNode::~SimNode() = default;
 void SimNode::Run(const std::function<bool()>& stop) { impl_->Run(stop); }
 SimNodeStats SimNode::Stats() const { return impl_->Stats(); }

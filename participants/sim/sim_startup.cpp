@@ -12,7 +12,6 @@
 #include "loader/realism_yaml.h"
 #include "loader/scene_yaml.h"
 #include "participants/common/process.h"
-#include "participants/sim/legged_node.h"
 #include "participants/sim/sim_node.h"
 
 namespace turf {
@@ -32,7 +31,7 @@ std::optional<SensorRealism> LoadRealismOption(const std::string& realism) {
   return r.realism;
 }
 
-// Scenes with `kind: legged`: any MJCF robots on joint topics (legged_node.h).
+// Scenes with `kind: legged`: any MJCF robots on joint topics (sim_node.h).
 int RunLegged(const SimCommandLine& command_line) {
   LeggedSceneLoadResult loaded = LoadLeggedSceneFile(command_line.scene_path);
   if (!loaded.scene) {
@@ -46,7 +45,7 @@ int RunLegged(const SimCommandLine& command_line) {
     if (!r) return kExitBadConfig;
     loaded.scene->realism = *r;  // encoders and IMU
   }
-  LeggedNode(std::move(*loaded.scene), command_line.node).Run(StopRequested);
+  SimNode(std::move(*loaded.scene), command_line.node).Run(StopRequested);
   return kExitClean;
 }
 

@@ -1,7 +1,7 @@
 // turf-sim's start-up, behind main.cpp: its own flags (the common ones:
 // participant_main.h), --speed and --lockstep into a time mode, the scene and
 // realism files, and the node that fits the scene (SSL: sim_node.h; `kind:
-// legged`: legged_node.h).
+// legged`: sim_node.h).
 #pragma once
 
 #include <string>

@@ -18,7 +18,7 @@
 #include "dds/participant.h"
 #include "loader/legged_scene_yaml.h"
 #include "loader/realism_yaml.h"
-#include "participants/sim/legged_node.h"
+#include "participants/sim/sim_node.h"
 #include "tests/test_domain.h"
 
 namespace turf {
@@ -52,17 +52,17 @@ class NodeUnderTest {
     o.prefix = dds.prefix;
     o.qos_file = dds.qos_file;
     o.mode = mode;
-    node_ = std::make_unique<LeggedNode>(SimSparkScene(realism), o);
+    node_ = std::make_unique<SimNode>(SimSparkScene(realism), o);
     thread_ = std::thread([this] { node_->Run([this] { return stop_.load(); }); });
   }
   ~NodeUnderTest() {
     stop_ = true;
     thread_.join();
   }
-  LeggedNode& node() { return *node_; }
+  SimNode& node() { return *node_; }
 
  private:
-  std::unique_ptr<LeggedNode> node_;
+  std::unique_ptr<SimNode> node_;
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };

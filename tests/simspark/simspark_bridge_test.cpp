@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "loader/legged_scene_yaml.h"
-#include "participants/sim/legged_node.h"
+#include "participants/sim/sim_node.h"
 #include "participants/simspark_bridge/simspark_bridge.h"
 #include "tests/simspark/agent_client.h"
 #include "tests/test_domain.h"
@@ -63,7 +63,7 @@ class Match {
     LeggedSceneLoadResult scene = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/simspark_match.yaml");
     if (!scene.scene) throw std::runtime_error(scene.errors.front());
     stop_sim_ = false;
-    sim_ = std::make_unique<LeggedNode>(std::move(*scene.scene), sim_options_);
+    sim_ = std::make_unique<SimNode>(std::move(*scene.scene), sim_options_);
     sim_thread_ = std::thread([this] { sim_->Run([this] { return stop_sim_.load() || stop_.load(); }); });
   }
   void StopSim() {
@@ -89,7 +89,7 @@ class Match {
   SimNodeOptions sim_options_;
   std::atomic<bool> stop_{false};
   std::atomic<bool> stop_sim_{false};
-  std::unique_ptr<LeggedNode> sim_;
+  std::unique_ptr<SimNode> sim_;
   std::unique_ptr<SimSparkBridge> bridge_;
   std::thread sim_thread_;
   std::thread bridge_thread_;
