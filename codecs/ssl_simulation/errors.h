@@ -76,6 +76,20 @@ DecodeError CheckSize(size_t size, std::string* why);
 // (naming the fields) if a required field is absent.
 DecodeError Parse(const uint8_t* data, size_t size, google::protobuf::Message* message, std::string* why);
 
+// Parses a `Message` and converts it with `convert(message)`; a datagram that
+// does not parse gives a `Decode` with only the error (and its SimError).
+template <class Message, class Decode, class Convert>
+Decode ParseThen(const uint8_t* data, size_t size, Convert convert) {
+  Message message;
+  std::string why;
+  const DecodeError error = Parse(data, size, &message, &why);
+  if (error == DecodeError::kOk) return convert(message);
+  Decode out;
+  out.error = error;
+  out.errors.push_back(MakeError(error, why));
+  return out;
+}
+
 // Paths of fields the parser did not know (e.g. "control.teleport_ball.#12"),
 // anywhere in the message; an unknown enum value of a proto2 field lands here too.
 std::vector<std::string> UnknownFields(const google::protobuf::Message& message);

@@ -6,12 +6,15 @@
 #include <string>
 
 #include "core/input_limits.h"
+#include "idl/values.h"
 
 namespace turf::simproto {
 
 namespace ws = wire::simulation;
 
 namespace {
+
+using idl::V3;
 
 constexpr double kDegToRad = M_PI / 180.0;
 constexpr double kMaxKickAngleDeg = 90.0;  // exclusive: a chip needs some forward speed
@@ -41,14 +44,6 @@ bool MapId(uint32_t wire_id, Port port, int robots_per_team, idl::Team* team, ui
   }
   *id = static_cast<uint8_t>(local);
   return true;
-}
-
-idl::Vec3 V3(double x, double y, double z) {
-  idl::Vec3 v;
-  v.x(x);
-  v.y(y);
-  v.z(z);
-  return v;
 }
 
 void CheckVelocity(double x, double y, double angular, const std::string& what, Problems* p) {
@@ -144,16 +139,8 @@ RobotControlDecode ConvertRobotControl(const ws::RobotControl& message, Port por
 }
 
 RobotControlDecode DecodeRobotControl(const uint8_t* data, size_t size, Port port, int robots_per_team) {
-  ws::RobotControl message;
-  std::string why;
-  const DecodeError error = Parse(data, size, &message, &why);
-  if (error != DecodeError::kOk) {
-    RobotControlDecode out;
-    out.error = error;
-    out.errors.push_back(MakeError(error, why));
-    return out;
-  }
-  return ConvertRobotControl(message, port, robots_per_team);
+  return ParseThen<ws::RobotControl, RobotControlDecode>(
+      data, size, [&](const ws::RobotControl& message) { return ConvertRobotControl(message, port, robots_per_team); });
 }
 
 void FillRobotControlResponse(const RobotControlDecode& decoded, const ContactMap& contacts,

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/input_limits.h"
+#include "idl/values.h"
 
 namespace turf::simproto {
 
@@ -16,22 +17,10 @@ namespace ws = wire::simulation;
 
 namespace {
 
+using idl::V2;
+using idl::V3;
+
 constexpr double kMaxOrientation = 1e6;  // rad, as turf-sim's check
-
-idl::Vec3 V3(double x, double y, double z) {
-  idl::Vec3 v;
-  v.x(x);
-  v.y(y);
-  v.z(z);
-  return v;
-}
-
-idl::Vec2 V2(double x, double y) {
-  idl::Vec2 v;
-  v.x(x);
-  v.y(y);
-  return v;
-}
 
 idl::SimControl Request(idl::ControlOp op) {
   idl::SimControl c;
@@ -251,16 +240,8 @@ SimulatorCommandDecode ConvertSimulatorCommand(const ws::SimulatorCommand& messa
 }
 
 SimulatorCommandDecode DecodeSimulatorCommand(const uint8_t* data, size_t size, const ControlContext& ctx) {
-  ws::SimulatorCommand message;
-  std::string why;
-  const DecodeError error = Parse(data, size, &message, &why);
-  if (error != DecodeError::kOk) {
-    SimulatorCommandDecode out;
-    out.error = error;
-    out.errors.push_back(MakeError(error, why));
-    return out;
-  }
-  return ConvertSimulatorCommand(message, ctx);
+  return ParseThen<ws::SimulatorCommand, SimulatorCommandDecode>(
+      data, size, [&](const ws::SimulatorCommand& message) { return ConvertSimulatorCommand(message, ctx); });
 }
 
 SimError RejectedBySim(const idl::SimControlReply& reply) {

@@ -1,23 +1,19 @@
 #include "participants/sim/convert.h"
 
 #include <cmath>
+#include "idl/values.h"
 
 namespace turf {
 
 namespace {
+
+using idl::V2;
 
 idl::Vec3 V3(const Vec3& v) {
   idl::Vec3 out;
   out.x(v.x);
   out.y(v.y);
   out.z(v.z);
-  return out;
-}
-
-idl::Vec2 V2(double x, double y) {
-  idl::Vec2 out;
-  out.x(x);
-  out.y(y);
   return out;
 }
 

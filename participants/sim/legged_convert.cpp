@@ -2,25 +2,6 @@
 
 namespace turf {
 
-idl::Vec3 V3(const std::array<double, 3>& a) {
-  idl::Vec3 v;
-  v.x(a[0]);
-  v.y(a[1]);
-  v.z(a[2]);
-  return v;
-}
-
-idl::Quat Q4(const std::array<double, 4>& a) {
-  idl::Quat q;
-  q.w(a[0]);
-  q.x(a[1]);
-  q.y(a[2]);
-  q.z(a[3]);
-  return q;
-}
-
-std::array<double, 3> A3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
-
 idl::GeomShape ToIdl(LeggedGeom::Shape shape) {
   switch (shape) {
     case LeggedGeom::Shape::kBox:

@@ -8,12 +8,13 @@
 #include <array>
 
 #include "core/legged/legged_world.h"
+#include "idl/values.h"
 
 namespace turf {
 
-idl::Vec3 V3(const std::array<double, 3>& a);
-idl::Quat Q4(const std::array<double, 4>& a);
-std::array<double, 3> A3(const idl::Vec3& v);
+using idl::A3;
+using idl::Q4;
+using idl::V3;
 idl::GeomShape ToIdl(LeggedGeom::Shape shape);
 
 // One robot's stream samples (reusing the output's storage).

@@ -8,10 +8,13 @@
 #include <initializer_list>
 
 #include "core/input_limits.h"
+#include "idl/values.h"
 
 namespace turf::viewer {
 
 namespace {
+
+using idl::V3;
 
 using nlohmann::json;
 
@@ -119,14 +122,6 @@ class Fields {
   const json& object_;
   PageRequest* out_;
 };
-
-idl::Vec3 V3(double x, double y, double z) {
-  idl::Vec3 v;
-  v.x(x);
-  v.y(y);
-  v.z(z);
-  return v;
-}
 
 // Half extents of the walled area for a body of radius r (turf-sim's rule).
 struct Bounds {

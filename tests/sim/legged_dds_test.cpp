@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "dds/participant.h"
+#include "idl/values.h"
 #include "loader/legged_scene_yaml.h"
 #include "loader/realism_yaml.h"
 #include "participants/sim/sim_node.h"
@@ -267,14 +268,6 @@ TEST(LeggedDdsTest, LockstepStepsExactlyAndResetRestarts) {
   EXPECT_NEAR(client.Angle("nao_1", "hj1"), 0.0, 1e-9);
 }
 
-idl::Vec3 Vec(double x, double y, double z) {
-  idl::Vec3 v;
-  v.x(x);
-  v.y(y);
-  v.z(z);
-  return v;
-}
-
 // What the SimSpark bridge needs: joint commands inside STEP (atomic with the
 // step), robots and ball moved by control requests, body poses, the scene.
 TEST(LeggedDdsTest, StepCarriesJointCommandsAndTeleportsMoveRobotsAndBall) {
@@ -315,14 +308,14 @@ TEST(LeggedDdsTest, StepCarriesJointCommandsAndTeleportsMoveRobotsAndBall) {
   idl::SimControl move;
   move.op(idl::OP_TELEPORT_ROBOT);
   move.legged().robot("nao_2");
-  move.legged().position(Vec(2.0, 3.0, 0.4));
+  move.legged().position(idl::V3(2.0, 3.0, 0.4));
   move.legged().orientation().w(1.0);
   reply = client.Control(move);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_OK) << reply->reason();
   idl::SimControl ball;
   ball.op(idl::OP_TELEPORT_BALL);
-  ball.ball().position(Vec(1.0, -1.0, 0.042));
+  ball.ball().position(idl::V3(1.0, -1.0, 0.042));
   reply = client.Control(ball);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_OK) << reply->reason();
@@ -339,11 +332,11 @@ TEST(LeggedDdsTest, StepCarriesJointCommandsAndTeleportsMoveRobotsAndBall) {
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
   move.legged().robot("nao_2");
-  move.legged().position(Vec(1e6, 0, 0));
+  move.legged().position(idl::V3(1e6, 0, 0));
   reply = client.Control(move);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
-  ball.ball().velocity(Vec(NAN, 0, 0));
+  ball.ball().velocity(idl::V3(NAN, 0, 0));
   reply = client.Control(ball);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);

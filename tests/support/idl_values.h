@@ -8,22 +8,12 @@
 #include <utility>
 #include <vector>
 
+#include "idl/values.h"
+
 namespace turf::test {
 
-inline idl::Vec2 V2(double x, double y) {
-  idl::Vec2 v;
-  v.x(x);
-  v.y(y);
-  return v;
-}
-
-inline idl::Vec3 V3(double x, double y, double z) {
-  idl::Vec3 v;
-  v.x(x);
-  v.y(y);
-  v.z(z);
-  return v;
-}
+using idl::V2;
+using idl::V3;
 
 // A robot at (x, y) facing `yaw`, on the field or off it; nothing else set.
 inline idl::RobotState RobotAt(idl::Team team, int id, double x, double y, double yaw, bool on_field = true) {
