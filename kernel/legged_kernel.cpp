@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include <fmt/format.h>
 
@@ -22,14 +23,8 @@ std::vector<std::string> RobotNames(const LeggedScene& s) {
 }
 
 const LinkParams& LinkOf(const SensorRealism& r, LeggedStream s) {
-  switch (s) {
-    case LeggedStream::kJoints:
-      return r.encoder.link;
-    case LeggedStream::kImu:
-      return r.imu.link;
-    default:
-      return r.touch.link;
-  }
+  const LinkParams* links[] = {&r.encoder.link, &r.imu.link, &r.touch.link};
+  return *links[static_cast<int>(s)];
 }
 
 std::string StreamName(const LeggedScene& scene, int robot, LeggedStream s) {
@@ -102,17 +97,9 @@ void RestoreSampleFields(StateReader& in, LeggedSample* s) {
 }  // namespace
 
 const char* LeggedStreamName(LeggedStream stream) {
-  switch (stream) {
-    case LeggedStream::kJoints:
-      return "joint_state";
-    case LeggedStream::kImu:
-      return "imu";
-    case LeggedStream::kTouch:
-      return "force";
-    case LeggedStream::kCount:
-      break;
-  }
-  return "?";
+  constexpr const char* kNames[] = {"joint_state", "imu", "force"};
+  static_assert(std::size(kNames) == static_cast<size_t>(LeggedStream::kCount));
+  return stream < LeggedStream::kCount ? kNames[static_cast<int>(stream)] : "?";
 }
 
 LeggedKernel::LeggedKernel(LeggedScene scene)
