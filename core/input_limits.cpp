@@ -4,26 +4,6 @@
 
 namespace turf {
 
-const char* InputErrorName(InputError error) {
-  switch (error) {
-    case InputError::kOk:
-      return "ok";
-    case InputError::kNotFinite:
-      return "not_finite";
-    case InputError::kOutOfRange:
-      return "out_of_range";
-    case InputError::kUnknownRobot:
-      return "unknown_robot";
-    case InputError::kOutsideField:
-      return "outside_field";
-    case InputError::kTeamMismatch:
-      return "team_mismatch";
-    case InputError::kCount:
-      break;
-  }
-  return "unknown";
-}
-
 namespace {
 
 bool Finite(double v) { return std::isfinite(v); }

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 
+#include "core/errors.h"
 #include "core/scene.h"
 
 namespace turf {
@@ -52,8 +53,5 @@ struct RobotTeleport {
 
 // Why an input was refused. Every refusal is one of these, so callers can
 // count them per kind and say why a robot did not move.
-// kTeamMismatch: a command on one team's stream naming the other team.
-enum class InputError : uint8_t { kOk, kNotFinite, kOutOfRange, kUnknownRobot, kOutsideField, kTeamMismatch, kCount };
-const char* InputErrorName(InputError error);
 
 }  // namespace turf

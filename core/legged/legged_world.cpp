@@ -81,24 +81,6 @@ struct LeggedWorld::RobotSlot {
   std::vector<SensorRef> forces;
 };
 
-const char* JointCommandErrorName(JointCommandError error) {
-  switch (error) {
-    case JointCommandError::kOk:
-      return "ok";
-    case JointCommandError::kUnknownRobot:
-      return "unknown_robot";
-    case JointCommandError::kUnknownJoint:
-      return "unknown_joint";
-    case JointCommandError::kNotFinite:
-      return "not_finite";
-    case JointCommandError::kOutOfRange:
-      return "out_of_range";
-    case JointCommandError::kCount:
-      break;
-  }
-  return "?";
-}
-
 LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
   const std::vector<std::string> problems = ValidateLeggedScene(scene_);
   if (!problems.empty()) throw std::invalid_argument("invalid legged scene: " + problems.front());
@@ -195,20 +177,6 @@ void LeggedWorld::ResetCommands(RobotSlot* r) {
 }
 
 void LeggedWorld::AcceptState() { last_good_.Accept(model_.get(), data_.get()); }
-
-const char* PlacementErrorName(PlacementError error) {
-  switch (error) {
-    case PlacementError::kOk:
-      return "ok";
-    case PlacementError::kUnknownRobot:
-      return "unknown_robot";
-    case PlacementError::kNotFinite:
-      return "not_finite";
-    case PlacementError::kNoBall:
-      return "no_ball";
-  }
-  return "?";
-}
 
 PlacementError LeggedWorld::PlaceRobot(int robot, const RobotPlacement& p) {
   if (robot < 0 || robot >= RobotCount() || robots_[robot].root_qpos < 0) return PlacementError::kUnknownRobot;

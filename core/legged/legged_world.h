@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/errors.h"
 #include "core/legged/legged_scene.h"
 #include "core/mj_state.h"
 
@@ -39,15 +40,9 @@ struct JointCommand {
   double kd = -1.0;
 };
 
-enum class JointCommandError : uint8_t {
-  kOk,
-  kUnknownRobot,
-  kUnknownJoint,
-  kNotFinite,
-  kOutOfRange,  // beyond max speed, max torque or the joint's range; negative gains
-  kCount
-};
-const char* JointCommandErrorName(JointCommandError error);
+// Joint commands answer kOk, kUnknownRobot, kUnknownJoint, kNotFinite or
+// kOutOfRange (beyond max speed, max torque or the joint's range; negative
+// gains): core/errors.h.
 
 // Where a robot's root body goes (a SimSpark beam, a trainer's move, parking).
 struct RobotPlacement {
@@ -56,8 +51,7 @@ struct RobotPlacement {
   bool reset_joints = false;                      // joints back to the model's zero pose, each holding there
 };
 
-enum class PlacementError : uint8_t { kOk, kUnknownRobot, kNotFinite, kNoBall };
-const char* PlacementErrorName(PlacementError error);
+// Placements answer kOk, kUnknownRobot, kNotFinite or kNoBall (core/errors.h).
 
 struct ForceReading {
   std::string name;            // the sensor's name in the robot file ("lf")
