@@ -209,7 +209,8 @@ class Participant {
   fdds::DataWriterQos WriterQos(Topic topic) const;
   fdds::DataReaderQos ReaderQos(Topic topic) const;
   [[noreturn]] void Fail(const char* what, Topic topic) const;
-  // Records the endpoint and logs its line at debug.
+  // Records the endpoint and logs its line at debug: the default (info) output keeps the participant's own
+  // start-up lines, or LogTopics(); --log-level debug adds each endpoint's type and QoS profile as it is made.
   void Created(Endpoint endpoint, Topic topic);
 
   ParticipantOptions options_;
