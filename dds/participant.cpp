@@ -73,16 +73,40 @@ fdds::Topic* Participant::GetTopic(Topic topic, fdds::TypeSupport type) {
 
 fdds::DataWriterQos Participant::WriterQos(Topic topic) const {
   fdds::DataWriterQos qos = fdds::DATAWRITER_QOS_DEFAULT;
-  if (publisher_->get_datawriter_qos_from_profile(Info(topic).profile, qos) != ReturnCode::RETCODE_OK)
-    spdlog::warn("QoS file has no data_writer profile '{}'; using Fast DDS defaults", Info(topic).profile);
+  if (publisher_->get_datawriter_qos_from_profile(topic.info().profile, qos) != ReturnCode::RETCODE_OK)
+    spdlog::warn("QoS file has no data_writer profile '{}'; using Fast DDS defaults", topic.info().profile);
   return qos;
 }
 
 fdds::DataReaderQos Participant::ReaderQos(Topic topic) const {
   fdds::DataReaderQos qos = fdds::DATAREADER_QOS_DEFAULT;
-  if (subscriber_->get_datareader_qos_from_profile(Info(topic).profile, qos) != ReturnCode::RETCODE_OK)
-    spdlog::warn("QoS file has no data_reader profile '{}'; using Fast DDS defaults", Info(topic).profile);
+  if (subscriber_->get_datareader_qos_from_profile(topic.info().profile, qos) != ReturnCode::RETCODE_OK)
+    spdlog::warn("QoS file has no data_reader profile '{}'; using Fast DDS defaults", topic.info().profile);
   return qos;
+}
+
+void Participant::Created(Endpoint endpoint, Topic topic) {
+  spdlog::debug("{}", EndpointLine(options_.prefix, topic, endpoint));
+  std::lock_guard<std::mutex> lock(endpoints_mutex_);
+  const std::pair<Endpoint, Topic> entry(endpoint, topic);
+  for (const auto& e : endpoints_)
+    if (e == entry) return;
+  endpoints_.push_back(entry);
+}
+
+std::vector<std::pair<Endpoint, Topic>> Participant::Endpoints() const {
+  std::lock_guard<std::mutex> lock(endpoints_mutex_);
+  return endpoints_;
+}
+
+std::vector<std::string> Participant::TopicLines() const {
+  std::vector<std::string> lines;
+  for (const auto& [endpoint, topic] : Endpoints()) lines.push_back(EndpointLine(options_.prefix, topic, endpoint));
+  return lines;
+}
+
+void Participant::LogTopics() const {
+  for (const std::string& line : TopicLines()) spdlog::info("{}", line);
 }
 
 void Participant::Fail(const char* what, Topic topic) const {

@@ -1,6 +1,7 @@
 // A DDS participant of turf: one DomainParticipant with one publisher and one
 // subscriber, QoS from the profiles file, and typed writers and readers for
-// the topics in topics.h. RAII throughout: a Writer or Reader deletes its
+// the topics in topics.h: a topic constant carries its type, so a writer or
+// reader of another type does not compile. RAII throughout: a Writer or Reader deletes its
 // entity; the Participant must outlive them (declare it first).
 //
 // Fast DDS headers are heavy (~10 s a file): include this only in participant
@@ -24,6 +25,8 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "dds/topics.h"
@@ -166,36 +169,57 @@ class Participant {
   const ParticipantOptions& options() const { return options_; }
   std::string TopicName(Topic topic) const { return dds::TopicName(options_.prefix, topic); }
 
-  template <class PubSub>
-  std::unique_ptr<Writer<PubSub>> MakeWriter(Topic topic) {
-    fdds::Topic* t = GetTopic(topic, fdds::TypeSupport(new PubSub()));
+  // MakeWriter<idl::ClockPubSubType>(dds::Topic::kClock), or MakeWriter(dds::Topic::kClock): the type
+  // comes with the topic, and naming another one does not compile.
+  template <class PubSub = void, class Carried>
+  std::unique_ptr<Writer<Carried>> MakeWriter(const TopicDef<Carried>& topic) {
+    static_assert(std::is_void_v<PubSub> || std::is_same_v<PubSub, Carried>,
+                  "MakeWriter<T>(topic): T is not the topic's type (see dds/topics.h)");
+    fdds::Topic* t = GetTopic(topic, fdds::TypeSupport(new Carried()));
     fdds::DataWriter* w = publisher_->create_datawriter(t, WriterQos(topic));
     if (w == nullptr) Fail("data writer", topic);
-    return std::make_unique<Writer<PubSub>>(publisher_, w);
+    Created(Endpoint::kWriter, topic);
+    return std::make_unique<Writer<Carried>>(publisher_, w);
   }
 
-  template <class PubSub>
-  std::unique_ptr<Reader<PubSub>> MakeReader(Topic topic, std::function<void()> on_data = {}) {
-    fdds::Topic* t = GetTopic(topic, fdds::TypeSupport(new PubSub()));
-    auto reader = std::make_unique<Reader<PubSub>>();
+  // MakeReader<idl::ClockPubSubType>(dds::Topic::kClock, on_data), or without the type; as MakeWriter.
+  template <class PubSub = void, class Carried>
+  std::unique_ptr<Reader<Carried>> MakeReader(const TopicDef<Carried>& topic, std::function<void()> on_data = {}) {
+    static_assert(std::is_void_v<PubSub> || std::is_same_v<PubSub, Carried>,
+                  "MakeReader<T>(topic): T is not the topic's type (see dds/topics.h)");
+    fdds::Topic* t = GetTopic(topic, fdds::TypeSupport(new Carried()));
+    auto reader = std::make_unique<Reader<Carried>>();
     fdds::DataReader* r =
         subscriber_->create_datareader(t, ReaderQos(topic), reader->listener(), fdds::StatusMask::data_available());
     if (r == nullptr) Fail("data reader", topic);
     reader->Attach(subscriber_, r, std::move(on_data));
+    Created(Endpoint::kReader, topic);
     return reader;
   }
+
+  // Every topic this participant has made a writer or reader for, once each, in creation order.
+  std::vector<std::pair<Endpoint, Topic>> Endpoints() const;
+  // One line per Endpoints() entry, with full name, DDS type and QoS profile (EndpointLine()).
+  std::vector<std::string> TopicLines() const;
+  // Logs TopicLines() at info: a participant's start-up list of its topics, from the table.
+  void LogTopics() const;
 
  private:
   fdds::Topic* GetTopic(Topic topic, fdds::TypeSupport type);
   fdds::DataWriterQos WriterQos(Topic topic) const;
   fdds::DataReaderQos ReaderQos(Topic topic) const;
   [[noreturn]] void Fail(const char* what, Topic topic) const;
+  // Records the endpoint and logs its line at debug: the default (info) output keeps the participant's own
+  // start-up lines, or LogTopics(); --log-level debug adds each endpoint's type and QoS profile as it is made.
+  void Created(Endpoint endpoint, Topic topic);
 
   ParticipantOptions options_;
   fdds::DomainParticipant* participant_ = nullptr;
   fdds::Publisher* publisher_ = nullptr;
   fdds::Subscriber* subscriber_ = nullptr;
   std::map<std::string, fdds::Topic*> topics_;
+  mutable std::mutex endpoints_mutex_;
+  std::vector<std::pair<Endpoint, Topic>> endpoints_;
 };
 
 }  // namespace turf::dds

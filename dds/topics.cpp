@@ -2,14 +2,37 @@
 
 namespace turf::dds {
 
-const TopicInfo& Info(Topic topic) {
-  for (const TopicInfo& info : kTopics)
-    if (info.topic == topic) return info;
-  return kTopics[0];  // unreachable: every enumerator has a row (tested)
+std::string TopicName(const std::string& prefix, Topic topic) {
+  return prefix.empty() ? topic.info().suffix : prefix + "/" + topic.info().suffix;
 }
 
-std::string TopicName(const std::string& prefix, Topic topic) {
-  return prefix.empty() ? Info(topic).suffix : prefix + "/" + Info(topic).suffix;
+const char* DirectionName(Direction direction) {
+  switch (direction) {
+    case Direction::kPublished:
+      return "published";
+    case Direction::kLatched:
+      return "published, latched";
+    case Direction::kSubscribed:
+      return "subscribed";
+  }
+  return "?";
+}
+
+std::string EndpointLine(const std::string& prefix, Topic topic, Endpoint endpoint) {
+  const TopicInfo& info = topic.info();
+  return std::string(endpoint == Endpoint::kWriter ? "writes " : "reads ") + TopicName(prefix, topic) + " (" +
+         info.dds_type + ", QoS profile " + info.profile + ")";
+}
+
+std::string TopicsMarkdown() {
+  std::string out =
+      "| topic | type | direction | QoS profile | when, what |\n"
+      "| --- | --- | --- | --- | --- |\n";
+  for (const TopicInfo& info : kTopics) {
+    out += std::string("| `") + info.suffix + "` | `" + info.type + "` | " + DirectionName(info.direction) + " | `" +
+           info.profile + "` | " + info.what + " |\n";
+  }
+  return out;
 }
 
 }  // namespace turf::dds

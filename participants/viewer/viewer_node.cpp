@@ -130,7 +130,7 @@ class ViewerNode::Impl {
 
  private:
   template <class PubSub>
-  std::unique_ptr<dds::Reader<PubSub>> Reader(dds::Topic topic) {
+  std::unique_ptr<dds::Reader<PubSub>> Reader(const dds::TopicDef<PubSub>& topic) {
     return participant_.MakeReader<PubSub>(topic, [this] { wakeup_.Notify(); });
   }
 

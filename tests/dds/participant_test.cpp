@@ -1,0 +1,123 @@
+// The topic table against DDS: every constant's type registers the type name in its row, every topic gets a
+// writer and a reader with its QoS profile, and a participant's start-up lines list what it writes and reads.
+#include <gtest/gtest.h>
+#include <spdlog/sinks/ostream_sink.h>
+#include <spdlog/spdlog.h>
+#include <turf/idl/ClockPubSubTypes.h>
+#include <turf/idl/JointsPubSubTypes.h>
+#include <turf/idl/SensorStatsPubSubTypes.h>
+#include <turf/idl/SimControlPubSubTypes.h>
+#include <turf/idl/SslRobotPubSubTypes.h>
+#include <turf/idl/SslVisionPubSubTypes.h>
+#include <turf/idl/WorldStatePubSubTypes.h>
+#include <unistd.h>
+
+#include <memory>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "dds/participant.h"
+#include "tests/test_domain.h"
+
+namespace turf {
+namespace {
+
+template <class PubSub>
+void ExpectRegisteredName(const dds::TopicDef<PubSub>& topic) {
+  PubSub type;
+  EXPECT_STREQ(type.getName(), topic.info().dds_type) << topic.info().constant;
+  EXPECT_EQ(eprosima::fastdds::dds::TypeSupport(new PubSub()).get_type_name(), topic.info().dds_type)
+      << topic.info().constant;
+}
+
+TEST(TopicTypes, EveryTopicsTypeRegistersTheNameInItsRow) {
+  std::apply([](const auto&... topic) { (ExpectRegisteredName(topic), ...); }, dds::kTypedTopics);
+}
+
+// Logs of the default logger, at debug and above, while it lives.
+class CapturedLog {
+ public:
+  CapturedLog() : previous_(spdlog::default_logger()) {
+    auto sink = std::make_shared<spdlog::sinks::ostream_sink_mt>(text_);
+    sink->set_pattern("%l %v");
+    auto logger = std::make_shared<spdlog::logger>("captured", sink);
+    logger->set_level(spdlog::level::debug);
+    spdlog::set_default_logger(logger);
+  }
+  ~CapturedLog() { spdlog::set_default_logger(previous_); }
+  CapturedLog(const CapturedLog&) = delete;
+  CapturedLog& operator=(const CapturedLog&) = delete;
+  std::string Text() const { return text_.str(); }
+
+ private:
+  std::shared_ptr<spdlog::logger> previous_;
+  std::ostringstream text_;
+};
+
+dds::ParticipantOptions Options(const char* name) {
+  static int g_counter = 0;
+  dds::ParticipantOptions o;
+  o.domain = test::TestDomain();
+  o.prefix = "dds" + std::to_string(getpid()) + "_" + std::to_string(++g_counter);
+  o.name = name;
+  o.qos_file = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
+  return o;
+}
+
+TEST(ParticipantTopics, ListsWhatItWritesAndReadsOnceEach) {
+  CapturedLog log;
+  {
+    dds::Participant participant(Options("topics_list"));
+    const std::string p = participant.options().prefix;
+    auto clock = participant.MakeWriter(dds::Topic::kClock);
+    auto state = participant.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState);
+    auto state_again = participant.MakeReader(dds::Topic::kWorldState, [] {});
+    auto control = participant.MakeReader(dds::Topic::kControl);
+    const std::vector<std::string> expected = {
+        "writes " + p + "/clock (turf::idl::Clock, QoS profile turf.state)",
+        "reads " + p + "/world_state (turf::idl::WorldState, QoS profile turf.state)",
+        "reads " + p + "/control (turf::idl::SimControl, QoS profile turf.control)",
+    };
+    EXPECT_EQ(participant.TopicLines(), expected);
+    ASSERT_EQ(participant.Endpoints().size(), 3u);
+    EXPECT_EQ(participant.Endpoints()[1].first, dds::Endpoint::kReader);
+    EXPECT_EQ(participant.Endpoints()[1].second, dds::Topic::kWorldState);
+
+    // Each creation is logged at debug as it happens (the second world_state reader too); LogTopics() gives
+    // the list at info.
+    const std::string created = log.Text();
+    EXPECT_NE(created.find("debug " + expected[0] + "\n"), std::string::npos) << created;
+    EXPECT_NE(created.find("debug " + expected[1] + "\n"), std::string::npos) << created;
+    EXPECT_NE(created.find("debug " + expected[2] + "\n"), std::string::npos) << created;
+    EXPECT_EQ(created.find("info "), std::string::npos) << created;
+    participant.LogTopics();
+    const std::string listed = log.Text().substr(created.size());
+    EXPECT_EQ(listed, "info " + expected[0] + "\ninfo " + expected[1] + "\ninfo " + expected[2] + "\n");
+  }
+}
+
+// Every row: a writer and a reader of its type, with its QoS profile found in the QoS file (the participant
+// warns when a profile is missing).
+TEST(ParticipantTopics, EveryTopicGetsAWriterAndAReaderWithItsProfile) {
+  CapturedLog log;
+  dds::Participant participant(Options("topics_all"));
+  std::apply(
+      [&participant](const auto&... topic) {
+        auto check = [&participant](const auto& t) {
+          auto writer = participant.MakeWriter(t);
+          auto reader = participant.MakeReader(t);
+          EXPECT_NE(writer, nullptr);
+          EXPECT_NE(reader, nullptr);
+        };
+        (check(topic), ...);
+      },
+      dds::kTypedTopics);
+  EXPECT_EQ(participant.Endpoints().size(), 2 * dds::kTopicCount);
+  EXPECT_EQ(log.Text().find("warn"), std::string::npos) << log.Text();
+  EXPECT_EQ(log.Text().find("error"), std::string::npos) << log.Text();
+}
+
+}  // namespace
+}  // namespace turf
