@@ -6,10 +6,10 @@
 
 #include <cmath>
 
-#include "loader/realism_yaml.h"
 #include "core/legged/legged_sensors.h"
 #include "core/legged/legged_world.h"
 #include "dds/participant.h"
+#include "loader/realism_yaml.h"
 #include "participants/sim/control_loop.h"
 
 namespace turf {
@@ -193,30 +193,32 @@ class LeggedNode::Impl final : private ControlLoop::Node {
   void Step() override { world_.Step(); }
   void AfterStep() override {}
 
-  std::string ApplyStepCommands(const idl::SimControl& req) override {
-    if (!req.commands().empty()) return "legged robots take joint_commands, not SSL commands";
+  ControlAnswer ApplyStepCommands(const idl::SimControl& req) override {
+    if (!req.commands().empty())
+      return {idl::CONTROL_NOT_ALLOWED, "legged robots take joint_commands, not SSL commands"};
     // All of the step's joint commands or none.
     for (const idl::JointCommand& c : req.joint_commands()) {
       const JointCommandError e = CheckCommand(c, &checked_);
       if (e != JointCommandError::kOk)
-        return fmt::format("joint command for '{}': {}", c.robot(), JointCommandErrorName(e));
+        return {ControlErrorOf(e), fmt::format("joint command for '{}': {}", c.robot(), JointCommandErrorName(e))};
     }
     for (const idl::JointCommand& c : req.joint_commands()) {
       CheckCommand(c, &checked_);
       for (const JointCommand& j : checked_) world_.SetJointCommand(world_.RobotIndex(c.robot()), j);
     }
-    return "";
+    return {};
   }
 
-  std::string TeleportBall(const idl::SimControl& req) override { return PlaceBall(req.ball()); }
-  std::string TeleportRobot(const idl::SimControl& req) override { return PlaceRobot(req.legged()); }
-  std::string ChangeRealism(const std::string& spec) override {
+  ControlAnswer TeleportBall(const idl::SimControl& req) override { return PlaceBall(req.ball()); }
+  ControlAnswer TeleportRobot(const idl::SimControl& req) override { return PlaceRobot(req.legged()); }
+  ControlAnswer ChangeRealism(const std::string& spec) override {
     // From the network: preset names and YAML text only, never file paths.
     const RealismLoadResult loaded = LoadRealism(spec, DefaultRealismDir(), /*allow_paths=*/false, realism_);
-    if (!loaded.realism) return loaded.errors.empty() ? "invalid realism" : loaded.errors.front();
+    if (!loaded.realism)
+      return {idl::CONTROL_INVALID_REALISM, loaded.errors.empty() ? "invalid realism" : loaded.errors.front()};
     realism_ = *loaded.realism;
     spdlog::info("sensor realism changed ({})", spec.size() < 40 ? spec : spec.substr(0, 40) + "...");
-    return "";
+    return {};
   }
   void ResetWorld() override {
     world_.Reset();
@@ -247,27 +249,32 @@ class LeggedNode::Impl final : private ControlLoop::Node {
   }
 
   // OP_TELEPORT_ROBOT: a legged robot's root body.
-  std::string PlaceRobot(const idl::LeggedTeleport& t) {
+  ControlAnswer PlaceRobot(const idl::LeggedTeleport& t) {
     RobotPlacement p;
     p.position = A3(t.position());
     p.orientation = {t.orientation().w(), t.orientation().x(), t.orientation().y(), t.orientation().z()};
     p.reset_joints = t.reset_joints();
     for (int k = 0; k < 3; ++k) {
-      if (std::abs(p.position[k]) > kMaxPlacement) return fmt::format("position beyond {} m", kMaxPlacement);
+      if (std::abs(p.position[k]) > kMaxPlacement)
+        return {idl::CONTROL_OUT_OF_RANGE, fmt::format("position beyond {} m", kMaxPlacement)};
     }
     const PlacementError e = world_.PlaceRobot(world_.RobotIndex(t.robot()), p);
-    return e == PlacementError::kOk ? "" : fmt::format("robot '{}': {}", t.robot(), PlacementErrorName(e));
+    if (e == PlacementError::kOk) return {};
+    return {ControlErrorOf(e), fmt::format("robot '{}': {}", t.robot(), PlacementErrorName(e))};
   }
 
-  std::string PlaceBall(const idl::BallTeleport& b) {
+  ControlAnswer PlaceBall(const idl::BallTeleport& b) {
     const std::array<double, 3> position = A3(b.position());
     const std::array<double, 3> velocity = A3(b.velocity());
     for (int k = 0; k < 3; ++k) {
-      if (std::abs(position[k]) > kMaxPlacement) return fmt::format("position beyond {} m", kMaxPlacement);
-      if (std::abs(velocity[k]) > kMaxBallSpeed) return fmt::format("velocity beyond {} m/s", kMaxBallSpeed);
+      if (std::abs(position[k]) > kMaxPlacement)
+        return {idl::CONTROL_OUT_OF_RANGE, fmt::format("position beyond {} m", kMaxPlacement)};
+      if (std::abs(velocity[k]) > kMaxBallSpeed)
+        return {idl::CONTROL_OUT_OF_RANGE, fmt::format("velocity beyond {} m/s", kMaxBallSpeed)};
     }
     const PlacementError e = world_.PlaceBall(position, velocity);
-    return e == PlacementError::kOk ? "" : fmt::format("ball: {}", PlacementErrorName(e));
+    if (e == PlacementError::kOk) return {};
+    return {ControlErrorOf(e), fmt::format("ball: {}", PlacementErrorName(e))};
   }
 
   void PublishState() override {

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <deque>
 
-#include "loader/realism_yaml.h"
 #include "core/input_limits.h"
 #include "core/link_model.h"
 #include "core/rng.h"
@@ -17,6 +16,7 @@
 #include "core/stream_stats.h"
 #include "core/world.h"
 #include "dds/participant.h"
+#include "loader/realism_yaml.h"
 #include "participants/sim/control_loop.h"
 #include "participants/sim/convert.h"
 
@@ -109,27 +109,29 @@ class SimNode::Impl final : private ControlLoop::Node {
     world_.Step();
   }
 
-  std::string ApplyStepCommands(const idl::SimControl& req) override {
+  ControlAnswer ApplyStepCommands(const idl::SimControl& req) override {
     for (const idl::SslRobotCommand& c : req.commands()) {
       Team team;
-      if (!FromIdl(c.team(), &team)) return "a command has an unknown team";
+      if (!FromIdl(c.team(), &team)) return {idl::CONTROL_UNKNOWN_ENUM, "a command has an unknown team"};
       ApplyCommand(c, team);
     }
-    return "";
+    return {};
   }
 
-  std::string TeleportBall(const idl::SimControl& req) override {
+  ControlAnswer TeleportBall(const idl::SimControl& req) override {
     BallTeleport t;
     FromIdl(req.ball(), &t);
     const InputError e = world_.TeleportBall(t);
-    return e == InputError::kOk ? "" : fmt::format("ball teleport refused: {}", InputErrorName(e));
+    if (e == InputError::kOk) return {};
+    return {ControlErrorOf(e), fmt::format("ball teleport refused: {}", InputErrorName(e))};
   }
 
-  std::string TeleportRobot(const idl::SimControl& req) override {
+  ControlAnswer TeleportRobot(const idl::SimControl& req) override {
     RobotTeleport t;
     InputError e = FromIdl(req.robot(), &t);
     if (e == InputError::kOk) e = world_.TeleportRobot(t);
-    return e == InputError::kOk ? "" : fmt::format("robot teleport refused: {}", InputErrorName(e));
+    if (e == InputError::kOk) return {};
+    return {ControlErrorOf(e), fmt::format("robot teleport refused: {}", InputErrorName(e))};
   }
 
   // --- Inputs ---
@@ -183,13 +185,14 @@ class SimNode::Impl final : private ControlLoop::Node {
     for (Link& link : command_links_) link.SetParams(realism.command);
   }
 
-  std::string ChangeRealism(const std::string& spec) override {
+  ControlAnswer ChangeRealism(const std::string& spec) override {
     // From the network: preset names and YAML text only, never file paths.
     const RealismLoadResult loaded = LoadRealism(spec, realism_dir_, /*allow_paths=*/false, realism_);
-    if (!loaded.realism) return loaded.errors.empty() ? "invalid realism" : loaded.errors.front();
+    if (!loaded.realism)
+      return {idl::CONTROL_INVALID_REALISM, loaded.errors.empty() ? "invalid realism" : loaded.errors.front()};
     SetRealism(*loaded.realism);
     spdlog::info("sensor realism changed ({})", spec.size() < 40 ? spec : spec.substr(0, 40) + "...");
-    return "";
+    return {};
   }
 
   void ResetWorld() override {
