@@ -108,10 +108,12 @@ ControlClient::~ControlClient() {
 
 bool ControlClient::ServerMatched() const { return writer_->Matched() > 0 && reader_->Matched() > 0; }
 
+// Fast DDS calls our reader's listener (which takes mutex_) with its own locks
+// held: no DDS call may be made while holding mutex_ (Matched, Write, Take).
 bool ControlClient::WaitForServer(SteadyClock::time_point deadline, const StopFn& stop) {
-  std::unique_lock<std::mutex> lock(mutex_);
   while (!ServerMatched()) {
     if (SteadyClock::now() >= deadline || (stop && stop())) return false;
+    std::unique_lock<std::mutex> lock(mutex_);
     changed_.wait_until(lock, std::min(deadline, SteadyClock::now() + kDiscoveryPoll));
   }
   return true;
@@ -133,22 +135,20 @@ std::vector<ControlOutcome> ControlClient::CallAll(std::vector<idl::SimControl> 
     return out;
   }
   std::vector<uint64_t> ids;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    for (idl::SimControl& r : requests) ids.push_back(SendLocked(r, deadline, {}));
-  }
+  for (idl::SimControl& r : requests) ids.push_back(Register(r, deadline, {}));
+  for (const idl::SimControl& r : requests) Write(r);
   for (size_t i = 0; i < ids.size(); ++i) out[i] = Wait(ids[i], stop);
   return out;
 }
 
 uint64_t ControlClient::Send(idl::SimControl request, std::chrono::milliseconds timeout, Callback done) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return SendLocked(request, SteadyClock::now() + timeout, std::move(done));
+  const uint64_t id = Register(request, SteadyClock::now() + timeout, std::move(done));
+  Write(request);
+  return id;
 }
 
-// Only the writer's match is asked for: the reply reader is durable
-// (TRANSIENT_LOCAL), so a reply written before it matched still reaches it.
-uint64_t ControlClient::SendLocked(idl::SimControl& request, SteadyClock::time_point deadline, Callback done) {
+uint64_t ControlClient::Register(idl::SimControl& request, SteadyClock::time_point deadline, Callback done) {
+  std::lock_guard<std::mutex> lock(mutex_);
   const uint64_t id = next_id_++;
   request.client(name_);
   request.request_id(id);
@@ -156,19 +156,25 @@ uint64_t ControlClient::SendLocked(idl::SimControl& request, SteadyClock::time_p
   Outstanding& o = outstanding_[id];
   o.deadline = deadline;
   o.done = std::move(done);
-  if (writer_->Matched() == 0) {
-    o.outcome = ControlOutcome{id, ControlCallError::kNoServer, std::nullopt};
-  } else {
-    writer_->Write(request);
-  }
   return id;
 }
 
+// Only the writer's match is asked for: the reply reader is durable
+// (TRANSIENT_LOCAL), so a reply written before it matched still reaches it.
+void ControlClient::Write(const idl::SimControl& request) {
+  if (writer_->Matched() > 0 && writer_->Write(request)) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto it = outstanding_.find(request.request_id());
+  if (it != outstanding_.end() && !it->second.outcome)
+    it->second.outcome = ControlOutcome{request.request_id(), ControlCallError::kNoServer, std::nullopt};
+}
+
 void ControlClient::TakeReplies() {
+  std::vector<idl::SimControlReply> inbox;
+  if (!reader_ || !reader_->Take(&inbox)) return;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!reader_ || !reader_->Take(&inbox_)) return;
-    for (const idl::SimControlReply& r : inbox_) {
+    for (const idl::SimControlReply& r : inbox) {
       if (r.client() != name_) continue;  // another client's: not ours to judge
       if (!ValidReply(r)) {
         bad_.fetch_add(1);

@@ -17,7 +17,9 @@
 //   passes; Peek()/TryTake()/Wait() collect an uncallbacked Send()'s outcome.
 //
 // Thread-safety: every method may be called from any thread; the replies are
-// taken on Fast DDS's listener thread under one mutex. Callbacks run only
+// taken on Fast DDS's listener thread and kept under one mutex, which is never
+// held across a DDS call (Fast DDS holds its own locks while it calls the
+// listener, so the reverse order would deadlock). Callbacks run only
 // inside Dispatch(), never on a DDS thread, and without the mutex held (a
 // callback may Send()). `on_reply` (constructor) runs on the DDS thread: use
 // it only to wake a loop.
@@ -118,9 +120,11 @@ class ControlClient {
     std::optional<ControlOutcome> outcome;  // set once settled
   };
 
-  void TakeReplies();  // DDS thread or caller; locks mutex_
+  void TakeReplies();  // DDS thread or caller; takes mutex_ after the DDS take
   void ExpireLocked(SteadyClock::time_point now);
-  uint64_t SendLocked(idl::SimControl& request, SteadyClock::time_point deadline, Callback done);
+  // Numbers the request and waits for its outcome; then Write() sends it (outside mutex_).
+  uint64_t Register(idl::SimControl& request, SteadyClock::time_point deadline, Callback done);
+  void Write(const idl::SimControl& request);
 
   const std::string name_;
   std::function<void()> on_reply_;
@@ -129,7 +133,6 @@ class ControlClient {
   std::condition_variable changed_;
   uint64_t next_id_;
   std::map<uint64_t, Outstanding> outstanding_;  // by request id (ids grow: begin() is the oldest)
-  std::vector<idl::SimControlReply> inbox_;
   std::atomic<uint64_t> stray_{0};
   std::atomic<uint64_t> bad_{0};
   std::unique_ptr<Writer<idl::SimControlPubSubType>> writer_;
