@@ -6,8 +6,6 @@
 
 #include <fmt/format.h>
 
-#include <map>
-
 #include "dds/control_client.h"
 #include "participants/common/wakeup.h"
 
