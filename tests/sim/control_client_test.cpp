@@ -152,6 +152,39 @@ TEST(ControlClient, CallbacksRunInDispatch) {
   EXPECT_EQ(seen[1].reply->frame(), seen[0].reply->frame() + 3);
 }
 
+// The simulation-protocol bridge's port threads share one client.
+TEST(ControlClient, ThreadsSharingAClientEachGetTheirOwnReplies) {
+  const auto dds = UniqueDds("sim");
+  SimUnderTest sim(test::OneRobot(), dds, TimeMode::kFreeRunning);
+  ClientUnderTest t(dds, "shared");
+  ASSERT_TRUE(t.client.WaitForServer(Clock::now() + kCall));
+  constexpr int kEach = 20;
+  std::atomic<int> mismatched{0};
+  std::atomic<int> failed{0};
+  auto run = [&](double y, idl::ControlOp op) {
+    for (int i = 0; i < kEach; ++i) {
+      // Thread 0 teleports the ball (OK); thread 1 asks for a bad speed (refused).
+      idl::SimControl c = op == idl::OP_TELEPORT_BALL ? BallAt(0.01 * i, y) : Op(idl::OP_SET_TIME_MODE);
+      c.time_mode(idl::TIME_SCALED);
+      c.speed(-1.0);
+      const dds::ControlOutcome o = t.client.Call(c, kCall);
+      if (!o.reply) {
+        ++failed;
+      } else if (o.reply->request_id() != o.request_id || o.reply->op() != op ||
+                 o.ok() != (op == idl::OP_TELEPORT_BALL)) {
+        ++mismatched;
+      }
+    }
+  };
+  std::thread a(run, 0.5, idl::OP_TELEPORT_BALL);
+  std::thread b(run, -0.5, idl::OP_SET_TIME_MODE);
+  a.join();
+  b.join();
+  EXPECT_EQ(failed.load(), 0);
+  EXPECT_EQ(mismatched.load(), 0);
+  EXPECT_EQ(t.client.stray_replies(), 0u);
+}
+
 TEST(ControlClient, NoServerIsNamedAndNothingIsSent) {
   const auto dds = UniqueDds("lonely");
   ClientUnderTest t(dds, "lonely");
