@@ -46,7 +46,7 @@ namespace turf::dds {
 enum class ControlCallError : uint8_t {
   kOk,        // turf-sim did it (reply RESULT_OK)
   kRefused,   // turf-sim refused it: reply->error() and reply->reason() say why
-  kNoServer,  // no turf-sim control reader/reply writer matched by the deadline: nothing was sent
+  kNoServer,  // no turf-sim matched by the deadline (or the write failed): nothing was sent
   kTimeout,   // sent, but no reply by the deadline
   kStopped,   // the caller's stop() answered true while waiting
 };
