@@ -87,6 +87,7 @@ class GrsimBridge::Impl {
 
   uint64_t Rejected(const std::string& kind) const {
     std::lock_guard<std::mutex> lock(rejects_mutex_);
+    if (kind == "control_unanswered") return unanswered_.load();
     return rejects_.Count(kind) + replacement_rejects_.Count(kind);
   }
 
@@ -154,12 +155,18 @@ class GrsimBridge::Impl {
     control_.Dispatch();
   }
 
-  // A teleport turf-sim refused, or that nobody answered (turf-sim absent or gone).
+  // A teleport turf-sim refused is logged; one nobody answered (turf-sim not
+  // there yet, or gone) only counted: bridges started first wait quietly.
   void OnReply(const dds::ControlOutcome& o) {
     if (o.ok()) return;
+    const std::string detail = "request " + std::to_string(o.request_id) + ": " + o.Describe();
+    if (o.error != dds::ControlCallError::kRefused) {
+      unanswered_.fetch_add(1);
+      spdlog::debug("replacement not done: {}", detail);
+      return;
+    }
     std::lock_guard<std::mutex> lock(rejects_mutex_);
-    replacement_rejects_.Reject(o.error == dds::ControlCallError::kRefused ? "control_rejected" : "control_unanswered",
-                                "request " + std::to_string(o.request_id) + ": " + o.Describe());
+    replacement_rejects_.Reject("control_rejected", detail);
   }
 
   // Status for a team no client has commanded yet has nowhere to go: dropped.
@@ -261,6 +268,7 @@ class GrsimBridge::Impl {
   std::atomic<uint64_t> refused_{0};
   std::atomic<uint64_t> commands_{0};
   std::atomic<uint64_t> controls_{0};
+  std::atomic<uint64_t> unanswered_{0};  // teleports without a reply (no turf-sim, or a timeout)
   std::atomic<uint64_t> status_packets_{0};
   std::atomic<bool> sim_present_{false};
   std::atomic<bool> field_known_{false};

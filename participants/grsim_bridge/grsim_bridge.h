@@ -14,8 +14,8 @@
 //   subscribes  ssl/feedback/blue, .../yellow [turf.feedback] SslRobotFeedback -> robot status
 //               ssl/field [turf.field, latched]              SslField: robots per team, wheel radius,
 //                                                            kick limits (before it: the options)
-//               control_reply [turf.reply]                   SimControlReply: refused or unanswered
-//                                                            teleports are counted and logged
+//               control_reply [turf.reply]                   SimControlReply: refused teleports are
+//                                                            logged, unanswered ones counted
 //                                                            (requests and replies: dds/control_client.h)
 // Rates: one command sample per robot per datagram (a team's frame, ~60 Hz); a
 // control request per replacement; status on change. No watchdog here: teams
