@@ -120,21 +120,19 @@ JointCommandError LeggedKernel::SetJointCommands(int robot, const std::vector<Jo
   return JointCommandError::kOk;
 }
 
-std::string LeggedKernel::PlaceRobot(int robot, const RobotPlacement& p) {
+Error LeggedKernel::PlaceRobot(int robot, const RobotPlacement& p) {
   for (double v : p.position) {
-    if (std::abs(v) > kMaxLeggedPlacement) return fmt::format("position beyond {} m", kMaxLeggedPlacement);
+    if (std::abs(v) > kMaxLeggedPlacement) return Error::kOutOfRange;
   }
-  const PlacementError e = world_.PlaceRobot(robot, p);
-  return e == PlacementError::kOk ? "" : PlacementErrorName(e);
+  return world_.PlaceRobot(robot, p);
 }
 
-std::string LeggedKernel::PlaceBall(const std::array<double, 3>& position, const std::array<double, 3>& velocity) {
+Error LeggedKernel::PlaceBall(const std::array<double, 3>& position, const std::array<double, 3>& velocity) {
   for (int k = 0; k < 3; ++k) {
-    if (std::abs(position[k]) > kMaxLeggedPlacement) return fmt::format("position beyond {} m", kMaxLeggedPlacement);
-    if (std::abs(velocity[k]) > kMaxLeggedBallSpeed) return fmt::format("velocity beyond {} m/s", kMaxLeggedBallSpeed);
+    if (std::abs(position[k]) > kMaxLeggedPlacement || std::abs(velocity[k]) > kMaxLeggedBallSpeed)
+      return Error::kOutOfRange;
   }
-  const PlacementError e = world_.PlaceBall(position, velocity);
-  return e == PlacementError::kOk ? "" : PlacementErrorName(e);
+  return world_.PlaceBall(position, velocity);
 }
 
 std::string LeggedKernel::SetRealism(const SensorRealism& realism) {

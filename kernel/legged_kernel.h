@@ -64,9 +64,10 @@ class LeggedKernel {
 
   // --- Inputs ---
   JointCommandError SetJointCommands(int robot, const std::vector<JointCommand>& commands);
-  // Empty on success, else why (beyond kMaxLeggedPlacement, unknown robot...).
-  std::string PlaceRobot(int robot, const RobotPlacement& placement);
-  std::string PlaceBall(const std::array<double, 3>& position, const std::array<double, 3>& velocity);
+  // kOutOfRange beyond kMaxLeggedPlacement (and kMaxLeggedBallSpeed), else
+  // as LeggedWorld's placements.
+  Error PlaceRobot(int robot, const RobotPlacement& placement);
+  Error PlaceBall(const std::array<double, 3>& position, const std::array<double, 3>& velocity);
   std::string SetRealism(const SensorRealism& realism);
   void Reset();
 

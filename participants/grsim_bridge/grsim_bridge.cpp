@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "codecs/grsim/robot_status.h"
+#include "dds/control_client.h"
 #include "dds/participant.h"
-#include "dds/request_id.h"
 #include "participants/common/process.h"
 #include "participants/common/udp.h"
 
@@ -27,6 +27,7 @@ using SteadyClock = std::chrono::steady_clock;
 constexpr auto kReceiveTimeout = std::chrono::milliseconds(5);
 constexpr auto kPresenceEvery = std::chrono::milliseconds(250);
 constexpr auto kReportEvery = std::chrono::seconds(10);
+constexpr auto kReplyTimeout = std::chrono::seconds(10);  // a teleport's reply, for the refusal log
 constexpr const char* kTeamName[2] = {"blue", "yellow"};
 
 }  // namespace
@@ -40,11 +41,10 @@ class GrsimBridge::Impl {
         participant_({options_.domain, options_.name, options_.prefix, options_.qos_file}),
         command_writers_{participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue),
                          participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow)},
-        control_writer_(participant_.MakeWriter<idl::SimControlPubSubType>(dds::Topic::kControl)),
+        control_(participant_, options_.name),
         feedback_readers_{participant_.MakeReader<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackBlue),
                           participant_.MakeReader<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackYellow)},
         field_reader_(participant_.MakeReader<idl::SslFieldPubSubType>(dds::Topic::kSslField)),
-        reply_reader_(participant_.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
         rejects_("grSim datagram"),
         replacement_rejects_("replacement by turf-sim") {
     port_ = socket_.LocalPort();
@@ -87,6 +87,7 @@ class GrsimBridge::Impl {
 
   uint64_t Rejected(const std::string& kind) const {
     std::lock_guard<std::mutex> lock(rejects_mutex_);
+    if (kind == "control_unanswered") return unanswered_.load();
     return rejects_.Count(kind) + replacement_rejects_.Count(kind);
   }
 
@@ -125,11 +126,8 @@ class GrsimBridge::Impl {
       for (const idl::SslRobotCommand& c : r.requests.commands) command_writers_[team]->Write(c);
       commands_.fetch_add(r.requests.commands.size());
     }
-    for (idl::SimControl& c : r.requests.controls) {
-      c.client(options_.name);
-      c.request_id(++request_id_);
-      control_writer_->Write(c);
-    }
+    for (idl::SimControl& c : r.requests.controls)
+      control_.Send(std::move(c), kReplyTimeout, [this](const dds::ControlOutcome& o) { OnReply(o); });
     controls_.fetch_add(r.requests.controls.size());
   }
 
@@ -154,14 +152,21 @@ class GrsimBridge::Impl {
     for (int team = 0; team < 2; ++team) {
       for (const auto& packet : tracker_.TakePackets(static_cast<idl::Team>(team))) SendStatus(team, packet);
     }
-    if (reply_reader_->Take(&replies_)) {
-      for (const idl::SimControlReply& reply : replies_) {
-        if (reply.client() != options_.name || reply.result() != idl::RESULT_REJECTED) continue;
-        std::lock_guard<std::mutex> lock(rejects_mutex_);
-        replacement_rejects_.Reject(
-            "control_rejected", "request " + std::to_string(reply.request_id()) + ": " + std::string(reply.reason()));
-      }
+    control_.Dispatch();
+  }
+
+  // A teleport turf-sim refused is logged; one nobody answered (turf-sim not
+  // there yet, or gone) only counted: bridges started first wait quietly.
+  void OnReply(const dds::ControlOutcome& o) {
+    if (o.ok()) return;
+    const std::string detail = "request " + std::to_string(o.request_id) + ": " + o.Describe();
+    if (o.error != dds::ControlCallError::kRefused) {
+      unanswered_.fetch_add(1);
+      spdlog::debug("replacement not done: {}", detail);
+      return;
     }
+    std::lock_guard<std::mutex> lock(rejects_mutex_);
+    replacement_rejects_.Reject("control_rejected", detail);
   }
 
   // Status for a team no client has commanded yet has nowhere to go: dropped.
@@ -194,7 +199,7 @@ class GrsimBridge::Impl {
 
   void CheckPresence() {
     const bool present =
-        command_writers_[0]->Matched() > 0 && command_writers_[1]->Matched() > 0 && control_writer_->Matched() > 0;
+        command_writers_[0]->Matched() > 0 && command_writers_[1]->Matched() > 0 && control_.ServerMatched();
     if (present == sim_present_.load()) return;
     sim_present_.store(present);
     if (present) {
@@ -245,19 +250,16 @@ class GrsimBridge::Impl {
   uint16_t port_ = 0;
   dds::Participant participant_;
   std::unique_ptr<dds::Writer<idl::SslRobotCommandPubSubType>> command_writers_[2];
-  std::unique_ptr<dds::Writer<idl::SimControlPubSubType>> control_writer_;
+  dds::ControlClient control_;
   std::unique_ptr<dds::Reader<idl::SslRobotFeedbackPubSubType>> feedback_readers_[2];
   std::unique_ptr<dds::Reader<idl::SslFieldPubSubType>> field_reader_;
-  std::unique_ptr<dds::Reader<idl::SimControlReplyPubSubType>> reply_reader_;
 
   grsim::StatusTracker tracker_;
   std::optional<UdpEndpoint> status_to_[2];
-  uint64_t request_id_ = dds::FirstRequestId();
   uint64_t send_failures_ = 0;
   uint64_t reported_datagrams_ = 0;
   std::vector<idl::SslField> fields_;
   std::vector<idl::SslRobotFeedback> feedback_;
-  std::vector<idl::SimControlReply> replies_;
 
   mutable std::mutex rejects_mutex_;
   RejectLog rejects_;              // datagrams this bridge refused
@@ -266,6 +268,7 @@ class GrsimBridge::Impl {
   std::atomic<uint64_t> refused_{0};
   std::atomic<uint64_t> commands_{0};
   std::atomic<uint64_t> controls_{0};
+  std::atomic<uint64_t> unanswered_{0};  // teleports without a reply (no turf-sim, or a timeout)
   std::atomic<uint64_t> status_packets_{0};
   std::atomic<bool> sim_present_{false};
   std::atomic<bool> field_known_{false};

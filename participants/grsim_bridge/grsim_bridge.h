@@ -14,7 +14,9 @@
 //   subscribes  ssl/feedback/blue, .../yellow [turf.feedback] SslRobotFeedback -> robot status
 //               ssl/field [turf.field, latched]              SslField: robots per team, wheel radius,
 //                                                            kick limits (before it: the options)
-//               control_reply [turf.control]                 SimControlReply: refused teleports are logged
+//               control_reply [turf.reply]                   SimControlReply: refused teleports are
+//                                                            logged, unanswered ones counted
+//                                                            (requests and replies: dds/control_client.h)
 // Rates: one command sample per robot per datagram (a team's frame, ~60 Hz); a
 // control request per replacement; status on change. No watchdog here: teams
 // are independent, and turf-sim's watchdog is per robot.
@@ -68,7 +70,8 @@ class GrsimBridge {
   void Run(const std::function<bool()>& stop);
   uint16_t port() const;  // the UDP port it listens on
   GrsimBridgeStats Stats() const;
-  // Refusals of one kind: a GrsimErrorName, or "control_rejected" (turf-sim refused a teleport).
+  // Refusals of one kind: a GrsimErrorName, "control_rejected" (turf-sim refused a teleport) or
+  // "control_unanswered" (no turf-sim, or no reply within 10 s).
   uint64_t Rejected(const std::string& kind) const;
 
  private:

@@ -21,6 +21,14 @@ int64_t UnixNowNs() {
 
 }  // namespace
 
+// Every error of the taxonomy is the IDL constant of the same value.
+#define TURF_ERROR_MATCHES_IDL(e, name, idl_constant, meaning) \
+  static_assert(static_cast<int>(Error::e) == static_cast<int>(idl::idl_constant), name);
+TURF_ERRORS(TURF_ERROR_MATCHES_IDL)
+#undef TURF_ERROR_MATCHES_IDL
+
+idl::ControlError ControlErrorOf(Error error) { return static_cast<idl::ControlError>(error); }
+
 ControlLoop::ControlLoop(dds::Participant& participant, const SimNodeOptions& options, Timing timing, Node& node)
     : node_(node),
       options_(options),
@@ -104,13 +112,13 @@ void ControlLoop::TakeInputs() {
 }
 
 void ControlLoop::HandleControl(const idl::SimControl& request) {
-  std::string why;
+  ControlAnswer answer;
   switch (request.op()) {
     case idl::OP_TELEPORT_BALL:
-      why = node_.TeleportBall(request);
+      answer = node_.TeleportBall(request);
       break;
     case idl::OP_TELEPORT_ROBOT:
-      why = node_.TeleportRobot(request);
+      answer = node_.TeleportRobot(request);
       break;
     case idl::OP_PAUSE:
       paused_ = true;
@@ -119,40 +127,41 @@ void ControlLoop::HandleControl(const idl::SimControl& request) {
       paused_ = false;
       break;
     case idl::OP_STEP:
-      why = QueueSteps(request);
-      if (why.empty()) return;  // replied when the steps are done
+      answer = QueueSteps(request);
+      if (answer.ok()) return;  // replied when the steps are done
       break;
     case idl::OP_RESET:
       Reset();
       break;
     case idl::OP_SET_TIME_MODE:
-      why = SetTimeMode(request.time_mode(), request.speed());
+      answer = SetTimeMode(request.time_mode(), request.speed());
       break;
     case idl::OP_SET_REALISM:
-      why = node_.ChangeRealism(request.realism());
+      answer = node_.ChangeRealism(request.realism());
       break;
     default:
-      why = fmt::format("unknown op {}", static_cast<int>(request.op()));
+      answer = {idl::CONTROL_UNKNOWN_OP, fmt::format("unknown op {}", static_cast<int>(request.op()))};
       break;
   }
-  if (!why.empty()) Reject("control", fmt::format("from '{}': {}", request.client(), why));
-  Reply(request, why);
+  if (!answer.ok()) Reject("control", fmt::format("from '{}': {}", request.client(), answer.reason));
+  Reply(request, answer);
   // Teleports and resets show in the state right away, also while paused.
   PublishState();
 }
 
-std::string ControlLoop::QueueSteps(const idl::SimControl& request) {
-  if (!paused_ && mode_ != TimeMode::kLockstep) return "step needs a paused simulation or lockstep mode";
+ControlAnswer ControlLoop::QueueSteps(const idl::SimControl& request) {
+  if (!paused_ && mode_ != TimeMode::kLockstep)
+    return {idl::CONTROL_NOT_ALLOWED, "step needs a paused simulation or lockstep mode"};
   if (request.step_count() == 0 || request.step_count() > kMaxStepRequest)
-    return fmt::format("step_count must be 1..{}", kMaxStepRequest);
-  const std::string why = node_.ApplyStepCommands(request);
-  if (!why.empty()) return why;
+    return {idl::CONTROL_OUT_OF_RANGE, fmt::format("step_count must be 1..{}", kMaxStepRequest)};
+  ControlAnswer answer = node_.ApplyStepCommands(request);
+  if (!answer.ok()) return answer;
   pending_steps_ += request.step_count();
   pending_replies_.push_back({node_.Frame() + pending_steps_, request});
-  return "";
+  return {};
 }
 
-std::string ControlLoop::SetTimeMode(idl::TimeMode mode, double speed) {
+ControlAnswer ControlLoop::SetTimeMode(idl::TimeMode mode, double speed) {
   switch (mode) {
     case idl::TIME_REALTIME:
       mode_ = TimeMode::kRealtime;
@@ -160,7 +169,8 @@ std::string ControlLoop::SetTimeMode(idl::TimeMode mode, double speed) {
       break;
     case idl::TIME_SCALED:
       if (!(std::isfinite(speed) && speed > 0.0 && speed <= kMaxSpeed))
-        return fmt::format("speed must be in (0, {}]", kMaxSpeed);
+        return {std::isfinite(speed) ? idl::CONTROL_OUT_OF_RANGE : idl::CONTROL_NOT_FINITE,
+                fmt::format("speed must be in (0, {}]", kMaxSpeed)};
       mode_ = TimeMode::kScaled;
       speed_ = speed;
       break;
@@ -171,11 +181,11 @@ std::string ControlLoop::SetTimeMode(idl::TimeMode mode, double speed) {
       mode_ = TimeMode::kLockstep;
       break;
     default:
-      return fmt::format("unknown time mode {}", static_cast<int>(mode));
+      return {idl::CONTROL_UNKNOWN_ENUM, fmt::format("unknown time mode {}", static_cast<int>(mode))};
   }
   spdlog::info("time mode {} (speed {})", TimeModeName(mode_), speed_);
   pacer_.Anchor(Pacer::Clock::now(), node_.TimeNs());
-  return "";
+  return {};
 }
 
 void ControlLoop::Reset() {
@@ -184,18 +194,19 @@ void ControlLoop::Reset() {
   // The new timeline starts where the old one ended: epoch + sim time stays monotonic.
   run_epoch_unix_ns_.fetch_add(reached_ns - node_.TimeNs());
   pending_steps_ = 0;
-  for (const PendingStep& p : pending_replies_) Reply(p.request, "cancelled by a reset");
+  for (const PendingStep& p : pending_replies_) Reply(p.request, {idl::CONTROL_CANCELLED, "cancelled by a reset"});
   pending_replies_.clear();
   pacer_.Anchor(Pacer::Clock::now(), node_.TimeNs());
 }
 
-void ControlLoop::Reply(const idl::SimControl& request, const std::string& why) {
+void ControlLoop::Reply(const idl::SimControl& request, const ControlAnswer& answer) {
   idl::SimControlReply reply;
   reply.client(request.client());
   reply.request_id(request.request_id());
   reply.op(request.op());
-  reply.result(why.empty() ? idl::RESULT_OK : idl::RESULT_REJECTED);
-  reply.reason(why);
+  reply.result(answer.ok() ? idl::RESULT_OK : idl::RESULT_REJECTED);
+  reply.error(answer.code);
+  reply.reason(answer.reason);
   reply.sim_time_ns(node_.TimeNs());
   reply.frame(node_.Frame());
   reply_writer_->Write(reply);
@@ -211,7 +222,7 @@ void ControlLoop::AfterStep() {
   if (frame % state_every_ == 0 || steps_done) PublishState();
   node_.AfterStep();
   while (!pending_replies_.empty() && frame >= pending_replies_.front().done_at_frame) {
-    Reply(pending_replies_.front().request, "");
+    Reply(pending_replies_.front().request, {});
     pending_replies_.pop_front();
   }
 }

@@ -30,6 +30,8 @@
 #include <string>
 #include <vector>
 
+#include "core/legged/legged_world.h"
+#include "core/types.h"
 #include "dds/participant.h"
 #include "participants/common/process.h"
 #include "participants/common/wakeup.h"
@@ -38,9 +40,21 @@
 
 namespace turf {
 
+// What a control request came to: done ({}), or refused with a code and the
+// reason in words; both go into the reply.
+struct ControlAnswer {
+  idl::ControlError code = idl::CONTROL_OK;
+  std::string reason;
+  bool ok() const { return code == idl::CONTROL_OK; }
+};
+
+// The reply's code for a refusal the core names: the same taxonomy
+// (core/errors.h), value for value.
+idl::ControlError ControlErrorOf(Error error);
+
 class ControlLoop {
  public:
-  // What a node does for the loop. A returned string is a refusal reason ("" = done).
+  // What a node does for the loop: the requests it handles answer a ControlAnswer.
   class Node {
    public:
     virtual int64_t TimeNs() const = 0;
@@ -56,10 +70,10 @@ class ControlLoop {
     // The node's state topics; the loop adds the clock.
     virtual void PublishState() = 0;
     // Commands a STEP request carries, applied before its steps.
-    virtual std::string ApplyStepCommands(const idl::SimControl& request) = 0;
-    virtual std::string TeleportBall(const idl::SimControl& request) = 0;
-    virtual std::string TeleportRobot(const idl::SimControl& request) = 0;
-    virtual std::string ChangeRealism(const std::string& spec) = 0;
+    virtual ControlAnswer ApplyStepCommands(const idl::SimControl& request) = 0;
+    virtual ControlAnswer TeleportBall(const idl::SimControl& request) = 0;
+    virtual ControlAnswer TeleportRobot(const idl::SimControl& request) = 0;
+    virtual ControlAnswer ChangeRealism(const std::string& spec) = 0;
     // The world back to the scene's start (the loop cancels pending steps).
     virtual void ResetWorld() = 0;
     virtual void ReportStatus() const = 0;
@@ -110,10 +124,10 @@ class ControlLoop {
   void Pace();
   void TakeInputs();
   void HandleControl(const idl::SimControl& request);
-  std::string QueueSteps(const idl::SimControl& request);
-  std::string SetTimeMode(idl::TimeMode mode, double speed);
+  ControlAnswer QueueSteps(const idl::SimControl& request);
+  ControlAnswer SetTimeMode(idl::TimeMode mode, double speed);
   void Reset();
-  void Reply(const idl::SimControl& request, const std::string& why);
+  void Reply(const idl::SimControl& request, const ControlAnswer& answer);
   void AfterStep();
   void PublishState();
 

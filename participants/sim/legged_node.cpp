@@ -75,43 +75,48 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
     }
   }
 
-  std::string ApplyStepCommands(const idl::SimControl& req) override {
-    if (!req.commands().empty()) return "legged robots take joint_commands, not SSL commands";
+  ControlAnswer ApplyStepCommands(const idl::SimControl& req) override {
+    if (!req.commands().empty())
+      return {idl::CONTROL_NOT_ALLOWED, "legged robots take joint_commands, not SSL commands"};
     // All of the step's joint commands or none.
     for (const idl::JointCommand& c : req.joint_commands()) {
       const JointCommandError e = CheckCommand(c, &checked_);
       if (e != JointCommandError::kOk)
-        return fmt::format("joint command for '{}': {}", c.robot(), JointCommandErrorName(e));
+        return {ControlErrorOf(e), fmt::format("joint command for '{}': {}", c.robot(), JointCommandErrorName(e))};
     }
     for (const idl::JointCommand& c : req.joint_commands()) {
       CheckCommand(c, &checked_);
       kernel_.SetJointCommands(kernel_.world().RobotIndex(c.robot()), checked_);
     }
-    return "";
+    return {};
   }
 
-  std::string TeleportBall(const idl::SimControl& req) override {
-    const std::string e = kernel_.PlaceBall(A3(req.ball().position()), A3(req.ball().velocity()));
-    return e.empty() ? "" : "ball: " + e;
+  ControlAnswer TeleportBall(const idl::SimControl& req) override {
+    const Error e = kernel_.PlaceBall(A3(req.ball().position()), A3(req.ball().velocity()));
+    if (e == Error::kOk) return {};
+    return {ControlErrorOf(e), fmt::format("ball: {} (positions within {} m, speeds within {} m/s)", ErrorName(e),
+                                           kMaxLeggedPlacement, kMaxLeggedBallSpeed)};
   }
 
-  std::string TeleportRobot(const idl::SimControl& req) override {
+  ControlAnswer TeleportRobot(const idl::SimControl& req) override {
     const idl::LeggedTeleport& t = req.legged();
     RobotPlacement p;
     p.position = A3(t.position());
     p.orientation = {t.orientation().w(), t.orientation().x(), t.orientation().y(), t.orientation().z()};
     p.reset_joints = t.reset_joints();
-    const std::string e = kernel_.PlaceRobot(kernel_.world().RobotIndex(t.robot()), p);
-    return e.empty() ? "" : fmt::format("robot '{}': {}", t.robot(), e);
+    const Error e = kernel_.PlaceRobot(kernel_.world().RobotIndex(t.robot()), p);
+    if (e == Error::kOk) return {};
+    return {ControlErrorOf(e), fmt::format("robot '{}': {}", t.robot(), ErrorName(e))};
   }
 
-  std::string ChangeRealism(const std::string& spec) override {
+  ControlAnswer ChangeRealism(const std::string& spec) override {
     // From the network: preset names and YAML text only, never file paths.
     const RealismLoadResult loaded = LoadRealism(spec, DefaultRealismDir(), /*allow_paths=*/false, kernel_.realism());
-    if (!loaded.realism) return loaded.errors.empty() ? "invalid realism" : loaded.errors.front();
-    if (std::string e = kernel_.SetRealism(*loaded.realism); !e.empty()) return e;
+    if (!loaded.realism)
+      return {idl::CONTROL_INVALID_REALISM, loaded.errors.empty() ? "invalid realism" : loaded.errors.front()};
+    if (std::string e = kernel_.SetRealism(*loaded.realism); !e.empty()) return {idl::CONTROL_INVALID_REALISM, e};
     spdlog::info("sensor realism changed ({})", spec.size() < 40 ? spec : spec.substr(0, 40) + "...");
-    return "";
+    return {};
   }
 
   void ResetWorld() override {

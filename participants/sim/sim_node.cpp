@@ -75,27 +75,29 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
 
   void Step() override { kernel_.Step(); }
 
-  std::string ApplyStepCommands(const idl::SimControl& req) override {
+  ControlAnswer ApplyStepCommands(const idl::SimControl& req) override {
     for (const idl::SslRobotCommand& c : req.commands()) {
       Team team;
-      if (!FromIdl(c.team(), &team)) return "a command has an unknown team";
+      if (!FromIdl(c.team(), &team)) return {idl::CONTROL_UNKNOWN_ENUM, "a command has an unknown team"};
       ApplyCommand(c, team);
     }
-    return "";
+    return {};
   }
 
-  std::string TeleportBall(const idl::SimControl& req) override {
+  ControlAnswer TeleportBall(const idl::SimControl& req) override {
     BallTeleport t;
     FromIdl(req.ball(), &t);
     const InputError e = kernel_.TeleportBall(t);
-    return e == InputError::kOk ? "" : fmt::format("ball teleport refused: {}", InputErrorName(e));
+    if (e == InputError::kOk) return {};
+    return {ControlErrorOf(e), fmt::format("ball teleport refused: {}", InputErrorName(e))};
   }
 
-  std::string TeleportRobot(const idl::SimControl& req) override {
+  ControlAnswer TeleportRobot(const idl::SimControl& req) override {
     RobotTeleport t;
     InputError e = FromIdl(req.robot(), &t);
     if (e == InputError::kOk) e = kernel_.TeleportRobot(t);
-    return e == InputError::kOk ? "" : fmt::format("robot teleport refused: {}", InputErrorName(e));
+    if (e == InputError::kOk) return {};
+    return {ControlErrorOf(e), fmt::format("robot teleport refused: {}", InputErrorName(e))};
   }
 
   // --- Inputs ---
@@ -114,13 +116,14 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
     }
   }
 
-  std::string ChangeRealism(const std::string& spec) override {
+  ControlAnswer ChangeRealism(const std::string& spec) override {
     // From the network: preset names and YAML text only, never file paths.
     const RealismLoadResult loaded = LoadRealism(spec, realism_dir_, /*allow_paths=*/false, kernel_.realism());
-    if (!loaded.realism) return loaded.errors.empty() ? "invalid realism" : loaded.errors.front();
-    if (std::string e = kernel_.SetRealism(*loaded.realism); !e.empty()) return e;
+    if (!loaded.realism)
+      return {idl::CONTROL_INVALID_REALISM, loaded.errors.empty() ? "invalid realism" : loaded.errors.front()};
+    if (std::string e = kernel_.SetRealism(*loaded.realism); !e.empty()) return {idl::CONTROL_INVALID_REALISM, e};
     spdlog::info("sensor realism changed ({})", spec.size() < 40 ? spec : spec.substr(0, 40) + "...");
-    return "";
+    return {};
   }
 
   void ResetWorld() override { kernel_.Reset(); }

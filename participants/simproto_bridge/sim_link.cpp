@@ -8,14 +8,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <condition_variable>
 #include <deque>
-#include <map>
 #include <mutex>
-#include <set>
-#include <thread>
-
-#include "dds/request_id.h"
 
 namespace turf {
 
@@ -25,8 +19,7 @@ class SimLink::Impl {
       : participant_(options),
         command_writers_{participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue),
                          participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow)},
-        control_writer_(participant_.MakeWriter<idl::SimControlPubSubType>(dds::Topic::kControl)),
-        reply_reader_(participant_.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply, Wake())),
+        control_(participant_, options.name),
         feedback_readers_{
             participant_.MakeReader<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackBlue, Wake()),
             participant_.MakeReader<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackYellow, Wake())},
@@ -49,41 +42,9 @@ class SimLink::Impl {
 
   void Command(const idl::SslRobotCommand& c) { command_writers_[c.team() == idl::TEAM_BLUE ? 0 : 1]->Write(c); }
 
-  std::vector<std::optional<idl::SimControlReply>> Control(std::vector<idl::SimControl> requests,
-                                                           std::chrono::milliseconds timeout) {
-    std::vector<uint64_t> ids;
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      for (idl::SimControl& r : requests) {
-        r.client(participant_.options().name);
-        r.request_id(++next_request_id_);
-        ids.push_back(r.request_id());
-        waiting_.insert(r.request_id());
-      }
-    }
-    const auto deadline = std::chrono::steady_clock::now() + timeout;
-    // Requests are volatile: written before our writer has discovered
-    // turf-sim's reader (turf-sim just seen, machine busy), they would be lost.
-    while (control_writer_->Matched() == 0 && std::chrono::steady_clock::now() < deadline)
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    for (const idl::SimControl& r : requests) control_writer_->Write(r);
-    std::vector<std::optional<idl::SimControlReply>> out(ids.size());
-    std::unique_lock<std::mutex> lock(mutex_);
-    auto all_in = [&] {
-      PumpLocked();
-      return std::all_of(ids.begin(), ids.end(), [&](uint64_t id) { return replies_.count(id) > 0; });
-    };
-    // Woken by every sample; also re-checks every 20 ms in case a wake-up came early.
-    while (!all_in() && std::chrono::steady_clock::now() < deadline)
-      changed_.wait_until(lock, std::min(deadline, std::chrono::steady_clock::now() + std::chrono::milliseconds(20)));
-    for (size_t i = 0; i < ids.size(); ++i) {
-      waiting_.erase(ids[i]);
-      auto it = replies_.find(ids[i]);
-      if (it == replies_.end()) continue;
-      out[i] = it->second;
-      replies_.erase(it);
-    }
-    return out;
+  // Requests are volatile: the client waits until turf-sim's reader is matched.
+  std::vector<dds::ControlOutcome> Control(std::vector<idl::SimControl> requests, std::chrono::milliseconds timeout) {
+    return control_.CallAll(std::move(requests), timeout);
   }
 
   uint64_t FrameCursor() {
@@ -102,22 +63,19 @@ class SimLink::Impl {
   }
 
   uint64_t Overflowed() const {
-    uint64_t n = reply_reader_->Overflowed() + field_reader_->Overflowed() + clock_reader_->Overflowed() +
+    uint64_t n = control_.Overflowed() + field_reader_->Overflowed() + clock_reader_->Overflowed() +
                  world_reader_->Overflowed() + camera_reader_->Overflowed();
     for (const auto& r : feedback_readers_) n += r->Overflowed();
     return n;
   }
 
  private:
-  // Every reader's listener pumps all readers (once the Impl is complete) and wakes the waiters.
+  // Every reader's listener pumps all readers (once the Impl is complete).
   std::function<void()> Wake() {
     return [this] {
       if (!ready_.load()) return;
-      {
-        std::lock_guard<std::mutex> lock(mutex_);
-        PumpLocked();
-      }
-      changed_.notify_all();
+      std::lock_guard<std::mutex> lock(mutex_);
+      PumpLocked();
     };
   }
 
@@ -135,34 +93,23 @@ class SimLink::Impl {
       frames_received_ += camera_inbox_.size();
       while (frames_.size() > kMaxBufferedFrames) frames_.pop_front();
     }
-    if (reply_reader_->Take(&reply_inbox_)) {
-      for (const idl::SimControlReply& r : reply_inbox_)
-        if (r.client() == participant_.options().name && waiting_.count(r.request_id()) > 0)
-          replies_[r.request_id()] = r;
-    }
   }
 
   // State first: DDS listeners may still run while the readers below are deleted.
   std::atomic<bool> ready_{false};
   std::mutex mutex_;
-  std::condition_variable changed_;
   View view_;
   std::deque<idl::CameraFrame> frames_;  // the newest received, in arrival order
   uint64_t frames_received_ = 0;
-  uint64_t next_request_id_ = dds::FirstRequestId();
-  std::set<uint64_t> waiting_;
-  std::map<uint64_t, idl::SimControlReply> replies_;
   std::vector<idl::SslField> fields_;
   std::vector<idl::Clock> clocks_;
   std::vector<idl::WorldState> worlds_;
   std::vector<idl::SslRobotFeedback> feedback_;
   std::vector<idl::CameraFrame> camera_inbox_;
-  std::vector<idl::SimControlReply> reply_inbox_;
 
   dds::Participant participant_;
   std::unique_ptr<dds::Writer<idl::SslRobotCommandPubSubType>> command_writers_[2];
-  std::unique_ptr<dds::Writer<idl::SimControlPubSubType>> control_writer_;
-  std::unique_ptr<dds::Reader<idl::SimControlReplyPubSubType>> reply_reader_;
+  dds::ControlClient control_;
   std::unique_ptr<dds::Reader<idl::SslRobotFeedbackPubSubType>> feedback_readers_[2];
   std::unique_ptr<dds::Reader<idl::SslFieldPubSubType>> field_reader_;
   std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_reader_;
@@ -176,8 +123,8 @@ std::string SimLink::TopicName(dds::Topic topic) const { return impl_->participa
 const dds::ParticipantOptions& SimLink::options() const { return impl_->participant().options(); }
 SimLink::View SimLink::Now() { return impl_->Now(); }
 void SimLink::Command(const idl::SslRobotCommand& command) { impl_->Command(command); }
-std::vector<std::optional<idl::SimControlReply>> SimLink::Control(std::vector<idl::SimControl> requests,
-                                                                  std::chrono::milliseconds timeout) {
+std::vector<dds::ControlOutcome> SimLink::Control(std::vector<idl::SimControl> requests,
+                                                  std::chrono::milliseconds timeout) {
   return impl_->Control(std::move(requests), timeout);
 }
 uint64_t SimLink::FrameCursor() { return impl_->FrameCursor(); }

@@ -1,6 +1,6 @@
 // The simulation-protocol bridge's DDS side: what turf-sim said last, robot
-// commands and control requests out, control replies matched to their
-// requests. Thread-safe: the bridge's port threads share one SimLink.
+// commands out, and control requests through the one control client
+// (dds/control_client.h). Thread-safe: the bridge's port threads share one SimLink.
 //
 // Writes: ssl/command/blue, ssl/command/yellow (SslRobotCommand), control (SimControl).
 // Reads:  control_reply (SimControlReply), ssl/feedback/<team> (SslRobotFeedback),
@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "codecs/ssl_simulation/robot_control.h"
+#include "dds/control_client.h"
 #include "dds/participant.h"
 
 namespace turf {
@@ -49,10 +50,9 @@ class SimLink {
   View Now();
   // Publishes on the topic of the command's team.
   void Command(const idl::SslRobotCommand& command);
-  // Sends the requests in order (numbering them, as client `name`) and waits
-  // for every reply until `timeout`; a missing reply is nullopt.
-  std::vector<std::optional<idl::SimControlReply>> Control(std::vector<idl::SimControl> requests,
-                                                           std::chrono::milliseconds timeout);
+  // Sends the requests in order (as client `name`) once turf-sim is matched,
+  // and waits for every reply until `timeout`: one outcome each, in order.
+  std::vector<dds::ControlOutcome> Control(std::vector<idl::SimControl> requests, std::chrono::milliseconds timeout);
   // Camera frames are numbered in arrival order. FrameCursor() is the number
   // received so far; FramesSince(c) returns those received after cursor `c`
   // (the newest kMaxBufferedFrames at most).

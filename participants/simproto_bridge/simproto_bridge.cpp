@@ -259,19 +259,19 @@ class SimprotoBridge::Impl {
     requests_ += requests.size();
     const auto replies = link_.Control(requests, options_.reply_timeout);
     bool ok = true;
-    for (const auto& r : replies) {
-      if (!r) {
-        errors->push_back(
-            {sp::kNoReply, fmt::format("turf-sim did not answer within {} ms", options_.reply_timeout.count())});
+    for (const dds::ControlOutcome& r : replies) {
+      if (!r.reply) {
+        errors->push_back({sp::kNoReply, fmt::format("turf-sim did not answer within {} ms ({})",
+                                                     options_.reply_timeout.count(), r.Describe())});
         Reject(fmt::format("{}.no_reply", Name(kind)), errors->back().message);
         ok = false;
-      } else if (r->result() != idl::RESULT_OK) {
-        errors->push_back(sp::RejectedBySim(*r));
+      } else if (!r.ok()) {
+        errors->push_back(sp::RejectedBySim(*r.reply));
         Reject(fmt::format("{}.rejected_by_sim", Name(kind)), errors->back().message);
         ok = false;
       }
     }
-    if (last != nullptr && !replies.empty()) *last = replies.back();
+    if (last != nullptr && !replies.empty()) *last = replies.back().reply;
     return ok;
   }
 

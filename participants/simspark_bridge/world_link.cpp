@@ -6,9 +6,7 @@
 
 #include <fmt/format.h>
 
-#include <map>
-
-#include "dds/request_id.h"
+#include "dds/control_client.h"
 #include "participants/common/wakeup.h"
 
 namespace turf {
@@ -34,8 +32,7 @@ class WorldLink::Impl {
  public:
   explicit Impl(const dds::ParticipantOptions& options)
       : participant_(options),
-        control_(participant_.MakeWriter<idl::SimControlPubSubType>(dds::Topic::kControl)),
-        reply_(participant_.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply, Wake())),
+        control_(participant_, kClient, Wake()),
         scene_(participant_.MakeReader<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene, Wake())),
         clock_(participant_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock, Wake())),
         state_(participant_.MakeReader<idl::LeggedStatePubSubType>(dds::Topic::kRobotsState, Wake())) {}
@@ -47,9 +44,6 @@ class WorldLink::Impl {
   std::string TopicName(dds::Topic t) const { return participant_.TopicName(t); }
 
   void Drain() {
-    if (reply_->Take(&reply_in_))
-      for (auto& r : reply_in_)
-        if (r.client() == kClient) replies_[r.request_id()] = r;
     if (scene_->Take(&scene_in_)) scene_info_ = scene_in_.back();
     if (clock_->Take(&clock_in_)) step_s_ = clock_in_.back().step_s();
     if (state_->Take(&state_in_)) state_now_ = std::move(state_in_.back());
@@ -66,43 +60,34 @@ class WorldLink::Impl {
     }
   }
 
-  uint64_t Send(idl::SimControl request) {
-    request.client(kClient);
-    request.request_id(++request_id_);
-    control_->Write(request);
-    return request_id_;
-  }
-
   std::optional<Scene> Attach(std::chrono::milliseconds timeout, const std::function<bool()>& stop,
                               std::string* error) {
     const auto deadline = Clock::now() + timeout;
-    if (!WaitFor([this] { return scene_info_.has_value() && control_->Matched() > 0 && reply_->Matched() > 0; },
-                 deadline, stop)) {
+    if (!WaitFor([this] { return scene_info_.has_value() && control_.ServerMatched(); }, deadline, stop)) {
       *error = "no legged scene from turf-sim (is it running a `kind: legged` scene on this domain and prefix?)";
       return std::nullopt;
     }
     idl::SimControl lockstep;
     lockstep.op(idl::OP_SET_TIME_MODE);
     lockstep.time_mode(idl::TIME_LOCKSTEP);
-    // Asked again every 0.5 s: a reply written before turf-sim's writer has
-    // discovered our reader is lost (control replies are volatile), which
-    // happens when turf-sim has just started. The request is idempotent.
-    uint64_t id = 0;
-    bool answered = false;
-    while (!answered && Clock::now() < deadline && !(stop && stop())) {
-      id = Send(lockstep);
-      answered = WaitFor([&] { return replies_.count(id) > 0; },
-                         std::min(deadline, Clock::now() + std::chrono::milliseconds(500)), stop);
+    // Asked again every 0.5 s: when turf-sim has just started, a request or
+    // reply can miss an endpoint it has not discovered yet. The request is idempotent.
+    dds::ControlOutcome answer;
+    while (Clock::now() < deadline && !(stop && stop())) {
+      const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(
+          std::min(deadline - Clock::now(), Clock::duration(std::chrono::milliseconds(500))));
+      answer = control_.Call(lockstep, wait, stop);
+      if (answer.reply) break;
     }
-    if (!answered) {
-      *error = "turf-sim did not answer the switch to lockstep";
+    if (!answer.reply) {
+      *error = "turf-sim did not answer the switch to lockstep (" + answer.Describe() + ")";
       return std::nullopt;
     }
-    if (replies_[id].result() != idl::RESULT_OK) {
-      *error = "turf-sim refused lockstep: " + replies_[id].reason();
+    if (!answer.ok()) {
+      *error = "turf-sim refused lockstep: " + answer.reply->reason();
       return std::nullopt;
     }
-    frame_ = replies_[id].frame();
+    frame_ = answer.reply->frame();
     Scene scene;
     scene.name = scene_info_->name();
     for (const idl::RobotDescription& r : scene_info_->robots()) scene.robots.push_back(r.robot());
@@ -129,7 +114,13 @@ class WorldLink::Impl {
   std::optional<simspark::WorldSnapshot> Cycle(const simspark::WorldRequests& requests, uint32_t steps,
                                                std::chrono::milliseconds timeout, const std::function<bool()>& stop,
                                                std::string* error, std::vector<std::string>* warnings) {
-    std::vector<std::pair<uint64_t, std::string>> moves;
+    // Moves are answered before the step; their refusals are reported when
+    // the step is done (late ones next cycle).
+    auto warn = [this](std::string what) {
+      return [this, what = std::move(what)](const dds::ControlOutcome& o) {
+        if (!o.ok()) move_warnings_.push_back(what + ": " + o.Describe());
+      };
+    };
     for (const simspark::RobotMove& m : requests.moves) {
       idl::SimControl move;
       move.op(idl::OP_TELEPORT_ROBOT);
@@ -140,14 +131,14 @@ class WorldLink::Impl {
       move.legged().orientation().y(m.orientation.y());
       move.legged().orientation().z(m.orientation.z());
       move.legged().reset_joints(m.reset_joints);
-      moves.emplace_back(Send(move), "move " + m.robot);
+      control_.Send(std::move(move), timeout, warn("move " + m.robot));
     }
     if (requests.ball) {
       idl::SimControl ball;
       ball.op(idl::OP_TELEPORT_BALL);
       ball.ball().position(V3(requests.ball->position));
       ball.ball().velocity(V3(requests.ball->velocity));
-      moves.emplace_back(Send(ball), "ball");
+      control_.Send(std::move(ball), timeout, warn("ball"));
     }
     idl::SimControl step;
     step.op(idl::OP_STEP);
@@ -166,37 +157,32 @@ class WorldLink::Impl {
       }
       step.joint_commands().push_back(std::move(c));
     }
-    const uint64_t id = Send(step);
+    const uint64_t id = control_.Send(std::move(step), timeout);
     const auto deadline = Clock::now() + timeout;
     // The world after the step usually arrives before the step's reply (turf-sim
     // writes robots/state first): take it at the expected frame at once; the
     // reply's frame counts when someone else stepped too (a viewer's step).
     const uint64_t expected = frame_ + steps;
+    std::optional<dds::ControlOutcome> answer;
     auto done = [&] {
       if (Complete(robots_, expected)) return true;
-      auto it = replies_.find(id);
-      return it != replies_.end() && (it->second.result() != idl::RESULT_OK || Complete(robots_, it->second.frame()));
+      answer = control_.Peek(id);
+      return answer && (!answer->reply || !answer->ok() || Complete(robots_, answer->reply->frame()));
     };
-    if (!WaitFor(done, deadline, stop)) {
-      *error = "turf-sim did not answer the step";
+    const bool finished = WaitFor(done, deadline, stop);
+    control_.Forget(id);
+    control_.Dispatch();
+    warnings->insert(warnings->end(), move_warnings_.begin(), move_warnings_.end());
+    move_warnings_.clear();
+    if (!finished || (answer && !answer->reply)) {
+      *error = "turf-sim did not answer the step" + (answer ? " (" + answer->Describe() + ")" : std::string());
       return std::nullopt;
     }
-    auto it = replies_.find(id);
-    if (it != replies_.end() && it->second.result() != idl::RESULT_OK) {
-      *error = "turf-sim refused the step: " + it->second.reason();
+    if (answer && !answer->ok()) {
+      *error = "turf-sim refused the step: " + answer->reply->reason();
       return std::nullopt;
     }
     frame_ = state_now_->frame();
-    // Moves are answered before the step; report refusals (late ones next cycle).
-    for (const auto& [move_id, what] : moves) pending_moves_[move_id] = what;
-    for (auto r = replies_.begin(); r != replies_.end();) {
-      auto move = pending_moves_.find(r->first);
-      if (move != pending_moves_.end()) {
-        if (r->second.result() != idl::RESULT_OK) warnings->push_back(move->second + ": " + r->second.reason());
-        pending_moves_.erase(move);
-      }
-      r = r->first <= id ? replies_.erase(r) : std::next(r);
-    }
     return Snapshot();
   }
 
@@ -238,30 +224,26 @@ class WorldLink::Impl {
   }
 
   double step_s() const { return step_s_; }
-  uint64_t Overflowed() const { return reply_->Overflowed() + state_->Overflowed(); }
+  uint64_t Overflowed() const { return control_.Overflowed() + state_->Overflowed(); }
 
  private:
   static constexpr const char* kClient = "turf-simspark-bridge";
 
   Wakeup wakeup_;
   dds::Participant participant_;
-  std::unique_ptr<dds::Writer<idl::SimControlPubSubType>> control_;
-  std::unique_ptr<dds::Reader<idl::SimControlReplyPubSubType>> reply_;
+  dds::ControlClient control_;
   std::unique_ptr<dds::Reader<idl::LeggedSceneInfoPubSubType>> scene_;
   std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_;
   std::unique_ptr<dds::Reader<idl::LeggedStatePubSubType>> state_;
 
-  std::vector<idl::SimControlReply> reply_in_;
   std::vector<idl::LeggedSceneInfo> scene_in_;
   std::vector<idl::Clock> clock_in_;
   std::vector<idl::LeggedState> state_in_;
 
   std::optional<idl::LeggedSceneInfo> scene_info_;
   std::optional<idl::LeggedState> state_now_;
-  std::map<uint64_t, idl::SimControlReply> replies_;
-  std::map<uint64_t, std::string> pending_moves_;  // request id -> what, until answered
+  std::vector<std::string> move_warnings_;  // refused moves, reported with the next step
   std::vector<std::string> robots_;
-  uint64_t request_id_ = dds::FirstRequestId();
   uint64_t frame_ = 0;
   double step_s_ = 0.0;
 };

@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "dds/control_client.h"
 #include "dds/participant.h"
 #include "participants/common/process.h"
 #include "participants/common/wakeup.h"
@@ -33,6 +34,7 @@ namespace {
 using SteadyClock = std::chrono::steady_clock;
 constexpr size_t kMaxInbox = 1024;  // page messages waiting for the loop
 constexpr auto kControlSettle = std::chrono::milliseconds(100);
+constexpr auto kReplyTimeout = std::chrono::seconds(10);  // then the page is told nobody answered
 
 void CheckOptions(const ViewerOptions& o) {
   if (!(std::isfinite(o.rate_hz) && o.rate_hz >= 1.0 && o.rate_hz <= 1000.0))
@@ -56,10 +58,9 @@ class ViewerNode::Impl {
         field_reader_(Reader<idl::SslFieldPubSubType>(dds::Topic::kSslField)),
         camera_reader_(Reader<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)),
         stats_reader_(Reader<idl::SensorStatsPubSubType>(dds::Topic::kStats)),
-        reply_reader_(Reader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
         legged_reader_(Reader<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene)),
         links_reader_(Reader<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks)),
-        control_writer_(participant_.MakeWriter<idl::SimControlPubSubType>(dds::Topic::kControl)),
+        control_(participant_, client_, [this] { wakeup_.Notify(); }),
         rejects_("input") {
     viewer::WebServerOptions web;
     web.listen = options_.listen;
@@ -95,7 +96,7 @@ class ViewerNode::Impl {
       HandleStats();
       HandleCameras();
       HandleStates();
-      HandleReplies();
+      control_.Dispatch();  // replies go to the page that asked (OnReply)
       UpdateControlMatched();
       HandlePages();
       HandleOverflow();
@@ -166,7 +167,7 @@ class ViewerNode::Impl {
   // show turf-sim has taken in our endpoints too, and a short settling time
   // covers the rest. Until then page actions are refused (page.no_simulator).
   void UpdateControlMatched() {
-    const bool matched = control_writer_->Matched() > 0 && reply_reader_->Matched() > 0 && model_.has_state();
+    const bool matched = control_.ServerMatched() && model_.has_state();
     const auto now = SteadyClock::now();
     if (!matched) matched_since_.reset();
     if (matched && !matched_since_) matched_since_ = now;
@@ -210,9 +211,9 @@ class ViewerNode::Impl {
         server_->SendTo(client, viewer::RefusedJson("no_simulator", why));
         continue;
       }
-      spdlog::debug("page {}: {} -> control request {}", client, r.op, r.control.request_id());
-      control_writer_->Write(r.control);
-      model_.RequestSent(r.control.request_id(), client);
+      const uint64_t id = control_.Send(r.control, kReplyTimeout,
+                                        [this, page = client](const dds::ControlOutcome& o) { OnReply(page, o); });
+      spdlog::debug("page {}: {} -> control request {}", client, r.op, id);
       ++controls_sent_;
     }
   }
@@ -273,22 +274,24 @@ class ViewerNode::Impl {
     }
   }
 
-  void HandleReplies() {
-    if (!reply_reader_->Take(&reply_inbox_)) return;
-    for (const idl::SimControlReply& r : reply_inbox_) {
-      if (!model_.IsOurs(r)) continue;
-      ++replies_;
-      const std::optional<uint64_t> page = model_.ReplyPage(r);
-      if (r.result() != idl::RESULT_OK)
-        spdlog::info("turf-sim refused page {}'s {}: {}", page.value_or(0), viewer::OpName(r.op()), r.reason());
-      // Only the page that asked sees the answer; the others see its effect in the state.
-      if (page) server_->SendTo(*page, viewer::ReplyJson(r));
+  // Only the page that asked sees the answer; the others see its effect in the state.
+  void OnReply(uint64_t page, const dds::ControlOutcome& o) {
+    if (!o.reply) {
+      const std::string why = o.Describe();
+      Reject(fmt::format("control.{}", dds::ControlCallErrorName(o.error)), why);
+      server_->SendTo(page, viewer::RefusedJson(dds::ControlCallErrorName(o.error), why));
+      return;
     }
+    ++replies_;
+    const idl::SimControlReply& r = *o.reply;
+    if (r.result() != idl::RESULT_OK)
+      spdlog::info("turf-sim refused page {}'s {}: {}", page, viewer::OpName(r.op()), r.reason());
+    server_->SendTo(page, viewer::ReplyJson(r));
   }
 
   void HandleOverflow() {
     const uint64_t overflow = state_reader_->Overflowed() + clock_reader_->Overflowed() + field_reader_->Overflowed() +
-                              camera_reader_->Overflowed() + stats_reader_->Overflowed() + reply_reader_->Overflowed() +
+                              camera_reader_->Overflowed() + stats_reader_->Overflowed() + control_.Overflowed() +
                               legged_reader_->Overflowed() + links_reader_->Overflowed();
     if (overflow > reported_overflow_) {
       Reject("queue_overflow",
@@ -332,17 +335,15 @@ class ViewerNode::Impl {
   std::unique_ptr<dds::Reader<idl::SslFieldPubSubType>> field_reader_;
   std::unique_ptr<dds::Reader<idl::CameraFramePubSubType>> camera_reader_;
   std::unique_ptr<dds::Reader<idl::SensorStatsPubSubType>> stats_reader_;
-  std::unique_ptr<dds::Reader<idl::SimControlReplyPubSubType>> reply_reader_;
   std::unique_ptr<dds::Reader<idl::LeggedSceneInfoPubSubType>> legged_reader_;
   std::unique_ptr<dds::Reader<idl::LinkStatePubSubType>> links_reader_;
-  std::unique_ptr<dds::Writer<idl::SimControlPubSubType>> control_writer_;
+  dds::ControlClient control_;
 
   std::vector<idl::WorldState> state_inbox_;
   std::vector<idl::Clock> clock_inbox_;
   std::vector<idl::SslField> field_inbox_;
   std::vector<idl::CameraFrame> camera_inbox_;
   std::vector<idl::SensorStats> stats_inbox_;
-  std::vector<idl::SimControlReply> reply_inbox_;
   std::vector<idl::LeggedSceneInfo> legged_inbox_;
   std::vector<idl::LinkState> links_inbox_;
   bool dirty_ = false;
