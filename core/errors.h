@@ -3,7 +3,8 @@
 // control request, a snapshot), is refused with one of these. One X-macro
 // gives the enum, the snake_case names (used in refusal counters such as
 // "command.not_finite" and in logs) and the IDL's ControlError constants,
-// which a test keeps in the same order (tests/kernel/errors_test.cpp).
+// which participants/sim/control_loop.cpp checks value for value at compile
+// time (static_assert per entry).
 //   X(enumerator, name, IDL constant, meaning)
 #pragma once
 
