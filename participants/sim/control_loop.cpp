@@ -11,9 +11,6 @@ namespace turf {
 
 namespace {
 
-constexpr double kMaxSpeed = 1000.0;  // multiples of real time a client may ask for
-constexpr uint32_t kMaxStepRequest = 1000000;
-
 int64_t UnixNowNs() {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
       .count();
@@ -37,9 +34,7 @@ ControlLoop::ControlLoop(dds::Participant& participant, const SimNodeOptions& op
       clock_writer_(participant.MakeWriter<idl::ClockPubSubType>(dds::Topic::kClock)),
       reply_writer_(participant.MakeWriter<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
       control_reader_(participant.MakeReader<idl::SimControlPubSubType>(dds::Topic::kControl, [this] { Wake(); })),
-      mode_(options.mode),
-      speed_(options.mode == TimeMode::kScaled ? options.speed : 1.0),
-      paused_(options.start_paused),
+      time_(options.mode, options.speed, options.start_paused),
       rejects_("input") {}
 
 void ControlLoop::Run(const std::function<bool()>& stop) {
@@ -57,14 +52,13 @@ void ControlLoop::Run(const std::function<bool()>& stop) {
       node_.ReportStatus();
       next_status = now + std::chrono::seconds(10);
     }
-    if (!CanStep()) {
+    if (!time_.CanStep()) {
       wakeup_.WaitUntil(now + std::chrono::milliseconds(50));
       pacer_.Anchor(Pacer::Clock::now(), node_.TimeNs());
       continue;
     }
-    if (pending_steps_ == 0) Pace();
+    if (time_.Paces()) Pace();
     node_.Step();
-    if (pending_steps_ > 0) --pending_steps_;
     AfterStep();
     if (end_ns >= 0 && node_.TimeNs() >= end_ns) break;
   }
@@ -83,13 +77,13 @@ uint64_t ControlLoop::Rejected(const std::string& kind) const {
 }
 
 void ControlLoop::ReportTimeMode() const {
-  spdlog::info("time: {}{}{}", TimeModeName(mode_), mode_ == TimeMode::kScaled ? fmt::format(" x{}", speed_) : "",
-               paused_ ? ", paused" : "");
+  spdlog::info("time: {}{}{}", TimeModeName(time_.mode()),
+               time_.mode() == TimeMode::kScaled ? fmt::format(" x{}", time_.speed()) : "",
+               time_.paused() ? ", paused" : "");
 }
 
 void ControlLoop::Pace() {
-  if (mode_ != TimeMode::kRealtime && mode_ != TimeMode::kScaled) return;
-  const auto deadline = pacer_.Deadline(node_.TimeNs() + timing_.step_ns, speed_);
+  const auto deadline = pacer_.Deadline(node_.TimeNs() + timing_.step_ns, time_.speed());
   const auto now = Pacer::Clock::now();
   if (pacer_.CatchUp(now, deadline, node_.TimeNs())) {
     spdlog::debug("fell behind real time at t={:.3f}s; re-anchored", node_.TimeNs() * 1e-9);
@@ -121,10 +115,10 @@ void ControlLoop::HandleControl(const idl::SimControl& request) {
       answer = node_.TeleportRobot(request);
       break;
     case idl::OP_PAUSE:
-      paused_ = true;
+      time_.Pause();
       break;
     case idl::OP_RESUME:
-      paused_ = false;
+      time_.Resume();
       break;
     case idl::OP_STEP:
       answer = QueueSteps(request);
@@ -150,40 +144,24 @@ void ControlLoop::HandleControl(const idl::SimControl& request) {
 }
 
 ControlAnswer ControlLoop::QueueSteps(const idl::SimControl& request) {
-  if (!paused_ && mode_ != TimeMode::kLockstep)
-    return {idl::CONTROL_NOT_ALLOWED, "step needs a paused simulation or lockstep mode"};
-  if (request.step_count() == 0 || request.step_count() > kMaxStepRequest)
-    return {idl::CONTROL_OUT_OF_RANGE, fmt::format("step_count must be 1..{}", kMaxStepRequest)};
+  const Error e = time_.CheckSteps(request.step_count());
+  if (e == Error::kNotAllowed) return {ControlErrorOf(e), "step needs a paused simulation or lockstep mode"};
+  if (e != Error::kOk) return {ControlErrorOf(e), fmt::format("step_count must be 1..{}", kMaxStepRequest)};
   ControlAnswer answer = node_.ApplyStepCommands(request);
   if (!answer.ok()) return answer;
-  pending_steps_ += request.step_count();
-  pending_replies_.push_back({node_.Frame() + pending_steps_, request});
+  const uint64_t token = next_token_++;
+  time_.QueueSteps(request.step_count(), node_.Frame(), token);
+  step_requests_.emplace(token, request);
   return {};
 }
 
 ControlAnswer ControlLoop::SetTimeMode(idl::TimeMode mode, double speed) {
-  switch (mode) {
-    case idl::TIME_REALTIME:
-      mode_ = TimeMode::kRealtime;
-      speed_ = 1.0;
-      break;
-    case idl::TIME_SCALED:
-      if (!(std::isfinite(speed) && speed > 0.0 && speed <= kMaxSpeed))
-        return {std::isfinite(speed) ? idl::CONTROL_OUT_OF_RANGE : idl::CONTROL_NOT_FINITE,
-                fmt::format("speed must be in (0, {}]", kMaxSpeed)};
-      mode_ = TimeMode::kScaled;
-      speed_ = speed;
-      break;
-    case idl::TIME_FREE_RUNNING:
-      mode_ = TimeMode::kFreeRunning;
-      break;
-    case idl::TIME_LOCKSTEP:
-      mode_ = TimeMode::kLockstep;
-      break;
-    default:
-      return {idl::CONTROL_UNKNOWN_ENUM, fmt::format("unknown time mode {}", static_cast<int>(mode))};
-  }
-  spdlog::info("time mode {} (speed {})", TimeModeName(mode_), speed_);
+  const auto raw = static_cast<uint32_t>(mode);
+  const TimeMode wanted = raw < static_cast<uint32_t>(TimeMode::kCount) ? static_cast<TimeMode>(raw) : TimeMode::kCount;
+  const Error e = time_.SetMode(wanted, speed);
+  if (e == Error::kUnknownEnum) return {ControlErrorOf(e), fmt::format("unknown time mode {}", static_cast<int>(mode))};
+  if (e != Error::kOk) return {ControlErrorOf(e), fmt::format("speed must be in (0, {}]", kMaxTimeSpeed)};
+  spdlog::info("time mode {} (speed {})", TimeModeName(time_.mode()), time_.speed());
   pacer_.Anchor(Pacer::Clock::now(), node_.TimeNs());
   return {};
 }
@@ -193,9 +171,10 @@ void ControlLoop::Reset() {
   node_.ResetWorld();
   // The new timeline starts where the old one ended: epoch + sim time stays monotonic.
   run_epoch_unix_ns_.fetch_add(reached_ns - node_.TimeNs());
-  pending_steps_ = 0;
-  for (const PendingStep& p : pending_replies_) Reply(p.request, {idl::CONTROL_CANCELLED, "cancelled by a reset"});
-  pending_replies_.clear();
+  for (uint64_t token : time_.Reset()) {
+    Reply(step_requests_.at(token), {idl::CONTROL_CANCELLED, "cancelled by a reset"});
+    step_requests_.erase(token);
+  }
   pacer_.Anchor(Pacer::Clock::now(), node_.TimeNs());
 }
 
@@ -218,12 +197,13 @@ void ControlLoop::AfterStep() {
   const uint64_t frame = node_.Frame();
   frame_.store(frame);
   time_ns_.store(node_.TimeNs());
-  const bool steps_done = !pending_replies_.empty() && frame >= pending_replies_.front().done_at_frame;
-  if (frame % state_every_ == 0 || steps_done) PublishState();
+  if (frame % state_every_ == 0 || time_.FinishesAt(frame)) PublishState();
   node_.AfterStep();
-  while (!pending_replies_.empty() && frame >= pending_replies_.front().done_at_frame) {
-    Reply(pending_replies_.front().request, {});
-    pending_replies_.pop_front();
+  finished_.clear();
+  time_.Stepped(frame, &finished_);
+  for (uint64_t token : finished_) {
+    Reply(step_requests_.at(token), {});
+    step_requests_.erase(token);
   }
 }
 
@@ -234,9 +214,9 @@ void ControlLoop::PublishState() {
   clock.sim_time_ns(node_.TimeNs());
   clock.frame(node_.Frame());
   clock.step_s(timing_.step_s);
-  clock.paused(paused_);
-  clock.mode(static_cast<idl::TimeMode>(mode_));
-  clock.speed(speed_);
+  clock.paused(time_.paused());
+  clock.mode(static_cast<idl::TimeMode>(time_.mode()));
+  clock.speed(time_.speed());
   clock.real_time_factor(pacer_.real_time_factor());
   clock.run_epoch_unix_ns(run_epoch_unix_ns_.load());
   clock_writer_->Write(clock);

@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -104,8 +105,8 @@ class ControlLoop {
   // Logs the time mode, as the last line of a node's startup report.
   void ReportTimeMode() const;
 
-  TimeMode mode() const { return mode_; }
-  double speed() const { return speed_; }
+  TimeMode mode() const { return time_.mode(); }
+  double speed() const { return time_.speed(); }
   double real_time_factor() const { return pacer_.real_time_factor(); }
   // Unix ns of sim time 0 of this run (0 until Run starts).
   int64_t run_epoch_unix_ns() const { return run_epoch_unix_ns_.load(); }
@@ -115,12 +116,6 @@ class ControlLoop {
   uint64_t Rejected(const std::string& kind) const;
 
  private:
-  struct PendingStep {
-    uint64_t done_at_frame;
-    idl::SimControl request;
-  };
-
-  bool CanStep() const { return pending_steps_ > 0 || (!paused_ && mode_ != TimeMode::kLockstep); }
   void Pace();
   void TakeInputs();
   void HandleControl(const idl::SimControl& request);
@@ -141,11 +136,10 @@ class ControlLoop {
   std::unique_ptr<dds::Writer<idl::SimControlReplyPubSubType>> reply_writer_;
   std::unique_ptr<dds::Reader<idl::SimControlPubSubType>> control_reader_;
 
-  TimeMode mode_ = TimeMode::kRealtime;
-  double speed_ = 1.0;
-  bool paused_ = false;
-  uint64_t pending_steps_ = 0;
-  std::deque<PendingStep> pending_replies_;
+  TimeControl time_;                                   // modes, pause, STEP requests (kernel/time_control.h)
+  std::map<uint64_t, idl::SimControl> step_requests_;  // by TimeControl token
+  uint64_t next_token_ = 0;
+  std::vector<uint64_t> finished_;
   uint64_t reported_overflow_ = 0;
   std::vector<idl::SimControl> control_inbox_;
 

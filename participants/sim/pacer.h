@@ -5,11 +5,9 @@
 #include <chrono>
 #include <cstdint>
 
+#include "kernel/time_control.h"
+
 namespace turf {
-
-enum class TimeMode { kRealtime, kScaled, kFreeRunning, kLockstep };
-
-const char* TimeModeName(TimeMode mode);
 
 class Pacer {
  public:
@@ -58,19 +56,5 @@ class Pacer {
   int64_t window_sim_ = 0;
   double rtf_ = 0.0;
 };
-
-inline const char* TimeModeName(TimeMode mode) {
-  switch (mode) {
-    case TimeMode::kRealtime:
-      return "realtime";
-    case TimeMode::kScaled:
-      return "scaled";
-    case TimeMode::kFreeRunning:
-      return "free-running";
-    case TimeMode::kLockstep:
-      return "lockstep";
-  }
-  return "?";
-}
 
 }  // namespace turf
