@@ -18,8 +18,8 @@
 #include <cstdio>
 #include <thread>
 
-#include "loader/scene_yaml.h"
 #include "dds/participant.h"
+#include "loader/scene_yaml.h"
 #include "participants/common/process.h"
 #include "participants/sim/sim_node.h"
 

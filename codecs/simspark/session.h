@@ -25,12 +25,12 @@
 #include <string>
 #include <vector>
 
+#include "core/rng.h"
 #include "kernel/simspark/field3d.h"
 #include "kernel/simspark/game.h"
 #include "kernel/simspark/radio.h"
 #include "kernel/simspark/types.h"
 #include "kernel/simspark/vision.h"
-#include "core/rng.h"
 
 namespace turf::simspark {
 

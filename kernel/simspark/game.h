@@ -50,8 +50,8 @@
 #include <string>
 #include <vector>
 
-#include "kernel/simspark/types.h"
 #include "core/rng.h"
+#include "kernel/simspark/types.h"
 
 namespace turf::simspark {
 

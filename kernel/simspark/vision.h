@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "core/rng.h"
 #include "kernel/simspark/field3d.h"
 #include "kernel/simspark/types.h"
-#include "core/rng.h"
 
 namespace turf::simspark {
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "loader/legged_scene_yaml.h"
 #include "core/legged/legged_world.h"
+#include "loader/legged_scene_yaml.h"
 
 namespace turf {
 namespace {
