@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "core/errors.h"
 #include "dds/request_id.h"
 
 namespace turf::dds {
@@ -46,29 +47,13 @@ const char* ControlCallErrorName(ControlCallError error) {
 }
 
 const char* ControlErrorName(idl::ControlError error) {
+  // One table (core/errors.h): ControlError's constants are its IDL column.
   switch (error) {
-    case idl::CONTROL_OK:
-      return "ok";
-    case idl::CONTROL_NOT_FINITE:
-      return "not_finite";
-    case idl::CONTROL_OUT_OF_RANGE:
-      return "out_of_range";
-    case idl::CONTROL_OUTSIDE_FIELD:
-      return "outside_field";
-    case idl::CONTROL_UNKNOWN_ROBOT:
-      return "unknown_robot";
-    case idl::CONTROL_UNKNOWN_JOINT:
-      return "unknown_joint";
-    case idl::CONTROL_UNKNOWN_ENUM:
-      return "unknown_enum";
-    case idl::CONTROL_UNKNOWN_OP:
-      return "unknown_op";
-    case idl::CONTROL_NOT_ALLOWED:
-      return "not_allowed";
-    case idl::CONTROL_INVALID_REALISM:
-      return "invalid_realism";
-    case idl::CONTROL_CANCELLED:
-      return "cancelled";
+#define TURF_ERROR_CASE(e, name, idl_constant, meaning) \
+  case idl::idl_constant:                               \
+    return name;
+    TURF_ERRORS(TURF_ERROR_CASE)
+#undef TURF_ERROR_CASE
   }
   return "unknown";
 }

@@ -14,8 +14,6 @@ namespace turf {
 
 namespace {
 
-std::string Errno(const char* what) { return std::string(what) + ": " + std::strerror(errno); }
-
 bool SetNonBlocking(int fd) {
   const int flags = fcntl(fd, F_GETFL, 0);
   return flags >= 0 && fcntl(fd, F_SETFL, flags | O_NONBLOCK) == 0;
@@ -26,15 +24,11 @@ bool SetNonBlocking(int fd) {
 TcpPeer::TcpPeer(int fd, std::string address, size_t max_pending)
     : fd_(fd), address_(std::move(address)), max_pending_(max_pending) {}
 
-TcpPeer::~TcpPeer() {
-  if (fd_ >= 0) close(fd_);
-}
-
 bool TcpPeer::Read(std::string* out, size_t max, std::string* error) {
   char buffer[16384];
   size_t total = 0;
   while (total < max) {
-    const ssize_t n = recv(fd_, buffer, sizeof(buffer), 0);
+    const ssize_t n = recv(fd_.get(), buffer, sizeof(buffer), 0);
     if (n > 0) {
       out->append(buffer, static_cast<size_t>(n));
       total += static_cast<size_t>(n);
@@ -46,7 +40,7 @@ bool TcpPeer::Read(std::string* out, size_t max, std::string* error) {
     }
     if (errno == EINTR) continue;
     if (errno == EAGAIN || errno == EWOULDBLOCK) return true;
-    *error = Errno("recv");
+    *error = ErrnoText("recv");
     return false;
   }
   return true;
@@ -67,14 +61,14 @@ bool TcpPeer::Write(const std::string& bytes, std::string* error) {
 
 bool TcpPeer::Flush(std::string* error) {
   while (sent_ < out_.size()) {
-    const ssize_t n = send(fd_, out_.data() + sent_, out_.size() - sent_, MSG_NOSIGNAL);
+    const ssize_t n = send(fd_.get(), out_.data() + sent_, out_.size() - sent_, MSG_NOSIGNAL);
     if (n > 0) {
       sent_ += static_cast<size_t>(n);
       continue;
     }
     if (n < 0 && errno == EINTR) continue;
     if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) break;
-    *error = Errno("send");
+    *error = ErrnoText("send");
     return false;
   }
   if (sent_ == out_.size()) {
@@ -87,21 +81,6 @@ bool TcpPeer::Flush(std::string* error) {
   return true;
 }
 
-TcpListener::~TcpListener() {
-  if (fd_ >= 0) close(fd_);
-}
-
-TcpListener::TcpListener(TcpListener&& other) noexcept : fd_(other.fd_) { other.fd_ = -1; }
-
-TcpListener& TcpListener::operator=(TcpListener&& other) noexcept {
-  if (this != &other) {
-    if (fd_ >= 0) close(fd_);
-    fd_ = other.fd_;
-    other.fd_ = -1;
-  }
-  return *this;
-}
-
 std::optional<TcpListener> TcpListener::Listen(const std::string& ip, uint16_t port, std::string* error) {
   sockaddr_in addr{};
   addr.sin_family = AF_INET;
@@ -112,18 +91,18 @@ std::optional<TcpListener> TcpListener::Listen(const std::string& ip, uint16_t p
   }
   const int fd = socket(AF_INET, SOCK_STREAM, 0);
   if (fd < 0) {
-    *error = Errno("socket");
+    *error = ErrnoText("socket");
     return std::nullopt;
   }
   TcpListener listener(fd);
   const int one = 1;
   setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
   if (bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) != 0) {
-    *error = Errno(("bind " + ip + ":" + std::to_string(port)).c_str());
+    *error = ErrnoText("bind " + ip + ":" + std::to_string(port));
     return std::nullopt;
   }
   if (listen(fd, 64) != 0 || !SetNonBlocking(fd)) {
-    *error = Errno("listen");
+    *error = ErrnoText("listen");
     return std::nullopt;
   }
   return listener;
@@ -132,7 +111,7 @@ std::optional<TcpListener> TcpListener::Listen(const std::string& ip, uint16_t p
 int TcpListener::Accept(std::string* address) {
   sockaddr_in addr{};
   socklen_t len = sizeof(addr);
-  const int fd = accept(fd_, reinterpret_cast<sockaddr*>(&addr), &len);
+  const int fd = accept(fd_.get(), reinterpret_cast<sockaddr*>(&addr), &len);
   if (fd < 0) return -1;
   if (!SetNonBlocking(fd)) {
     close(fd);
@@ -144,13 +123,6 @@ int TcpListener::Accept(std::string* address) {
   inet_ntop(AF_INET, &addr.sin_addr, ip, sizeof(ip));
   *address = std::string(ip) + ":" + std::to_string(ntohs(addr.sin_port));
   return fd;
-}
-
-uint16_t TcpListener::LocalPort() const {
-  sockaddr_in addr{};
-  socklen_t len = sizeof(addr);
-  if (getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &len) != 0) return 0;
-  return ntohs(addr.sin_port);
 }
 
 }  // namespace turf

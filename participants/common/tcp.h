@@ -8,16 +8,17 @@
 #include <optional>
 #include <string>
 
+#include "participants/common/socket_fd.h"
+
 namespace turf {
 
 class TcpPeer {
  public:
   TcpPeer(int fd, std::string address, size_t max_pending);
-  ~TcpPeer();
   TcpPeer(const TcpPeer&) = delete;
   TcpPeer& operator=(const TcpPeer&) = delete;
 
-  int fd() const { return fd_; }
+  int fd() const { return fd_.get(); }
   const std::string& address() const { return address_; }
   // Reads what is available (up to `max` bytes) into `out` (appended).
   // false: the peer closed or failed (error says why).
@@ -29,7 +30,7 @@ class TcpPeer {
   size_t pending() const { return out_.size() - sent_; }
 
  private:
-  int fd_;
+  SocketFd fd_;
   std::string address_;
   size_t max_pending_;
   std::string out_;
@@ -39,22 +40,17 @@ class TcpPeer {
 class TcpListener {
  public:
   TcpListener() = default;
-  ~TcpListener();
-  TcpListener(TcpListener&& other) noexcept;
-  TcpListener& operator=(TcpListener&& other) noexcept;
-  TcpListener(const TcpListener&) = delete;
-  TcpListener& operator=(const TcpListener&) = delete;
 
   // Listening on ip:port (port 0: any free port), non-blocking.
   static std::optional<TcpListener> Listen(const std::string& ip, uint16_t port, std::string* error);
   // A new connection's fd (non-blocking, TCP_NODELAY) and address, or -1 when none waits.
   int Accept(std::string* address);
-  int fd() const { return fd_; }
-  uint16_t LocalPort() const;
+  int fd() const { return fd_.get(); }
+  uint16_t LocalPort() const { return BoundPort(fd_.get()); }
 
  private:
   explicit TcpListener(int fd) : fd_(fd) {}
-  int fd_ = -1;
+  SocketFd fd_;
 };
 
 }  // namespace turf

@@ -11,8 +11,6 @@
 namespace turf {
 
 namespace {
-std::string Errno(const char* what) { return std::string(what) + ": " + std::strerror(errno); }
-
 bool ParseIp(const std::string& ip, in_addr* out) { return inet_pton(AF_INET, ip.c_str(), out) == 1; }
 }  // namespace
 
@@ -30,21 +28,6 @@ std::optional<UdpEndpoint> MakeEndpoint(const std::string& ip, uint16_t port) {
   return e;
 }
 
-UdpSocket::~UdpSocket() {
-  if (fd_ >= 0) close(fd_);
-}
-
-UdpSocket::UdpSocket(UdpSocket&& other) noexcept : fd_(other.fd_) { other.fd_ = -1; }
-
-UdpSocket& UdpSocket::operator=(UdpSocket&& other) noexcept {
-  if (this != &other) {
-    if (fd_ >= 0) close(fd_);
-    fd_ = other.fd_;
-    other.fd_ = -1;
-  }
-  return *this;
-}
-
 std::optional<UdpSocket> UdpSocket::Bind(const std::string& ip, uint16_t port, bool reuse, std::string* error) {
   const auto endpoint = MakeEndpoint(ip, port);
   if (!endpoint) {
@@ -53,17 +36,17 @@ std::optional<UdpSocket> UdpSocket::Bind(const std::string& ip, uint16_t port, b
   }
   const int fd = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
   if (fd < 0) {
-    *error = Errno("socket");
+    *error = ErrnoText("socket");
     return std::nullopt;
   }
   UdpSocket s(fd);
   const int one = 1;
   if (reuse && setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one)) != 0) {
-    *error = Errno("SO_REUSEADDR");
+    *error = ErrnoText("SO_REUSEADDR");
     return std::nullopt;
   }
   if (bind(fd, reinterpret_cast<const sockaddr*>(&endpoint->addr), sizeof(endpoint->addr)) != 0) {
-    *error = Errno(("bind " + endpoint->ToString()).c_str());
+    *error = ErrnoText("bind " + endpoint->ToString());
     return std::nullopt;
   }
   return s;
@@ -75,8 +58,8 @@ bool UdpSocket::JoinMulticast(const std::string& group, const std::string& inter
     *error = "bad multicast group or interface address";
     return false;
   }
-  if (setsockopt(fd_, IPPROTO_IP, IP_ADD_MEMBERSHIP, &req, sizeof(req)) != 0) {
-    *error = Errno("IP_ADD_MEMBERSHIP");
+  if (setsockopt(fd_.get(), IPPROTO_IP, IP_ADD_MEMBERSHIP, &req, sizeof(req)) != 0) {
+    *error = ErrnoText("IP_ADD_MEMBERSHIP");
     return false;
   }
   return true;
@@ -88,8 +71,8 @@ bool UdpSocket::SetMulticastInterface(const std::string& interface_ip, std::stri
     *error = "bad interface address " + interface_ip;
     return false;
   }
-  if (setsockopt(fd_, IPPROTO_IP, IP_MULTICAST_IF, &addr, sizeof(addr)) != 0) {
-    *error = Errno("IP_MULTICAST_IF");
+  if (setsockopt(fd_.get(), IPPROTO_IP, IP_MULTICAST_IF, &addr, sizeof(addr)) != 0) {
+    *error = ErrnoText("IP_MULTICAST_IF");
     return false;
   }
   return true;
@@ -97,8 +80,8 @@ bool UdpSocket::SetMulticastInterface(const std::string& interface_ip, std::stri
 
 bool UdpSocket::SetMulticastTtl(int ttl, std::string* error) {
   const unsigned char value = static_cast<unsigned char>(ttl);
-  if (setsockopt(fd_, IPPROTO_IP, IP_MULTICAST_TTL, &value, sizeof(value)) != 0) {
-    *error = Errno("IP_MULTICAST_TTL");
+  if (setsockopt(fd_.get(), IPPROTO_IP, IP_MULTICAST_TTL, &value, sizeof(value)) != 0) {
+    *error = ErrnoText("IP_MULTICAST_TTL");
     return false;
   }
   return true;
@@ -106,22 +89,22 @@ bool UdpSocket::SetMulticastTtl(int ttl, std::string* error) {
 
 bool UdpSocket::SetMulticastLoop(bool on, std::string* error) {
   const unsigned char value = on ? 1 : 0;
-  if (setsockopt(fd_, IPPROTO_IP, IP_MULTICAST_LOOP, &value, sizeof(value)) != 0) {
-    *error = Errno("IP_MULTICAST_LOOP");
+  if (setsockopt(fd_.get(), IPPROTO_IP, IP_MULTICAST_LOOP, &value, sizeof(value)) != 0) {
+    *error = ErrnoText("IP_MULTICAST_LOOP");
     return false;
   }
   return true;
 }
 
 std::optional<Datagram> UdpSocket::Receive(size_t max_bytes, std::chrono::milliseconds timeout) {
-  pollfd p{fd_, POLLIN, 0};
+  pollfd p{fd_.get(), POLLIN, 0};
   if (poll(&p, 1, static_cast<int>(timeout.count())) <= 0 || (p.revents & POLLIN) == 0) return std::nullopt;
   Datagram d;
   d.bytes.resize(max_bytes);
   socklen_t len = sizeof(d.from.addr);
   // MSG_TRUNC makes recvfrom return the datagram's real length.
   const ssize_t n =
-      recvfrom(fd_, d.bytes.data(), d.bytes.size(), MSG_TRUNC, reinterpret_cast<sockaddr*>(&d.from.addr), &len);
+      recvfrom(fd_.get(), d.bytes.data(), d.bytes.size(), MSG_TRUNC, reinterpret_cast<sockaddr*>(&d.from.addr), &len);
   if (n < 0) return std::nullopt;
   d.size = static_cast<size_t>(n);
   d.truncated = d.size > max_bytes;
@@ -131,19 +114,12 @@ std::optional<Datagram> UdpSocket::Receive(size_t max_bytes, std::chrono::millis
 
 bool UdpSocket::SendTo(const std::vector<uint8_t>& bytes, const UdpEndpoint& to, std::string* error) {
   const ssize_t n =
-      sendto(fd_, bytes.data(), bytes.size(), 0, reinterpret_cast<const sockaddr*>(&to.addr), sizeof(to.addr));
+      sendto(fd_.get(), bytes.data(), bytes.size(), 0, reinterpret_cast<const sockaddr*>(&to.addr), sizeof(to.addr));
   if (n != static_cast<ssize_t>(bytes.size())) {
-    *error = Errno(("sendto " + to.ToString()).c_str());
+    *error = ErrnoText("sendto " + to.ToString());
     return false;
   }
   return true;
-}
-
-uint16_t UdpSocket::LocalPort() const {
-  sockaddr_in addr{};
-  socklen_t len = sizeof(addr);
-  if (getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &len) != 0) return 0;
-  return ntohs(addr.sin_port);
 }
 
 }  // namespace turf

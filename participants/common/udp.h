@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "participants/common/socket_fd.h"
+
 namespace turf {
 
 struct UdpEndpoint {
@@ -33,11 +35,6 @@ struct Datagram {
 class UdpSocket {
  public:
   UdpSocket() = default;
-  ~UdpSocket();
-  UdpSocket(UdpSocket&& other) noexcept;
-  UdpSocket& operator=(UdpSocket&& other) noexcept;
-  UdpSocket(const UdpSocket&) = delete;
-  UdpSocket& operator=(const UdpSocket&) = delete;
 
   // A socket bound to ip:port (port 0: any free port). reuse: SO_REUSEADDR,
   // so several listeners can share a multicast port.
@@ -51,12 +48,12 @@ class UdpSocket {
   // Waits up to `timeout` for one datagram; nullopt on timeout or error.
   std::optional<Datagram> Receive(size_t max_bytes, std::chrono::milliseconds timeout);
   bool SendTo(const std::vector<uint8_t>& bytes, const UdpEndpoint& to, std::string* error);
-  uint16_t LocalPort() const;
-  bool valid() const { return fd_ >= 0; }
+  uint16_t LocalPort() const { return BoundPort(fd_.get()); }
+  bool valid() const { return fd_.valid(); }
 
  private:
   explicit UdpSocket(int fd) : fd_(fd) {}
-  int fd_ = -1;
+  SocketFd fd_;
 };
 
 }  // namespace turf

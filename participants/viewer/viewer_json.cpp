@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/errors.h"
 #include "participants/viewer/json_util.h"
 #include "participants/viewer/legged_json.h"
 #include "participants/viewer/page_request.h"
@@ -182,6 +183,8 @@ std::string ReplyJson(const idl::SimControlReply& reply) {
   return Dump(json{{"type", "reply"},
                    {"op", OpName(reply.op())},
                    {"ok", reply.result() == idl::RESULT_OK},
+                   // ControlError's values are turf::Error's (checked in participants/sim/control_loop.cpp).
+                   {"error", ErrorName(static_cast<Error>(reply.error()))},
                    {"reason", reply.reason()},
                    {"t", Ns(reply.sim_time_ns())}});
 }

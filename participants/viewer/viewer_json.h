@@ -19,7 +19,8 @@
 //   state (legged scenes) {t, frame, ball (absent without a field), robots:[],
 //            detections:[], links:{<robot>: [poses]} (legged_json.h), clock, viewer}
 //   stats   {t, window, streams:[{name, rate, sent, lost, loss, latency, jitter}]}
-//   reply   {op, ok, reason, t}                     turf-sim's answer, to the page that asked
+//   reply   {op, ok, error, reason, t}              turf-sim's answer, to the page that asked;
+//                                                   error: core/errors.h's name ("out_of_range")
 //   refused {kind, detail}                          to the page whose message was refused
 #pragma once
 

@@ -15,12 +15,13 @@
 #include <set>
 #include <thread>
 
+#include "dds/control_client.h"
 #include "dds/participant.h"
 #include "idl/values.h"
 #include "loader/legged_scene_yaml.h"
 #include "loader/realism_yaml.h"
 #include "participants/sim/sim_node.h"
-#include "tests/test_domain.h"
+#include "tests/sim/sim_harness.h"
 
 namespace turf {
 namespace {
@@ -28,15 +29,7 @@ namespace {
 using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
 
-dds::ParticipantOptions UniqueDds(const char* name) {
-  static int counter = 0;
-  dds::ParticipantOptions o;
-  o.domain = test::TestDomain(7);
-  o.prefix = "legged" + std::to_string(getpid()) + "_" + std::to_string(++counter);
-  o.name = name;
-  o.qos_file = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
-  return o;
-}
+dds::ParticipantOptions UniqueDds(const char* name) { return test::UniqueDds(name, "legged", 7); }
 
 LeggedScene SimSparkScene(const SensorRealism& realism = {}) {
   LeggedSceneLoadResult r = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/simspark_3d.yaml");
@@ -45,27 +38,11 @@ LeggedScene SimSparkScene(const SensorRealism& realism = {}) {
   return std::move(*r.scene);
 }
 
-class NodeUnderTest {
+// turf-sim on the SimSpark scene.
+class NodeUnderTest : public test::SimUnderTest {
  public:
-  NodeUnderTest(const dds::ParticipantOptions& dds, TimeMode mode, const SensorRealism& realism = {}) {
-    SimNodeOptions o;
-    o.domain = dds.domain;
-    o.prefix = dds.prefix;
-    o.qos_file = dds.qos_file;
-    o.mode = mode;
-    node_ = std::make_unique<SimNode>(SimSparkScene(realism), o);
-    thread_ = std::thread([this] { node_->Run([this] { return stop_.load(); }); });
-  }
-  ~NodeUnderTest() {
-    stop_ = true;
-    thread_.join();
-  }
-  SimNode& node() { return *node_; }
-
- private:
-  std::unique_ptr<SimNode> node_;
-  std::atomic<bool> stop_{false};
-  std::thread thread_;
+  NodeUnderTest(const dds::ParticipantOptions& dds, TimeMode mode, const SensorRealism& realism = {})
+      : SimUnderTest(SimSparkScene(realism), dds, mode) {}
 };
 
 class Client {
@@ -73,11 +50,10 @@ class Client {
   explicit Client(dds::ParticipantOptions o)
       : participant_((o.name = "client", o)),
         command_(participant_.MakeWriter<idl::JointCommandPubSubType>(dds::Topic::kRobotJointCommand)),
-        control_(participant_.MakeWriter<idl::SimControlPubSubType>(dds::Topic::kControl)),
+        control_(participant_, "test"),
         joint_reader_(participant_.MakeReader<idl::JointStatePubSubType>(dds::Topic::kRobotJointState)),
         imu_(participant_.MakeReader<idl::ImuStatePubSubType>(dds::Topic::kRobotImu)),
         force_(participant_.MakeReader<idl::ForceStatePubSubType>(dds::Topic::kRobotForce)),
-        reply_(participant_.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
         links_(participant_.MakeReader<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks)),
         world_(participant_.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
         scene_(participant_.MakeReader<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene)) {}
@@ -86,8 +62,8 @@ class Client {
     const auto end = Clock::now() + 10s;  // discovery is slower on a busy machine
     while (Clock::now() < end) {
       Poll();
-      if (command_->Matched() > 0 && control_->Matched() > 0 && reply_->Matched() > 0 && joints.count("nao_1") &&
-          imu_now_.count("nao_1") && force_now_.count("nao_1"))
+      if (command_->Matched() > 0 && control_.ServerMatched() && joints.count("nao_1") && imu_now_.count("nao_1") &&
+          force_now_.count("nao_1"))
         return true;
       std::this_thread::sleep_for(5ms);
     }
@@ -96,9 +72,7 @@ class Client {
   // Commands and control matched, the frame-0 IMU sample in (for links that
   // delay joint states past the start).
   bool WaitControlMatched() {
-    return WaitFor([&] {
-      return command_->Matched() > 0 && control_->Matched() > 0 && reply_->Matched() > 0 && imu_now_.count("nao_1");
-    });
+    return WaitFor([&] { return command_->Matched() > 0 && control_.ServerMatched() && imu_now_.count("nao_1"); });
   }
   void Poll() {
     std::vector<idl::JointState> js;
@@ -134,21 +108,10 @@ class Client {
     req.step_count(steps);
     return Control(req);
   }
+  // Through dds::ControlClient: the reply (OK or refused), or nullopt if none came in 5 s.
   std::optional<idl::SimControlReply> Control(idl::SimControl req) {
-    const idl::ControlOp op = req.op();
-    req.client("test");
-    req.request_id(++request_id_);
-    if (op == idl::OP_SET_TIME_MODE) req.time_mode(idl::TIME_LOCKSTEP);
-    control_->Write(req);
-    const auto end = Clock::now() + 5s;
-    while (Clock::now() < end) {
-      std::vector<idl::SimControlReply> replies;
-      reply_->Take(&replies);
-      for (const auto& r : replies)
-        if (r.request_id() == request_id_) return r;
-      std::this_thread::sleep_for(1ms);
-    }
-    return std::nullopt;
+    if (req.op() == idl::OP_SET_TIME_MODE) req.time_mode(idl::TIME_LOCKSTEP);
+    return control_.Call(std::move(req), 5s).reply;
   }
   void Command(const std::string& robot, const std::string& joint, idl::JointMode mode, double value) {
     idl::JointCommand c;
@@ -178,15 +141,13 @@ class Client {
  private:
   dds::Participant participant_;
   std::unique_ptr<dds::Writer<idl::JointCommandPubSubType>> command_;
-  std::unique_ptr<dds::Writer<idl::SimControlPubSubType>> control_;
+  dds::ControlClient control_;
   std::unique_ptr<dds::Reader<idl::JointStatePubSubType>> joint_reader_;
   std::unique_ptr<dds::Reader<idl::ImuStatePubSubType>> imu_;
   std::unique_ptr<dds::Reader<idl::ForceStatePubSubType>> force_;
-  std::unique_ptr<dds::Reader<idl::SimControlReplyPubSubType>> reply_;
   std::unique_ptr<dds::Reader<idl::LinkStatePubSubType>> links_;
   std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> world_;
   std::unique_ptr<dds::Reader<idl::LeggedSceneInfoPubSubType>> scene_;
-  uint64_t request_id_ = 0;
 };
 
 TEST(LeggedDdsTest, PublishesEveryRobotsJointsImuAndForces) {

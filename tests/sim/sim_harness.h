@@ -20,6 +20,7 @@
 #include <optional>
 #include <thread>
 
+#include "dds/control_client.h"
 #include "dds/participant.h"
 #include "participants/sim/sim_node.h"
 #include "tests/core/test_scenes.h"
@@ -29,21 +30,24 @@ namespace turf::test {
 using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
 
-inline dds::ParticipantOptions UniqueDds(const char* name) {
+// A domain from the process id (salted: test programs that run side by side
+// stay apart) and a prefix of its own for every call.
+inline dds::ParticipantOptions UniqueDds(const char* name, const char* prefix = "test", int domain_salt = 0) {
   static int g_test_counter = 0;
   ++g_test_counter;
   dds::ParticipantOptions o;
-  o.domain = TestDomain();
-  o.prefix = "test" + std::to_string(getpid()) + "_" + std::to_string(g_test_counter);
+  o.domain = TestDomain(domain_salt);
+  o.prefix = prefix + std::to_string(getpid()) + "_" + std::to_string(g_test_counter);
   o.name = name;
   o.qos_file = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
   return o;
 }
 
-// turf-sim's node on a thread of its own.
+// turf-sim's node on a thread of its own, for an SSL Scene or a LeggedScene.
 class SimUnderTest {
  public:
-  SimUnderTest(Scene scene, const dds::ParticipantOptions& dds, TimeMode mode, double speed = 1.0) {
+  template <typename SceneKind>
+  SimUnderTest(SceneKind scene, const dds::ParticipantOptions& dds, TimeMode mode, double speed = 1.0) {
     SimNodeOptions o;
     o.domain = dds.domain;
     o.prefix = dds.prefix;
@@ -72,12 +76,11 @@ class Client {
       : participant_(Named(o)),
         blue_(participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue)),
         yellow_(participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow)),
-        control_(participant_.MakeWriter<idl::SimControlPubSubType>(dds::Topic::kControl)),
+        control_(participant_, "test"),
         state_(participant_.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
         clock_(participant_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock)),
         camera_(participant_.MakeReader<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)),
         field_(participant_.MakeReader<idl::SslFieldPubSubType>(dds::Topic::kSslField)),
-        reply_(participant_.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
         stats_(participant_.MakeReader<idl::SensorStatsPubSubType>(dds::Topic::kStats)),
         all_frames_(participant_.MakeReader<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)) {}
 
@@ -103,27 +106,17 @@ class Client {
   bool WaitMatched(std::chrono::milliseconds timeout = 10s) {
     const auto end = Clock::now() + timeout;
     while (Clock::now() < end) {
-      if (blue_->Matched() > 0 && yellow_->Matched() > 0 && control_->Matched() > 0 && state_->Matched() > 0 &&
-          reply_->Matched() > 0 && all_frames_->Matched() > 0)
+      if (blue_->Matched() > 0 && yellow_->Matched() > 0 && control_.ServerMatched() && state_->Matched() > 0 &&
+          all_frames_->Matched() > 0)
         return WaitState([](const idl::WorldState&) { return true; });
       std::this_thread::sleep_for(5ms);
     }
     return false;
   }
-  // Sends a control request and waits for its reply.
+  // Sends a control request through dds::ControlClient and waits for its
+  // reply (OK or refused); nullopt if none came by the timeout.
   std::optional<idl::SimControlReply> Control(idl::SimControl req, std::chrono::milliseconds timeout = 5s) {
-    req.client("test");
-    req.request_id(++request_id_);
-    control_->Write(req);
-    const auto end = Clock::now() + timeout;
-    while (Clock::now() < end) {
-      std::vector<idl::SimControlReply> replies;
-      reply_->Take(&replies);
-      for (const auto& r : replies)
-        if (r.request_id() == request_id_) return r;
-      std::this_thread::sleep_for(1ms);
-    }
-    return std::nullopt;
+    return control_.Call(std::move(req), timeout).reply;
   }
   void Command(const idl::SslRobotCommand& c) { (c.team() == idl::TEAM_BLUE ? blue_ : yellow_)->Write(c); }
   void CommandOnTopic(Team topic, const idl::SslRobotCommand& c) { (topic == Team::kBlue ? blue_ : yellow_)->Write(c); }
@@ -164,12 +157,11 @@ class Client {
   }
   dds::Participant participant_;
   std::unique_ptr<dds::Writer<idl::SslRobotCommandPubSubType>> blue_, yellow_;
-  std::unique_ptr<dds::Writer<idl::SimControlPubSubType>> control_;
+  dds::ControlClient control_;
   std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> state_;
   std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_;
   std::unique_ptr<dds::Reader<idl::CameraFramePubSubType>> camera_;
   std::unique_ptr<dds::Reader<idl::SslFieldPubSubType>> field_;
-  std::unique_ptr<dds::Reader<idl::SimControlReplyPubSubType>> reply_;
   std::unique_ptr<dds::Reader<idl::SensorStatsPubSubType>> stats_;
   std::unique_ptr<dds::Reader<idl::CameraFramePubSubType>> all_frames_;
   std::optional<idl::SensorStats> stats_now_;
@@ -181,7 +173,6 @@ class Client {
   bool has_clock_ = false;
   std::map<uint32_t, idl::CameraFrame> cameras_;
   std::optional<idl::SslField> field_now_;
-  uint64_t request_id_ = 0;
 };
 
 inline idl::SslRobotCommand LocalVelocity(idl::Team team, int id, double forward, double left, double angular) {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/errors.h"
 #include "participants/viewer/http_rules.h"
 #include "participants/viewer/viewer_json.h"
 #include "tests/viewer/viewer_samples.h"
@@ -174,6 +175,30 @@ TEST(ViewerJson, InvalidUtf8FromOutsideDoesNotThrow) {
   EXPECT_NE(r["reason"].get<std::string>().find("bad"), std::string::npos);
   EXPECT_EQ(json::parse(RefusedJson("not_json", "\xc3"))["kind"], "not_json");
   EXPECT_EQ(json::parse(HelloJson("pre\xff"))["type"], "hello");
+}
+
+TEST(ViewerJson, ReplyCarriesTheErrorCodeByItsTaxonomyName) {
+  idl::SimControlReply reply;
+  reply.op(idl::OP_STEP);
+  reply.result(idl::RESULT_REJECTED);
+  reply.error(idl::CONTROL_NOT_ALLOWED);
+  reply.reason("step needs a paused simulation or lockstep mode");
+  json r = json::parse(ReplyJson(reply));
+  EXPECT_EQ(r["ok"], false);
+  EXPECT_EQ(r["error"], "not_allowed");
+  EXPECT_EQ(r["reason"], "step needs a paused simulation or lockstep mode");
+  // Every code is sent by core/errors.h's name for the same value.
+  for (int e = 0; e < static_cast<int>(Error::kCount); ++e) {
+    reply.error(static_cast<idl::ControlError>(e));
+    EXPECT_EQ(json::parse(ReplyJson(reply))["error"], ErrorName(static_cast<Error>(e))) << e;
+  }
+  reply.error(idl::CONTROL_NO_BALL);
+  EXPECT_EQ(json::parse(ReplyJson(reply))["error"], "no_ball");
+  reply.result(idl::RESULT_OK);
+  reply.error(idl::CONTROL_OK);
+  r = json::parse(ReplyJson(reply));
+  EXPECT_EQ(r["ok"], true);
+  EXPECT_EQ(r["error"], "ok");
 }
 
 TEST(HttpRules, StaticFilesStayInsideTheWebRoot) {

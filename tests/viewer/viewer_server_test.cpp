@@ -198,6 +198,7 @@ TEST(ViewerServer, EachPageSeesOnlyTheRepliesToItsOwnRequests) {
   ASSERT_TRUE(refused);
   EXPECT_EQ((*refused)["op"], "step");
   EXPECT_EQ((*refused)["ok"], false);
+  EXPECT_EQ((*refused)["error"], "not_allowed");
   // Page B's first reply is the answer to its own request (A's refusal came
   // before it, so had it been sent to B it would be read first).
   ASSERT_TRUE(b.Send(R"({"op":"pause"})"));

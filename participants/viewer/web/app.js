@@ -438,7 +438,7 @@
       case 'state': onState(m); break;
       case 'stats': onStats(m); break;
       case 'reply':
-        if (!m.ok) say(`turf-sim refused ${m.op}: ${m.reason}`, true);
+        if (!m.ok) say(`turf-sim refused ${m.op} (${m.error}): ${m.reason}`, true);
         else if (!m.op.startsWith('teleport')) say(`${m.op}: ok at t=${m.t.toFixed(2)} s`);
         break;
       case 'refused': say(`viewer refused the request (${m.kind}): ${m.detail}`, true); break;

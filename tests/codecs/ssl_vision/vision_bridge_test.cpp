@@ -22,6 +22,7 @@
 #include <tuple>
 
 #include "codecs/proto/ssl_vision.pb.h"
+#include "dds/control_client.h"
 #include "dds/participant.h"
 #include "participants/common/udp.h"
 #include "participants/sim/sim_node.h"
@@ -94,8 +95,6 @@ const wire::vision::SSL_DetectionRobot* FindBlue(const wire::vision::SSL_Detecti
 idl::SimControl Teleport(idl::Team team, int id, double x, double y, double orientation) {
   idl::SimControl c;
   c.op(idl::OP_TELEPORT_ROBOT);
-  c.client("vision-test");
-  c.request_id(1);
   c.robot().team(team);
   c.robot().id(static_cast<uint8_t>(id));
   c.robot().on_field(true);
@@ -152,10 +151,9 @@ TEST(VisionBridge, DivisionACamerasGeometryAndATeleportedRobot) {
 
   // Teleport blue 0 into camera 0's quadrant (+x, +y) through the control topic.
   dds::Participant client(dds);
-  auto control = client.MakeWriter<idl::SimControlPubSubType>(dds::Topic::kControl);
-  auto replies = client.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply);
-  ASSERT_TRUE(WaitFor([&] { return control->Matched() > 0 && replies->Matched() > 0; }));
-  ASSERT_TRUE(control->Write(Teleport(idl::TEAM_BLUE, 0, 3.0, 2.0, 1.0)));
+  dds::ControlClient control(client, "vision-test");
+  const dds::ControlOutcome teleported = control.Call(Teleport(idl::TEAM_BLUE, 0, 3.0, 2.0, 1.0), kPatience);
+  ASSERT_TRUE(teleported.ok()) << teleported.Describe();  // turf-sim answered RESULT_OK
   std::set<uint32_t> seen_by;
   ASSERT_TRUE(ReceiveUntil(rx, [&](const wire::vision::SSL_WrapperPacket& p) {
     if (!p.has_detection()) return false;
@@ -173,12 +171,6 @@ TEST(VisionBridge, DivisionACamerasGeometryAndATeleportedRobot) {
     return seen_by.size() >= 1 && p.detection().frame_number() > last_frame[0] + 10;
   }));
   EXPECT_EQ(seen_by, std::set<uint32_t>{0});  // and by no other camera
-  std::vector<idl::SimControlReply> got, taken;
-  ASSERT_TRUE(WaitFor([&] {
-    if (replies->Take(&taken)) got.insert(got.end(), taken.begin(), taken.end());
-    return !got.empty();
-  }));
-  EXPECT_EQ(got.back().result(), idl::RESULT_OK);
   EXPECT_EQ(bridge.node().Stats().rejected, 0u);
   EXPECT_EQ(bridge.node().Stats().send_errors, 0u);
 }
@@ -377,26 +369,15 @@ TEST(VisionBridge, RunClockIsTheRunEpochPlusSimTime) {
   }
 
   // Reset: sim time restarts at 0, the epoch advances by the sim time reached.
-  auto control = client.MakeWriter<idl::SimControlPubSubType>(dds::Topic::kControl);
-  auto replies = client.MakeReader<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply);
-  ASSERT_TRUE(WaitFor([&] { return control->Matched() > 0 && replies->Matched() > 0; }));
+  dds::ControlClient control(client, "vision-test");
+  ASSERT_TRUE(control.WaitForServer(Clock::now() + kPatience));
   idl::SimControl reset;
   reset.op(idl::OP_RESET);
-  reset.client("vision-test");
-  reset.request_id(7);
   clock.Poll();
   const int64_t sim_before_reset_ns = clock.sim_ns();
-  ASSERT_TRUE(control->Write(reset));
-  std::optional<idl::SimControlReply> reply;
-  std::vector<idl::SimControlReply> got;
-  ASSERT_TRUE(WaitFor([&] {
-    replies->Take(&got);
-    for (const auto& r : got)
-      if (r.request_id() == 7) reply = r;
-    return reply.has_value();
-  }));
-  ASSERT_TRUE(reply.has_value());
-  EXPECT_EQ(reply->result(), idl::RESULT_OK);
+  const dds::ControlOutcome reply = control.Call(reset, kPatience);
+  ASSERT_TRUE(reply.reply.has_value()) << reply.Describe();
+  EXPECT_EQ(reply.reply->result(), idl::RESULT_OK);
   std::optional<int64_t> epoch1;
   ASSERT_TRUE(WaitFor([&] {
     run.Pump(run_rx, 5ms);
