@@ -40,12 +40,8 @@ TEST(Errors, EveryNameIsUniqueSnakeCaseAndRoundTrips) {
 
 TEST(Errors, SnakeCaseCheckRefusesOtherSpellings) {
   EXPECT_TRUE(IsSnakeCase("not_finite"));
-  EXPECT_FALSE(IsSnakeCase("NotFinite"));
-  EXPECT_FALSE(IsSnakeCase("not__finite"));
-  EXPECT_FALSE(IsSnakeCase("_ok"));
-  EXPECT_FALSE(IsSnakeCase("ok_"));
-  EXPECT_FALSE(IsSnakeCase(""));
-  EXPECT_FALSE(IsSnakeCase("too-large"));
+  for (const char* bad : {"NotFinite", "not__finite", "_ok", "ok_", "", "too-large", "2d"})
+    EXPECT_FALSE(IsSnakeCase(bad)) << "'" << bad << "'";
 }
 
 TEST(Errors, PastTheTableHasNoName) {
