@@ -16,4 +16,10 @@ constexpr const char* kMeanings[] = {TURF_ERRORS(TURF_ERROR_MEANING)};
 const char* ErrorName(Error error) { return error < Error::kCount ? kNames[static_cast<int>(error)] : "?"; }
 const char* ErrorMeaning(Error error) { return error < Error::kCount ? kMeanings[static_cast<int>(error)] : "?"; }
 
+std::optional<Error> ErrorFromName(std::string_view name) {
+  for (int i = 0; i < static_cast<int>(Error::kCount); ++i)
+    if (name == kNames[i]) return static_cast<Error>(i);
+  return std::nullopt;
+}
+
 }  // namespace turf

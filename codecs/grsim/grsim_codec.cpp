@@ -188,30 +188,6 @@ std::string CheckConfig(const GrsimCodecConfig& c) {
   return "";
 }
 
-const char* GrsimErrorName(GrsimError error) {
-  switch (error) {
-    case GrsimError::kOk:
-      return "ok";
-    case GrsimError::kEmpty:
-      return "empty";
-    case GrsimError::kOversized:
-      return "oversized";
-    case GrsimError::kMalformed:
-      return "malformed";
-    case GrsimError::kMissingRequired:
-      return "missing_required";
-    case GrsimError::kNotFinite:
-      return "not_finite";
-    case GrsimError::kOutOfRange:
-      return "out_of_range";
-    case GrsimError::kUnknownRobot:
-      return "unknown_robot";
-    case GrsimError::kCount:
-      break;
-  }
-  return "unknown";
-}
-
 GrsimDecodeResult Decode(const uint8_t* bytes, size_t size, const GrsimCodecConfig& config) {
   if (size == 0) return Fail(GrsimError::kEmpty, "0 bytes");
   if (size > config.max_datagram_size || size > INT_MAX)

@@ -24,6 +24,8 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
+
 namespace turf::grsim {
 
 struct GrsimCodecConfig {
@@ -45,18 +47,11 @@ struct GrsimCodecConfig {
 // Empty if `config` is usable, else why not. Decode assumes a usable config.
 std::string CheckConfig(const GrsimCodecConfig& config);
 
-enum class GrsimError : uint8_t {
-  kOk,
-  kEmpty,            // zero bytes
-  kOversized,        // more than max_datagram_size bytes
-  kMalformed,        // not a parseable grSim_Packet
-  kMissingRequired,  // parseable, but a required field is absent
-  kNotFinite,        // a NaN or infinite value anywhere
-  kOutOfRange,       // past the sanity limits (core/input_limits.h), negative kick
-  kUnknownRobot,     // id >= robots_per_team (or > 15)
-  kCount
-};
-const char* GrsimErrorName(GrsimError error);
+// turf's one taxonomy (core/errors.h). The codec answers kEmpty, kOversized (more
+// than max_datagram_size bytes), kMalformed, kMissingRequired, kNotFinite,
+// kOutOfRange (also a negative kick) and kUnknownRobot (id >= robots_per_team).
+using GrsimError = turf::Error;
+inline const char* GrsimErrorName(GrsimError error) { return turf::ErrorName(error); }
 
 // What one datagram asks for.
 struct GrsimRequests {

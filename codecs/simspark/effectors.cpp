@@ -117,26 +117,6 @@ class Decoder {
 
 }  // namespace
 
-const char* EffectorErrorName(EffectorError error) {
-  switch (error) {
-    case EffectorError::kOk:
-      return "ok";
-    case EffectorError::kParse:
-      return "parse";
-    case EffectorError::kUnknownEffector:
-      return "unknown_effector";
-    case EffectorError::kBadArguments:
-      return "bad_arguments";
-    case EffectorError::kNotFinite:
-      return "not_finite";
-    case EffectorError::kBadSay:
-      return "bad_say";
-    case EffectorError::kBadRobotType:
-      return "bad_robot_type";
-  }
-  return "unknown";
-}
-
 bool IsValidSayMessage(std::string_view message) {
   if (message.empty() || message.size() > kMaxSay) return false;
   for (const char c : message)

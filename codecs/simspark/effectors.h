@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/errors.h"
+
 namespace turf::simspark {
 
 // `(scene rsg/agent/nao/nao.rsg)` = type 0; `(scene rsg/agent/nao/nao_hetero.rsg 3)`.
@@ -36,17 +38,11 @@ struct HingeEffector {
   double velocity = 0;
 };
 
-enum class EffectorError {
-  kOk,
-  kParse,            // the payload is not S-expressions: nothing of it is applied
-  kUnknownEffector,  // no such effector (for any robot type)
-  kBadArguments,     // wrong number or form of arguments, unum outside 0..99
-  kNotFinite,        // nan or inf
-  kBadSay,           // say: not 1..20 characters of 0x21-0x7E
-  kBadRobotType,     // scene type outside 0..4
-};
-// "ok", "parse", "unknown_effector", "bad_arguments", "not_finite", "bad_say", "bad_robot_type".
-const char* EffectorErrorName(EffectorError error);
+// turf's one taxonomy (core/errors.h). Effectors answer kParse (nothing of the
+// payload is applied), kUnknownEffector, kBadArguments (also unum outside 0..99),
+// kNotFinite, kBadSay and kBadRobotType (scene type outside 0..4).
+using EffectorError = turf::Error;
+inline const char* EffectorErrorName(EffectorError error) { return turf::ErrorName(error); }
 
 // A dropped predicate: why and which (its name, or the parse error and offset).
 struct EffectorIssue {

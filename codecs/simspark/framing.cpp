@@ -27,16 +27,6 @@ std::string Frame(std::string_view payload) {
   return out;
 }
 
-const char* FrameErrorName(FrameError error) {
-  switch (error) {
-    case FrameError::kOk:
-      return "ok";
-    case FrameError::kTooLarge:
-      return "too_large";
-  }
-  return "unknown";
-}
-
 FrameDecoder::FrameDecoder(size_t max_payload) : max_payload_(max_payload) {}
 
 void FrameDecoder::Feed(const char* data, size_t size) {

@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include "core/errors.h"
+
 namespace turf::simspark {
 
 // An agent message is well under 2 KB (a Nao's effectors); a trainer's too.
@@ -18,11 +20,10 @@ inline constexpr size_t kMaxAgentPayload = 64 * 1024;
 // The framed bytes of `payload` (precondition: payload.size() < 2^32).
 std::string Frame(std::string_view payload);
 
-enum class FrameError {
-  kOk,
-  kTooLarge,  // a length prefix above the decoder's max_payload: drop the connection
-};
-const char* FrameErrorName(FrameError error);  // "ok", "too_large"
+// turf's one taxonomy (core/errors.h): kOk, or kTooLarge (a length prefix above
+// the decoder's max_payload: drop the connection).
+using FrameError = turf::Error;
+inline const char* FrameErrorName(FrameError error) { return turf::ErrorName(error); }
 
 // Reassembles frames from a byte stream fed in arbitrary pieces. A length
 // prefix above max_payload is an error as soon as its 4 bytes have arrived

@@ -59,28 +59,6 @@ std::string_view SExpr::Head() const {
   return items[0].atom;
 }
 
-const char* SExprErrorName(SExprError error) {
-  switch (error) {
-    case SExprError::kOk:
-      return "ok";
-    case SExprError::kUnbalancedOpen:
-      return "unbalanced_open";
-    case SExprError::kUnbalancedClose:
-      return "unbalanced_close";
-    case SExprError::kTooDeep:
-      return "too_deep";
-    case SExprError::kTooManyNodes:
-      return "too_many_nodes";
-    case SExprError::kAtomTooLong:
-      return "atom_too_long";
-    case SExprError::kBadByte:
-      return "bad_byte";
-    case SExprError::kTopLevelAtom:
-      return "top_level_atom";
-  }
-  return "unknown";
-}
-
 SExprParse ParseSExprs(std::string_view text, const SExprLimits& limits) {
   SExprParse result;
   // open[i] is the list at depth i+1. Only the innermost list grows, so the

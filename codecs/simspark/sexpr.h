@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/errors.h"
+
 namespace turf::simspark {
 
 struct SExpr {
@@ -25,19 +27,11 @@ struct SExpr {
   std::string_view Head() const;
 };
 
-enum class SExprError {
-  kOk,
-  kUnbalancedOpen,   // input ends inside a list
-  kUnbalancedClose,  // ')' without its '('
-  kTooDeep,          // a list nested deeper than max_depth
-  kTooManyNodes,     // more than max_nodes lists and atoms in all
-  kAtomTooLong,      // an atom longer than max_atom bytes
-  kBadByte,          // a byte that is neither printable ASCII (0x21-0x7E) nor whitespace, e.g. NUL
-  kTopLevelAtom,     // an atom outside any list
-};
-// "ok", "unbalanced_open", "unbalanced_close", "too_deep", "too_many_nodes", "atom_too_long", "bad_byte",
-// "top_level_atom".
-const char* SExprErrorName(SExprError error);
+// turf's one taxonomy (core/errors.h). The parser answers kUnbalancedOpen,
+// kUnbalancedClose, kTooDeep, kTooManyNodes, kAtomTooLong, kBadByte (neither
+// printable ASCII nor white space, e.g. NUL) and kTopLevelAtom.
+using SExprError = turf::Error;
+inline const char* SExprErrorName(SExprError error) { return turf::ErrorName(error); }
 
 struct SExprLimits {
   size_t max_depth = 16;  // `(a)` has depth 1

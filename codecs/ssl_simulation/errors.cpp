@@ -11,34 +11,6 @@ namespace turf::simproto {
 
 namespace pb = google::protobuf;
 
-const char* DecodeErrorName(DecodeError error) {
-  switch (error) {
-    case DecodeError::kOk:
-      return "ok";
-    case DecodeError::kEmpty:
-      return "empty";
-    case DecodeError::kOversized:
-      return "oversized";
-    case DecodeError::kMalformed:
-      return "malformed";
-    case DecodeError::kMissingRequired:
-      return "missing_required";
-    case DecodeError::kNotFinite:
-      return "not_finite";
-    case DecodeError::kOutOfRange:
-      return "out_of_range";
-    case DecodeError::kOutsideField:
-      return "outside_field";
-    case DecodeError::kUnknownRobot:
-      return "unknown_robot";
-    case DecodeError::kDuplicateRobot:
-      return "duplicate_robot";
-    case DecodeError::kCount:
-      break;
-  }
-  return "unknown";
-}
-
 std::string DecodeErrorCode(DecodeError error) {
   std::string code = "TURF_";
   for (const char* c = DecodeErrorName(error); *c != '\0'; ++c)

@@ -18,25 +18,16 @@
 #include <vector>
 
 #include "codecs/proto/ssl_simulation.pb.h"
+#include "core/errors.h"
 
 namespace turf::simproto {
 
-enum class DecodeError : uint8_t {
-  kOk,
-  kEmpty,            // zero bytes
-  kOversized,        // more than kMaxDatagramBytes
-  kMalformed,        // not a protobuf message of the expected type
-  kMissingRequired,  // a required field (or one turf needs) is absent
-  kNotFinite,        // NaN or infinity
-  kOutOfRange,       // a value past the sanity limits (core/input_limits.h)
-  kOutsideField,     // a teleport target beyond the field's walls
-  kUnknownRobot,     // id > 15, id >= robots_per_team, or no team
-  kDuplicateRobot,   // one robot twice in one datagram
-  kCount
-};
-
-// "empty", "malformed", ... (snake_case, as turf's other refusal kinds).
-const char* DecodeErrorName(DecodeError error);
+// The codec's refusals are turf's one taxonomy (core/errors.h): kEmpty, kOversized,
+// kMalformed, kMissingRequired, kNotFinite, kOutOfRange, kOutsideField,
+// kUnknownRobot (id > 15, id >= robots_per_team, or no team), kDuplicateRobot.
+// Names: "empty", "malformed", ... (snake_case, as turf's other refusal kinds).
+using DecodeError = turf::Error;
+inline const char* DecodeErrorName(DecodeError error) { return turf::ErrorName(error); }
 // The SimulatorError code for a fatal error: "TURF_" + upper-case name.
 std::string DecodeErrorCode(DecodeError error);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 namespace turf::vision {
@@ -21,22 +22,19 @@ double Seconds(int64_t ns) {
 
 }  // namespace
 
+// Indexed by ClockMode.
+constexpr const char* kClockModeNames[] = {"run", "unix", "sim"};
+constexpr size_t kClockModes = sizeof(kClockModeNames) / sizeof(kClockModeNames[0]);
+static_assert(kClockModes == static_cast<size_t>(ClockMode::kSim) + 1, "one name per ClockMode");
+
 const char* ClockModeName(ClockMode mode) {
-  switch (mode) {
-    case ClockMode::kRun:
-      return "run";
-    case ClockMode::kUnix:
-      return "unix";
-    case ClockMode::kSim:
-      return "sim";
-  }
-  return "?";
+  const auto i = static_cast<size_t>(mode);
+  return i < kClockModes ? kClockModeNames[i] : "?";
 }
 
 std::optional<ClockMode> ParseClockMode(const std::string& name) {
-  for (ClockMode m : {ClockMode::kRun, ClockMode::kUnix, ClockMode::kSim}) {
-    if (name == ClockModeName(m)) return m;
-  }
+  for (size_t i = 0; i < kClockModes; ++i)
+    if (name == kClockModeNames[i]) return static_cast<ClockMode>(i);
   return std::nullopt;
 }
 

@@ -333,44 +333,6 @@ void Realism(Fields& in, PageRequest* out) {
 
 }  // namespace
 
-const char* PageErrorName(PageError error) {
-  switch (error) {
-    case PageError::kOk:
-      return "ok";
-    case PageError::kTooLarge:
-      return "too_large";
-    case PageError::kNotJson:
-      return "not_json";
-    case PageError::kNotObject:
-      return "not_object";
-    case PageError::kUnknownOp:
-      return "unknown_op";
-    case PageError::kUnknownKey:
-      return "unknown_key";
-    case PageError::kMissingField:
-      return "missing_field";
-    case PageError::kWrongType:
-      return "wrong_type";
-    case PageError::kNotFinite:
-      return "not_finite";
-    case PageError::kOutOfRange:
-      return "out_of_range";
-    case PageError::kUnknownTeam:
-      return "unknown_team";
-    case PageError::kUnknownRobot:
-      return "unknown_robot";
-    case PageError::kOutsideField:
-      return "outside_field";
-    case PageError::kNoField:
-      return "no_field";
-    case PageError::kUnknownPreset:
-      return "unknown_preset";
-    case PageError::kUnknownMode:
-      return "unknown_mode";
-  }
-  return "unknown";
-}
-
 PageRequest ParsePageRequest(std::string_view text, const std::optional<idl::SslField>& field) {
   return ParsePageRequest(text, PageScene{field ? &*field : nullptr, nullptr});
 }

@@ -38,6 +38,8 @@
 #include <string>
 #include <string_view>
 
+#include "core/errors.h"
+
 namespace turf::viewer {
 
 inline constexpr size_t kMaxPageMessage = 4096;  // bytes
@@ -50,26 +52,14 @@ inline constexpr double kLeggedArea = 50.0;      // m from the origin, legged sc
 // teleport may carry (kMaxTeleportSpeed).
 inline constexpr double kMaxThrowSpeed = 8.0;  // m/s
 
-enum class PageError {
-  kOk,
-  kTooLarge,       // more than kMaxPageMessage bytes
-  kNotJson,        // not parseable (also numbers JSON cannot hold, e.g. 1e999)
-  kNotObject,      // valid JSON but not an object
-  kUnknownOp,      // "op" missing, not a string, or not in the list
-  kUnknownKey,     // a key the op does not take
-  kMissingField,   // a key the op needs
-  kWrongType,      // e.g. a string where a number belongs
-  kNotFinite,      // a number that is not finite
-  kOutOfRange,     // e.g. step count 0, speed 1e6, robot id 300, a throw above kMaxThrowSpeed
-  kUnknownTeam,    // team not "blue" or "yellow"
-  kUnknownRobot,   // id not below the field's robots_per_team
-  kOutsideField,   // beyond the walls (or too high for the ball)
-  kNoField,        // a teleport before the field is known
-  kUnknownPreset,  // realism preset not in the list
-  kUnknownMode,    // time mode not in the list
-};
-
-const char* PageErrorName(PageError error);
+// turf's one taxonomy (core/errors.h). A page request is refused with kTooLarge
+// (above kMaxPageMessage), kNotJson (also numbers JSON cannot hold, e.g. 1e999),
+// kNotObject, kUnknownOp, kUnknownKey, kMissingField, kWrongType, kNotFinite,
+// kOutOfRange (step count 0, speed 1e6, a throw above kMaxThrowSpeed), kUnknownTeam,
+// kUnknownRobot, kOutsideField, kNoField (a teleport before the field is known),
+// kUnknownPreset or kUnknownMode.
+using PageError = turf::Error;
+inline const char* PageErrorName(PageError error) { return turf::ErrorName(error); }
 
 struct PageRequest {
   PageError error = PageError::kOk;

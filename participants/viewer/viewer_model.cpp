@@ -28,24 +28,6 @@ bool NonNegative(double v) { return std::isfinite(v) && v >= 0.0 && v < 1000.0; 
 
 }  // namespace
 
-const char* SampleErrorName(SampleError error) {
-  switch (error) {
-    case SampleError::kOk:
-      return "ok";
-    case SampleError::kNotFinite:
-      return "not_finite";
-    case SampleError::kUnknownEnum:
-      return "unknown_enum";
-    case SampleError::kTooMany:
-      return "too_many";
-    case SampleError::kBadSize:
-      return "bad_size";
-    case SampleError::kDuplicate:
-      return "duplicate";
-  }
-  return "unknown";
-}
-
 ViewerModel::ViewerModel(std::string client, std::string prefix)
     : client_(std::move(client)), prefix_(std::move(prefix)) {}
 

@@ -24,6 +24,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/errors.h"
 #include "dds/request_id.h"
 #include "participants/viewer/page_request.h"
 
@@ -38,8 +39,9 @@ inline constexpr size_t kMaxBodies = 256;               // geoms or links per le
 inline constexpr size_t kMaxNameLength = 128;           // robot, body and scene names
 inline constexpr size_t kMaxPendingReplies = 1024;      // requests whose reply we still route to a page
 
-enum class SampleError { kOk, kNotFinite, kUnknownEnum, kTooMany, kBadSize, kDuplicate };
-const char* SampleErrorName(SampleError error);
+// turf's one taxonomy (core/errors.h): kNotFinite, kUnknownEnum, kTooMany, kBadSize, kDuplicate.
+using SampleError = turf::Error;
+inline const char* SampleErrorName(SampleError error) { return turf::ErrorName(error); }
 
 class ViewerModel {
  public:
