@@ -151,23 +151,7 @@ PageRequest ViewerModel::OnPageMessage(std::string_view text) {
     return r;
   }
   r.control.client(client_);
-  r.control.request_id(next_request_id_++);
   return r;
-}
-
-void ViewerModel::RequestSent(uint64_t request_id, uint64_t page) {
-  // Request ids only grow: the first entry is the oldest.
-  if (routes_.size() >= kMaxPendingReplies) routes_.erase(routes_.begin());
-  routes_[request_id] = page;
-}
-
-std::optional<uint64_t> ViewerModel::ReplyPage(const idl::SimControlReply& reply) {
-  if (!IsOurs(reply)) return std::nullopt;
-  const auto it = routes_.find(reply.request_id());
-  if (it == routes_.end()) return std::nullopt;
-  const uint64_t page = it->second;
-  routes_.erase(it);
-  return page;
 }
 
 std::string ViewerModel::Hello() const { return HelloJson(prefix_); }

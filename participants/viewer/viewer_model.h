@@ -25,7 +25,6 @@
 #include <string_view>
 
 #include "core/errors.h"
-#include "dds/request_id.h"
 #include "participants/viewer/page_request.h"
 
 namespace turf::viewer {
@@ -37,7 +36,6 @@ inline constexpr int64_t kMaxFrameAgeNs = 250'000'000;  // camera frames shown w
 inline constexpr size_t kMaxLeggedRobots = 64;          // per legged scene, and robots with poses kept
 inline constexpr size_t kMaxBodies = 256;               // geoms or links per legged robot
 inline constexpr size_t kMaxNameLength = 128;           // robot, body and scene names
-inline constexpr size_t kMaxPendingReplies = 1024;      // requests whose reply we still route to a page
 
 // turf's one taxonomy (core/errors.h): kNotFinite, kUnknownEnum, kTooMany, kBadSize, kDuplicate.
 using SampleError = turf::Error;
@@ -57,21 +55,10 @@ class ViewerModel {
   // draws the newest (turf-sim runs one kind of scene at a time).
   SampleError OnLeggedScene(const idl::LeggedSceneInfo& scene);
   SampleError OnLinks(const idl::LinkState& links);
-  // Whether a reply answers one of our requests (others are not shown).
-  bool IsOurs(const idl::SimControlReply& reply) const { return reply.client() == client_; }
 
-  // A page message as a request ready to write (client and request_id set),
-  // or the error; a refusal is counted in refused_pages().
+  // A page message as a request ready to write, client set (the control
+  // client numbers it), or the error; a refusal is counted in refused_pages().
   PageRequest OnPageMessage(std::string_view text);
-  // Request `request_id` was written for page `page`: its reply goes to that
-  // page alone (one page never sees another's refusals). At most
-  // kMaxPendingReplies are remembered; past that the oldest is forgotten
-  // (its reply, if it ever comes, is shown to nobody).
-  void RequestSent(uint64_t request_id, uint64_t page);
-  // The page that asked what `reply` answers, once: the route is forgotten.
-  // nullopt for another client's reply, or one whose route is not known.
-  std::optional<uint64_t> ReplyPage(const idl::SimControlReply& reply);
-  size_t pending_replies() const { return routes_.size(); }
   void CountRefusedPage() { ++refused_pages_; }  // refused before parsing (size, binary)
   // Whether turf-sim's control reader is matched (shown to the page).
   void SetControlMatched(bool matched) { control_matched_ = matched; }
@@ -92,7 +79,6 @@ class ViewerModel {
  private:
   std::string client_;
   std::string prefix_;
-  uint64_t next_request_id_ = dds::FirstRequestId();
   uint64_t refused_pages_ = 0;
   bool control_matched_ = false;
   std::optional<idl::WorldState> state_;
@@ -102,7 +88,6 @@ class ViewerModel {
   std::map<uint32_t, idl::CameraFrame> frames_;  // newest per camera
   std::optional<idl::LeggedSceneInfo> legged_;
   std::map<std::string, idl::LinkState> links_;  // newest per robot
-  std::map<uint64_t, uint64_t> routes_;          // request id -> page awaiting its reply
 };
 
 }  // namespace turf::viewer

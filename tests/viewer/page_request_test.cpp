@@ -178,62 +178,17 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{R"({"op":"realism","preset":"/etc/passwd"})", PageError::kUnknownPreset},
         Bad{R"({"op":"realism","preset":"camera: {robot_vanish: 1}"})", PageError::kUnknownPreset}));
 
-TEST(ViewerModelPages, RequestsCarryOurNameAndFreshIds) {
+// Client name and request ids: dds::ControlClient's (tests/sim/control_client_test.cpp).
+TEST(ViewerModelPages, RequestsAreReadyToSend) {
   ViewerModel model("turf-viewer-1", "turf");
   ASSERT_EQ(model.OnField(test::DivBField()), SampleError::kOk);
   const PageRequest a = model.OnPageMessage(R"({"op":"pause"})");
-  const PageRequest b = model.OnPageMessage(R"({"op":"teleport_ball","x":0,"y":0})");
-  EXPECT_EQ(a.control.client(), "turf-viewer-1");
-  EXPECT_NE(a.control.request_id(), b.control.request_id());
-  idl::SimControlReply reply;
-  reply.client("turf-viewer-1");
-  EXPECT_TRUE(model.IsOurs(reply));
-  reply.client("someone-else");
-  EXPECT_FALSE(model.IsOurs(reply));
-}
-
-idl::SimControlReply ReplyTo(const PageRequest& r) {
-  idl::SimControlReply reply;
-  reply.client(r.control.client());
-  reply.request_id(r.control.request_id());
-  reply.op(r.control.op());
-  reply.result(idl::RESULT_REJECTED);
-  return reply;
-}
-
-TEST(ViewerModelPages, EachReplyGoesToThePageThatAskedOnce) {
-  ViewerModel model("turf-viewer-1", "turf");
-  const PageRequest a = model.OnPageMessage(R"({"op":"step"})");
-  const PageRequest b = model.OnPageMessage(R"({"op":"pause"})");
-  model.RequestSent(a.control.request_id(), 7);
-  model.RequestSent(b.control.request_id(), 9);
-  EXPECT_EQ(model.pending_replies(), 2u);
-  // Out of order, as replies may come.
-  EXPECT_EQ(model.ReplyPage(ReplyTo(b)), std::optional<uint64_t>(9));
-  EXPECT_EQ(model.ReplyPage(ReplyTo(a)), std::optional<uint64_t>(7));
-  EXPECT_EQ(model.ReplyPage(ReplyTo(a)), std::nullopt);  // answered already
-  EXPECT_EQ(model.pending_replies(), 0u);
-
-  // Another client's reply with one of our ids goes to nobody.
-  const PageRequest c = model.OnPageMessage(R"({"op":"resume"})");
-  model.RequestSent(c.control.request_id(), 7);
-  idl::SimControlReply theirs = ReplyTo(c);
-  theirs.client("turf-viewer-2");
-  EXPECT_EQ(model.ReplyPage(theirs), std::nullopt);
-  EXPECT_EQ(model.ReplyPage(ReplyTo(c)), std::optional<uint64_t>(7));
-}
-
-TEST(ViewerModelPages, UnansweredRequestsAreForgottenOldestFirst) {
-  ViewerModel model("v", "turf");
-  std::vector<PageRequest> sent;
-  for (size_t i = 0; i < kMaxPendingReplies + 10; ++i) {
-    sent.push_back(model.OnPageMessage(R"({"op":"pause"})"));
-    model.RequestSent(sent.back().control.request_id(), 100 + i);
-  }
-  EXPECT_EQ(model.pending_replies(), kMaxPendingReplies);
-  EXPECT_EQ(model.ReplyPage(ReplyTo(sent[9])), std::nullopt);
-  EXPECT_EQ(model.ReplyPage(ReplyTo(sent[10])), std::optional<uint64_t>(110));
-  EXPECT_EQ(model.ReplyPage(ReplyTo(sent.back())), std::optional<uint64_t>(100 + kMaxPendingReplies + 9));
+  ASSERT_EQ(a.error, PageError::kOk);
+  EXPECT_EQ(a.control.op(), idl::OP_PAUSE);
+  const PageRequest b = model.OnPageMessage(R"({"op":"teleport_ball","x":0.5,"y":-1})");
+  ASSERT_EQ(b.error, PageError::kOk);
+  EXPECT_EQ(b.control.op(), idl::OP_TELEPORT_BALL);
+  EXPECT_EQ(b.control.ball().position().x(), 0.5);
 }
 
 TEST(ViewerModelPages, RefusalsAreCountedAndShownToThePage) {

@@ -432,7 +432,9 @@ TEST(PerceptionProperty, RandomPerceptionsReadStrictlyInTheReferencesOrder) {
         const std::string hinge = foot.substr(0, 1) + (foot.size() == 3 ? "lj7" : "lj6");
         EXPECT_EQ(subjects[i + 1], hinge) << text;
       }
-      if (subjects[i] == "hj2" && p.see) EXPECT_EQ(names[i + 1], "See") << text;
+      if (subjects[i] == "hj2" && p.see) {
+        EXPECT_EQ(names[i + 1], "See") << text;
+      }
     }
   }
 }
