@@ -3,11 +3,12 @@
 #   bench/run.sh [sim seconds]           all of them
 #   bench/run.sh ssl [sim seconds]       turf-sim alone, SSL scenes
 #   bench/run.sh simspark [sim seconds]  SimSpark agents through turf-simspark-bridge
+#   bench/run.sh snapshot                kernel snapshots: size, Save and Restore next to a step
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
 WHAT=all
-if [[ "${1:-}" == ssl || "${1:-}" == simspark ]]; then
+if [[ "${1:-}" == ssl || "${1:-}" == simspark || "${1:-}" == snapshot ]]; then
   WHAT=$1
   shift
 fi
@@ -64,9 +65,12 @@ simspark() {
 case "$WHAT" in
   ssl) ssl ;;
   simspark) simspark ;;
+  snapshot) "$BUILD_DIR/bench/turf-bench-snapshot" ;;
   all)
     ssl
     echo
     simspark
+    echo
+    "$BUILD_DIR/bench/turf-bench-snapshot"
     ;;
 esac
