@@ -16,6 +16,7 @@
 
 #include "core/ball_handling.h"
 #include "core/mj_state.h"
+#include "core/pinned.h"
 #include "core/scene.h"
 #include "core/types.h"
 
@@ -56,14 +57,12 @@ struct WorldHealth {
   uint64_t instability_recoveries = 0;   // a non-finite step undone
 };
 
-class World {
+class World : Pinned {
  public:
   // Throws std::invalid_argument if the scene fails ValidateScene or MuJoCo
   // cannot compile it; a constructed World is always usable.
   explicit World(Scene scene);
   ~World();
-  World(const World&) = delete;
-  World& operator=(const World&) = delete;
 
   const Scene& scene() const { return scene_; }
 

@@ -24,6 +24,7 @@
 #include "core/errors.h"
 #include "core/legged/legged_scene.h"
 #include "core/mj_state.h"
+#include "core/pinned.h"
 
 namespace turf {
 
@@ -110,14 +111,12 @@ struct LeggedHealth {
   uint64_t instability_recoveries = 0;  // a non-finite step undone
 };
 
-class LeggedWorld {
+class LeggedWorld : Pinned {
  public:
   // Throws std::invalid_argument if the scene is invalid or MuJoCo cannot
   // compile the composed model; a constructed world is always usable.
   explicit LeggedWorld(LeggedScene scene);
   ~LeggedWorld();
-  LeggedWorld(const LeggedWorld&) = delete;
-  LeggedWorld& operator=(const LeggedWorld&) = delete;
 
   const LeggedScene& scene() const { return scene_; }
   const std::string& mjcf() const { return mjcf_; }

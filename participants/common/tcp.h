@@ -8,15 +8,14 @@
 #include <optional>
 #include <string>
 
+#include "core/pinned.h"
 #include "participants/common/socket_fd.h"
 
 namespace turf {
 
-class TcpPeer {
+class TcpPeer : Pinned {
  public:
   TcpPeer(int fd, std::string address, size_t max_pending);
-  TcpPeer(const TcpPeer&) = delete;
-  TcpPeer& operator=(const TcpPeer&) = delete;
 
   int fd() const { return fd_.get(); }
   const std::string& address() const { return address_; }

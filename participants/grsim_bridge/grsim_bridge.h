@@ -33,6 +33,7 @@
 #include <string>
 
 #include "codecs/grsim/grsim_codec.h"
+#include "core/pinned.h"
 #include "participants/common/participant_options.h"
 
 namespace turf {
@@ -57,14 +58,12 @@ struct GrsimBridgeStats {
   bool field_known = false;     // ssl/field arrived
 };
 
-class GrsimBridge {
+class GrsimBridge : Pinned {
  public:
   // Binds the socket and creates the DDS entities. Throws std::invalid_argument
   // for bad options, std::runtime_error for the socket or DDS.
   explicit GrsimBridge(GrsimBridgeOptions options);
   ~GrsimBridge();
-  GrsimBridge(const GrsimBridge&) = delete;
-  GrsimBridge& operator=(const GrsimBridge&) = delete;
 
   // Runs until `stop()` answers true (checked at least every 10 ms).
   void Run(const std::function<bool()>& stop);

@@ -7,17 +7,16 @@
 
 #include <string>
 
+#include "core/pinned.h"
 #include "participants/launcher/launch_plan.h"
 
 namespace turf::launch {
 
-class LaunchCommand {
+class LaunchCommand : Pinned {
  public:
   // Adds the `launch` subcommand and its flags to `app`, which must outlive
   // this object and be parsed before Run.
   explicit LaunchCommand(CLI::App& app);
-  LaunchCommand(const LaunchCommand&) = delete;
-  LaunchCommand& operator=(const LaunchCommand&) = delete;
 
   // The launcher's exit status: 2 for a profile or plan error (printed on
   // stderr), 0 after --print, else Supervise's (supervisor.h).

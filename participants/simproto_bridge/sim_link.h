@@ -22,12 +22,13 @@
 #include <vector>
 
 #include "codecs/ssl_simulation/robot_control.h"
+#include "core/pinned.h"
 #include "dds/control_client.h"
 #include "dds/participant.h"
 
 namespace turf {
 
-class SimLink {
+class SimLink : Pinned {
  public:
   static constexpr size_t kMaxBufferedFrames = 4096;
 
@@ -42,8 +43,6 @@ class SimLink {
   // Throws std::runtime_error if the DDS entities cannot be created.
   explicit SimLink(const dds::ParticipantOptions& options);
   ~SimLink();
-  SimLink(const SimLink&) = delete;
-  SimLink& operator=(const SimLink&) = delete;
 
   std::string TopicName(dds::Topic topic) const;
   const dds::ParticipantOptions& options() const;

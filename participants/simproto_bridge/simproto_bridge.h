@@ -41,6 +41,7 @@
 #include <memory>
 #include <string>
 
+#include "core/pinned.h"
 #include "participants/common/participant_options.h"
 
 namespace turf {
@@ -63,14 +64,12 @@ struct SimprotoBridgeStats {
   uint64_t rejected = 0;   // refusals of every kind
 };
 
-class SimprotoBridge {
+class SimprotoBridge : Pinned {
  public:
   // Throws std::invalid_argument for a bad address, std::runtime_error if a
   // port cannot be bound or the DDS participant cannot be created.
   explicit SimprotoBridge(SimprotoBridgeOptions options);
   ~SimprotoBridge();
-  SimprotoBridge(const SimprotoBridge&) = delete;
-  SimprotoBridge& operator=(const SimprotoBridge&) = delete;
 
   // Serves every port until `stop()` answers true (checked every 50 ms).
   void Run(const std::function<bool()>& stop);

@@ -25,6 +25,7 @@
 #include <memory>
 #include <string>
 
+#include "core/pinned.h"
 #include "participants/common/participant_options.h"
 
 namespace turf {
@@ -54,13 +55,11 @@ struct SimSparkBridgeStats {
   std::map<std::string, uint64_t> refused_by_kind;
 };
 
-class SimSparkBridge {
+class SimSparkBridge : Pinned {
  public:
   // Binds the ports; throws std::runtime_error if it cannot.
   explicit SimSparkBridge(SimSparkBridgeOptions options);
   ~SimSparkBridge();
-  SimSparkBridge(const SimSparkBridge&) = delete;
-  SimSparkBridge& operator=(const SimSparkBridge&) = delete;
 
   uint16_t agent_port() const;
   uint16_t monitor_port() const;

@@ -15,17 +15,16 @@
 #include <vector>
 
 #include "codecs/simspark/session.h"
+#include "core/pinned.h"
 #include "dds/participant.h"
 
 namespace turf {
 
-class WorldLink {
+class WorldLink : Pinned {
  public:
   // Throws std::runtime_error if the DDS entities cannot be created.
   explicit WorldLink(const dds::ParticipantOptions& options);
   ~WorldLink();
-  WorldLink(const WorldLink&) = delete;
-  WorldLink& operator=(const WorldLink&) = delete;
 
   std::string TopicName(dds::Topic topic) const;
 

@@ -28,6 +28,7 @@
 #include <memory>
 #include <string>
 
+#include "core/pinned.h"
 #include "participants/common/participant_options.h"
 
 namespace turf {
@@ -51,14 +52,12 @@ struct ViewerStats {
   uint64_t frames_dropped = 0;   // state messages slow pages skipped
 };
 
-class ViewerNode {
+class ViewerNode : Pinned {
  public:
   // Throws std::invalid_argument for a bad option (address, web root, rate),
   // std::runtime_error if the port cannot be bound or DDS fails.
   explicit ViewerNode(ViewerOptions options);
   ~ViewerNode();
-  ViewerNode(const ViewerNode&) = delete;
-  ViewerNode& operator=(const ViewerNode&) = delete;
 
   // Runs until `stop()` answers true (checked at least every 50 ms).
   void Run(const std::function<bool()>& stop);

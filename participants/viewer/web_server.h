@@ -24,6 +24,8 @@
 #include <memory>
 #include <string>
 
+#include "core/pinned.h"
+
 namespace turf::viewer {
 
 // What a message is for: the newest of kField, kStats and kState is kept and
@@ -55,14 +57,12 @@ struct WebServerStats {
   uint64_t events_dropped = 0;  // queued messages dropped for a slow page
 };
 
-class WebServer {
+class WebServer : Pinned {
  public:
   // Binds and starts the I/O thread; nullptr (and `error` says why) if the
   // address is not an IP address or cannot be bound.
   static std::unique_ptr<WebServer> Start(WebServerOptions options, WebServerHandlers handlers, std::string* error);
   ~WebServer();
-  WebServer(const WebServer&) = delete;
-  WebServer& operator=(const WebServer&) = delete;
 
   uint16_t port() const;
   std::string Url() const;  // http://<listen>:<port>/

@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 
+#include "core/pinned.h"
 #include "participants/viewer/http_rules.h"
 #include "participants/viewer/web_server.h"
 
@@ -45,12 +46,10 @@ struct Shared {
 };
 
 // Counts an open connection for as long as it lives.
-class ConnectionSlot {
+class ConnectionSlot : Pinned {
  public:
   explicit ConnectionSlot(std::shared_ptr<Shared> shared) : shared_(std::move(shared)) { ++shared_->connections; }
   ~ConnectionSlot() { --shared_->connections; }
-  ConnectionSlot(const ConnectionSlot&) = delete;
-  ConnectionSlot& operator=(const ConnectionSlot&) = delete;
   Shared& shared() { return *shared_; }
   const std::shared_ptr<Shared>& ptr() const { return shared_; }
 

@@ -30,6 +30,7 @@
 #include <string>
 
 #include "codecs/ssl_vision/timestamps.h"
+#include "core/pinned.h"
 #include "participants/common/participant_options.h"
 
 namespace turf {
@@ -57,14 +58,12 @@ struct VisionBridgeStats {
   uint64_t no_epoch = 0;     // frames not sent: no run epoch known for them (yet)
 };
 
-class VisionBridge {
+class VisionBridge : Pinned {
  public:
   // Throws std::invalid_argument for a bad address or option, std::runtime_error
   // if the socket or the DDS participant cannot be created.
   explicit VisionBridge(VisionBridgeOptions options);
   ~VisionBridge();
-  VisionBridge(const VisionBridge&) = delete;
-  VisionBridge& operator=(const VisionBridge&) = delete;
 
   // Runs until `stop()` answers true (checked at least every 50 ms).
   void Run(const std::function<bool()>& stop);
