@@ -5,12 +5,6 @@
 
 namespace turf {
 
-const char* TimeModeName(TimeMode mode) {
-  constexpr const char* kNames[] = {"realtime", "scaled", "free-running", "lockstep"};
-  static_assert(std::size(kNames) == static_cast<size_t>(TimeMode::kCount));
-  return mode < TimeMode::kCount ? kNames[static_cast<int>(mode)] : "?";
-}
-
 TimeControl::TimeControl(TimeMode mode, double speed, bool paused)
     : mode_(mode), speed_(mode == TimeMode::kScaled ? speed : 1.0), paused_(paused) {}
 

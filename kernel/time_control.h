@@ -8,14 +8,19 @@
 
 #include <cstdint>
 #include <deque>
+#include <iterator>
 #include <vector>
 
+#include "core/enum_names.h"
 #include "core/errors.h"
 
 namespace turf {
 
 enum class TimeMode : uint8_t { kRealtime, kScaled, kFreeRunning, kLockstep, kCount };
-const char* TimeModeName(TimeMode mode);  // "realtime", "scaled", "free-running", "lockstep"
+// Their names in logs and reports, in enum order (core/enum_names.h).
+inline constexpr const char* kTimeModeNames[] = {"realtime", "scaled", "free-running", "lockstep"};
+static_assert(std::size(kTimeModeNames) == static_cast<std::size_t>(TimeMode::kCount));
+inline const char* TimeModeName(TimeMode mode) { return EnumName(mode, kTimeModeNames, "?"); }
 
 inline constexpr double kMaxTimeSpeed = 1000.0;       // multiples of real time
 inline constexpr uint32_t kMaxStepRequest = 1000000;  // steps in one request

@@ -15,6 +15,8 @@
 #include "codecs/ssl_simulation/simulator_command.h"
 #include "codecs/ssl_simulation/step_planner.h"
 #include "codecs/ssl_simulation/sync.h"
+#include "core/enum_names.h"
+#include "kernel/time_control.h"
 #include "participants/common/process.h"
 #include "participants/common/udp.h"
 #include "participants/simproto_bridge/sim_link.h"
@@ -36,20 +38,6 @@ constexpr const char* kKindMessages[] = {"SimulatorCommand -> SimulatorResponse"
                                          "SimulationSyncRequest -> SimulationSyncResponse (ids 16..31: yellow)"};
 
 const char* Name(Kind kind) { return kKindNames[static_cast<int>(kind)]; }
-
-const char* TimeModeName(idl::TimeMode mode) {
-  switch (mode) {
-    case idl::TIME_REALTIME:
-      return "realtime";
-    case idl::TIME_SCALED:
-      return "scaled";
-    case idl::TIME_FREE_RUNNING:
-      return "free-running";
-    case idl::TIME_LOCKSTEP:
-      return "lockstep";
-  }
-  return "unknown";
-}
 
 const sp::SimError kNotAvailable{sp::kSimNotAvailable, "turf-sim has not been seen yet (field, world state, clock)"};
 
@@ -287,7 +275,7 @@ class SimprotoBridge::Impl {
     const idl::SslField& f = *view.field;
     spdlog::info("turf-sim is there: division {}, {} robots a team, {} cameras at {:.0f} Hz, step {} ms, time mode {}",
                  f.division() == 1 ? "A" : "B", static_cast<int>(f.robots_per_team()), f.cameras().size(),
-                 f.camera_rate_hz(), view.clock->step_s() * 1e3, TimeModeName(view.clock->mode()));
+                 f.camera_rate_hz(), view.clock->step_s() * 1e3, EnumName(view.clock->mode(), kTimeModeNames));
     return true;
   }
 

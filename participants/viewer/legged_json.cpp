@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/enum_names.h"
 #include "participants/viewer/json_util.h"
 
 namespace turf::viewer {
@@ -29,21 +30,8 @@ std::vector<std::string> DrawnBodies(const idl::RobotDescription& robot) {
 }
 
 const char* GeomShapeName(idl::GeomShape shape) {
-  switch (shape) {
-    case idl::GEOM_BOX:
-      return "box";
-    case idl::GEOM_SPHERE:
-      return "sphere";
-    case idl::GEOM_CAPSULE:
-      return "capsule";
-    case idl::GEOM_CYLINDER:
-      return "cylinder";
-    case idl::GEOM_ELLIPSOID:
-      return "ellipsoid";
-    case idl::GEOM_OTHER:
-      return "other";
-  }
-  return "other";
+  constexpr const char* kNames[] = {"box", "sphere", "capsule", "cylinder", "ellipsoid", "other"};
+  return EnumName(shape, kNames, "other");
 }
 
 std::string LeggedSceneJson(const idl::LeggedSceneInfo& s) {

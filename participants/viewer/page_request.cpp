@@ -1,14 +1,17 @@
 #include "participants/viewer/page_request.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <optional>
 
 #include "core/input_limits.h"
 #include "idl/values.h"
+#include "participants/viewer/viewer_json.h"
 
 namespace turf::viewer {
 
@@ -290,20 +293,13 @@ void TimeMode(Fields& in, PageRequest* out) {
   if (!in.OnlyKeys({"op", "mode", "speed"})) return;
   const std::string mode = in.String("mode");
   if (!in.ok()) return;
-  idl::TimeMode m;
-  if (mode == "realtime") {
-    m = idl::TIME_REALTIME;
-  } else if (mode == "scaled") {
-    m = idl::TIME_SCALED;
-  } else if (mode == "free") {
-    m = idl::TIME_FREE_RUNNING;
-  } else if (mode == "lockstep") {
-    m = idl::TIME_LOCKSTEP;
-  } else {
+  const std::optional<idl::TimeMode> known = EnumFromName<idl::TimeMode>(mode, kPageTimeModes);
+  if (!known) {
     in.Fail(PageError::kUnknownMode,
-            fmt::format("time mode '{}' is not realtime, scaled, free or lockstep", Fields::Clip(mode)));
+            fmt::format("time mode '{}' is not {}", Fields::Clip(mode), fmt::join(kPageTimeModes, ", ")));
     return;
   }
+  const idl::TimeMode m = *known;
   double speed = 1.0;
   if (m == idl::TIME_SCALED) {
     speed = in.Number("speed", 0.0, kMaxSpeed);

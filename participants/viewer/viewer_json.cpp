@@ -52,41 +52,8 @@ void AddClockAndViewer(const std::optional<idl::Clock>& clock, const ViewerInfo&
 
 }  // namespace
 
-const char* OpName(idl::ControlOp op) {
-  switch (op) {
-    case idl::OP_TELEPORT_BALL:
-      return "teleport_ball";
-    case idl::OP_TELEPORT_ROBOT:
-      return "teleport_robot";
-    case idl::OP_PAUSE:
-      return "pause";
-    case idl::OP_RESUME:
-      return "resume";
-    case idl::OP_STEP:
-      return "step";
-    case idl::OP_RESET:
-      return "reset";
-    case idl::OP_SET_TIME_MODE:
-      return "time_mode";
-    case idl::OP_SET_REALISM:
-      return "realism";
-  }
-  return "unknown";
-}
-
-const char* TimeModeName(idl::TimeMode mode) {
-  switch (mode) {
-    case idl::TIME_REALTIME:
-      return "realtime";
-    case idl::TIME_SCALED:
-      return "scaled";
-    case idl::TIME_FREE_RUNNING:
-      return "free";
-    case idl::TIME_LOCKSTEP:
-      return "lockstep";
-  }
-  return "unknown";
-}
+const char* OpName(idl::ControlOp op) { return EnumName(op, kPageOps); }
+const char* TimeModeName(idl::TimeMode mode) { return EnumName(mode, kPageTimeModes); }
 
 std::string HelloJson(const std::string& prefix) {
   return Dump(json{{"type", "hello"},

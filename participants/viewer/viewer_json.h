@@ -37,6 +37,8 @@
 #include <string>
 #include <vector>
 
+#include "core/enum_names.h"
+
 namespace turf::viewer {
 
 inline constexpr int kProtocolVersion = 1;
@@ -61,6 +63,11 @@ std::string StatsJson(const idl::SensorStats& stats);
 std::string ReplyJson(const idl::SimControlReply& reply);
 std::string RefusedJson(const std::string& kind, const std::string& detail);
 
+// The page protocol's names of control operations and time modes, in the IDL enums' order (core/enum_names.h):
+// what replies and the clock say, and what a page's "time_mode" request names.
+inline constexpr const char* kPageOps[] = {"teleport_ball", "teleport_robot", "pause",     "resume",
+                                           "step",          "reset",          "time_mode", "realism"};
+inline constexpr const char* kPageTimeModes[] = {"realtime", "scaled", "free", "lockstep"};
 const char* OpName(idl::ControlOp op);
 const char* TimeModeName(idl::TimeMode mode);
 
