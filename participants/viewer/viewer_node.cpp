@@ -21,6 +21,7 @@
 
 #include "dds/control_client.h"
 #include "dds/participant.h"
+#include "participants/common/overflow_watch.h"
 #include "participants/common/process.h"
 #include "participants/common/wakeup.h"
 #include "participants/viewer/viewer_json.h"
@@ -293,11 +294,7 @@ class ViewerNode::Impl {
     const uint64_t overflow = state_reader_->Overflowed() + clock_reader_->Overflowed() + field_reader_->Overflowed() +
                               camera_reader_->Overflowed() + stats_reader_->Overflowed() + control_.Overflowed() +
                               legged_reader_->Overflowed() + links_reader_->Overflowed();
-    if (overflow > reported_overflow_) {
-      Reject("queue_overflow",
-             fmt::format("{} samples arrived faster than the loop could take them", overflow - reported_overflow_));
-      reported_overflow_ = overflow;
-    }
+    overflow_.Check(overflow, [this](const char* kind, const std::string& detail) { Reject(kind, detail); });
   }
 
   void ReportStartup() const {
@@ -349,7 +346,7 @@ class ViewerNode::Impl {
   bool dirty_ = false;
   bool receiving_ = false;
   bool field_logged_ = false;
-  uint64_t reported_overflow_ = 0;
+  OverflowWatch overflow_;
 
   std::mutex inbox_mutex_;
   struct Inbound {

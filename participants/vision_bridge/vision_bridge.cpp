@@ -18,6 +18,7 @@
 #include "codecs/ssl_vision/geometry.h"
 #include "codecs/ssl_vision/tracked.h"
 #include "dds/participant.h"
+#include "participants/common/overflow_watch.h"
 #include "participants/common/process.h"
 #include "participants/common/udp.h"
 #include "participants/common/wakeup.h"
@@ -288,11 +289,7 @@ class VisionBridge::Impl {
     const uint64_t overflow = camera_reader_->Overflowed() + field_reader_->Overflowed() +
                               (state_reader_ ? state_reader_->Overflowed() : 0) +
                               (clock_reader_ ? clock_reader_->Overflowed() : 0);
-    if (overflow > reported_overflow_) {
-      Reject("queue_overflow",
-             fmt::format("{} samples arrived faster than the loop could take them", overflow - reported_overflow_));
-      reported_overflow_ = overflow;
-    }
+    overflow_.Check(overflow, [this](const char* kind, const std::string& detail) { Reject(kind, detail); });
   }
 
   // --- reports ---
@@ -358,7 +355,7 @@ class VisionBridge::Impl {
   std::map<int64_t, double> round_unix_now_;  // capture time (sim ns) -> wall-clock reading
   int rounds_since_geometry_ = 0;
   bool receiving_ = false;
-  uint64_t reported_overflow_ = 0;
+  OverflowWatch overflow_;
   std::vector<idl::CameraFrame> camera_inbox_;
   std::vector<idl::SslField> field_inbox_;
   std::vector<idl::WorldState> state_inbox_;

@@ -18,7 +18,6 @@ namespace turf::viewer {
 namespace {
 
 using nlohmann::json;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 TEST(LeggedJson, SceneHasTheFieldAndEveryRobotsShapesOnce) {
   ViewerModel model("v", "turf");
@@ -109,7 +108,7 @@ TEST(LeggedJson, TheNewestSceneKindWins) {
 TEST(LeggedJson, BadSamplesAreRefusedByName) {
   ViewerModel model("v", "turf");
   idl::LeggedSceneInfo s = test::LeggedScene();
-  s.robots()[0].geoms()[0].size().x(kNaN);
+  s.robots()[0].geoms()[0].size().x(test::kNaN);
   EXPECT_EQ(model.OnLeggedScene(s), SampleError::kNotFinite);
   s = test::LeggedScene();
   s.robots()[1].geoms()[2].orientation().w(INFINITY);
@@ -139,7 +138,7 @@ TEST(LeggedJson, BadSamplesAreRefusedByName) {
 
   ASSERT_EQ(model.OnLeggedScene(test::LeggedScene()), SampleError::kOk);
   idl::LinkState l = test::Links();
-  l.links()[1].position().y(kNaN);
+  l.links()[1].position().y(test::kNaN);
   EXPECT_EQ(model.OnLinks(l), SampleError::kNotFinite);
   l = test::Links();
   l.links()[0].orientation().x(-INFINITY);

@@ -17,7 +17,6 @@ namespace turf::viewer {
 namespace {
 
 using nlohmann::json;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 TEST(ViewerModel, NothingToShowBeforeSamples) {
   ViewerModel model("v", "turf");
@@ -124,7 +123,7 @@ TEST(ViewerModel, BadSamplesAreRefusedAndKeepTheLastGoodOne) {
   const std::string good = model.State();
 
   idl::WorldState nan_ball = test::SampleState();
-  nan_ball.ball().position().x(kNaN);
+  nan_ball.ball().position().x(test::kNaN);
   EXPECT_EQ(model.OnWorldState(nan_ball), SampleError::kNotFinite);
   idl::WorldState inf_yaw = test::SampleState();
   inf_yaw.robots()[0].yaw(INFINITY);
@@ -141,7 +140,7 @@ TEST(ViewerModel, BadSamplesAreRefusedAndKeepTheLastGoodOne) {
   field.field_length(-9.0);
   EXPECT_EQ(model.OnField(field), SampleError::kBadSize);
   field = test::DivBField();
-  field.ball_radius(kNaN);
+  field.ball_radius(test::kNaN);
   EXPECT_EQ(model.OnField(field), SampleError::kNotFinite);
   EXPECT_FALSE(model.has_field());
 
@@ -152,7 +151,7 @@ TEST(ViewerModel, BadSamplesAreRefusedAndKeepTheLastGoodOne) {
   EXPECT_EQ(model.OnCamera(test::SampleFrame(1000, 0)), SampleError::kTooMany);
 
   idl::Clock clock = test::SampleClock(false);
-  clock.real_time_factor(kNaN);
+  clock.real_time_factor(test::kNaN);
   EXPECT_EQ(model.OnClock(clock), SampleError::kNotFinite);
   clock = test::SampleClock(false);
   clock.mode(static_cast<idl::TimeMode>(9));

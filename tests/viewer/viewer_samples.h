@@ -7,9 +7,13 @@
 #include <turf/idl/SslVision.h>
 #include <turf/idl/WorldState.h>
 
+#include <limits>
+
 #include "tests/support/idl_values.h"
 
 namespace turf::test {
+
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Division B: 9 x 6 m, boundary 0.3 m, ball 21.5 mm, robot 90 mm, 6 ids a team.
 inline idl::SslField DivBField() {

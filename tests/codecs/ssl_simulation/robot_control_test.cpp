@@ -11,9 +11,6 @@
 namespace turf::simproto {
 namespace {
 
-namespace ws = wire::simulation;
-using test::Serialize;
-
 // RobotControl { robot_commands { id: 3, move_command { local_velocity { forward: 1, left: 0.5,
 // angular: -2 } }, kick_speed: 4 } }
 const std::vector<uint8_t> kLocalVelocityAndKick = {

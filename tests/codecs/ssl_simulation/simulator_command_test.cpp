@@ -11,9 +11,6 @@
 namespace turf::simproto {
 namespace {
 
-namespace ws = wire::simulation;
-using test::Serialize;
-
 // SimulatorCommand { control { teleport_ball { x: 1.5, y: -1, z: 0, vx: 2, roll: true } } }
 const std::vector<uint8_t> kTeleportBall = {
     0x0A, 0x18,                    // control (1, LEN), 24 bytes

@@ -10,9 +10,6 @@
 namespace turf::simproto {
 namespace {
 
-namespace ws = wire::simulation;
-using test::Serialize;
-
 constexpr double kStep = 0.002;
 
 class SyncCodec : public ::testing::Test {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "codecs/proto/ssl_simulation.pb.h"
 #include "tests/support/idl_values.h"
 
 namespace turf::simproto::test {
@@ -62,3 +63,9 @@ std::vector<uint8_t> Serialize(const Message& m) {
 }
 
 }  // namespace turf::simproto::test
+
+namespace turf::simproto {
+// What every codec test of this folder names unqualified.
+namespace ws = wire::simulation;
+using test::Serialize;
+}  // namespace turf::simproto
