@@ -43,6 +43,8 @@ void RequestStop() { g_stop_signals.fetch_add(1); }
 RejectLog::RejectLog(std::string what, std::chrono::seconds interval) : what_(std::move(what)), interval_(interval) {}
 
 void RejectLog::Reject(const std::string& kind, const std::string& detail) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  total_.fetch_add(1);
   const uint64_t n = ++counts_[kind];
   const auto now = std::chrono::steady_clock::now();
   auto it = last_log_.find(kind);
@@ -57,14 +59,14 @@ void RejectLog::Reject(const std::string& kind, const std::string& detail) {
 }
 
 uint64_t RejectLog::Count(const std::string& kind) const {
+  std::lock_guard<std::mutex> lock(mutex_);
   auto it = counts_.find(kind);
   return it == counts_.end() ? 0 : it->second;
 }
 
-uint64_t RejectLog::Total() const {
-  uint64_t total = 0;
-  for (const auto& [kind, n] : counts_) total += n;
-  return total;
+std::map<std::string, uint64_t> RejectLog::counts() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return counts_;
 }
 
 }  // namespace turf

@@ -2,9 +2,11 @@
 // and counted, rate-limited reports of refused input.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <map>
+#include <mutex>
 #include <string>
 
 namespace turf {
@@ -20,18 +22,21 @@ bool StopRequested();
 void RequestStop();
 
 // Counts refused inputs per kind and logs them: the first of each kind at
-// once, then at most one summary line per kind every `interval`.
+// once, then at most one summary line per kind every `interval`. Thread-safe:
+// a participant's threads share one.
 class RejectLog {
  public:
   explicit RejectLog(std::string what, std::chrono::seconds interval = std::chrono::seconds(5));
   void Reject(const std::string& kind, const std::string& detail);
   uint64_t Count(const std::string& kind) const;
-  uint64_t Total() const;
-  const std::map<std::string, uint64_t>& counts() const { return counts_; }
+  uint64_t Total() const { return total_.load(); }
+  std::map<std::string, uint64_t> counts() const;
 
  private:
-  std::string what_;
-  std::chrono::seconds interval_;
+  const std::string what_;
+  const std::chrono::seconds interval_;
+  std::atomic<uint64_t> total_{0};
+  mutable std::mutex mutex_;
   std::map<std::string, uint64_t> counts_;
   std::map<std::string, uint64_t> reported_;
   std::map<std::string, std::chrono::steady_clock::time_point> last_log_;

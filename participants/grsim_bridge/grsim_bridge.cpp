@@ -86,7 +86,6 @@ class GrsimBridge::Impl {
   }
 
   uint64_t Rejected(const std::string& kind) const {
-    std::lock_guard<std::mutex> lock(rejects_mutex_);
     if (kind == "control_unanswered") return unanswered_.load();
     return rejects_.Count(kind) + replacement_rejects_.Count(kind);
   }
@@ -107,10 +106,7 @@ class GrsimBridge::Impl {
     return std::move(*s);
   }
 
-  void Reject(const std::string& kind, const std::string& detail) {
-    std::lock_guard<std::mutex> lock(rejects_mutex_);
-    rejects_.Reject(kind, detail);
-  }
+  void Reject(const std::string& kind, const std::string& detail) { rejects_.Reject(kind, detail); }
 
   void HandleDatagram(const Datagram& d) {
     datagrams_.fetch_add(1);
@@ -165,7 +161,6 @@ class GrsimBridge::Impl {
       spdlog::debug("replacement not done: {}", detail);
       return;
     }
-    std::lock_guard<std::mutex> lock(rejects_mutex_);
     replacement_rejects_.Reject("control_rejected", detail);
   }
 
@@ -261,7 +256,6 @@ class GrsimBridge::Impl {
   std::vector<idl::SslField> fields_;
   std::vector<idl::SslRobotFeedback> feedback_;
 
-  mutable std::mutex rejects_mutex_;
   RejectLog rejects_;              // datagrams this bridge refused
   RejectLog replacement_rejects_;  // teleports turf-sim refused
   std::atomic<uint64_t> datagrams_{0};

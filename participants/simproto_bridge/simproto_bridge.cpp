@@ -85,14 +85,10 @@ class SimprotoBridge::Impl {
   }
 
   SimprotoBridgeStats Stats() const {
-    std::lock_guard<std::mutex> lock(rejects_mutex_);
     return {datagrams_.load(), answered_.load(), commands_.load(), requests_.load(), rejects_.Total()};
   }
 
-  uint64_t Rejected(const std::string& kind) const {
-    std::lock_guard<std::mutex> lock(rejects_mutex_);
-    return rejects_.Count(kind);
-  }
+  uint64_t Rejected(const std::string& kind) const { return rejects_.Count(kind); }
 
  private:
   struct Socket {
@@ -263,10 +259,7 @@ class SimprotoBridge::Impl {
     return ok;
   }
 
-  void Reject(const std::string& kind, const std::string& detail) {
-    std::lock_guard<std::mutex> lock(rejects_mutex_);
-    rejects_.Reject(kind, detail);
-  }
+  void Reject(const std::string& kind, const std::string& detail) { rejects_.Reject(kind, detail); }
 
   // Logs turf-sim's arrival once; true once it has.
   bool ReportSim() {
@@ -329,7 +322,6 @@ class SimprotoBridge::Impl {
   std::atomic<uint64_t> answered_{0};
   std::atomic<uint64_t> commands_{0};
   std::atomic<uint64_t> requests_{0};
-  mutable std::mutex rejects_mutex_;
   RejectLog rejects_;
 };
 

@@ -123,12 +123,9 @@ class ViewerNode::Impl {
     const viewer::WebServerStats web = server_->Stats();
     return {
         web.pages,       control_matched_.load(), states_received_.load(), states_pushed_.load(), controls_sent_.load(),
-        replies_.load(), rejected_.load(),        web.frames_dropped};
+        replies_.load(), rejects_.Total(),        web.frames_dropped};
   }
-  uint64_t Rejected(const std::string& kind) const {
-    std::lock_guard<std::mutex> lock(rejects_mutex_);
-    return rejects_.Count(kind);
-  }
+  uint64_t Rejected(const std::string& kind) const { return rejects_.Count(kind); }
 
  private:
   template <class PubSub>
@@ -136,11 +133,7 @@ class ViewerNode::Impl {
     return participant_.MakeReader<PubSub>(topic, [this] { wakeup_.Notify(); });
   }
 
-  void Reject(const std::string& kind, const std::string& detail) {
-    std::lock_guard<std::mutex> lock(rejects_mutex_);
-    rejects_.Reject(kind, detail);
-    rejected_.store(rejects_.Total());
-  }
+  void Reject(const std::string& kind, const std::string& detail) { rejects_.Reject(kind, detail); }
   // A DDS sample the model refused.
   bool Refused(const char* topic, viewer::SampleError e) {
     if (e == viewer::SampleError::kOk) return false;
@@ -357,9 +350,7 @@ class ViewerNode::Impl {
   std::deque<Inbound> inbox_;
   bool inbox_overflow_ = false;
 
-  mutable std::mutex rejects_mutex_;
   RejectLog rejects_;
-  std::atomic<uint64_t> rejected_{0};
   std::atomic<uint64_t> states_received_{0};
   std::atomic<uint64_t> states_pushed_{0};
   std::atomic<uint64_t> controls_sent_{0};

@@ -100,10 +100,10 @@ class VisionBridge::Impl {
 
   VisionBridgeStats Stats() const {
     return {detections_sent_.load(), geometry_sent_.load(), tracked_sent_.load(),
-            rejected_.load(),        send_errors_.load(),   no_epoch_.load()};
+            rejects_.Total(),        send_errors_.load(),   no_epoch_.load()};
   }
   uint64_t Rejected(const std::string& kind) const {
-    std::lock_guard<std::mutex> lock(rejects_mutex_);
+    std::lock_guard<std::mutex> lock(no_epoch_mutex_);
     const auto waited = no_epoch_counts_.find(kind);
     return rejects_.Count(kind) + (waited == no_epoch_counts_.end() ? 0 : waited->second);
   }
@@ -125,18 +125,14 @@ class VisionBridge::Impl {
     return std::move(*s);
   }
 
-  void Reject(const std::string& kind, const std::string& detail) {
-    std::lock_guard<std::mutex> lock(rejects_mutex_);
-    rejects_.Reject(kind, detail);
-    rejected_.store(rejects_.Total());
-  }
+  void Reject(const std::string& kind, const std::string& detail) { rejects_.Reject(kind, detail); }
 
   // A frame that cannot be stamped yet (run clock): not bad input, but not sent
   // either. DDS does not order the camera and clock topics, so frames that
   // arrive before turf-sim's first clock sample are normal: counted, and told
   // once at info level, never as a warning.
   void Drop(const std::string& kind, const std::string& detail) {
-    std::lock_guard<std::mutex> lock(rejects_mutex_);
+    std::lock_guard<std::mutex> lock(no_epoch_mutex_);
     if (no_epoch_counts_[kind]++ == 0)
       spdlog::info("waiting for turf-sim's clock (run epoch): {} not sent yet ({}; counted as {})", kind, detail, kind);
     no_epoch_.fetch_add(1);
@@ -331,7 +327,7 @@ class VisionBridge::Impl {
 
   void ReportStatus() const {
     spdlog::info("sent detections={} geometry={} tracked={} refused={} no_epoch={} send_errors={}",
-                 detections_sent_.load(), geometry_sent_.load(), tracked_sent_.load(), rejected_.load(),
+                 detections_sent_.load(), geometry_sent_.load(), tracked_sent_.load(), rejects_.Total(),
                  no_epoch_.load(), send_errors_.load());
   }
 
@@ -362,11 +358,10 @@ class VisionBridge::Impl {
   std::vector<idl::Clock> clock_inbox_;
   std::optional<int64_t> logged_epoch_;
 
-  mutable std::mutex rejects_mutex_;
   RejectLog rejects_;
+  mutable std::mutex no_epoch_mutex_;
   std::map<std::string, uint64_t> no_epoch_counts_;  // frames held back before the first epoch, by kind
   RejectLog send_errors_log_;
-  std::atomic<uint64_t> rejected_{0};
   std::atomic<uint64_t> send_errors_{0};
   std::atomic<uint64_t> no_epoch_{0};
   std::atomic<uint64_t> detections_sent_{0};
