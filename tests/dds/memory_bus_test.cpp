@@ -160,6 +160,31 @@ TEST(MemoryBus, AFullQueueCountsWhatItDrops) {
   EXPECT_EQ(reader->Overflowed(), extra);
 }
 
+// on_data runs outside the bus's lock: it may take and write, here a server answering on the writer's thread.
+TEST(MemoryBus, OnDataMayWriteToTheBus) {
+  dds::MemoryBus bus;
+  auto replies = bus.MakeWriter(dds::Topic::kControlReply);
+  std::unique_ptr<dds::Reader<idl::SimControlPubSubType>> requests;
+  requests = bus.MakeReader(dds::Topic::kControl, [&] {
+    std::vector<idl::SimControl> in;
+    if (!requests || !requests->Take(&in)) return;
+    for (const idl::SimControl& r : in) {
+      idl::SimControlReply reply;
+      reply.request_id(r.request_id());
+      replies->Write(reply);
+    }
+  });
+  auto answers = bus.MakeReader(dds::Topic::kControlReply);
+  auto client = bus.MakeWriter(dds::Topic::kControl);
+  idl::SimControl request;
+  request.request_id(42);
+  client->Write(request);
+  std::vector<idl::SimControlReply> got;
+  ASSERT_TRUE(answers->Take(&got));  // answered before Write returned
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(got[0].request_id(), 42u);
+}
+
 TEST(MemoryBus, EndpointsAreListedOnceFromTheTable) {
   dds::MemoryBus bus("pre");
   auto w1 = bus.MakeWriter(dds::Topic::kClock);
