@@ -74,10 +74,10 @@ std::string ControlOutcome::Describe() const {
   return "unknown";
 }
 
-ControlClient::ControlClient(Participant& participant, std::string name, std::function<void()> on_reply)
+ControlClient::ControlClient(Bus& bus, std::string name, std::function<void()> on_reply)
     : name_(std::move(name)), on_reply_(std::move(on_reply)), next_id_(FirstRequestId()) {
-  writer_ = participant.MakeWriter<idl::SimControlPubSubType>(Topic::kControl);
-  reader_ = participant.MakeReader<idl::SimControlReplyPubSubType>(Topic::kControlReply, [this] {
+  writer_ = bus.MakeWriter<idl::SimControlPubSubType>(Topic::kControl);
+  reader_ = bus.MakeReader<idl::SimControlReplyPubSubType>(Topic::kControlReply, [this] {
     if (!ready_.load()) return;
     TakeReplies();
     if (on_reply_) on_reply_();

@@ -17,12 +17,13 @@
 //   passes; Peek()/TryTake()/Wait() collect an uncallbacked Send()'s outcome.
 //
 // Thread-safety: every method may be called from any thread; the replies are
-// taken on Fast DDS's listener thread and kept under one mutex, which is never
-// held across a DDS call (Fast DDS holds its own locks while it calls the
-// listener, so the reverse order would deadlock). Callbacks run only
-// inside Dispatch(), never on a DDS thread, and without the mutex held (a
-// callback may Send()). `on_reply` (constructor) runs on the DDS thread: use
-// it only to wake a loop.
+// taken on the bus's delivery thread (Fast DDS's listener, or the writer's on a
+// MemoryBus) and kept under one mutex, which is never held across a bus call
+// (Fast DDS holds its own locks while it calls the listener, so the reverse
+// order would deadlock). Callbacks run only inside Dispatch(), never on a
+// delivery thread, and without the mutex held (a callback may Send()).
+// `on_reply` (constructor) runs on the delivery thread: use it only to wake a
+// loop.
 #pragma once
 
 #include <turf/idl/SimControlPubSubTypes.h>
@@ -39,7 +40,7 @@
 #include <string>
 #include <vector>
 
-#include "dds/participant.h"
+#include "dds/bus.h"
 
 namespace turf::dds {
 
@@ -72,9 +73,10 @@ class ControlClient {
   using StopFn = std::function<bool()>;
   static constexpr size_t kMaxOutstanding = 4096;  // past this the oldest request is forgotten
 
-  // Makes the control writer and the reply reader on `participant` (which must
-  // outlive the client). `name` goes into every request's `client`.
-  ControlClient(Participant& participant, std::string name, std::function<void()> on_reply = {});
+  // Makes the control writer and the reply reader on `bus` (a dds::Participant,
+  // or a dds::MemoryBus shared with turf-sim's node; it must outlive the client).
+  // `name` goes into every request's `client`.
+  ControlClient(Bus& bus, std::string name, std::function<void()> on_reply = {});
   ~ControlClient();
   ControlClient(const ControlClient&) = delete;
   ControlClient& operator=(const ControlClient&) = delete;

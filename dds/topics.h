@@ -60,12 +60,21 @@
     "legged scenes, at the joint-state rate: all robots' joints, IMU, forces and links of one frame, with the ball")
 
 namespace turf::idl {
-#define TURF_TOPIC_DECLARE_PUBSUB(constant, type, ...) class type##PubSubType;
+#define TURF_TOPIC_DECLARE_PUBSUB(constant, type, ...) \
+  class type;                                          \
+  class type##PubSubType;                              \
+  type SampleOfPubSub(const type##PubSubType*);
 TURF_DDS_TOPICS(TURF_TOPIC_DECLARE_PUBSUB)
 #undef TURF_TOPIC_DECLARE_PUBSUB
 }  // namespace turf::idl
 
 namespace turf::dds {
+
+// The sample type of a PubSubType (idl::Clock for idl::ClockPubSubType), without its Fast DDS header: the
+// declarations above pair them (a function may be declared twice, where two topics share a type; decltype
+// of a call needs no complete type). dds/participant.cpp checks each against PubSubType::type.
+template <class PubSub>
+using SampleOf = decltype(idl::SampleOfPubSub(static_cast<const PubSub*>(nullptr)));
 
 // Which row of kTopics; switch on Topic::id() where a topic is a runtime value.
 enum class TopicId : std::size_t {

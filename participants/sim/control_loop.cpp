@@ -7,6 +7,8 @@
 #include <cmath>
 #include <thread>
 
+#include "dds/participant.h"
+
 namespace turf {
 
 namespace {
@@ -26,14 +28,19 @@ TURF_ERRORS(TURF_ERROR_MATCHES_IDL)
 
 idl::ControlError ControlErrorOf(Error error) { return static_cast<idl::ControlError>(error); }
 
-ControlLoop::ControlLoop(dds::Participant& participant, const SimNodeOptions& options, Timing timing, Node& node)
+std::unique_ptr<dds::Bus> MakeNodeParticipant(const SimNodeOptions& options) {
+  return std::make_unique<dds::Participant>(
+      dds::ParticipantOptions{options.domain, options.name, options.prefix, options.qos_file});
+}
+
+ControlLoop::ControlLoop(dds::Bus& bus, const SimNodeOptions& options, Timing timing, Node& node)
     : node_(node),
       options_(options),
       timing_(timing),
       state_every_(std::max<int64_t>(1, std::llround(1.0 / (timing.state_hz * timing.step_s)))),
-      clock_writer_(participant.MakeWriter<idl::ClockPubSubType>(dds::Topic::kClock)),
-      reply_writer_(participant.MakeWriter<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
-      control_reader_(participant.MakeReader<idl::SimControlPubSubType>(dds::Topic::kControl, [this] { Wake(); })),
+      clock_writer_(bus.MakeWriter<idl::ClockPubSubType>(dds::Topic::kClock)),
+      reply_writer_(bus.MakeWriter<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
+      control_reader_(bus.MakeReader<idl::SimControlPubSubType>(dds::Topic::kControl, [this] { Wake(); })),
       time_(options.mode, options.speed, options.start_paused),
       rejects_("input") {}
 

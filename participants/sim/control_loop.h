@@ -33,7 +33,7 @@
 
 #include "core/legged/legged_world.h"
 #include "core/types.h"
-#include "dds/participant.h"
+#include "dds/bus.h"
 #include "participants/common/process.h"
 #include "participants/common/wakeup.h"
 #include "participants/sim/node_options.h"
@@ -48,6 +48,10 @@ struct ControlAnswer {
   std::string reason;
   bool ok() const { return code == idl::CONTROL_OK; }
 };
+
+// The bus a node makes for itself when it is given none: a DDS participant from
+// the options' domain, name, prefix and QoS file.
+std::unique_ptr<dds::Bus> MakeNodeParticipant(const SimNodeOptions& options);
 
 // The reply's code for a refusal the core names: the same taxonomy
 // (core/errors.h), value for value.
@@ -89,8 +93,8 @@ class ControlLoop {
     double state_hz = 0.0;  // state publications per second of sim time
   };
 
-  // Makes the control reader and the clock and reply writers on `participant`.
-  ControlLoop(dds::Participant& participant, const SimNodeOptions& options, Timing timing, Node& node);
+  // Makes the control reader and the clock and reply writers on `bus`.
+  ControlLoop(dds::Bus& bus, const SimNodeOptions& options, Timing timing, Node& node);
   ControlLoop(const ControlLoop&) = delete;
   ControlLoop& operator=(const ControlLoop&) = delete;
 

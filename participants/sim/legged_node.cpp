@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "dds/participant.h"
+#include "dds/bus.h"
 #include "kernel/legged_kernel.h"
 #include "loader/realism_yaml.h"
 #include "participants/sim/control_loop.h"
@@ -20,21 +20,22 @@ namespace {
 
 class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
  public:
-  LeggedNode(LeggedScene scene, SimNodeOptions options)
+  LeggedNode(LeggedScene scene, SimNodeOptions options, dds::Bus* bus)
       : options_(std::move(options)),
         kernel_(std::move(scene)),
-        participant_({options_.domain, options_.name, options_.prefix, options_.qos_file}),
-        loop_(participant_, options_, LoopTiming(kernel_), *this),
-        joint_writer_(participant_.MakeWriter<idl::JointStatePubSubType>(dds::Topic::kRobotJointState)),
-        imu_writer_(participant_.MakeWriter<idl::ImuStatePubSubType>(dds::Topic::kRobotImu)),
-        force_writer_(participant_.MakeWriter<idl::ForceStatePubSubType>(dds::Topic::kRobotForce)),
-        links_writer_(participant_.MakeWriter<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks)),
-        state_writer_(participant_.MakeWriter<idl::LeggedStatePubSubType>(dds::Topic::kRobotsState)),
-        world_writer_(participant_.MakeWriter<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
-        scene_writer_(participant_.MakeWriter<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene)),
-        stats_writer_(participant_.MakeWriter<idl::SensorStatsPubSubType>(dds::Topic::kStats)),
-        command_reader_(participant_.MakeReader<idl::JointCommandPubSubType>(dds::Topic::kRobotJointCommand,
-                                                                             [this] { loop_.Wake(); })) {}
+        own_bus_(bus != nullptr ? nullptr : MakeNodeParticipant(options_)),
+        bus_(bus != nullptr ? *bus : *own_bus_),
+        loop_(bus_, options_, LoopTiming(kernel_), *this),
+        joint_writer_(bus_.MakeWriter<idl::JointStatePubSubType>(dds::Topic::kRobotJointState)),
+        imu_writer_(bus_.MakeWriter<idl::ImuStatePubSubType>(dds::Topic::kRobotImu)),
+        force_writer_(bus_.MakeWriter<idl::ForceStatePubSubType>(dds::Topic::kRobotForce)),
+        links_writer_(bus_.MakeWriter<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks)),
+        state_writer_(bus_.MakeWriter<idl::LeggedStatePubSubType>(dds::Topic::kRobotsState)),
+        world_writer_(bus_.MakeWriter<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
+        scene_writer_(bus_.MakeWriter<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene)),
+        stats_writer_(bus_.MakeWriter<idl::SensorStatsPubSubType>(dds::Topic::kStats)),
+        command_reader_(
+            bus_.MakeReader<idl::JointCommandPubSubType>(dds::Topic::kRobotJointCommand, [this] { loop_.Wake(); })) {}
 
   void Run(const std::function<bool()>& stop) override {
     ReportStartup();
@@ -224,8 +225,8 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
     for (const LeggedRobotState& r : kernel_.world().State().robots)
       spdlog::info("  robot '{}' (id {}): {} joints, {} force sensors{}", r.name, r.id, r.joint_names.size(),
                    r.forces.size(), r.has_imu ? ", IMU" : "");
-    spdlog::info("DDS domain {}, QoS profiles {}", options_.domain, participant_.options().qos_file);
-    auto name = [this](dds::Topic t) { return participant_.TopicName(t); };
+    spdlog::info("{}", bus_.Describe());
+    auto name = [this](dds::Topic t) { return bus_.TopicName(t); };
     spdlog::info(
         "publishing {}, {}, {} per robot through their modelled links, at {:.0f} Hz of sim time; {} (all in one "
         "sample), {}, {} and {} at the same rate; {}, {} every second of sim time, {} (latched)",
@@ -252,7 +253,8 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
 
   SimNodeOptions options_;
   LeggedKernel kernel_;
-  dds::Participant participant_;
+  std::unique_ptr<dds::Bus> own_bus_;  // when the node makes its own participant
+  dds::Bus& bus_;
   ControlLoop loop_;  // before the readers: their callbacks wake it
   std::unique_ptr<dds::Writer<idl::JointStatePubSubType>> joint_writer_;
   std::unique_ptr<dds::Writer<idl::ImuStatePubSubType>> imu_writer_;
@@ -276,8 +278,8 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
 
 }  // namespace
 
-std::unique_ptr<SimNode::Impl> MakeLeggedNode(LeggedScene scene, SimNodeOptions options) {
-  return std::make_unique<LeggedNode>(std::move(scene), std::move(options));
+std::unique_ptr<SimNode::Impl> MakeLeggedNode(LeggedScene scene, SimNodeOptions options, dds::Bus* bus) {
+  return std::make_unique<LeggedNode>(std::move(scene), std::move(options), bus);
 }
 
 }  // namespace turf

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <deque>
 
-#include "dds/participant.h"
+#include "dds/bus.h"
 #include "kernel/ssl_kernel.h"
 #include "loader/realism_yaml.h"
 #include "participants/sim/control_loop.h"
@@ -27,21 +27,21 @@ int64_t UnixNowNs() {
 
 class SslNode final : public SimNode::Impl, private ControlLoop::Node {
  public:
-  SslNode(Scene scene, SimNodeOptions options)
+  SslNode(Scene scene, SimNodeOptions options, dds::Bus* bus)
       : options_(std::move(options)),
         kernel_(std::move(scene)),
-        participant_({options_.domain, options_.name, options_.prefix, options_.qos_file}),
-        loop_(participant_, options_, LoopTiming(kernel_.scene(), kernel_.world().step_ns()), *this),
-        state_writer_(participant_.MakeWriter<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
-        field_writer_(participant_.MakeWriter<idl::SslFieldPubSubType>(dds::Topic::kSslField)),
-        camera_writer_(participant_.MakeWriter<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)),
-        feedback_writers_{participant_.MakeWriter<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackBlue),
-                          participant_.MakeWriter<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackYellow)},
-        stats_writer_(participant_.MakeWriter<idl::SensorStatsPubSubType>(dds::Topic::kStats)),
-        command_readers_{participant_.MakeReader<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue,
-                                                                                 [this] { loop_.Wake(); }),
-                         participant_.MakeReader<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow,
-                                                                                 [this] { loop_.Wake(); })} {}
+        own_bus_(bus != nullptr ? nullptr : MakeNodeParticipant(options_)),
+        bus_(bus != nullptr ? *bus : *own_bus_),
+        loop_(bus_, options_, LoopTiming(kernel_.scene(), kernel_.world().step_ns()), *this),
+        state_writer_(bus_.MakeWriter<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
+        field_writer_(bus_.MakeWriter<idl::SslFieldPubSubType>(dds::Topic::kSslField)),
+        camera_writer_(bus_.MakeWriter<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)),
+        feedback_writers_{bus_.MakeWriter<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackBlue),
+                          bus_.MakeWriter<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackYellow)},
+        stats_writer_(bus_.MakeWriter<idl::SensorStatsPubSubType>(dds::Topic::kStats)),
+        command_readers_{
+            bus_.MakeReader<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue, [this] { loop_.Wake(); }),
+            bus_.MakeReader<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow, [this] { loop_.Wake(); })} {}
 
   void Run(const std::function<bool()>& stop) override {
     ReportStartup();
@@ -168,8 +168,8 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
         "scene '{}': division {}, {} blue + {} yellow robots on the field ({} ids a team), step {} ms, seed {}", s.name,
         s.field.division == Division::kA ? "A" : "B", on_field[0], on_field[1], s.robots_per_team, s.physics.step * 1e3,
         s.seed);
-    spdlog::info("DDS domain {}, QoS profiles {}", options_.domain, participant_.options().qos_file);
-    auto name = [this](dds::Topic t) { return participant_.TopicName(t); };
+    spdlog::info("{}", bus_.Describe());
+    auto name = [this](dds::Topic t) { return bus_.TopicName(t); };
     spdlog::info("publishing {} and {} at {:.0f} Hz of sim time", name(dds::Topic::kWorldState),
                  name(dds::Topic::kClock), s.rates.world_state_hz);
     spdlog::info("publishing {} ({} cameras at {:.0f} Hz), {} (latched)", name(dds::Topic::kSslCamera),
@@ -200,7 +200,8 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
 
   SimNodeOptions options_;
   SslKernel kernel_;
-  dds::Participant participant_;
+  std::unique_ptr<dds::Bus> own_bus_;  // when the node makes its own participant
+  dds::Bus& bus_;
   ControlLoop loop_;  // before the readers: their callbacks wake it
   std::unique_ptr<dds::Writer<idl::WorldStatePubSubType>> state_writer_;
   std::unique_ptr<dds::Writer<idl::SslFieldPubSubType>> field_writer_;
@@ -218,13 +219,18 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
 
 }  // namespace
 
-std::unique_ptr<SimNode::Impl> MakeSslNode(Scene scene, SimNodeOptions options) {
-  return std::make_unique<SslNode>(std::move(scene), std::move(options));
+std::unique_ptr<SimNode::Impl> MakeSslNode(Scene scene, SimNodeOptions options, dds::Bus* bus) {
+  return std::make_unique<SslNode>(std::move(scene), std::move(options), bus);
 }
 
-SimNode::SimNode(Scene scene, SimNodeOptions options) : impl_(MakeSslNode(std::move(scene), std::move(options))) {}
+SimNode::SimNode(Scene scene, SimNodeOptions options)
+    : impl_(MakeSslNode(std::move(scene), std::move(options), nullptr)) {}
 SimNode::SimNode(LeggedScene scene, SimNodeOptions options)
-    : impl_(MakeLeggedNode(std::move(scene), std::move(options))) {}
+    : impl_(MakeLeggedNode(std::move(scene), std::move(options), nullptr)) {}
+SimNode::SimNode(Scene scene, SimNodeOptions options, dds::Bus& bus)
+    : impl_(MakeSslNode(std::move(scene), std::move(options), &bus)) {}
+SimNode::SimNode(LeggedScene scene, SimNodeOptions options, dds::Bus& bus)
+    : impl_(MakeLeggedNode(std::move(scene), std::move(options), &bus)) {}
 SimNode::~SimNode() = default;
 void SimNode::Run(const std::function<bool()>& stop) { impl_->Run(stop); }
 SimNodeStats SimNode::Stats() const { return impl_->Stats(); }

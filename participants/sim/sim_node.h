@@ -1,4 +1,4 @@
-// turf-sim's node: a simulation kernel (kernel/) on DDS, with the time loop
+// turf-sim's node: a simulation kernel (kernel/) on DDS (or any dds::Bus), with the time loop
 // (control_loop.h: real time, scaled, free, lockstep, pause/step/reset, the
 // clock and replies). One class for every kind of scene; what it publishes
 // depends on the scene's kind.
@@ -53,13 +53,21 @@
 #include "core/scene.h"
 #include "participants/sim/node_options.h"
 
+namespace turf::dds {
+class Bus;
+}  // namespace turf::dds
+
 namespace turf {
 
 class SimNode {
  public:
   // Throw std::invalid_argument for a bad scene, std::runtime_error for DDS.
+  // On a DDS participant of the node's own, from the options' domain, name, prefix and QoS file:
   SimNode(Scene scene, SimNodeOptions options);
   SimNode(LeggedScene scene, SimNodeOptions options);
+  // On `bus` (a dds::MemoryBus in tests; it keeps its own prefix), which must outlive the node.
+  SimNode(Scene scene, SimNodeOptions options, dds::Bus& bus);
+  SimNode(LeggedScene scene, SimNodeOptions options, dds::Bus& bus);
   ~SimNode();
   SimNode(const SimNode&) = delete;
   SimNode& operator=(const SimNode&) = delete;
@@ -84,7 +92,8 @@ class SimNode {
   std::unique_ptr<Impl> impl_;
 };
 
-std::unique_ptr<SimNode::Impl> MakeSslNode(Scene scene, SimNodeOptions options);
-std::unique_ptr<SimNode::Impl> MakeLeggedNode(LeggedScene scene, SimNodeOptions options);
+// `bus` null: the node makes its own participant (MakeNodeParticipant, control_loop.h).
+std::unique_ptr<SimNode::Impl> MakeSslNode(Scene scene, SimNodeOptions options, dds::Bus* bus);
+std::unique_ptr<SimNode::Impl> MakeLeggedNode(LeggedScene scene, SimNodeOptions options, dds::Bus* bus);
 
 }  // namespace turf

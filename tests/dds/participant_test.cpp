@@ -11,6 +11,7 @@
 #include <turf/idl/SslVisionPubSubTypes.h>
 #include <turf/idl/WorldStatePubSubTypes.h>
 #include <unistd.h>
+#include <fastdds/dds/topic/TypeSupport.hpp>
 
 #include <memory>
 #include <sstream>

@@ -1,0 +1,226 @@
+// turf-sim's node on a dds::MemoryBus, driven by dds::ControlClient on the same bus: no DDS domain, no
+// discovery, no sleeps. The node runs in lockstep on a thread with a stop flag; the test waits for conditions
+// with deadlines (the client's blocking Call, or an Inbox woken by its reader's on_data).
+#include <gtest/gtest.h>
+#include <turf/idl/Clock.h>
+#include <turf/idl/Joints.h>
+#include <turf/idl/SimControl.h>
+#include <turf/idl/SslRobot.h>
+#include <turf/idl/WorldState.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "dds/control_client.h"
+#include "dds/memory_bus.h"
+#include "loader/legged_scene_yaml.h"
+#include "participants/sim/sim_node.h"
+#include "tests/core/test_scenes.h"
+
+namespace turf {
+namespace {
+
+using namespace std::chrono_literals;
+using SteadyClock = std::chrono::steady_clock;
+
+constexpr auto kDeadline = 20s;  // generous: a deadline, not a pace
+
+// Every sample of one topic, collected as it arrives; a test waits for a condition on them with a deadline.
+template <class PubSub>
+class Inbox {
+ public:
+  using Sample = dds::SampleOf<PubSub>;
+  Inbox(dds::Bus& bus, const dds::TopicDef<PubSub>& topic) : reader_(bus.MakeReader(topic, [this] { Wake(); })) {}
+
+  // Waits until `done(every sample so far)` holds; false if it did not by the deadline.
+  bool WaitFor(const std::function<bool(const std::vector<Sample>&)>& done) {
+    const auto deadline = SteadyClock::now() + kDeadline;
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (true) {
+      std::vector<Sample> got;
+      if (reader_->Take(&got)) samples_.insert(samples_.end(), got.begin(), got.end());
+      if (done(samples_)) return true;
+      if (!changed_.wait_until(lock, deadline, [this] { return pending_; })) return false;
+      pending_ = false;
+    }
+  }
+  // The samples taken by the last WaitFor.
+  const std::vector<Sample>& samples() const { return samples_; }
+
+ private:
+  void Wake() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    pending_ = true;
+    changed_.notify_all();
+  }
+
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  bool pending_ = false;
+  std::vector<Sample> samples_;
+  std::unique_ptr<dds::Reader<PubSub>> reader_;
+};
+
+// turf-sim's node in lockstep on `bus`, run on a thread until the test ends.
+class LockstepNode {
+ public:
+  template <class SceneKind>
+  LockstepNode(SceneKind scene, dds::Bus& bus) {
+    SimNodeOptions options;
+    options.mode = TimeMode::kLockstep;
+    node_ = std::make_unique<SimNode>(std::move(scene), options, bus);
+    thread_ = std::thread([this] { node_->Run([this] { return stop_.load(); }); });
+  }
+  ~LockstepNode() {
+    stop_ = true;
+    thread_.join();
+  }
+  SimNode& node() { return *node_; }
+
+ private:
+  std::unique_ptr<SimNode> node_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+idl::SimControl Op(idl::ControlOp op) {
+  idl::SimControl request;
+  request.op(op);
+  return request;
+}
+
+idl::SimControl Step(uint32_t count) {
+  idl::SimControl request = Op(idl::OP_STEP);
+  request.step_count(count);
+  return request;
+}
+
+TEST(MemoryBusNode, ServerIsMatchedAtOnceAndStepsReplyAtTheFrameReached) {
+  dds::MemoryBus bus("mem");
+  Inbox<idl::WorldStatePubSubType> states(bus, dds::Topic::kWorldState);
+  Inbox<idl::ClockPubSubType> clocks(bus, dds::Topic::kClock);
+  LockstepNode sim(test::OneRobot(), bus);
+  dds::ControlClient client(bus, "test");
+  EXPECT_TRUE(client.ServerMatched());  // no discovery to wait for
+
+  dds::ControlOutcome outcome = client.Call(Step(5), kDeadline);
+  ASSERT_TRUE(outcome.ok()) << outcome.Describe();
+  EXPECT_EQ(outcome.reply->frame(), 5u);
+  EXPECT_EQ(outcome.reply->op(), idl::OP_STEP);
+  // The state of the frame a STEP finishes is written before its reply.
+  ASSERT_TRUE(states.WaitFor([](const auto& s) { return !s.empty() && s.back().frame() == 5u; }));
+  ASSERT_TRUE(clocks.WaitFor([](const auto& c) { return !c.empty() && c.back().frame() == 5u; }));
+  EXPECT_EQ(clocks.samples().back().mode(), idl::TIME_LOCKSTEP);
+  EXPECT_EQ(clocks.samples().back().sim_time_ns(), outcome.reply->sim_time_ns());
+
+  outcome = client.Call(Step(3), kDeadline);
+  ASSERT_TRUE(outcome.ok()) << outcome.Describe();
+  EXPECT_EQ(outcome.reply->frame(), 8u);
+  EXPECT_EQ(sim.node().Stats().frame, 8u);
+  // Lockstep: nothing steps between requests.
+  ASSERT_TRUE(states.WaitFor([](const auto& s) { return s.back().frame() == 8u; }));
+  for (const idl::WorldState& s : states.samples()) EXPECT_LE(s.frame(), 8u);
+}
+
+TEST(MemoryBusNode, ATeleportMovesTheBallOnWorldState) {
+  dds::MemoryBus bus("mem");
+  Inbox<idl::WorldStatePubSubType> states(bus, dds::Topic::kWorldState);
+  LockstepNode sim(test::OneRobot(), bus);
+  dds::ControlClient client(bus, "test");
+
+  idl::SimControl teleport = Op(idl::OP_TELEPORT_BALL);
+  teleport.ball().position().x(1.0);
+  teleport.ball().position().y(-2.0);
+  const dds::ControlOutcome outcome = client.Call(teleport, kDeadline);
+  ASSERT_TRUE(outcome.ok()) << outcome.Describe();
+  EXPECT_EQ(outcome.reply->frame(), 0u);  // lockstep: no step taken
+  ASSERT_TRUE(states.WaitFor([](const auto& s) {
+    return !s.empty() && std::abs(s.back().ball().position().x() - 1.0) < 1e-6 &&
+           std::abs(s.back().ball().position().y() + 2.0) < 1e-6;
+  }));
+  EXPECT_EQ(states.samples().back().frame(), 0u);
+}
+
+TEST(MemoryBusNode, RefusalsReturnTheirControlError) {
+  dds::MemoryBus bus("mem");
+  LockstepNode sim(test::OneRobot(), bus);
+  dds::ControlClient client(bus, "test");
+
+  idl::SimControl teleport = Op(idl::OP_TELEPORT_BALL);
+  teleport.ball().position().x(NAN);
+  dds::ControlOutcome outcome = client.Call(teleport, kDeadline);
+  EXPECT_EQ(outcome.error, dds::ControlCallError::kRefused) << outcome.Describe();
+  EXPECT_EQ(outcome.code(), idl::CONTROL_NOT_FINITE);
+  EXPECT_EQ(outcome.reply->result(), idl::RESULT_REJECTED);
+
+  outcome = client.Call(Step(0), kDeadline);
+  EXPECT_EQ(outcome.error, dds::ControlCallError::kRefused) << outcome.Describe();
+  EXPECT_EQ(outcome.code(), idl::CONTROL_OUT_OF_RANGE);
+  EXPECT_EQ(sim.node().Rejected("control"), 2u);
+
+  // A command with a NaN speed on the blue topic: refused by the node when it takes its inputs.
+  auto blue = bus.MakeWriter(dds::Topic::kSslCommandBlue);
+  EXPECT_EQ(blue->Matched(), 1);
+  idl::SslRobotCommand command;
+  command.team(idl::TEAM_BLUE);
+  command.id(0);
+  command.move(idl::MOVE_LOCAL_VELOCITY);
+  command.velocity().x(NAN);
+  blue->Write(command);
+  outcome = client.Call(Step(1), kDeadline);  // commands are taken before control requests
+  ASSERT_TRUE(outcome.ok()) << outcome.Describe();
+  EXPECT_EQ(sim.node().Rejected("command.not_finite"), 1u);
+}
+
+LeggedScene SimSparkScene() {
+  LeggedSceneLoadResult r = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/simspark_3d.yaml");
+  if (!r.scene) throw std::runtime_error(r.errors.front());
+  r.scene->realism = {};
+  return std::move(*r.scene);
+}
+
+TEST(MemoryBusNode, ALeggedSceneStepsAndPublishesJointStates) {
+  dds::MemoryBus bus("mem");
+  Inbox<idl::JointStatePubSubType> joints(bus, dds::Topic::kRobotJointState);
+  LockstepNode sim(SimSparkScene(), bus);
+  dds::ControlClient client(bus, "test");
+
+  const dds::ControlOutcome outcome = client.Call(Step(50), kDeadline);  // 0.1 s
+  ASSERT_TRUE(outcome.ok()) << outcome.Describe();
+  EXPECT_EQ(outcome.reply->frame(), 50u);
+  const int64_t reached_ns = outcome.reply->sim_time_ns();
+  ASSERT_TRUE(joints.WaitFor([&](const auto& all) {
+    std::set<std::string> robots;
+    for (const idl::JointState& j : all)
+      if (j.sim_time_ns() >= reached_ns - 20'000'000) robots.insert(j.robot());
+    return robots.size() == 2;
+  }));
+  std::map<std::string, int64_t> last_ns;
+  for (const idl::JointState& j : joints.samples()) {
+    EXPECT_EQ(j.name().size(), 22u) << j.robot();
+    EXPECT_EQ(j.position().size(), 22u) << j.robot();
+    EXPECT_LE(j.sim_time_ns(), reached_ns);
+    EXPECT_GE(j.sim_time_ns(), last_ns[j.robot()]) << "in order per robot";
+    last_ns[j.robot()] = j.sim_time_ns();
+  }
+
+  // The scene description is latched: a reader made now still gets it.
+  Inbox<idl::LeggedSceneInfoPubSubType> scene(bus, dds::Topic::kLeggedScene);
+  ASSERT_TRUE(scene.WaitFor([](const auto& s) { return !s.empty(); }));
+  EXPECT_EQ(scene.samples().size(), 1u);
+  EXPECT_EQ(scene.samples()[0].robots().size(), 2u);
+}
+
+}  // namespace
+}  // namespace turf
