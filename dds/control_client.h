@@ -40,6 +40,7 @@
 #include <string>
 #include <vector>
 
+#include "core/pinned.h"
 #include "dds/bus.h"
 
 namespace turf::dds {
@@ -66,7 +67,7 @@ struct ControlOutcome {
   std::string Describe() const;
 };
 
-class ControlClient {
+class ControlClient : Pinned {
  public:
   using SteadyClock = std::chrono::steady_clock;
   using Callback = std::function<void(const ControlOutcome&)>;
@@ -78,8 +79,6 @@ class ControlClient {
   // `name` goes into every request's `client`.
   ControlClient(Bus& bus, std::string name, std::function<void()> on_reply = {});
   ~ControlClient();
-  ControlClient(const ControlClient&) = delete;
-  ControlClient& operator=(const ControlClient&) = delete;
 
   const std::string& name() const { return name_; }
   // turf-sim's control reader and reply writer are both matched.

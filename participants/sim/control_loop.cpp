@@ -72,17 +72,6 @@ void ControlLoop::Run(const std::function<bool()>& stop) {
   node_.ReportStatus();
 }
 
-void ControlLoop::Reject(const std::string& kind, const std::string& detail) {
-  std::lock_guard<std::mutex> lock(rejects_mutex_);
-  rejects_.Reject(kind, detail);
-  rejected_.store(rejects_.Total());
-}
-
-uint64_t ControlLoop::Rejected(const std::string& kind) const {
-  std::lock_guard<std::mutex> lock(rejects_mutex_);
-  return rejects_.Count(kind);
-}
-
 void ControlLoop::ReportTimeMode() const {
   spdlog::info("time: {}{}{}", TimeModeName(time_.mode()),
                time_.mode() == TimeMode::kScaled ? fmt::format(" x{}", time_.speed()) : "",
@@ -105,11 +94,7 @@ void ControlLoop::TakeInputs() {
     for (const idl::SimControl& c : control_inbox_) HandleControl(c);
   }
   const uint64_t overflow = node_.CommandsOverflowed() + control_reader_->Overflowed();
-  if (overflow > reported_overflow_) {
-    Reject("queue_overflow",
-           fmt::format("{} samples arrived faster than the loop could take them", overflow - reported_overflow_));
-    reported_overflow_ = overflow;
-  }
+  overflow_.Check(overflow, [this](const char* kind, const std::string& detail) { Reject(kind, detail); });
 }
 
 void ControlLoop::HandleControl(const idl::SimControl& request) {

@@ -32,8 +32,10 @@
 #include <vector>
 
 #include "core/legged/legged_world.h"
+#include "core/pinned.h"
 #include "core/types.h"
 #include "dds/bus.h"
+#include "participants/common/overflow_watch.h"
 #include "participants/common/process.h"
 #include "participants/common/wakeup.h"
 #include "participants/sim/node_options.h"
@@ -57,7 +59,7 @@ std::unique_ptr<dds::Bus> MakeNodeParticipant(const SimNodeOptions& options);
 // (core/errors.h), value for value.
 idl::ControlError ControlErrorOf(Error error);
 
-class ControlLoop {
+class ControlLoop : Pinned {
  public:
   // What a node does for the loop: the requests it handles answer a ControlAnswer.
   class Node {
@@ -95,8 +97,6 @@ class ControlLoop {
 
   // Makes the control reader and the clock and reply writers on `bus`.
   ControlLoop(dds::Bus& bus, const SimNodeOptions& options, Timing timing, Node& node);
-  ControlLoop(const ControlLoop&) = delete;
-  ControlLoop& operator=(const ControlLoop&) = delete;
 
   // Publishes the state, then steps until `stop()` answers true (checked every
   // step and at least every 50 ms while idle) or the duration is reached.
@@ -105,7 +105,7 @@ class ControlLoop {
   // For the node's command readers' on_data callbacks (any thread).
   void Wake() { wakeup_.Notify(); }
   // Counts and logs (rate-limited) a refused input of `kind`.
-  void Reject(const std::string& kind, const std::string& detail);
+  void Reject(const std::string& kind, const std::string& detail) { rejects_.Reject(kind, detail); }
   // Logs the time mode, as the last line of a node's startup report.
   void ReportTimeMode() const;
 
@@ -114,10 +114,10 @@ class ControlLoop {
   double real_time_factor() const { return pacer_.real_time_factor(); }
   // Unix ns of sim time 0 of this run (0 until Run starts).
   int64_t run_epoch_unix_ns() const { return run_epoch_unix_ns_.load(); }
-  uint64_t rejected() const { return rejected_.load(); }
+  uint64_t rejected() const { return rejects_.Total(); }
 
-  SimNodeStats Stats() const { return {frame_.load(), time_ns_.load(), rejected_.load(), rtf_.load()}; }
-  uint64_t Rejected(const std::string& kind) const;
+  SimNodeStats Stats() const { return {frame_.load(), time_ns_.load(), rejects_.Total(), rtf_.load()}; }
+  uint64_t Rejected(const std::string& kind) const { return rejects_.Count(kind); }
 
  private:
   void Pace();
@@ -144,12 +144,10 @@ class ControlLoop {
   std::map<uint64_t, idl::SimControl> step_requests_;  // by TimeControl token
   uint64_t next_token_ = 0;
   std::vector<uint64_t> finished_;
-  uint64_t reported_overflow_ = 0;
+  OverflowWatch overflow_;
   std::vector<idl::SimControl> control_inbox_;
 
-  mutable std::mutex rejects_mutex_;
   RejectLog rejects_;
-  std::atomic<uint64_t> rejected_{0};
   std::atomic<uint64_t> frame_{0};
   std::atomic<int64_t> time_ns_{0};
   std::atomic<double> rtf_{0.0};

@@ -50,6 +50,7 @@
 #include <string>
 
 #include "core/legged/legged_scene.h"
+#include "core/pinned.h"
 #include "core/scene.h"
 #include "participants/sim/node_options.h"
 
@@ -59,7 +60,7 @@ class Bus;
 
 namespace turf {
 
-class SimNode {
+class SimNode : Pinned {
  public:
   // Throw std::invalid_argument for a bad scene, std::runtime_error for DDS.
   // On a DDS participant of the node's own, from the options' domain, name, prefix and QoS file:
@@ -69,8 +70,6 @@ class SimNode {
   SimNode(Scene scene, SimNodeOptions options, dds::Bus& bus);
   SimNode(LeggedScene scene, SimNodeOptions options, dds::Bus& bus);
   ~SimNode();
-  SimNode(const SimNode&) = delete;
-  SimNode& operator=(const SimNode&) = delete;
 
   // Runs the loop until `stop()` answers true (checked every step and at least
   // every 50 ms while idle) or the duration is reached.
