@@ -27,6 +27,7 @@
 #include "loader/legged_scene_yaml.h"
 #include "participants/sim/sim_node.h"
 #include "tests/core/test_scenes.h"
+#include "tests/sim/sim_harness.h"
 
 namespace turf {
 namespace {
@@ -72,49 +73,15 @@ class Inbox {
   std::unique_ptr<dds::Reader<PubSub>> reader_;
 };
 
-// turf-sim's node in lockstep on `bus`, run on a thread until the test ends.
-class LockstepNode {
- public:
-  template <class SceneKind>
-  LockstepNode(SceneKind scene, dds::Bus& bus) {
-    SimNodeOptions options;
-    options.mode = TimeMode::kLockstep;
-    node_ = std::make_unique<SimNode>(std::move(scene), options, bus);
-    thread_ = std::thread([this] { node_->Run([this] { return stop_.load(); }); });
-  }
-  ~LockstepNode() {
-    stop_ = true;
-    thread_.join();
-  }
-  SimNode& node() { return *node_; }
-
- private:
-  std::unique_ptr<SimNode> node_;
-  std::atomic<bool> stop_{false};
-  std::thread thread_;
-};
-
-idl::SimControl Op(idl::ControlOp op) {
-  idl::SimControl request;
-  request.op(op);
-  return request;
-}
-
-idl::SimControl Step(uint32_t count) {
-  idl::SimControl request = Op(idl::OP_STEP);
-  request.step_count(count);
-  return request;
-}
-
 TEST(MemoryBusNode, ServerIsMatchedAtOnceAndStepsReplyAtTheFrameReached) {
   dds::MemoryBus bus("mem");
   Inbox<idl::WorldStatePubSubType> states(bus, dds::Topic::kWorldState);
   Inbox<idl::ClockPubSubType> clocks(bus, dds::Topic::kClock);
-  LockstepNode sim(test::OneRobot(), bus);
+  test::SimUnderTest sim(test::OneRobot(), bus, TimeMode::kLockstep);
   dds::ControlClient client(bus, "test");
   EXPECT_TRUE(client.ServerMatched());  // no discovery to wait for
 
-  dds::ControlOutcome outcome = client.Call(Step(5), kDeadline);
+  dds::ControlOutcome outcome = client.Call(test::StepRequest(5), kDeadline);
   ASSERT_TRUE(outcome.ok()) << outcome.Describe();
   EXPECT_EQ(outcome.reply->frame(), 5u);
   EXPECT_EQ(outcome.reply->op(), idl::OP_STEP);
@@ -124,7 +91,7 @@ TEST(MemoryBusNode, ServerIsMatchedAtOnceAndStepsReplyAtTheFrameReached) {
   EXPECT_EQ(clocks.samples().back().mode(), idl::TIME_LOCKSTEP);
   EXPECT_EQ(clocks.samples().back().sim_time_ns(), outcome.reply->sim_time_ns());
 
-  outcome = client.Call(Step(3), kDeadline);
+  outcome = client.Call(test::StepRequest(3), kDeadline);
   ASSERT_TRUE(outcome.ok()) << outcome.Describe();
   EXPECT_EQ(outcome.reply->frame(), 8u);
   EXPECT_EQ(sim.node().Stats().frame, 8u);
@@ -136,10 +103,10 @@ TEST(MemoryBusNode, ServerIsMatchedAtOnceAndStepsReplyAtTheFrameReached) {
 TEST(MemoryBusNode, ATeleportMovesTheBallOnWorldState) {
   dds::MemoryBus bus("mem");
   Inbox<idl::WorldStatePubSubType> states(bus, dds::Topic::kWorldState);
-  LockstepNode sim(test::OneRobot(), bus);
+  test::SimUnderTest sim(test::OneRobot(), bus, TimeMode::kLockstep);
   dds::ControlClient client(bus, "test");
 
-  idl::SimControl teleport = Op(idl::OP_TELEPORT_BALL);
+  idl::SimControl teleport = test::Op(idl::OP_TELEPORT_BALL);
   teleport.ball().position().x(1.0);
   teleport.ball().position().y(-2.0);
   const dds::ControlOutcome outcome = client.Call(teleport, kDeadline);
@@ -154,17 +121,17 @@ TEST(MemoryBusNode, ATeleportMovesTheBallOnWorldState) {
 
 TEST(MemoryBusNode, RefusalsReturnTheirControlError) {
   dds::MemoryBus bus("mem");
-  LockstepNode sim(test::OneRobot(), bus);
+  test::SimUnderTest sim(test::OneRobot(), bus, TimeMode::kLockstep);
   dds::ControlClient client(bus, "test");
 
-  idl::SimControl teleport = Op(idl::OP_TELEPORT_BALL);
+  idl::SimControl teleport = test::Op(idl::OP_TELEPORT_BALL);
   teleport.ball().position().x(NAN);
   dds::ControlOutcome outcome = client.Call(teleport, kDeadline);
   EXPECT_EQ(outcome.error, dds::ControlCallError::kRefused) << outcome.Describe();
   EXPECT_EQ(outcome.code(), idl::CONTROL_NOT_FINITE);
   EXPECT_EQ(outcome.reply->result(), idl::RESULT_REJECTED);
 
-  outcome = client.Call(Step(0), kDeadline);
+  outcome = client.Call(test::StepRequest(0), kDeadline);
   EXPECT_EQ(outcome.error, dds::ControlCallError::kRefused) << outcome.Describe();
   EXPECT_EQ(outcome.code(), idl::CONTROL_OUT_OF_RANGE);
   EXPECT_EQ(sim.node().Rejected("control"), 2u);
@@ -178,7 +145,7 @@ TEST(MemoryBusNode, RefusalsReturnTheirControlError) {
   command.move(idl::MOVE_LOCAL_VELOCITY);
   command.velocity().x(NAN);
   blue->Write(command);
-  outcome = client.Call(Step(1), kDeadline);  // commands are taken before control requests
+  outcome = client.Call(test::StepRequest(1), kDeadline);  // commands are taken before control requests
   ASSERT_TRUE(outcome.ok()) << outcome.Describe();
   EXPECT_EQ(sim.node().Rejected("command.not_finite"), 1u);
 }
@@ -193,10 +160,10 @@ LeggedScene SimSparkScene() {
 TEST(MemoryBusNode, ALeggedSceneStepsAndPublishesJointStates) {
   dds::MemoryBus bus("mem");
   Inbox<idl::JointStatePubSubType> joints(bus, dds::Topic::kRobotJointState);
-  LockstepNode sim(SimSparkScene(), bus);
+  test::SimUnderTest sim(SimSparkScene(), bus, TimeMode::kLockstep);
   dds::ControlClient client(bus, "test");
 
-  const dds::ControlOutcome outcome = client.Call(Step(50), kDeadline);  // 0.1 s
+  const dds::ControlOutcome outcome = client.Call(test::StepRequest(50), kDeadline);  // 0.1 s
   ASSERT_TRUE(outcome.ok()) << outcome.Describe();
   EXPECT_EQ(outcome.reply->frame(), 50u);
   const int64_t reached_ns = outcome.reply->sim_time_ns();

@@ -54,8 +54,14 @@ class SimUnderTest {
     o.qos_file = dds.qos_file;
     o.mode = mode;
     o.speed = speed;
-    node_ = std::make_unique<SimNode>(std::move(scene), o);
-    thread_ = std::thread([this] { node_->Run([this] { return stop_.load(); }); });
+    Start(std::make_unique<SimNode>(std::move(scene), o));
+  }
+  // On a bus the test made (a dds::MemoryBus: no DDS domain).
+  template <typename SceneKind>
+  SimUnderTest(SceneKind scene, dds::Bus& bus, TimeMode mode) {
+    SimNodeOptions o;
+    o.mode = mode;
+    Start(std::make_unique<SimNode>(std::move(scene), o, bus));
   }
   ~SimUnderTest() {
     stop_ = true;
@@ -64,6 +70,11 @@ class SimUnderTest {
   SimNode& node() { return *node_; }
 
  private:
+  void Start(std::unique_ptr<SimNode> node) {
+    node_ = std::move(node);
+    thread_ = std::thread([this] { node_->Run([this] { return stop_.load(); }); });
+  }
+
   std::unique_ptr<SimNode> node_;
   std::atomic<bool> stop_{false};
   std::thread thread_;
@@ -205,6 +216,12 @@ inline ::testing::AssertionResult Ok(const std::optional<idl::SimControlReply>& 
 inline idl::SimControl Op(idl::ControlOp op) {
   idl::SimControl c;
   c.op(op);
+  return c;
+}
+
+inline idl::SimControl StepRequest(uint32_t count) {
+  idl::SimControl c = Op(idl::OP_STEP);
+  c.step_count(count);
   return c;
 }
 
