@@ -22,26 +22,17 @@
 
 namespace turf {
 
-struct RobotSnapshot {
+// A robot as the world reports it: its pose and velocity (RobotKinematics: x, y, yaw, vx, vy, omega) and more.
+struct RobotSnapshot : RobotKinematics {
   Team team = Team::kBlue;
   int id = 0;
   bool on_field = false;
-  double x = 0.0;
-  double y = 0.0;
-  double yaw = 0.0;
-  double vx = 0.0;
-  double vy = 0.0;
-  double omega = 0.0;
   bool ball_contact = false;
   uint32_t kick_count = 0;
   KickKind last_kick = KickKind::kNone;
 };
 
-struct BallSnapshot {
-  Vec3 position;
-  Vec3 velocity;
-  Vec3 angular_velocity;
-};
+using BallSnapshot = BallState;
 
 struct WorldSnapshot {
   int64_t time_ns = 0;
