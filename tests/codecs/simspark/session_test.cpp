@@ -136,6 +136,17 @@ struct Harness {
 
   FakeWorld world;
   Session session;
+
+  // The session raised exactly one issue since the last take: of `kind`, from `agent` (-1: anyone).
+  ::testing::AssertionResult OneIssue(const std::string& kind, int agent = -1) {
+    const std::vector<SessionIssue> issues = session.TakeIssues();
+    if (issues.size() != 1) return ::testing::AssertionFailure() << issues.size() << " issues, not 1";
+    if (issues[0].kind != kind) return ::testing::AssertionFailure() << "issue " << issues[0].kind << ", not " << kind;
+    if (agent >= 0 && issues[0].agent != agent)
+      return ::testing::AssertionFailure() << "issue from agent " << issues[0].agent << ", not " << agent;
+    if (issues[0].detail.empty()) return ::testing::AssertionFailure() << "issue " << kind << " without a detail";
+    return ::testing::AssertionSuccess();
+  }
 };
 
 // The one output for `agent` ("" when none; a failure when more than one).
@@ -291,11 +302,7 @@ TEST(SessionInit, SecondTeamIsRightThirdIsRefused) {
   const int a = h.Join("Alpha", 1);
   const int b = h.Join("Beta", 1);
   const int c = h.Join("Gamma", 1);
-  const std::vector<SessionIssue> issues = h.session.TakeIssues();
-  ASSERT_EQ(issues.size(), 1u);
-  EXPECT_EQ(issues[0].agent, c);
-  EXPECT_EQ(issues[0].kind, "init_refused");
-  EXPECT_FALSE(issues[0].detail.empty());
+  EXPECT_TRUE(h.OneIssue("init_refused", c));
 
   WorldRequests requests;
   const auto outputs = h.Cycle(&requests);
@@ -421,9 +428,7 @@ TEST(SessionEffectors, ParseErrorIsAnIssue) {
   const int a = h.Join("Alpha", 1);
   h.Cycle();
   h.session.Receive(a, "(he1 1");
-  const std::vector<SessionIssue> issues = h.session.TakeIssues();
-  ASSERT_EQ(issues.size(), 1u);
-  EXPECT_EQ(issues[0].kind, "parse");
+  EXPECT_TRUE(h.OneIssue("parse", a));
   EXPECT_TRUE(h.session.TakeRequests().joints.empty());
 }
 
@@ -561,10 +566,7 @@ TEST(SessionBeam, BeforeInitIsAnIssue) {
   const int a = h.Join("", 0);
   h.Cycle();
   h.session.Receive(a, "(beam -2 1 90)");
-  const std::vector<SessionIssue> issues = h.session.TakeIssues();
-  ASSERT_EQ(issues.size(), 1u);
-  EXPECT_EQ(issues[0].agent, a);
-  EXPECT_EQ(issues[0].kind, "beam_before_init");
+  EXPECT_TRUE(h.OneIssue("beam_before_init", a));
   EXPECT_TRUE(h.session.TakeRequests().moves.empty());
 }
 
