@@ -200,15 +200,5 @@ TEST(Effectors, UnparsablePayloadAppliesNothing) {
   EXPECT_EQ(ParseAgentMessage("(syn)(he1 1").issues[0].detail, "unbalanced_open at offset 11");
 }
 
-TEST(Effectors, ErrorNames) {
-  EXPECT_STREQ(EffectorErrorName(EffectorError::kOk), "ok");
-  EXPECT_STREQ(EffectorErrorName(EffectorError::kParse), "parse");
-  EXPECT_STREQ(EffectorErrorName(EffectorError::kUnknownEffector), "unknown_effector");
-  EXPECT_STREQ(EffectorErrorName(EffectorError::kBadArguments), "bad_arguments");
-  EXPECT_STREQ(EffectorErrorName(EffectorError::kNotFinite), "not_finite");
-  EXPECT_STREQ(EffectorErrorName(EffectorError::kBadSay), "bad_say");
-  EXPECT_STREQ(EffectorErrorName(EffectorError::kBadRobotType), "bad_robot_type");
-}
-
 }  // namespace
 }  // namespace turf::simspark

@@ -117,10 +117,5 @@ TEST(Framing, RoundTripsBinaryPayloads) {
   EXPECT_EQ(d.Next(), payload);
 }
 
-TEST(Framing, ErrorNames) {
-  EXPECT_STREQ(FrameErrorName(FrameError::kOk), "ok");
-  EXPECT_STREQ(FrameErrorName(FrameError::kTooLarge), "too_large");
-}
-
 }  // namespace
 }  // namespace turf::simspark

@@ -120,17 +120,6 @@ TEST(SExpr, AtomsOutsideListsAreRefused) {
   ExpectError("(syn) x", SExprError::kTopLevelAtom, 6);
 }
 
-TEST(SExpr, ErrorNames) {
-  EXPECT_STREQ(SExprErrorName(SExprError::kOk), "ok");
-  EXPECT_STREQ(SExprErrorName(SExprError::kUnbalancedOpen), "unbalanced_open");
-  EXPECT_STREQ(SExprErrorName(SExprError::kUnbalancedClose), "unbalanced_close");
-  EXPECT_STREQ(SExprErrorName(SExprError::kTooDeep), "too_deep");
-  EXPECT_STREQ(SExprErrorName(SExprError::kTooManyNodes), "too_many_nodes");
-  EXPECT_STREQ(SExprErrorName(SExprError::kAtomTooLong), "atom_too_long");
-  EXPECT_STREQ(SExprErrorName(SExprError::kBadByte), "bad_byte");
-  EXPECT_STREQ(SExprErrorName(SExprError::kTopLevelAtom), "top_level_atom");
-}
-
 TEST(SExprNumbers, DecimalNumbersParseWhole) {
   struct Case {
     const char* text;
