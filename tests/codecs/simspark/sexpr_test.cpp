@@ -66,14 +66,27 @@ void ExpectError(std::string_view text, SExprError error, size_t offset, const S
   EXPECT_TRUE(p.exprs.empty()) << text;  // all or nothing
 }
 
-TEST(SExpr, UnbalancedOpenReportsTheEnd) {
-  ExpectError("(syn)(he1 1", SExprError::kUnbalancedOpen, 11);
-  ExpectError("(", SExprError::kUnbalancedOpen, 1);
-}
-
-TEST(SExpr, UnbalancedCloseReportsItsByte) {
-  ExpectError("(syn))", SExprError::kUnbalancedClose, 5);
-  ExpectError(")", SExprError::kUnbalancedClose, 0);
+// Each refusal names the byte it stopped at: an unclosed list at the end, an extra ')' at itself, a byte outside
+// printable ASCII at itself, an atom outside any list at its first byte.
+TEST(SExpr, RefusalsReportTheirByte) {
+  const struct {
+    std::string text;
+    SExprError error;
+    size_t offset;
+  } kCases[] = {
+      {"(syn)(he1 1", SExprError::kUnbalancedOpen, 11},
+      {"(", SExprError::kUnbalancedOpen, 1},
+      {"(syn))", SExprError::kUnbalancedClose, 5},
+      {")", SExprError::kUnbalancedClose, 0},
+      {std::string("(say a\0b)", 9), SExprError::kBadByte, 6},
+      {"(say \x80)", SExprError::kBadByte, 5},
+      {"(say \xff)", SExprError::kBadByte, 5},
+      {"\x01(syn)", SExprError::kBadByte, 0},
+      {"(syn)\x7f", SExprError::kBadByte, 5},
+      {"syn", SExprError::kTopLevelAtom, 0},
+      {"(syn) x", SExprError::kTopLevelAtom, 6},
+  };
+  for (const auto& c : kCases) ExpectError(c.text, c.error, c.offset);
 }
 
 TEST(SExpr, DepthIsLimited) {
@@ -105,19 +118,6 @@ TEST(SExpr, AtomLengthIsLimited) {
   ASSERT_EQ(p.error, SExprError::kOk);
   EXPECT_EQ(p.exprs[0].items[0].atom.size(), 256u);
   ExpectError("(say " + std::string(257, 'a') + ")", SExprError::kAtomTooLong, 5);
-}
-
-TEST(SExpr, BytesOutsidePrintableAsciiAreRefused) {
-  ExpectError(std::string("(say a\0b)", 9), SExprError::kBadByte, 6);
-  ExpectError("(say \x80)", SExprError::kBadByte, 5);
-  ExpectError("(say \xff)", SExprError::kBadByte, 5);
-  ExpectError("\x01(syn)", SExprError::kBadByte, 0);
-  ExpectError("(syn)\x7f", SExprError::kBadByte, 5);
-}
-
-TEST(SExpr, AtomsOutsideListsAreRefused) {
-  ExpectError("syn", SExprError::kTopLevelAtom, 0);
-  ExpectError("(syn) x", SExprError::kTopLevelAtom, 6);
 }
 
 TEST(SExprNumbers, DecimalNumbersParseWhole) {
