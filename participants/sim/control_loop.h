@@ -34,6 +34,7 @@
 #include "core/legged/legged_world.h"
 #include "core/types.h"
 #include "dds/participant.h"
+#include "loader/realism_change.h"
 #include "participants/common/process.h"
 #include "participants/common/wakeup.h"
 #include "participants/sim/node_options.h"
@@ -74,7 +75,8 @@ class ControlLoop {
     virtual ControlAnswer ApplyStepCommands(const idl::SimControl& request) = 0;
     virtual ControlAnswer TeleportBall(const idl::SimControl& request) = 0;
     virtual ControlAnswer TeleportRobot(const idl::SimControl& request) = 0;
-    virtual ControlAnswer ChangeRealism(const std::string& spec) = 0;
+    // OP_SET_REALISM, typed (loader/realism_change.h: ApplyRealismChange).
+    virtual ControlAnswer ChangeRealism(const RealismChange& change) = 0;
     // The world back to the scene's start (the loop cancels pending steps).
     virtual void ResetWorld() = 0;
     virtual void ReportStatus() const = 0;
