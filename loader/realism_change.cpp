@@ -29,7 +29,9 @@ RealismChangeResult ApplyRealismChange(const SensorRealism& current, const Reali
   if (!change.preset.empty()) {
     std::error_code ec;
     if (!PlainName(change.preset) || !std::filesystem::is_regular_file(preset_dir + "/" + change.preset + ".yaml", ec))
-      return refuse(Error::kUnknownPreset, fmt::format("no realism preset \"{}\"", change.preset));
+      return refuse(Error::kUnknownPreset,
+                    fmt::format("no realism preset \"{}\"",
+                                change.preset.size() <= 64 ? change.preset : change.preset.substr(0, 64) + "..."));
     const RealismLoadResult loaded = LoadRealism(change.preset, preset_dir, /*allow_paths=*/false);
     if (!loaded.realism)
       return refuse(Error::kInvalidRealism, fmt::format("realism preset \"{}\": {}", change.preset,

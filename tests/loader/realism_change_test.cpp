@@ -190,6 +190,7 @@ TEST(RealismChange, RefusalsChangeNothingAndNameTheCulprit) {
       {{"/etc/passwd", {}}, Error::kUnknownPreset, "/etc/passwd"},
       {{"camera: {robot_vanish: 1}", {}}, Error::kUnknownPreset, "camera"},
       {{"harsh.yaml", {}}, Error::kUnknownPreset, "harsh.yaml"},
+      {{std::string(1000, 'x'), {}}, Error::kUnknownPreset, "xxx..."},  // quoted, but not at length
       {{"", {Value(RealismField::kCommandLoss, 0.1), Value(RealismField::kCameraLinkLatency, NAN)}},
        Error::kNotFinite,
        "camera.link.latency"},
@@ -208,6 +209,7 @@ TEST(RealismChange, RefusalsChangeNothingAndNameTheCulprit) {
     const RealismChangeResult r = ApplyRealismChange(current, b.change);
     EXPECT_EQ(r.error, b.error) << DescribeRealismChange(b.change) << ": " << r.reason;
     EXPECT_NE(r.reason.find(b.named), std::string::npos) << r.reason;
+    EXPECT_LT(r.reason.size(), 200u);
     for (const RealismFieldInfo& info : kRealismFields)
       EXPECT_EQ(GetRealismField(r.realism, info.field), GetRealismField(current, info.field)) << info.name;
   }
