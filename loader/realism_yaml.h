@@ -1,6 +1,9 @@
 // Sensor realism from YAML: the presets in configs/realism/ (ideal, realistic,
-// harsh), a scene's `realism:` section, and run-time changes sent to turf-sim.
-// Untrusted input: every problem is an error naming its key; never throws.
+// harsh), a scene's `realism:` section and turf-sim's --realism. Run-time
+// changes over the network are typed, not YAML (loader/realism_change.h); the
+// keys are the dotted names of core/realism_fields.h's table (a test reads
+// every row back through this loader). Every problem is an error naming its
+// key; never throws.
 //
 // Schema (every key optional, absent = ideal; SI units):
 //   camera:  {robot_position_stddev, robot_orientation_stddev, ball_position_stddev,

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include <vector>
+#include <optional>
 
 namespace turf::simproto {
 
@@ -17,10 +17,37 @@ bool IsErForce(const std::string& type_url) {
           type_url[type_url.size() - name.size() - 1] == '/');
 }
 
+// One ER-Force knob: its turf parameter, the factor to SI units and the
+// largest value the codec accepts (in ER-Force's units; turf-sim checks the
+// result against its own ranges too).
+struct Knob {
+  const char* name;
+  idl::RealismParameter parameter;
+  double scale;
+  double max;
+  std::optional<double> (*read)(const ws::RealismConfigErForce&);
+};
+
+#define TURF_KNOB(knob) \
+  [](const ws::RealismConfigErForce& e) { return e.has_##knob() ? std::optional<double>(e.knob()) : std::nullopt; }
+
+const Knob kErForceKnobs[] = {
+    {"stddev_ball_p", idl::REALISM_CAMERA_BALL_POSITION_STDDEV, 1.0, 1.0, TURF_KNOB(stddev_ball_p)},
+    {"stddev_robot_p", idl::REALISM_CAMERA_ROBOT_POSITION_STDDEV, 1.0, 1.0, TURF_KNOB(stddev_robot_p)},
+    {"stddev_robot_phi", idl::REALISM_CAMERA_ROBOT_ORIENTATION_STDDEV, 1.0, 3.1416, TURF_KNOB(stddev_robot_phi)},
+    {"missing_ball_detections", idl::REALISM_CAMERA_BALL_VANISH, 1.0, 1.0, TURF_KNOB(missing_ball_detections)},
+    {"vision_processing_time", idl::REALISM_CAMERA_PROCESSING_DELAY, 1e-9, 1e10, TURF_KNOB(vision_processing_time)},
+    {"vision_delay", idl::REALISM_CAMERA_LINK_LATENCY, 1e-9, 1e10, TURF_KNOB(vision_delay)},
+    {"robot_command_loss", idl::REALISM_COMMAND_LOSS, 1.0, 1.0, TURF_KNOB(robot_command_loss)},
+    {"enable_invisible_ball", idl::REALISM_CAMERA_BALL_OCCLUSION, 1.0, 1.0, TURF_KNOB(enable_invisible_ball)},
+};
+
+#undef TURF_KNOB
+
 }  // namespace
 
-std::string RealismYaml(const ws::RealismConfig& config, Problems* p) {
-  std::vector<std::string> camera, link, command;
+std::vector<idl::RealismValue> RealismValues(const ws::RealismConfig& config, Problems* p) {
+  std::vector<idl::RealismValue> values;
   for (int i = 0; i < config.custom_size(); ++i) {
     const auto& any = config.custom(i);
     if (!IsErForce(any.type_url())) {
@@ -34,23 +61,14 @@ std::string RealismYaml(const ws::RealismConfig& config, Problems* p) {
       p->Add(DecodeError::kMalformed, fmt::format("config.realism_config.custom[{}]: not a RealismConfigErForce", i));
       continue;
     }
-    auto number = [&](bool has, double value, double hi, const char* knob, std::vector<std::string>* out,
-                      const char* key, double scale) {
-      if (!has || !p->Check(value, 0.0, hi, fmt::format("realism_config.{}", knob))) return;
-      out->push_back(fmt::format("{}: {}", key, value * scale));
-    };
-    number(e.has_stddev_ball_p(), e.stddev_ball_p(), 1.0, "stddev_ball_p", &camera, "ball_position_stddev", 1.0);
-    number(e.has_stddev_robot_p(), e.stddev_robot_p(), 1.0, "stddev_robot_p", &camera, "robot_position_stddev", 1.0);
-    number(e.has_stddev_robot_phi(), e.stddev_robot_phi(), 3.1416, "stddev_robot_phi", &camera,
-           "robot_orientation_stddev", 1.0);
-    number(e.has_missing_ball_detections(), e.missing_ball_detections(), 1.0, "missing_ball_detections", &camera,
-           "ball_vanish", 1.0);
-    number(e.has_vision_processing_time(), static_cast<double>(e.vision_processing_time()), 1e10,
-           "vision_processing_time", &camera, "processing_delay", 1e-9);
-    number(e.has_vision_delay(), static_cast<double>(e.vision_delay()), 1e10, "vision_delay", &link, "latency", 1e-9);
-    number(e.has_robot_command_loss(), e.robot_command_loss(), 1.0, "robot_command_loss", &command, "loss", 1.0);
-    if (e.has_enable_invisible_ball())
-      camera.push_back(fmt::format("ball_occlusion: {}", e.enable_invisible_ball() ? "true" : "false"));
+    for (const Knob& knob : kErForceKnobs) {
+      const std::optional<double> v = knob.read(e);
+      if (!v || !p->Check(*v, 0.0, knob.max, fmt::format("realism_config.{}", knob.name))) continue;
+      idl::RealismValue value;
+      value.parameter(knob.parameter);
+      value.value(*v * knob.scale);
+      values.push_back(value);
+    }
     const std::pair<bool, const char*> unsupported[] = {
         {e.has_stddev_ball_area(), "stddev_ball_area"},
         {e.has_ball_visibility_threshold(), "ball_visibility_threshold"},
@@ -62,11 +80,7 @@ std::string RealismYaml(const ws::RealismConfig& config, Problems* p) {
     for (const auto& [present, name] : unsupported)
       if (present) p->AddUnsupported(kUnsupportedRealism, fmt::format("realism_config.{}: not modelled by turf", name));
   }
-  if (!link.empty()) camera.push_back(fmt::format("link: {{{}}}", fmt::join(link, ", ")));
-  std::string yaml;
-  if (!camera.empty()) yaml += fmt::format("camera: {{{}}}\n", fmt::join(camera, ", "));
-  if (!command.empty()) yaml += fmt::format("command: {{{}}}\n", fmt::join(command, ", "));
-  return yaml;
+  return values;
 }
 
 }  // namespace turf::simproto

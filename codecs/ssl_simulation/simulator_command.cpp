@@ -200,10 +200,10 @@ void ConvertConfig(const ws::SimulatorConfig& config, Problems* p, std::vector<i
   if (config.has_geometry()) p->AddUnsupported(kUnsupportedGeometry, "config.geometry: " + immutable);
   if (config.robot_specs_size() > 0) p->AddUnsupported(kUnsupportedRobotSpecs, "config.robot_specs: " + immutable);
   if (config.has_realism_config()) {
-    const std::string yaml = RealismYaml(config.realism_config(), p);
-    if (!yaml.empty()) {
+    std::vector<idl::RealismValue> values = RealismValues(config.realism_config(), p);
+    if (!values.empty()) {
       idl::SimControl c = Request(idl::OP_SET_REALISM);
-      c.realism(yaml);
+      c.realism_values(std::move(values));
       out->push_back(c);
     }
   }

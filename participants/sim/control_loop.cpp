@@ -28,6 +28,24 @@ TURF_ERRORS(TURF_ERROR_MATCHES_IDL)
 
 idl::ControlError ControlErrorOf(Error error) { return static_cast<idl::ControlError>(error); }
 
+// Every realism parameter is the IDL constant of the same value (the IDL's count
+// is checked by tests/loader/realism_change_test.cpp, which reads the IDL).
+#define TURF_REALISM_FIELD_MATCHES_IDL(e, name, idl_constant, member, unit, min, max, meaning) \
+  static_assert(static_cast<int>(RealismField::e) == static_cast<int>(idl::idl_constant), name);
+TURF_REALISM_FIELDS(TURF_REALISM_FIELD_MATCHES_IDL)
+#undef TURF_REALISM_FIELD_MATCHES_IDL
+
+namespace {
+
+RealismChange RealismChangeOf(const idl::SimControl& request) {
+  RealismChange change{request.realism_preset(), {}};
+  for (const idl::RealismValue& v : request.realism_values())
+    change.values.push_back({static_cast<uint32_t>(v.parameter()), v.value()});
+  return change;
+}
+
+}  // namespace
+
 std::unique_ptr<dds::Bus> MakeNodeParticipant(const SimNodeOptions& options) {
   return std::make_unique<dds::Participant>(
       dds::ParticipantOptions{options.domain, options.name, options.prefix, options.qos_file});
@@ -123,7 +141,7 @@ void ControlLoop::HandleControl(const idl::SimControl& request) {
       answer = SetTimeMode(request.time_mode(), request.speed());
       break;
     case idl::OP_SET_REALISM:
-      answer = node_.ChangeRealism(request.realism());
+      answer = node_.ChangeRealism(RealismChangeOf(request));
       break;
     default:
       answer = {idl::CONTROL_UNKNOWN_OP, fmt::format("unknown op {}", static_cast<int>(request.op()))};

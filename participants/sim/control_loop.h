@@ -35,6 +35,7 @@
 #include "core/pinned.h"
 #include "core/types.h"
 #include "dds/bus.h"
+#include "loader/realism_change.h"
 #include "participants/common/overflow_watch.h"
 #include "participants/common/process.h"
 #include "participants/common/wakeup.h"
@@ -80,7 +81,8 @@ class ControlLoop : Pinned {
     virtual ControlAnswer ApplyStepCommands(const idl::SimControl& request) = 0;
     virtual ControlAnswer TeleportBall(const idl::SimControl& request) = 0;
     virtual ControlAnswer TeleportRobot(const idl::SimControl& request) = 0;
-    virtual ControlAnswer ChangeRealism(const std::string& spec) = 0;
+    // OP_SET_REALISM, typed (loader/realism_change.h: ApplyRealismChange).
+    virtual ControlAnswer ChangeRealism(const RealismChange& change) = 0;
     // The world back to the scene's start (the loop cancels pending steps).
     virtual void ResetWorld() = 0;
     virtual void ReportStatus() const = 0;

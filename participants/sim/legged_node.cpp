@@ -110,13 +110,11 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
     return {ControlErrorOf(e), fmt::format("robot '{}': {}", t.robot(), ErrorName(e))};
   }
 
-  ControlAnswer ChangeRealism(const std::string& spec) override {
-    // From the network: preset names and YAML text only, never file paths.
-    const RealismLoadResult loaded = LoadRealism(spec, DefaultRealismDir(), /*allow_paths=*/false, kernel_.realism());
-    if (!loaded.realism)
-      return {idl::CONTROL_INVALID_REALISM, loaded.errors.empty() ? "invalid realism" : loaded.errors.front()};
-    if (std::string e = kernel_.SetRealism(*loaded.realism); !e.empty()) return {idl::CONTROL_INVALID_REALISM, e};
-    spdlog::info("sensor realism changed ({})", spec.size() < 40 ? spec : spec.substr(0, 40) + "...");
+  ControlAnswer ChangeRealism(const RealismChange& change) override {
+    const RealismChangeResult changed = ApplyRealismChange(kernel_.realism(), change, DefaultRealismDir());
+    if (!changed.ok()) return {ControlErrorOf(changed.error), changed.reason};
+    if (std::string e = kernel_.SetRealism(changed.realism); !e.empty()) return {idl::CONTROL_INVALID_REALISM, e};
+    spdlog::info("sensor realism changed ({})", DescribeRealismChange(change));
     return {};
   }
 

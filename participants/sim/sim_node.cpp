@@ -116,13 +116,11 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
     }
   }
 
-  ControlAnswer ChangeRealism(const std::string& spec) override {
-    // From the network: preset names and YAML text only, never file paths.
-    const RealismLoadResult loaded = LoadRealism(spec, realism_dir_, /*allow_paths=*/false, kernel_.realism());
-    if (!loaded.realism)
-      return {idl::CONTROL_INVALID_REALISM, loaded.errors.empty() ? "invalid realism" : loaded.errors.front()};
-    if (std::string e = kernel_.SetRealism(*loaded.realism); !e.empty()) return {idl::CONTROL_INVALID_REALISM, e};
-    spdlog::info("sensor realism changed ({})", spec.size() < 40 ? spec : spec.substr(0, 40) + "...");
+  ControlAnswer ChangeRealism(const RealismChange& change) override {
+    const RealismChangeResult changed = ApplyRealismChange(kernel_.realism(), change, realism_dir_);
+    if (!changed.ok()) return {ControlErrorOf(changed.error), changed.reason};
+    if (std::string e = kernel_.SetRealism(changed.realism); !e.empty()) return {idl::CONTROL_INVALID_REALISM, e};
+    spdlog::info("sensor realism changed ({})", DescribeRealismChange(change));
     return {};
   }
 

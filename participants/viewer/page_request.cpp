@@ -320,7 +320,7 @@ void Realism(Fields& in, PageRequest* out) {
   for (const char* p : kPresets) {
     if (preset != p) continue;
     out->control.op(idl::OP_SET_REALISM);
-    out->control.realism(preset);
+    out->control.realism_preset(preset);
     return;
   }
   in.Fail(PageError::kUnknownPreset,

@@ -31,9 +31,9 @@ idl::SimControl BallAt(double x, double y) {
   return c;
 }
 
-idl::SimControl Realism(const std::string& spec) {
+idl::SimControl RealismPreset(const std::string& name) {
   idl::SimControl c = Op(idl::OP_SET_REALISM);
-  c.realism(spec);
+  c.realism_preset(name);
   return c;
 }
 
@@ -57,7 +57,7 @@ TEST(ControlClient, RepliesMatchTheirRequestsAmongInterleavedClients) {
   // Interleaved on the wire: a, b, a, b; each asks something with its own answer.
   const uint64_t a1 = a.client.Send(BallAt(1.0, 0.5), kCall);
   const uint64_t b1 = b.client.Send(BallAt(std::nan(""), 0.0), kCall);
-  const uint64_t a2 = a.client.Send(Realism("no_such_preset"), kCall);
+  const uint64_t a2 = a.client.Send(RealismPreset("no_such_preset"), kCall);
   const uint64_t b2 = b.client.Send(Step(10), kCall);
 
   const dds::ControlOutcome ra2 = a.client.Wait(a2);  // out of order on purpose
@@ -77,7 +77,7 @@ TEST(ControlClient, RepliesMatchTheirRequestsAmongInterleavedClients) {
   EXPECT_EQ(rb1.code(), idl::CONTROL_NOT_FINITE);
   EXPECT_EQ(ra2.reply->request_id(), a2);
   EXPECT_EQ(ra2.reply->op(), idl::OP_SET_REALISM);
-  EXPECT_EQ(ra2.code(), idl::CONTROL_INVALID_REALISM);
+  EXPECT_EQ(ra2.code(), idl::CONTROL_UNKNOWN_PRESET);
   EXPECT_EQ(rb2.reply->request_id(), b2);
   EXPECT_EQ(rb2.reply->op(), idl::OP_STEP);
   EXPECT_TRUE(rb2.ok()) << rb2.Describe();
@@ -104,8 +104,13 @@ TEST(ControlClient, RefusalsCarryTheirCode) {
   EXPECT_EQ(o.code(), idl::CONTROL_NOT_FINITE) << o.Describe();
   o = t.client.Call(BallAt(100.0, 0.0), kCall);
   EXPECT_EQ(o.code(), idl::CONTROL_OUTSIDE_FIELD) << o.Describe();
-  o = t.client.Call(Realism("camera: {bogus: 1}"), kCall);
-  EXPECT_EQ(o.code(), idl::CONTROL_INVALID_REALISM) << o.Describe();
+  idl::SimControl realism = Op(idl::OP_SET_REALISM);
+  idl::RealismValue vanish;
+  vanish.parameter(idl::REALISM_CAMERA_ROBOT_VANISH);
+  vanish.value(1.5);
+  realism.realism_values({vanish});
+  o = t.client.Call(realism, kCall);
+  EXPECT_EQ(o.code(), idl::CONTROL_OUT_OF_RANGE) << o.Describe();
   EXPECT_FALSE(o.reply->reason().empty());
 
   idl::SimControl robot = Op(idl::OP_TELEPORT_ROBOT);

@@ -312,21 +312,29 @@ TEST(LeggedDdsTest, SetRealismModelsTheEncoders) {
   client.Command("nao_1", "hj1", idl::JOINT_VELOCITY, 0.37);
   idl::SimControl req;
   req.op(idl::OP_SET_REALISM);
-  req.realism("encoder: {resolution: 0.05}");
+  idl::RealismValue resolution;
+  resolution.parameter(idl::REALISM_ENCODER_RESOLUTION);
+  resolution.value(0.05);
+  req.realism_values({resolution});
   auto reply = client.Control(req);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_OK) << reply->reason();
   const uint64_t after = reply->frame();
   ASSERT_TRUE(client.WaitFor([&] { return client.joints["nao_1"].frame() > after + 10; }));
   for (double q : client.joints["nao_1"].position()) EXPECT_NEAR(q / 0.05, std::round(q / 0.05), 1e-9);
-  req.realism("/etc/passwd");  // never a path from the network
+  req.realism_preset("/etc/passwd");  // never a path from the network
   reply = client.Control(req);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
-  req.realism("encoder: {resolution: -1}");
+  EXPECT_EQ(reply->error(), idl::CONTROL_UNKNOWN_PRESET);
+  req.realism_preset("");
+  resolution.value(-1);
+  req.realism_values({resolution});
   reply = client.Control(req);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
+  EXPECT_EQ(reply->error(), idl::CONTROL_OUT_OF_RANGE);
+  EXPECT_NE(reply->reason().find("encoder.resolution"), std::string::npos) << reply->reason();
 }
 
 TEST(LeggedDdsTest, PauseStopsTimeAndStepAdvancesIt) {

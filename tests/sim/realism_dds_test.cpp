@@ -1,16 +1,29 @@
 // Sensor realism in turf-sim over DDS: run-time changes through the control
 // topic, modelled delays visible in the frames and the statistics topic,
 // command links, and reproducible sensor streams.
+#include <cmath>
+
 #include "tests/sim/sim_harness.h"
 
 namespace turf::test {
 namespace {
 
-idl::SimControl Realism(const std::string& spec) {
+idl::RealismValue Value(idl::RealismParameter parameter, double value) {
+  idl::RealismValue v;
+  v.parameter(parameter);
+  v.value(value);
+  return v;
+}
+
+// OP_SET_REALISM: typed values, applied after the preset if one is named.
+idl::SimControl Realism(std::vector<idl::RealismValue> values, const std::string& preset = "") {
   idl::SimControl c = Op(idl::OP_SET_REALISM);
-  c.realism(spec);
+  c.realism_preset(preset);
+  c.realism_values(std::move(values));
   return c;
 }
+
+idl::SimControl Preset(const std::string& name) { return Realism({}, name); }
 
 const idl::StreamStats* Stream(const idl::SensorStats& s, const std::string& name) {
   for (const auto& st : s.streams())
@@ -23,7 +36,8 @@ TEST(RealismDds, DelaysShowInFramesAndStatistics) {
   SimUnderTest sim(test::OneRobot(), dds, TimeMode::kScaled, 4.0);
   Client client(dds);
   ASSERT_TRUE(client.WaitMatched());
-  auto reply = client.Control(Realism("camera: {processing_delay: 0.020, link: {latency: 0.010}}"));
+  auto reply = client.Control(
+      Realism({Value(idl::REALISM_CAMERA_PROCESSING_DELAY, 0.020), Value(idl::REALISM_CAMERA_LINK_LATENCY, 0.010)}));
   ASSERT_TRUE(reply.has_value());
   ASSERT_EQ(reply->result(), idl::RESULT_OK) << reply->reason();
   const int64_t changed_at = reply->sim_time_ns();
@@ -78,7 +92,8 @@ TEST(RealismDds, CameraLossAndNoiseFollowTheSettings) {
   SimUnderTest sim(test::OneRobot(), dds, TimeMode::kLockstep);
   Client client(dds);
   ASSERT_TRUE(client.WaitMatched());
-  const auto reply = client.Control(Realism("camera: {robot_position_stddev: 0.01, link: {loss: 0.25}}"));
+  const auto reply = client.Control(
+      Realism({Value(idl::REALISM_CAMERA_ROBOT_POSITION_STDDEV, 0.01), Value(idl::REALISM_CAMERA_LINK_LOSS, 0.25)}));
   ASSERT_TRUE(Ok(reply));
   const int64_t t0 = reply->sim_time_ns();
   // 60 s in 100 ms chunks (six frames a camera), one more so every frame up to 60 s is in.
@@ -105,7 +120,7 @@ TEST(RealismDds, CommandLinkDelaysTheRobot) {
   SimUnderTest sim(test::OneRobot(), dds, TimeMode::kLockstep);
   Client client(dds);
   ASSERT_TRUE(client.WaitMatched());
-  ASSERT_TRUE(Ok(client.Control(Realism("command: {latency: 0.100}"))));
+  ASSERT_TRUE(Ok(client.Control(Realism({Value(idl::REALISM_COMMAND_LATENCY, 0.100)}))));
   // One STEP with a command, then step on: nothing moves for 100 ms.
   idl::SimControl step = Op(idl::OP_STEP);
   step.step_count(45);  // 90 ms
@@ -130,13 +145,32 @@ TEST(RealismDds, BadRealismRequestsAreRefused) {
   SimUnderTest sim(test::OneRobot(), dds, TimeMode::kScaled, 2.0);
   Client client(dds);
   ASSERT_TRUE(client.WaitMatched());
-  for (const char* spec : {"/etc/passwd", "nosuchpreset", "camera: {robot_vanish: 2}", "camera: {bogus: 1}"}) {
-    auto reply = client.Control(Realism(spec));
+  struct Bad {
+    idl::SimControl request;
+    idl::ControlError error;
+    const char* reason;  // part of the reply's reason
+  };
+  const Bad bad[] = {
+      {Preset("/etc/passwd"), idl::CONTROL_UNKNOWN_PRESET, "/etc/passwd"},
+      {Preset("nosuchpreset"), idl::CONTROL_UNKNOWN_PRESET, "nosuchpreset"},
+      {Preset("camera: {robot_vanish: 1}"), idl::CONTROL_UNKNOWN_PRESET, "camera"},
+      {Realism({Value(idl::REALISM_CAMERA_ROBOT_VANISH, 2.0)}), idl::CONTROL_OUT_OF_RANGE, "camera.robot_vanish"},
+      {Realism({Value(idl::REALISM_COMMAND_LOSS, 0.1), Value(idl::REALISM_CAMERA_LINK_LATENCY, NAN)}),
+       idl::CONTROL_NOT_FINITE, "camera.link.latency"},
+      {Realism({Value(static_cast<idl::RealismParameter>(999), 0.0)}), idl::CONTROL_UNKNOWN_ENUM, "999"},
+      {Realism({Value(idl::REALISM_COMMAND_JITTER_KIND, 7)}), idl::CONTROL_UNKNOWN_ENUM, "command.jitter_kind"},
+      {Realism({Value(idl::REALISM_COMMAND_BURST_P_BAD_TO_GOOD, 0.0), Value(idl::REALISM_COMMAND_BURST_ENABLED, 1)}),
+       idl::CONTROL_INVALID_REALISM, "p_bad_to_good"},
+  };
+  for (const Bad& b : bad) {
+    auto reply = client.Control(b.request);
     ASSERT_TRUE(reply.has_value());
-    EXPECT_EQ(reply->result(), idl::RESULT_REJECTED) << spec;
-    EXPECT_FALSE(reply->reason().empty());
+    EXPECT_EQ(reply->result(), idl::RESULT_REJECTED) << b.reason;
+    EXPECT_EQ(reply->error(), b.error) << reply->reason();
+    EXPECT_NE(reply->reason().find(b.reason), std::string::npos) << reply->reason();
   }
-  EXPECT_TRUE(Ok(client.Control(Realism("harsh"))));
+  EXPECT_TRUE(Ok(client.Control(Preset("harsh"))));
+  EXPECT_TRUE(Ok(client.Control(Realism({Value(idl::REALISM_CAMERA_LINK_LOSS, 0.0)}, "realistic"))));
 }
 
 TEST(RealismDds, DeadlineFlagsAStalledCamera) {
@@ -169,7 +203,7 @@ std::vector<idl::CameraFrame> LockstepFrames(const Scene& scene, const char* nam
   SimUnderTest sim(scene, dds, TimeMode::kLockstep);
   Client client(dds);
   EXPECT_TRUE(client.WaitMatched());
-  EXPECT_TRUE(Ok(client.Control(Realism("realistic"))));
+  EXPECT_TRUE(Ok(client.Control(Preset("realistic"))));
   for (int i = 0; i < 20; ++i) {
     idl::SimControl step = Op(idl::OP_STEP);
     step.step_count(25);

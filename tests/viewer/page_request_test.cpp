@@ -89,7 +89,8 @@ TEST(PageRequest, SimulationOps) {
   EXPECT_EQ(Parse(R"({"op":"time_mode","mode":"realtime"})").control.time_mode(), idl::TIME_REALTIME);
   const PageRequest realism = Parse(R"({"op":"realism","preset":"harsh"})");
   EXPECT_EQ(realism.control.op(), idl::OP_SET_REALISM);
-  EXPECT_EQ(realism.control.realism(), "harsh");
+  EXPECT_EQ(realism.control.realism_preset(), "harsh");
+  EXPECT_TRUE(realism.control.realism_values().empty());
 }
 
 TEST(PageRequest, TeleportsNeedTheField) {

@@ -260,11 +260,23 @@ TEST_F(SimulatorCommandCodec, ErForceRealismKnobsBecomeARealismRequest) {
   ASSERT_EQ(d.error, DecodeError::kOk);
   ASSERT_EQ(d.requests.size(), 1u);
   EXPECT_EQ(d.requests[0].op(), idl::OP_SET_REALISM);
-  const std::string& yaml = d.requests[0].realism();
-  for (const char* part :
-       {"robot_position_stddev: 0.002", "ball_position_stddev: 0.003", "ball_vanish: 0.05", "processing_delay: 0.01",
-        "link: {latency: 0.035}", "ball_occlusion: true", "command: {loss: 0.1"})
-    EXPECT_NE(yaml.find(part), std::string::npos) << part << " in\n" << yaml;
+  // One typed value per knob, in the codec's table order, in turf's SI units;
+  // no preset (only the named settings change).
+  EXPECT_EQ(d.requests[0].realism_preset(), "");
+  const std::vector<std::pair<idl::RealismParameter, double>> expected = {
+      {idl::REALISM_CAMERA_BALL_POSITION_STDDEV, 0.003f},   // stddev_ball_p
+      {idl::REALISM_CAMERA_ROBOT_POSITION_STDDEV, 0.002f},  // stddev_robot_p
+      {idl::REALISM_CAMERA_BALL_VANISH, 0.05f},             // missing_ball_detections
+      {idl::REALISM_CAMERA_PROCESSING_DELAY, 0.010},        // vision_processing_time, 10 ms in ns
+      {idl::REALISM_CAMERA_LINK_LATENCY, 0.035},            // vision_delay, 35 ms in ns
+      {idl::REALISM_COMMAND_LOSS, 0.1f},                    // robot_command_loss
+      {idl::REALISM_CAMERA_BALL_OCCLUSION, 1.0}};           // enable_invisible_ball
+  const auto& values = d.requests[0].realism_values();
+  ASSERT_EQ(values.size(), expected.size());
+  for (size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(values[i].parameter(), expected[i].first) << i;
+    EXPECT_DOUBLE_EQ(values[i].value(), expected[i].second) << i;
+  }
   ASSERT_EQ(d.errors.size(), 1u);
   EXPECT_EQ(d.errors[0].code, kUnsupportedRealism);
   EXPECT_NE(d.errors[0].message.find("camera_overlap"), std::string::npos);
@@ -272,6 +284,49 @@ TEST_F(SimulatorCommandCodec, ErForceRealismKnobsBecomeARealismRequest) {
   e.set_stddev_robot_p(NAN);
   any->set_value(e.SerializeAsString());
   EXPECT_EQ(Convert(c).error, DecodeError::kNotFinite);
+}
+
+// Each knob alone: its one parameter and value (the mapping table row by row).
+TEST_F(SimulatorCommandCodec, EachErForceKnobMapsToItsParameter) {
+  struct Case {
+    const char* knob;
+    void (*set)(ws::RealismConfigErForce*);
+    idl::RealismParameter parameter;
+    double value;
+  };
+  const Case cases[] = {
+      {"stddev_ball_p", [](ws::RealismConfigErForce* e) { e->set_stddev_ball_p(0.5f); },
+       idl::REALISM_CAMERA_BALL_POSITION_STDDEV, 0.5},
+      {"stddev_robot_p", [](ws::RealismConfigErForce* e) { e->set_stddev_robot_p(0.25f); },
+       idl::REALISM_CAMERA_ROBOT_POSITION_STDDEV, 0.25},
+      {"stddev_robot_phi", [](ws::RealismConfigErForce* e) { e->set_stddev_robot_phi(0.125f); },
+       idl::REALISM_CAMERA_ROBOT_ORIENTATION_STDDEV, 0.125},
+      {"enable_invisible_ball", [](ws::RealismConfigErForce* e) { e->set_enable_invisible_ball(false); },
+       idl::REALISM_CAMERA_BALL_OCCLUSION, 0.0},
+      {"missing_ball_detections", [](ws::RealismConfigErForce* e) { e->set_missing_ball_detections(0.75f); },
+       idl::REALISM_CAMERA_BALL_VANISH, 0.75},
+      {"vision_delay", [](ws::RealismConfigErForce* e) { e->set_vision_delay(2'000'000'000); },
+       idl::REALISM_CAMERA_LINK_LATENCY, 2.0},
+      {"vision_processing_time", [](ws::RealismConfigErForce* e) { e->set_vision_processing_time(5'000'000); },
+       idl::REALISM_CAMERA_PROCESSING_DELAY, 0.005},
+      {"robot_command_loss", [](ws::RealismConfigErForce* e) { e->set_robot_command_loss(0.5f); },
+       idl::REALISM_COMMAND_LOSS, 0.5},
+  };
+  for (const Case& k : cases) {
+    ws::SimulatorCommand c;
+    ws::RealismConfigErForce e;
+    k.set(&e);
+    auto* any = c.mutable_config()->mutable_realism_config()->add_custom();
+    any->set_type_url("type.googleapis.com/RealismConfigErForce");
+    any->set_value(e.SerializeAsString());
+    const SimulatorCommandDecode d = Convert(c);
+    ASSERT_EQ(d.error, DecodeError::kOk) << k.knob;
+    ASSERT_EQ(d.requests.size(), 1u) << k.knob;
+    ASSERT_EQ(d.requests[0].realism_values().size(), 1u) << k.knob;
+    EXPECT_EQ(d.requests[0].realism_values()[0].parameter(), k.parameter) << k.knob;
+    EXPECT_DOUBLE_EQ(d.requests[0].realism_values()[0].value(), k.value) << k.knob;
+    EXPECT_TRUE(d.errors.empty()) << k.knob;
+  }
 }
 
 TEST_F(SimulatorCommandCodec, UnsupportedConfigIsNamedAndTheRestApplies) {
