@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "dds/topics.h"
+#include "tests/support/source_files.h"
 
 namespace turf {
 namespace {
@@ -31,13 +32,6 @@ static_assert(std::is_convertible_v<decltype(dds::Topic::kWorldState), dds::Topi
 static_assert(dds::Topic::kWorldState.id() == dds::TopicId::kWorldState);
 static_assert(dds::Topic(dds::Topic::kClock) != dds::Topic(dds::Topic::kWorldState));
 static_assert(std::tuple_size_v<std::remove_cv_t<decltype(dds::kTypedTopics)>> == dds::kTopicCount);
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 TEST(Topics, EveryConstantIsItsOwnRowOfTheTable) {
   ASSERT_EQ(dds::kAllTopics.size(), dds::kTopicCount);
@@ -80,7 +74,7 @@ TEST(Topics, RowsAreCompleteAndNamesUnique) {
 // Every profile the table names is in the QoS file, for writers and readers. (dds_participant_tests also
 // creates every topic's writer and reader and checks that Fast DDS found the profiles.)
 TEST(Topics, EveryProfileIsInTheQosFile) {
-  const std::string qos = ReadFile(TURF_SOURCE_DIR "/configs/qos/turf_qos.xml");
+  const std::string qos = test::SourceFile("configs/qos/turf_qos.xml");
   ASSERT_FALSE(qos.empty());
   for (const dds::TopicInfo& info : dds::kTopics) {
     for (const char* kind : {"data_writer", "data_reader"}) {
@@ -119,19 +113,8 @@ TEST(Topics, MarkdownHasOneRowPerTopic) {
 // README.md's topic table is the generated one: the text between the markers must equal TopicsMarkdown().
 // To update it, paste the expected text this test prints.
 TEST(Topics, ReadmeTableIsTheGeneratedOne) {
-  const std::string begin = "<!-- topic-table: generated from dds/topics.h by dds::TopicsMarkdown() -->\n";
-  const std::string end = "<!-- /topic-table -->";
-  const std::string readme = ReadFile(TURF_SOURCE_DIR "/README.md");
-  const size_t from = readme.find(begin);
-  ASSERT_NE(from, std::string::npos) << "README.md has no line " << begin;
-  const size_t to = readme.find(end, from);
-  ASSERT_NE(to, std::string::npos) << "README.md has no line " << end << " after " << begin;
-  EXPECT_EQ(readme.find(begin, from + 1), std::string::npos) << "two topic tables in README.md";
-  const std::string expected = dds::TopicsMarkdown();
-  const std::string actual = readme.substr(from + begin.size(), to - from - begin.size());
-  EXPECT_EQ(actual, expected) << "README.md's topic table is not dds::TopicsMarkdown(); between the markers it "
-                                 "should read:\n"
-                              << begin << expected << end;
+  EXPECT_TRUE(test::ReadmeSectionIs("<!-- topic-table: generated from dds/topics.h by dds::TopicsMarkdown() -->\n",
+                                    "<!-- /topic-table -->", dds::TopicsMarkdown()));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // against what else names the parameters: the YAML loader's keys, CheckRealism's
 // ranges, the IDL's RealismParameter enum and README's table.
 #include "loader/realism_change.h"
+#include "tests/support/source_files.h"
 
 #include <gtest/gtest.h>
 
@@ -18,13 +19,6 @@
 
 namespace turf {
 namespace {
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 const char* JitterKindName(double v) {
   static const char* const kNames[] = {"gaussian", "uniform", "exponential"};
@@ -112,7 +106,7 @@ TEST(RealismTable, RangesAreCheckRealisms) {
 // idl/SimControl.idl's RealismParameter lists the table's IDL names, in order,
 // and nothing else (control_loop.cpp checks each value at compile time).
 TEST(RealismTable, IdlEnumIsTheTable) {
-  const std::string idl = ReadFile(TURF_SOURCE_DIR "/idl/SimControl.idl");
+  const std::string idl = test::SourceFile("idl/SimControl.idl");
   const size_t begin = idl.find("enum RealismParameter {");
   ASSERT_NE(begin, std::string::npos);
   const size_t end = idl.find("};", begin);
@@ -131,18 +125,9 @@ TEST(RealismTable, IdlEnumIsTheTable) {
 
 // README.md's realism table is the generated one; to update it, paste the text this test prints.
 TEST(RealismTable, ReadmeTableIsTheGeneratedOne) {
-  const std::string begin = "<!-- realism-table: generated from core/realism_fields.h by RealismFieldsMarkdown() -->\n";
-  const std::string end = "<!-- /realism-table -->";
-  const std::string readme = ReadFile(TURF_SOURCE_DIR "/README.md");
-  const size_t from = readme.find(begin);
-  ASSERT_NE(from, std::string::npos) << "README.md has no line " << begin;
-  const size_t to = readme.find(end, from);
-  ASSERT_NE(to, std::string::npos) << "README.md has no line " << end << " after " << begin;
-  EXPECT_EQ(readme.find(begin, from + 1), std::string::npos) << "two realism tables in README.md";
-  const std::string expected = RealismFieldsMarkdown();
-  EXPECT_EQ(readme.substr(from + begin.size(), to - from - begin.size()), expected)
-      << "README.md's realism table is not RealismFieldsMarkdown(); between the markers it should read:\n"
-      << begin << expected << end;
+  EXPECT_TRUE(
+      test::ReadmeSectionIs("<!-- realism-table: generated from core/realism_fields.h by RealismFieldsMarkdown() -->\n",
+                            "<!-- /realism-table -->", RealismFieldsMarkdown()));
 }
 
 RealismValue Value(RealismField field, double value) { return {static_cast<uint32_t>(field), value}; }
