@@ -6,11 +6,17 @@
 namespace turf::test {
 namespace {
 
-TEST(SimDds, CommandMovesRobotAsSeenInWorldState) {
-  const auto dds = UniqueDds("sim");
-  SimUnderTest sim(test::OneRobot(), dds, TimeMode::kScaled, 2.0);
-  Client client(dds);
-  ASSERT_TRUE(client.WaitMatched());
+// One blue robot at twice real time, and a client that turf-sim has matched.
+class SimDds : public ::testing::Test {
+ protected:
+  void SetUp() override { ASSERT_TRUE(client.WaitMatched()); }
+
+  const dds::ParticipantOptions dds = UniqueDds("sim");
+  SimUnderTest sim{test::OneRobot(), dds, TimeMode::kScaled, 2.0};
+  Client client{dds};
+};
+
+TEST_F(SimDds, CommandMovesRobotAsSeenInWorldState) {
   // Drive forward at 1 m/s, re-sending at ~60 Hz like a team, for 1.5 s of sim time.
   const auto cmd = LocalVelocity(idl::TEAM_BLUE, 0, 1.0, 0.0, 0.0);
   int64_t t_start = -1;
@@ -37,11 +43,7 @@ TEST(SimDds, CommandMovesRobotAsSeenInWorldState) {
   EXPECT_NEAR(r->position().y(), 0.0, 0.01);
 }
 
-TEST(SimDds, WatchdogStopsARobotWhoseCommandsStop) {
-  const auto dds = UniqueDds("sim");
-  SimUnderTest sim(test::OneRobot(), dds, TimeMode::kScaled, 2.0);
-  Client client(dds);
-  ASSERT_TRUE(client.WaitMatched());
+TEST_F(SimDds, WatchdogStopsARobotWhoseCommandsStop) {
   const auto cmd = LocalVelocity(idl::TEAM_BLUE, 0, 1.0, 0.0, 0.0);
   ASSERT_TRUE(client.WaitState([&](const idl::WorldState& s) {
     client.Command(cmd);
@@ -57,12 +59,7 @@ TEST(SimDds, WatchdogStopsARobotWhoseCommandsStop) {
   EXPECT_NEAR(r->linear_velocity().x(), 0.0, 0.01);
 }
 
-TEST(SimDds, ControlTeleportsPausesStepsAndResets) {
-  const auto dds = UniqueDds("sim");
-  SimUnderTest sim(test::OneRobot(), dds, TimeMode::kScaled, 2.0);
-  Client client(dds);
-  ASSERT_TRUE(client.WaitMatched());
-
+TEST_F(SimDds, ControlTeleportsPausesStepsAndResets) {
   auto pause = client.Control(Op(idl::OP_PAUSE));
   ASSERT_TRUE(pause.has_value());
   EXPECT_EQ(pause->result(), idl::RESULT_OK);
@@ -127,11 +124,7 @@ TEST(SimDds, ControlTeleportsPausesStepsAndResets) {
   }));
 }
 
-TEST(SimDds, BadSamplesAreCountedAndMoveNothing) {
-  const auto dds = UniqueDds("sim");
-  SimUnderTest sim(test::OneRobot(), dds, TimeMode::kScaled, 2.0);
-  Client client(dds);
-  ASSERT_TRUE(client.WaitMatched());
+TEST_F(SimDds, BadSamplesAreCountedAndMoveNothing) {
   auto nan = LocalVelocity(idl::TEAM_BLUE, 0, NAN, 0.0, 0.0);
   auto huge = LocalVelocity(idl::TEAM_BLUE, 0, 1e9, 0.0, 0.0);
   auto unknown = LocalVelocity(idl::TEAM_BLUE, 9, 1.0, 0.0, 0.0);
@@ -157,7 +150,7 @@ TEST(SimDds, BadSamplesAreCountedAndMoveNothing) {
   EXPECT_GT(sim.node().Rejected("command.team_mismatch"), 0u);
 }
 
-TEST(SimDds, CamerasReportWhatEachCameraSees) {
+TEST(SimDdsScenes, CamerasReportWhatEachCameraSees) {
   const auto dds = UniqueDds("sim");
   Scene scene = test::Teams(2);  // blue 0, 1 and yellow 0, 1
   SimUnderTest sim(scene, dds, TimeMode::kScaled, 2.0);
@@ -228,7 +221,7 @@ TEST(SimDds, CamerasReportWhatEachCameraSees) {
 
 // The same scene and the same lockstep command stream, run twice over DDS,
 // give identical worlds.
-TEST(SimDds, LockstepRunsAreIdentical) {
+TEST(SimDdsScenes, LockstepRunsAreIdentical) {
   auto run = [](const char* name) {
     const auto dds = UniqueDds(name);
     SimUnderTest sim(test::Teams(3), dds, TimeMode::kLockstep);
