@@ -41,16 +41,13 @@ InputError CheckBallTeleport(const BallTeleport& t, const Scene& scene) {
 }
 
 InputError CheckRobotTeleport(const RobotTeleport& t, const Scene& scene) {
-  if (!t.on_field) return InputError::kOk;  // parking needs no pose
-  if (!(Finite(t.x) && Finite(t.y) && Finite(t.orientation) && Finite(t.velocity))) return InputError::kNotFinite;
+  if (const InputProblem p = CheckPlacementValues(t); !p.ok()) return p.error;
+  if (!t.on_field) return InputError::kOk;  // parked: the pose is not used, but nonsense is still refused
   const FieldParams& f = scene.field;
   const double r = scene.robot.radius;
   if (std::abs(t.x) > f.length / 2 + f.boundary_width_goal_line - r ||
       std::abs(t.y) > f.width / 2 + f.boundary_width - r)
     return InputError::kOutsideField;
-  if (std::hypot(t.velocity.x, t.velocity.y) > kMaxTeleportSpeed || std::abs(t.velocity.z) > kMaxCommandAngularSpeed ||
-      std::abs(t.orientation) > 1e6)
-    return InputError::kOutOfRange;
   return InputError::kOk;
 }
 

@@ -138,8 +138,15 @@ GrsimError ConvertBall(const wire::grSim_BallReplacement& in, idl::SimControl* o
 
 GrsimError ConvertRobot(const wire::grSim_RobotReplacement& in, const GrsimCodecConfig& config, idl::SimControl* out,
                         std::string* field) {
-  GrsimError e = CheckFinite({{"x", in.x()}, {"y", in.y()}, {"dir", in.dir()}}, field);
-  if (e != GrsimError::kOk) return e;
+  // Every field, whatever turnon says: a robot taken off the field with x = 1e308 is a bad datagram too.
+  RobotTeleport placement;
+  placement.x = in.x();
+  placement.y = in.y();
+  placement.orientation = in.dir() * kDegToRad;
+  if (const InputProblem p = CheckPlacementValues(placement); !p.ok()) {
+    *field = std::string(p.field) == "orientation" ? "dir" : p.field;
+    return p.error;
+  }
   if (!KnownId(in.id(), config)) {
     *field = "id";
     return GrsimError::kUnknownRobot;

@@ -20,8 +20,6 @@ namespace {
 using idl::V2;
 using idl::V3;
 
-constexpr double kMaxOrientation = 1e6;  // rad, as turf-sim's check
-
 idl::SimControl Request(idl::ControlOp op) {
   idl::SimControl c;
   c.op(op);
@@ -51,7 +49,7 @@ void CheckInsideWalls(double x, double y, double radius, const idl::SslField* fi
 bool Coordinate(bool has, float value, const std::string& what, const double* current, Problems* p, double* out) {
   if (has) {
     *out = value;
-    return p->Check(value, -1e9, 1e9, what);  // finiteness; walls are checked on the pair
+    return p->Check(value, -kMaxPlacementCoordinate, kMaxPlacementCoordinate, what);  // walls: on the pair
   }
   if (current != nullptr) {
     *out = *current;
@@ -162,12 +160,15 @@ void ConvertRobot(const ws::TeleportRobot& in, int index, const ControlContext& 
   ok = Velocity(in.v_x(), in.v_y(), 0.0f, kMaxTeleportSpeed, who + ".v", p) && ok;
   ok = p->Check(in.v_angular(), -kMaxCommandAngularSpeed, kMaxCommandAngularSpeed, who + ".v_angular") && ok;
   if (!ok) return;
-  if (on_field) {
-    CheckInsideWalls(x, y, ctx.field != nullptr ? ctx.field->max_robot_radius() : 0.0, ctx.field, who, p);
-    if (std::abs(yaw) > kMaxOrientation) p->Add(DecodeError::kOutOfRange, who + ".orientation is absurd");
-    if (std::hypot(in.v_x(), in.v_y()) > kMaxTeleportSpeed)
-      p->Add(DecodeError::kOutOfRange, who + " speed above " + std::to_string(kMaxTeleportSpeed) + " m/s");
-  }
+  // The one placement check of every protocol (core/input_limits.h), on or off the field.
+  RobotTeleport placement;
+  placement.x = x;
+  placement.y = y;
+  placement.orientation = yaw;
+  placement.velocity = {in.v_x(), in.v_y(), in.v_angular()};
+  if (const InputProblem bad = CheckPlacementValues(placement); !bad.ok())
+    return p->Add(bad.error, who + "." + bad.field + " is outside its limits");
+  if (on_field) CheckInsideWalls(x, y, ctx.field != nullptr ? ctx.field->max_robot_radius() : 0.0, ctx.field, who, p);
   idl::SimControl c = Request(idl::OP_TELEPORT_ROBOT);
   c.robot().team(team);
   c.robot().id(id);

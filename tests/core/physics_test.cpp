@@ -410,12 +410,17 @@ TEST(Physics, BadCommandsAreRefusedAndMoveNothing) {
   EXPECT_EQ(w.TeleportBall({{0, NAN, 0}, {0, 0, 0}, false}), InputError::kNotFinite);
   EXPECT_EQ(w.TeleportRobot({Team::kBlue, 0, true, 0, 20, 0, {0, 0, 0}}), InputError::kOutsideField);
   EXPECT_EQ(w.TeleportRobot({Team::kYellow, 3, true, 0, 0, 0, {0, 0, 0}}), InputError::kUnknownRobot);
+  // Taking a robot off the field with nonsense in its pose is refused too (it stays on).
+  EXPECT_EQ(w.TeleportRobot({Team::kBlue, 0, false, 1e308, 0, 0, {0, 0, 0}}), InputError::kOutOfRange);
+  EXPECT_EQ(w.TeleportRobot({Team::kBlue, 0, false, 0, 0, 1e300, {0, 0, 0}}), InputError::kOutOfRange);
+  EXPECT_EQ(w.TeleportRobot({Team::kBlue, 0, false, 0, NAN, 0, {0, 0, 0}}), InputError::kNotFinite);
   const WorldSnapshot before = w.Snapshot();
   Advance(w, 1.0);
   const WorldSnapshot after = w.Snapshot();
   EXPECT_DOUBLE_EQ(Robot0(after).x, Robot0(before).x);
   EXPECT_DOUBLE_EQ(Robot0(after).y, Robot0(before).y);
   EXPECT_DOUBLE_EQ(after.ball.position.x, before.ball.position.x);
+  EXPECT_TRUE(Robot0(after).on_field);
 }
 
 TEST(Physics, RobotsTakenOffTheFieldAreParkedAndBackOnAgain) {

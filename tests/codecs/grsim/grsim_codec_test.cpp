@@ -270,6 +270,36 @@ TEST(GrsimCodec, NonFiniteAnywhereRefusesTheDatagram) {
   ExpectRefused(DecodeBytes(Bytes(robot)), GrsimError::kNotFinite, "replacement.robots[0].dir");
 }
 
+// A robot taken off the field (turnon = false) still carries a pose, and absurd values refuse the whole
+// datagram: x = 1e308 once took 20 of 22 robots off a match (issue: hardening a running match).
+TEST(GrsimCodec, AbsurdReplacementsAreRefusedWhateverTurnonSays) {
+  for (const bool turnon : {false, true}) {
+    const struct {
+      double x, y, dir;
+      const char* field;
+    } kBad[] = {{1e308, 0, 0, "x"}, {0, -2000, 0, "y"}, {0, 0, 1e300, "dir"}, {-1e4, 0, 0, "x"}};
+    for (const auto& b : kBad) {
+      wire::grSim_Packet packet;
+      wire::grSim_RobotReplacement good = Placed(0, false, 1.0, 1.0, 0.0);
+      wire::grSim_RobotReplacement bad = Placed(1, false, b.x, b.y, b.dir);
+      bad.set_turnon(turnon);
+      *packet.mutable_replacement()->add_robots() = good;
+      *packet.mutable_replacement()->add_robots() = bad;
+      ExpectRefused(DecodeBytes(Bytes(packet)), GrsimError::kOutOfRange,
+                    std::string("replacement.robots[1].") + b.field);
+    }
+  }
+  // Far but not absurd (some teams park removed robots well outside the field): taken off, as asked.
+  wire::grSim_Packet parked;
+  wire::grSim_RobotReplacement far = Placed(2, true, 500.0, -500.0, 720.0);
+  far.set_turnon(false);
+  *parked.mutable_replacement()->add_robots() = far;
+  const GrsimDecodeResult r = DecodeBytes(Bytes(parked));
+  ASSERT_TRUE(r.ok()) << GrsimErrorName(r.error) << " " << r.detail;
+  ASSERT_EQ(r.requests.controls.size(), 1u);
+  EXPECT_FALSE(r.requests.controls[0].robot().on_field());
+}
+
 TEST(GrsimCodec, UnknownRobotsAreRefused) {
   ExpectRefused(DecodeRobot(GrsimRobot(16)), GrsimError::kUnknownRobot, "id");
   ExpectRefused(DecodeRobot(GrsimRobot(4000000000u)), GrsimError::kUnknownRobot, "id");

@@ -179,6 +179,16 @@ TEST_F(SimulatorCommandCodec, BadValuesAnywhereRefuseEverything) {
   ExpectRefused(Convert(c), DecodeError::kNotFinite);
 
   c = with_good_ball();
+  Robot(&c, ws::BLUE, 1)->set_present(false);
+  c.mutable_control()->mutable_teleport_robot(0)->set_orientation(1e30f);  // absurd, even for a robot going off
+  ExpectRefused(Convert(c), DecodeError::kOutOfRange);
+
+  c = with_good_ball();
+  Robot(&c, ws::BLUE, 1)->set_present(false);
+  c.mutable_control()->mutable_teleport_robot(0)->set_x(5000.0f);  // beyond any field, on or off it
+  ExpectRefused(Convert(c), DecodeError::kOutOfRange);
+
+  c = with_good_ball();
   c.mutable_control()->mutable_teleport_ball()->set_x(6.6f);  // wall at 6.6 - ball radius
   ExpectRefused(Convert(c), DecodeError::kOutsideField);
 
