@@ -17,6 +17,7 @@
 #include "dds/control_client.h"
 #include "dds/participant.h"
 #include "participants/common/process.h"
+#include "participants/common/protobuf_log.h"
 #include "participants/common/udp.h"
 
 namespace turf {
@@ -268,7 +269,9 @@ class GrsimBridge::Impl {
   std::atomic<bool> field_known_{false};
 };
 
-GrsimBridge::GrsimBridge(GrsimBridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
+GrsimBridge::GrsimBridge(GrsimBridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
+  RouteProtobufLogs();
+}
 GrsimBridge::~GrsimBridge() = default;
 void GrsimBridge::Run(const std::function<bool()>& stop) { impl_->Run(stop); }
 uint16_t GrsimBridge::port() const { return impl_->port(); }

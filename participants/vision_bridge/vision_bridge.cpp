@@ -20,6 +20,7 @@
 #include "dds/participant.h"
 #include "participants/common/overflow_watch.h"
 #include "participants/common/process.h"
+#include "participants/common/protobuf_log.h"
 #include "participants/common/udp.h"
 #include "participants/common/wakeup.h"
 
@@ -369,7 +370,9 @@ class VisionBridge::Impl {
   std::atomic<uint64_t> tracked_sent_{0};
 };
 
-VisionBridge::VisionBridge(VisionBridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
+VisionBridge::VisionBridge(VisionBridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
+  RouteProtobufLogs();
+}
 VisionBridge::~VisionBridge() = default;
 void VisionBridge::Run(const std::function<bool()>& stop) { impl_->Run(stop); }
 VisionBridgeStats VisionBridge::Stats() const { return impl_->Stats(); }
