@@ -1,8 +1,11 @@
 #include "loader/realism_change.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <filesystem>
+
+#include "loader/realism_yaml.h"
 
 namespace turf {
 
@@ -30,8 +33,9 @@ RealismChangeResult ApplyRealismChange(const SensorRealism& current, const Reali
     std::error_code ec;
     if (!PlainName(change.preset) || !std::filesystem::is_regular_file(preset_dir + "/" + change.preset + ".yaml", ec))
       return refuse(Error::kUnknownPreset,
-                    fmt::format("no realism preset \"{}\"",
-                                change.preset.size() <= 64 ? change.preset : change.preset.substr(0, 64) + "..."));
+                    fmt::format("no realism preset \"{}\" (presets: {})",
+                                change.preset.size() <= 64 ? change.preset : change.preset.substr(0, 64) + "...",
+                                fmt::join(RealismPresets(preset_dir), ", ")));
     const RealismLoadResult loaded = LoadRealism(change.preset, preset_dir, /*allow_paths=*/false);
     if (!loaded.realism)
       return refuse(Error::kInvalidRealism, fmt::format("realism preset \"{}\": {}", change.preset,

@@ -1,8 +1,11 @@
 #include "loader/realism_yaml.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <yaml-cpp/yaml.h>
+#include <algorithm>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -120,6 +123,15 @@ RealismLoadResult ParseRealismYaml(const std::string& yaml_text, const SensorRea
   return result;
 }
 
+std::vector<std::string> RealismPresets(const std::string& dir) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+    if (entry.path().extension() == ".yaml") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
 RealismLoadResult LoadRealism(const std::string& spec, const std::string& dir, bool allow_paths,
                               const SensorRealism& base) {
   if (spec.find(':') != std::string::npos || spec.find('{') != std::string::npos) return ParseRealismYaml(spec, base);
@@ -130,6 +142,10 @@ RealismLoadResult LoadRealism(const std::string& spec, const std::string& dir, b
                           spec.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") == std::string::npos;
   if (!is_path && !plain_name) return {std::nullopt, {fmt::format("not a realism preset name: \"{}\"", spec)}};
   const std::string path = is_path ? spec : dir + "/" + spec + ".yaml";
+  std::error_code ec;
+  if (!is_path && !std::filesystem::is_regular_file(path, ec))
+    return {std::nullopt,
+            {fmt::format("no realism preset \"{}\" (presets: {})", spec, fmt::join(RealismPresets(dir), ", "))}};
   std::string text, error;
   if (!ReadTextFile(path, kMaxRealismBytes, &text, &error)) return {std::nullopt, {path + ": " + error}};
   RealismLoadResult result = ParseRealismYaml(text);

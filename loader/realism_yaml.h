@@ -37,6 +37,8 @@ struct RealismLoadResult {
 
 // The directory of the shipped presets.
 std::string DefaultRealismDir();
+// The presets in `dir` (its *.yaml files, without the extension), sorted: what an unknown name is told.
+std::vector<std::string> RealismPresets(const std::string& dir = DefaultRealismDir());
 
 // YAML text of a realism map; keys it leaves out keep their value in `base`.
 RealismLoadResult ParseRealismYaml(const std::string& yaml_text, const SensorRealism& base = {});

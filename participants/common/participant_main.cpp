@@ -16,7 +16,8 @@ ParticipantMain::ParticipantMain(std::string process_name, const std::string& de
 void ParticipantMain::AddCommonFlags(ParticipantOptions& options, const CommonFlagHelp& help) {
   app_.add_option("-d,--domain", options.domain, help.domain)->capture_default_str()->check(CLI::Range(0, 232));
   app_.add_option("-p,--prefix", options.prefix, help.prefix)->capture_default_str();
-  app_.add_option("--qos", options.qos_file, "Fast DDS XML QoS profiles (default: configs/qos/turf_qos.xml)");
+  app_.add_option("--qos", options.qos_file, "Fast DDS XML QoS profiles (default: configs/qos/turf_qos.xml)")
+      ->check(CLI::ExistingFile);  // a missing file is a configuration error (exit 2), told before anything starts
 }
 
 int ParticipantMain::Run(int argc, const char* const* argv, const std::function<int()>& body) {

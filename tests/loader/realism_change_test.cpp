@@ -171,6 +171,7 @@ TEST(RealismChange, RefusalsChangeNothingAndNameTheCulprit) {
   };
   const Bad bad[] = {
       {{"nosuch", {}}, Error::kUnknownPreset, "nosuch"},
+      {{"nosuch", {}}, Error::kUnknownPreset, "(presets: harsh, ideal, realistic)"},
       {{"../realism/harsh", {}}, Error::kUnknownPreset, "../realism/harsh"},
       {{"/etc/passwd", {}}, Error::kUnknownPreset, "/etc/passwd"},
       {{"camera: {robot_vanish: 1}", {}}, Error::kUnknownPreset, "camera"},

@@ -78,7 +78,7 @@ TEST(RealismYaml, BadInputIsRefusedWithTheKey) {
 }
 
 TEST(RealismYaml, PresetNamesAreNamesAndPathsCanBeRefused) {
-  EXPECT_TRUE(Mentions(LoadRealism("nonexistent").errors, "no such file"));
+  EXPECT_TRUE(Mentions(LoadRealism("nonexistent").errors, "no realism preset \"nonexistent\" (presets: "));
   EXPECT_TRUE(Mentions(LoadRealism("Bad Name!").errors, "not a realism preset name"));
   const RealismLoadResult r = LoadRealism("/etc/passwd", DefaultRealismDir(), /*allow_paths=*/false);
   EXPECT_FALSE(r.realism.has_value());
@@ -98,6 +98,9 @@ TEST(RealismYaml, ScenesNameAPresetOrSetValues) {
   const SceneLoadResult missing = ParseSceneYaml("realism: nosuchpreset");
   EXPECT_FALSE(missing.scene.has_value());
   EXPECT_TRUE(Mentions(missing.errors, "realism"));
+  // An unknown preset is told what there is.
+  EXPECT_TRUE(Mentions(missing.errors, "presets: harsh, ideal, realistic")) << missing.errors[0];
+  EXPECT_EQ(RealismPresets(), (std::vector<std::string>{"harsh", "ideal", "realistic"}));
 }
 
 }  // namespace

@@ -56,7 +56,8 @@ int Clean() { return kExitClean; }
 TEST_F(ParticipantMainTest, CommonFlagsAreParsedIntoParticipantOptions) {
   participant_.AddCommonFlags(options_);
   ParticipantOptions seen;
-  EXPECT_EQ(Run({"-d", "42", "--prefix", "field2", "--qos", "/tmp/qos.xml", "--log-level", "warn"},
+  EXPECT_EQ(Run({"-d", "42", "--prefix", "field2", "--qos", TURF_SOURCE_DIR "/configs/qos/turf_qos.xml", "--log-level",
+                 "warn"},
                 [&] {
                   seen = options_;
                   return kExitClean;
@@ -65,7 +66,7 @@ TEST_F(ParticipantMainTest, CommonFlagsAreParsedIntoParticipantOptions) {
   EXPECT_EQ(body_runs_, 1);
   EXPECT_EQ(seen.domain, 42);
   EXPECT_EQ(seen.prefix, "field2");
-  EXPECT_EQ(seen.qos_file, "/tmp/qos.xml");
+  EXPECT_EQ(seen.qos_file, TURF_SOURCE_DIR "/configs/qos/turf_qos.xml");
   EXPECT_EQ(seen.name, "turf");  // no flag sets the name
   EXPECT_EQ(spdlog::get_level(), spdlog::level::warn);
 
@@ -94,8 +95,13 @@ TEST_F(ParticipantMainTest, DomainOutOfRangeExits2WithoutRunningTheBody) {
 }
 
 TEST_F(ParticipantMainTest, EveryRefusedFlagExits2) {
-  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
-           {"-d", "-1"}, {"--domain", "seven"}, {"--no-such-flag"}, {"--prefix"}, {"--log-level", "loud"}}) {
+  for (const std::vector<std::string>& args :
+       std::vector<std::vector<std::string>>{{"-d", "-1"},
+                                             {"--domain", "seven"},
+                                             {"--no-such-flag"},
+                                             {"--prefix"},
+                                             {"--log-level", "loud"},
+                                             {"--qos", "/nonexistent/turf_qos.xml"}}) {
     ParticipantMain participant("turf-test", "refusals");
     ParticipantOptions options;
     participant.AddCommonFlags(options);
