@@ -20,6 +20,15 @@ void ParticipantMain::AddCommonFlags(ParticipantOptions& options, const CommonFl
       ->check(CLI::ExistingFile);  // a missing file is a configuration error (exit 2), told before anything starts
 }
 
+CLI::Option* ParticipantMain::AddPort(const std::string& name, uint16_t& port, const std::string& help,
+                                      bool zero_allowed) {
+  return app_
+      .add_option_function<int>(
+          name, [&port](int value) { port = static_cast<uint16_t>(value); }, help)
+      ->default_str(std::to_string(port))
+      ->check(CLI::Range(zero_allowed ? 0 : 1, 65535));
+}
+
 int ParticipantMain::Run(int argc, const char* const* argv, const std::function<int()>& body) {
   app_.add_option("--log-level", log_level_, "trace, debug, info, warn, error")->capture_default_str();
   try {

@@ -16,6 +16,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -49,6 +50,10 @@ class ParticipantMain {
   // Adds -d/--domain (checked: 0..232), -p/--prefix and --qos, parsed into
   // `options` (which must outlive Run), at this point of --help.
   void AddCommonFlags(ParticipantOptions& options, const CommonFlagHelp& help = {});
+
+  // A port flag: 0..65535 (1..65535 unless `zero_allowed`), refused with the range it must be in
+  // ("--port: Value 99999 not in range [1 - 65535]") rather than a bare conversion error. `port` must outlive Run.
+  CLI::Option* AddPort(const std::string& name, uint16_t& port, const std::string& help, bool zero_allowed = false);
 
   // Adds --log-level (the last flag of --help) and parses argv: --help prints
   // and returns kExitClean, a refused flag prints why and returns

@@ -11,13 +11,12 @@ void AddGrsimBridgeFlags(ParticipantMain& participant, GrsimBridgeOptions& optio
   CLI::App& app = participant.app();
   grsim::GrsimCodecConfig& codec = options.codec;
   app.add_option("--listen", options.listen_ip, "IPv4 address to receive grSim packets on")->capture_default_str();
-  app.add_option("--port", options.port, "UDP port for grSim_Packet (commands and replacement)")->capture_default_str();
+  participant.AddPort("--port", options.port, "UDP port for grSim_Packet (commands and replacement; 0: any free port)",
+                      /*zero_allowed=*/true);
   for (const auto& [team, port] :
        {std::pair{"blue", &options.blue_status_port}, {"yellow", &options.yellow_status_port}})
-    app.add_option(fmt::format("--{}-status-port", team), *port,
-                   fmt::format("Robots_Status for {0} goes to the {0} command sender's IP on this port", team))
-        ->capture_default_str()
-        ->check(CLI::Range(1, 65535));
+    participant.AddPort(fmt::format("--{}-status-port", team), *port,
+                        fmt::format("Robots_Status for {0} goes to the {0} command sender's IP on this port", team));
   participant.AddCommonFlags(options, {"DDS domain id", "topic name prefix (the one turf-sim uses)"});
   app.add_option("--robots-per-team", codec.robots_per_team,
                  "ids 0..N-1 are accepted until turf-sim's ssl/field says otherwise")

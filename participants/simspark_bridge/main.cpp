@@ -16,8 +16,9 @@ int main(int argc, char** argv) {
   int sync_timeout_ms = static_cast<int>(options.sync_timeout.count());
   participant.AddCommonFlags(options);
   app.add_option("--listen", options.listen, "IPv4 address both TCP ports bind to")->capture_default_str();
-  app.add_option("--agent-port", options.agent_port, "TCP port for agents")->capture_default_str();
-  app.add_option("--monitor-port", options.monitor_port, "TCP port for monitors and trainers")->capture_default_str();
+  participant.AddPort("--agent-port", options.agent_port, "TCP port for agents (0: any free port)", true);
+  participant.AddPort("--monitor-port", options.monitor_port, "TCP port for monitors and trainers (0: any free port)",
+                      true);
   app.add_flag("--sync", options.sync_mode,
                "sync mode: a cycle as soon as every agent sent (syn), as fast as they answer (rcssserver3d's "
                "agentSyncMode); default: real time, one cycle per 20 ms");

@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   options.web_root = TURF_VIEWER_WEB_ROOT;
   app.add_option("--listen", options.listen, "IP address to serve on (0.0.0.0 or :: to expose it to the network)")
       ->capture_default_str();
-  app.add_option("--port", options.port, "TCP port of the page (0: any free port)")->capture_default_str();
+  participant.AddPort("--port", options.port, "TCP port of the page (0: any free port)", /*zero_allowed=*/true);
   participant.AddCommonFlags(options);
   app.add_option("--web-root", options.web_root, "directory of the page's files (index.html, app.js, style.css)")
       ->capture_default_str();

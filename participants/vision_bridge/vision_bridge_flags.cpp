@@ -8,8 +8,7 @@ void AddVisionBridgeFlags(ParticipantMain& participant, VisionBridgeOptions& opt
   app.add_option("--address", options.address,
                  "where detections and geometry go: a multicast group, or a unicast address")
       ->capture_default_str();
-  app.add_option("--port", options.port, "UDP port for detections and geometry (SSL-Vision: 10006)")
-      ->capture_default_str();
+  participant.AddPort("--port", options.port, "UDP port for detections and geometry (SSL-Vision: 10006)");
   app.add_option("--interface", options.interface_ip,
                  "IPv4 address of the network interface to multicast from (default: the system's choice)");
   app.add_option("--ttl", options.ttl, "multicast time to live (hops)")
@@ -27,7 +26,7 @@ void AddVisionBridgeFlags(ParticipantMain& participant, VisionBridgeOptions& opt
       ->check(CLI::IsMember({"run", "unix", "sim"}));
   app.add_flag("--tracked", options.tracked, "also send TrackerWrapperPacket (ground truth) per world state");
   app.add_option("--tracked-address", options.tracked_address, "where tracked packets go")->capture_default_str();
-  app.add_option("--tracked-port", options.tracked_port, "UDP port for tracked packets")->capture_default_str();
+  participant.AddPort("--tracked-port", options.tracked_port, "UDP port for tracked packets");
 }
 
 }  // namespace turf

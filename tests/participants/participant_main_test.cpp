@@ -79,6 +79,27 @@ TEST_F(ParticipantMainTest, CommonFlagsAreParsedIntoParticipantOptions) {
   EXPECT_EQ(long_names.prefix, "x");
 }
 
+// A port past 65535 (or 0 where no free port is meant) is a configuration error that names the range.
+TEST_F(ParticipantMainTest, PortsAreCheckedAgainstTheirRange) {
+  uint16_t port = 20011;
+  uint16_t any = 8080;
+  participant_.AddPort("--port", port, "a port");
+  participant_.AddPort("--any-port", any, "0: any free port", /*zero_allowed=*/true);
+  EXPECT_EQ(Run({"--port", "10006", "--any-port", "0"}, Clean), kExitClean);
+  EXPECT_EQ(port, 10006);
+  EXPECT_EQ(any, 0);
+  for (const std::vector<std::string>& args :
+       std::vector<std::vector<std::string>>{{"--port", "99999"}, {"--port", "0"}, {"--port", "-1"}, {"--port", "x"}}) {
+    ParticipantMain participant("turf-test", "ports");
+    uint16_t p = 1;
+    participant.AddPort("--port", p, "a port");
+    std::vector<const char*> argv = {"turf-test"};
+    for (const std::string& a : args) argv.push_back(a.c_str());
+    EXPECT_EQ(participant.Run(static_cast<int>(argv.size()), argv.data(), Clean), kExitBadConfig) << args[1];
+    EXPECT_EQ(p, 1) << args[1];
+  }
+}
+
 TEST_F(ParticipantMainTest, DefaultsWithoutFlags) {
   participant_.AddCommonFlags(options_);
   EXPECT_EQ(Run({}, Clean), kExitClean);
