@@ -43,6 +43,7 @@ json Ball(const idl::BallState& b) {
 // What every state message ends with: the clock (once known) and the viewer's condition.
 void AddClockAndViewer(const std::optional<idl::Clock>& clock, const ViewerInfo& viewer, json* out) {
   (*out)["viewer"] = {{"refused", viewer.refused}, {"control", viewer.control}};
+  if (viewer.gone_since_unix_ms > 0) (*out)["viewer"]["gone_since"] = viewer.gone_since_unix_ms;
   if (!clock) return;
   (*out)["clock"] = {{"paused", clock->paused()},
                      {"mode", TimeModeName(clock->mode())},

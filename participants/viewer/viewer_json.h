@@ -13,7 +13,8 @@
 //            clock:{paused, mode, speed, rtf} (absent before the first Clock),
 //            detections:[{camera, t, balls:[[x,y,z,conf]],
 //                         robots:[{team, id, p:[x,y], yaw, conf}]}],
-//            viewer:{refused, control}}  control: turf-sim reads our requests
+//            viewer:{refused, control, gone_since}}  control: turf-sim reads our requests;
+//            gone_since (Unix ms): turf-sim left, the rest of the message is its last word
 //   legged  a legged scene's robot shapes and 3D field (legged_json.h); a page
 //           shows the SSL field or the legged scene, whichever came last
 //   state (legged scenes) {t, frame, ball (absent without a field), robots:[],
@@ -49,6 +50,8 @@ std::string FieldJson(const idl::SslField& field);
 struct ViewerInfo {
   uint64_t refused = 0;  // page messages refused so far
   bool control = false;  // a turf-sim control reader is matched: page actions can take effect
+  // turf-sim was there and is gone (its control reader left): since when, Unix ms; 0 while present or never seen.
+  int64_t gone_since_unix_ms = 0;
 };
 
 // `frames`: the newest frame of each camera to show with this state.

@@ -165,7 +165,8 @@ std::string ViewerModel::State() const {
   if (legged_) {
     if (!has_state()) return {};
     const bool ball = state_ && legged_->has_field();
-    return LeggedStateJson(ball ? &*state_ : nullptr, *legged_, links_, clock_, {refused_pages_, control_matched_});
+    return LeggedStateJson(ball ? &*state_ : nullptr, *legged_, links_, clock_,
+                           {refused_pages_, control_matched_, sim_gone_since_unix_ms_});
   }
   if (!state_) return {};
   // What the cameras saw lately: frames from the last kMaxFrameAgeNs of sim
@@ -176,7 +177,7 @@ std::string ViewerModel::State() const {
     const int64_t age = now - frame.capture_time_ns();
     if (age >= 0 && age <= kMaxFrameAgeNs) recent.push_back(&frame);
   }
-  return StateJson(*state_, clock_, recent, {refused_pages_, control_matched_});
+  return StateJson(*state_, clock_, recent, {refused_pages_, control_matched_, sim_gone_since_unix_ms_});
 }
 
 std::string ViewerModel::Stats() const { return stats_ ? StatsJson(*stats_) : std::string(); }

@@ -62,6 +62,8 @@ class ViewerModel {
   void CountRefusedPage() { ++refused_pages_; }  // refused before parsing (size, binary)
   // Whether turf-sim's control reader is matched (shown to the page).
   void SetControlMatched(bool matched) { control_matched_ = matched; }
+  // turf-sim left at this Unix time (ms); 0: it is there (shown to the page, which marks what it shows as stale).
+  void SetSimGoneSince(int64_t unix_ms) { sim_gone_since_unix_ms_ = unix_ms; }
 
   // A world state or, in a legged scene, a robot's poses has arrived.
   bool has_state() const { return state_.has_value() || (legged_ && !links_.empty()); }
@@ -81,6 +83,7 @@ class ViewerModel {
   std::string prefix_;
   uint64_t refused_pages_ = 0;
   bool control_matched_ = false;
+  int64_t sim_gone_since_unix_ms_ = 0;
   std::optional<idl::WorldState> state_;
   std::optional<idl::Clock> clock_;
   std::optional<idl::SslField> field_;

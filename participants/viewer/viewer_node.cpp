@@ -37,6 +37,12 @@ constexpr size_t kMaxInbox = 1024;  // page messages waiting for the loop
 constexpr auto kControlSettle = std::chrono::milliseconds(100);
 constexpr auto kReplyTimeout = std::chrono::seconds(10);  // then the page is told nobody answered
 
+// Wall clock, for what the page shows a person ("gone since 18:52:07"), never for the simulation.
+int64_t UnixNowMs() {
+  return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
 void CheckOptions(const ViewerOptions& o) {
   if (!(std::isfinite(o.rate_hz) && o.rate_hz >= 1.0 && o.rate_hz <= 1000.0))
     throw std::invalid_argument("--rate must be in [1, 1000] Hz");
@@ -170,6 +176,8 @@ class ViewerNode::Impl {
       spdlog::info(live ? "turf-sim reads our control requests: page controls are live"
                         : "no turf-sim control reader: page controls are refused until one is there");
       dirty_ = true;
+      // Gone after having been there: the page marks what it shows as turf-sim's last word, with the time.
+      model_.SetSimGoneSince(live ? 0 : UnixNowMs());
     }
     control_matched_.store(live);
     model_.SetControlMatched(live);

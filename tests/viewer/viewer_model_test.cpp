@@ -90,6 +90,12 @@ TEST(ViewerModel, StateJsonHasBallRobotsClockAndRecentDetections) {
   EXPECT_EQ(s["viewer"]["control"], false);
   model.SetControlMatched(true);
   EXPECT_EQ(json::parse(model.State())["viewer"]["control"], true);
+  EXPECT_FALSE(json::parse(model.State())["viewer"].contains("gone_since"));  // present: nothing to say
+  model.SetControlMatched(false);
+  model.SetSimGoneSince(1764096727000);
+  EXPECT_EQ(json::parse(model.State())["viewer"]["gone_since"], 1764096727000);
+  model.SetSimGoneSince(0);
+  EXPECT_FALSE(json::parse(model.State())["viewer"].contains("gone_since"));
 }
 
 TEST(ViewerModel, StatsJsonPerStream) {

@@ -319,6 +319,37 @@ TEST(ViewerServer, WithoutTurfSimActionsAreRefusedNotLost) {
   EXPECT_FALSE(viewer.node().Stats().control_matched);
 }
 
+// turf-sim stops: the page is told that what it shows is turf-sim's last word, and since when.
+TEST(ViewerServer, WhenTurfSimStopsThePageIsToldSinceWhen) {
+  const dds::ParticipantOptions dds = UniqueDds("viewer-gone");
+  auto sim = std::make_unique<SimUnderTest>(Teams(1), dds, TimeMode::kRealtime);
+  ViewerUnderTest viewer(dds);
+  ASSERT_TRUE(Eventually([&] { return viewer.node().Stats().control_matched; }, 20s));
+  WsClient ws;
+  ASSERT_TRUE(Connected(ws, viewer));
+  ASSERT_TRUE(ReadType(
+      ws, "state", [](const json& m) { return m["viewer"]["control"] == true; }, 10s));
+  const int64_t before =
+      std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch())
+          .count();
+  sim.reset();  // turf-sim stops; its participant leaves the domain
+  const auto gone = ReadType(
+      ws, "state", [](const json& m) { return m["viewer"].contains("gone_since"); }, 30s);
+  ASSERT_TRUE(gone) << "no state told the page that turf-sim is gone";
+  EXPECT_EQ((*gone)["viewer"]["control"], false);
+  const int64_t since = (*gone)["viewer"]["gone_since"];
+  EXPECT_GE(since, before);
+  EXPECT_LE(since,
+            std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch())
+                .count());
+  // A page that connects later is told too (the newest state is kept for it).
+  WsClient late;
+  ASSERT_TRUE(Connected(late, viewer));
+  const auto told = ReadType(late, "state", [](const json& m) { return m["viewer"].contains("gone_since"); });
+  ASSERT_TRUE(told);
+  EXPECT_EQ((*told)["viewer"]["gone_since"], since);
+}
+
 TEST(ViewerServer, RefusesWebSocketsFromOtherSitesAndFloods) {
   Rig rig;
   WsClient evil;

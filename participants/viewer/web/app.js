@@ -370,13 +370,23 @@
       syncSpeed(s.clock);
     }
     updateOffField(s);
-    // Without turf-sim's control reader the viewer refuses actions: say so.
+    // Without turf-sim's control reader the viewer refuses actions: say so. When turf-sim left, what the page
+    // shows is its last word: say since when, and show no rate as if it were current.
     const live = !s.viewer || s.viewer.control;
+    const gone = s.viewer && s.viewer.gone_since ? new Date(s.viewer.gone_since) : null;
     const badge = $('connection');
     if (view.ws && view.ws.readyState === WebSocket.OPEN) {
-      setText('connection', live ? 'live' : 'view only');
+      setText('connection', live ? 'live' : gone ? `turf-sim gone since ${gone.toLocaleTimeString()}` : 'view only');
       badge.classList.toggle('warn', !live);
-      badge.title = live ? '' : 'turf-sim does not read the control topic yet: actions are refused';
+      badge.title = live ? '' : gone ? 'turf-sim stopped: this is the last state it published'
+        : 'turf-sim does not read the control topic yet: actions are refused';
+    }
+    view.simGone = !!gone;
+    if (gone) {
+      setText('rtf', '–');
+      $('stats').classList.add('stale');
+    } else {
+      $('stats').classList.remove('stale');
     }
   }
 
@@ -412,6 +422,7 @@
   }
 
   function onStats(st) {
+    if (view.simGone) return;  // a late stats sample is not a current rate
     const body = $('stats').tBodies[0];
     body.replaceChildren();
     for (const s of st.streams) {
