@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The run command: sets up, builds and starts the default SSL match (profile
-# configs/launch/ssl_div_a.yaml: turf-sim and the grSim, SSL-Vision and SSL
-# simulation-protocol bridges) on this machine until Ctrl-C. Extra arguments go
+# configs/launch/ssl_div_a.yaml: turf-sim, the grSim, SSL-Vision and SSL
+# simulation-protocol bridges and the web viewer) on this machine until Ctrl-C. Extra arguments go
 # to `turf launch` (try --help, --print, --domain N, --realism ideal,
 # --set sim.speed=max).
 set -euo pipefail

@@ -74,6 +74,7 @@ int LaunchCommand::Run() {
   spdlog::info("profile {} ({}): {} processes, DDS domain {}, prefix '{}', discovery {}", profile.name, profile.path,
                plan.commands.size(), plan.domain, plan.prefix,
                plan.discovery_server.empty() ? "multicast" : "server " + plan.discovery_server);
+  for (const std::string& line : WhereToLook(plan)) spdlog::info("{}", line);
   SupervisorOptions options;
   options.restart = profile.restart;
   const double grace_s = grace_opt_->count() > 0 ? grace_ : profile.stop_grace;

@@ -186,6 +186,44 @@ LaunchPlan BuildPlan(LaunchProfile profile, const LaunchOverrides& o, const std:
   return plan;
 }
 
+namespace {
+
+// The value that follows `flag` in `argv`; `fallback` if the flag is not there.
+std::string FlagValue(const std::vector<std::string>& argv, const std::string& flag, const std::string& fallback) {
+  for (size_t i = 1; i + 1 < argv.size(); ++i)
+    if (argv[i] == flag) return argv[i + 1];
+  return fallback;
+}
+
+}  // namespace
+
+std::vector<std::string> WhereToLook(const LaunchPlan& plan) {
+  std::vector<std::string> lines;
+  for (const ProcessCommand& c : plan.commands) {
+    auto v = [&c](const char* flag, const char* fallback) { return FlagValue(c.argv, flag, fallback); };
+    if (c.name == "viewer") {
+      const std::string host = v("--listen", "127.0.0.1");
+      lines.push_back(
+          fmt::format("viewer: http://{}:{}/", host == "0.0.0.0" ? "127.0.0.1" : host, v("--port", "8080")));
+    } else if (c.name == "grsim") {
+      lines.push_back(
+          fmt::format("grSim commands and replacement: UDP {}:{} (robot status back to the sender on {}, {})",
+                      v("--listen", "0.0.0.0"), v("--port", "20011"), v("--blue-status-port", "30011"),
+                      v("--yellow-status-port", "30012")));
+    } else if (c.name == "vision") {
+      lines.push_back(fmt::format("SSL-Vision: UDP {}:{}", v("--address", "224.5.23.2"), v("--port", "10020")));
+    } else if (c.name == "simproto") {
+      lines.push_back(fmt::format("SSL simulation protocol: UDP {}: control {}, blue {}, yellow {}, sync {}",
+                                  v("--listen", "0.0.0.0"), v("--control-port", "10300"), v("--blue-port", "10301"),
+                                  v("--yellow-port", "10302"), v("--sync-port", "10303")));
+    } else if (c.name == "simspark") {
+      lines.push_back(fmt::format("SimSpark: TCP {}: agents {}, monitors and trainers {}", v("--listen", "0.0.0.0"),
+                                  v("--agent-port", "3100"), v("--monitor-port", "3200")));
+    }
+  }
+  return lines;
+}
+
 std::string ShellLine(const ProcessCommand& command) {
   auto quote = [](const std::string& s) {
     const bool plain = !s.empty() && s.find_first_not_of(

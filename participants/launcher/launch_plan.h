@@ -42,6 +42,11 @@ struct LaunchPlan {
 // commands. `self_dir` is the directory of the running `turf` executable.
 LaunchPlan BuildPlan(LaunchProfile profile, const LaunchOverrides& overrides, const std::string& self_dir);
 
+// Where a user looks and points team software, one line each, from the plan's own flags: the viewer's URL,
+// the grSim, SSL-Vision and simulation-protocol ports, the SimSpark agent and monitor ports. The launcher
+// prints them first.
+std::vector<std::string> WhereToLook(const LaunchPlan& plan);
+
 // The command as one POSIX shell line: VAR=value ... argv, quoted where needed.
 std::string ShellLine(const ProcessCommand& command);
 

@@ -25,6 +25,8 @@ inline constexpr Program kPrograms[] = {
     {"simproto", "turf-simproto-bridge", "simproto_bridge", Scenes::kSsl},
     // Steps turf-sim itself (switches it to lockstep).
     {"simspark", "turf-simspark-bridge", "simspark_bridge", Scenes::kLegged},
+    // The web view (not a bridge, but started like one: listed under a profile's `bridges:`).
+    {"viewer", "turf-viewer", "viewer"},
 };
 
 // Bridges a profile may list under `bridges:` (every program but discovery and sim).

@@ -65,7 +65,9 @@ TEST(LaunchCli, PrintGivesOneRunnableLinePerProcess) {
     std::string out;
     ASSERT_EQ(RunCommand({Turf(), "launch", profile, "--print"}, &out), 0) << out;
     const std::vector<std::string> lines = Lines(out);
-    ASSERT_EQ(lines.size(), 4u) << out;
+    ASSERT_EQ(lines.size(), 5u) << out;  // turf-sim, three bridges, the viewer (localhost only)
+    EXPECT_NE(lines[4].find("/turf-viewer --domain 0 --prefix turf --listen 127.0.0.1 --port 8080"), std::string::npos)
+        << lines[4];
     EXPECT_NE(lines[0].find("/turf-sim --scene "), std::string::npos) << lines[0];
     EXPECT_NE(lines[0].find(std::string("configs/scenes/") + profile + ".yaml"), std::string::npos) << lines[0];
     for (const std::string& line : lines) EXPECT_NE(line.find(" --domain 0 --prefix turf"), std::string::npos);
@@ -77,7 +79,7 @@ TEST(LaunchCli, PrintSimSparkAndItsSyncMode) {
   std::string out;
   ASSERT_EQ(RunCommand({Turf(), "launch", "simspark", "--print"}, &out), 0) << out;
   std::vector<std::string> lines = Lines(out);
-  ASSERT_EQ(lines.size(), 2u) << out;
+  ASSERT_EQ(lines.size(), 3u) << out;
   EXPECT_NE(lines[0].find("/turf-sim --scene "), std::string::npos) << lines[0];
   EXPECT_NE(lines[0].find("configs/scenes/simspark_match.yaml --domain 0 --prefix turf"), std::string::npos);
   EXPECT_NE(lines[1].find("/turf-simspark-bridge --domain 0 --prefix turf --listen 0.0.0.0 --agent-port 3100 "

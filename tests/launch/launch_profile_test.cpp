@@ -55,10 +55,11 @@ TEST(LaunchProfile, ShippedProfilesLoad) {
   const ProfileLoadResult a = LoadLaunchProfile("ssl_div_a", DefaultProfileDir());
   ASSERT_TRUE(a.profile.has_value());
   EXPECT_EQ(fs::path(a.profile->scene).filename(), "ssl_div_a.yaml");
-  ASSERT_EQ(a.profile->bridges.size(), 3u);
+  ASSERT_EQ(a.profile->bridges.size(), 4u);
   EXPECT_EQ(a.profile->bridges[0].name, "grsim");
   EXPECT_EQ(a.profile->bridges[1].name, "vision");
   EXPECT_EQ(a.profile->bridges[2].name, "simproto");
+  EXPECT_EQ(a.profile->bridges[3].name, "viewer");  // the default match shows itself
   const ProfileLoadResult b = LoadLaunchProfile("ssl_div_b", DefaultProfileDir());
   ASSERT_TRUE(b.profile.has_value());
   EXPECT_EQ(fs::path(b.profile->scene).filename(), "ssl_div_b.yaml");
@@ -72,8 +73,9 @@ TEST(LaunchProfile, SimSparkRunsTheLeggedSceneAndTheBridge) {
   EXPECT_TRUE(p.legged);
   EXPECT_TRUE(p.realism.empty());
   EXPECT_TRUE(p.sim.flags.empty()) << "the bridge steps turf-sim: no speed";
-  ASSERT_EQ(p.bridges.size(), 1u);
+  ASSERT_EQ(p.bridges.size(), 2u);
   EXPECT_EQ(p.bridges[0].name, "simspark");
+  EXPECT_EQ(p.bridges[1].name, "viewer");
   EXPECT_FALSE(IsLeggedScene(kScenes + "/ssl_div_a.yaml"));
   EXPECT_FALSE(IsLeggedScene(kScenes + "/nowhere.yaml"));
 }
@@ -151,7 +153,7 @@ TEST(LaunchPlan, OverridesReachEveryProcess) {
   o.sets = {"vision.port=10006", "sim.speed=max", "vision.tracked=true"};
   const LaunchPlan plan = BuildPlan(*r.profile, o, kLauncherDir);
   ASSERT_TRUE(plan.errors.empty()) << plan.errors[0];
-  ASSERT_EQ(plan.commands.size(), 5u);
+  ASSERT_EQ(plan.commands.size(), 6u);
   EXPECT_EQ(plan.commands[0].name, "discovery");
   EXPECT_EQ(Args(plan.commands[0]), "-i 0 -l 10.1.2.3 -p 11811 ");
   EXPECT_TRUE(plan.commands[0].stop_last) << "the discovery server goes last";
@@ -180,7 +182,7 @@ TEST(LaunchPlan, OnlyAndBadOverrides) {
   EXPECT_TRUE(plan.commands[0].env.empty());
 
   LaunchOverrides bad;
-  bad.only = {"viewer"};
+  bad.only = {"tracker"};
   bad.sets = {"vision.domain=3", "vision", "tracker.port=1"};
   bad.domain = 999;
   bad.start_discovery_server = true;
@@ -202,7 +204,7 @@ TEST(LaunchPlan, BinariesAreFoundInTheBuildTree) {
   }
   LaunchOverrides o;
   o.bin_dir = "/nonexistent";
-  EXPECT_EQ(BuildPlan(*r.profile, o, kLauncherDir).errors.size(), 4u);
+  EXPECT_EQ(BuildPlan(*r.profile, o, kLauncherDir).errors.size(), 5u);  // turf-sim, three bridges, the viewer
 }
 
 TEST(LaunchPlan, SimSparkPlanAndSyncMode) {
@@ -210,7 +212,7 @@ TEST(LaunchPlan, SimSparkPlanAndSyncMode) {
   ASSERT_TRUE(r.profile.has_value()) << r.errors[0];
   LaunchPlan plan = BuildPlan(*r.profile, {}, kLauncherDir);
   ASSERT_TRUE(plan.errors.empty()) << plan.errors[0];
-  ASSERT_EQ(plan.commands.size(), 2u);
+  ASSERT_EQ(plan.commands.size(), 3u);  // turf-sim, the bridge, the viewer
   const std::string build = std::string(TURF_BINARY_DIR) + "/participants/";
   EXPECT_EQ(plan.commands[0].name, "sim");
   EXPECT_EQ(plan.commands[0].argv[0], build + "sim/turf-sim");
@@ -225,7 +227,7 @@ TEST(LaunchPlan, SimSparkPlanAndSyncMode) {
   o.sets = {"simspark.sync=true", "simspark.agent-port=3110", "simspark.monitor-port=3210"};
   plan = BuildPlan(*r.profile, o, kLauncherDir);
   ASSERT_TRUE(plan.errors.empty()) << plan.errors[0];
-  ASSERT_EQ(plan.commands.size(), 2u);
+  ASSERT_EQ(plan.commands.size(), 3u);
   EXPECT_EQ(Args(plan.commands[1]),
             "--domain 7 --prefix turf --listen 0.0.0.0 --sync --agent-port 3110 "
             "--monitor-port 3210 ");
@@ -255,6 +257,28 @@ TEST(LaunchPlan, SimSparkPlanAndSyncMode) {
 TEST(LaunchPlan, ShellLineQuotes) {
   const ProcessCommand c{"sim", {"/opt/turf bin/turf-sim", "--prefix", "it's", "--speed", "1"}, {{"A", "x y"}}};
   EXPECT_EQ(ShellLine(c), "A='x y' '/opt/turf bin/turf-sim' --prefix 'it'\\''s' --speed 1");
+}
+
+// What the launcher prints first: where the page is and where team software points, from the plan's flags.
+TEST(LaunchPlan, WhereToLookNamesTheViewerAndThePorts) {
+  const ProfileLoadResult r = LoadLaunchProfile("ssl_div_a", DefaultProfileDir());
+  ASSERT_TRUE(r.profile.has_value());
+  LaunchOverrides o;
+  o.sets = {"viewer.port=8181", "grsim.port=20111"};
+  const std::vector<std::string> lines = WhereToLook(BuildPlan(*r.profile, o, kLauncherDir));
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[0].rfind("grSim commands and replacement: UDP 0.0.0.0:20111 ", 0), 0u) << lines[0];
+  EXPECT_EQ(lines[1], "SSL-Vision: UDP 224.5.23.2:10020");
+  EXPECT_EQ(lines[2], "SSL simulation protocol: UDP 0.0.0.0: control 10300, blue 10301, yellow 10302, sync 10303");
+  EXPECT_EQ(lines[3], "viewer: http://127.0.0.1:8181/");
+  const ProfileLoadResult s = LoadLaunchProfile("simspark", DefaultProfileDir());
+  ASSERT_TRUE(s.profile.has_value());
+  LaunchOverrides only_sim;
+  only_sim.only = {"sim"};
+  EXPECT_TRUE(WhereToLook(BuildPlan(*s.profile, only_sim, kLauncherDir)).empty()) << "nothing served here";
+  const std::vector<std::string> all = WhereToLook(BuildPlan(*s.profile, {}, kLauncherDir));
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_EQ(all[0], "SimSpark: TCP 0.0.0.0: agents 3100, monitors and trainers 3200");
 }
 
 }  // namespace

@@ -42,7 +42,8 @@ TEST(LaunchSimSpark, AnAgentGetsPerceptionsAndCtrlCStopsBoth) {
       "launch_simspark",
       {Built("participants/launcher/turf"), "launch", "simspark", "--domain", std::to_string(TestDomain()), "--prefix",
        prefix, "--set", "simspark.listen=127.0.0.1", "--set", "simspark.agent-port=" + std::to_string(agent_port),
-       "--set", "simspark.monitor-port=" + std::to_string(monitor_port)});
+       "--set", "simspark.monitor-port=" + std::to_string(monitor_port), "--set",
+       "viewer.port=" + std::to_string(FreePort(SOCK_STREAM))});
   const auto start = std::chrono::steady_clock::now();
 
   // The bridge opens its ports once turf-sim has loaded the scene (about 2 s;
