@@ -9,6 +9,7 @@
 
 #include "participants/common/process.h"
 #include "participants/launcher/launch_profile.h"
+#include "participants/launcher/preflight.h"
 #include "participants/launcher/programs.h"
 #include "participants/launcher/supervisor.h"
 
@@ -70,6 +71,7 @@ int LaunchCommand::Run() {
     for (const auto& command : plan.commands) std::printf("%s\n", ShellLine(command).c_str());
     return 0;
   }
+  if (const std::vector<std::string> unknown = UnknownFlags(plan); !unknown.empty()) return Fail(unknown);
   if (!SetupLogging("turf", log_level_)) return 2;
   spdlog::info("profile {} ({}): {} processes, DDS domain {}, prefix '{}', discovery {}", profile.name, profile.path,
                plan.commands.size(), plan.domain, plan.prefix,

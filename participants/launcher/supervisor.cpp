@@ -23,6 +23,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr size_t kMaxLine = 64 * 1024;
 
+constexpr int kConfigurationError = 2;  // every turf participant's exit status for bad flags or configuration
+
 struct Child {
   ProcessCommand command;
   pid_t pid = -1;
@@ -31,7 +33,11 @@ struct Child {
   Clock::time_point started;
   std::optional<Clock::time_point> restart_at;
   int quick_crashes = 0;  // in a row
+  bool given_up = false;  // crashed too often: not restarted until SIGUSR1
 };
+
+// The processes a match cannot go on without: when one of them keeps crashing, the launch ends.
+bool Essential(const ProcessCommand& c) { return c.name == "sim" || c.name == "discovery"; }
 
 std::string DescribeStatus(int status) {
   if (WIFEXITED(status)) return fmt::format("exit status {}", WEXITSTATUS(status));
@@ -68,7 +74,7 @@ class Supervisor {
  public:
   Supervisor(const std::vector<ProcessCommand>& commands, const SupervisorOptions& options) : options_(options) {
     for (const ProcessCommand& c : commands) {
-      children_.push_back(Child{c, -1, -1, "", {}, std::nullopt, 0});
+      children_.push_back(Child{c, -1, -1, "", {}, std::nullopt, 0, false});
       width_ = std::max(width_, c.name.size());
     }
     sigset_t mask;
@@ -76,6 +82,7 @@ class Supervisor {
     sigaddset(&mask, SIGINT);
     sigaddset(&mask, SIGTERM);
     sigaddset(&mask, SIGCHLD);
+    sigaddset(&mask, SIGUSR1);  // try the processes given up on again
     sigprocmask(SIG_BLOCK, &mask, &old_mask_);
     signal_fd_ = signalfd(-1, &mask, SFD_CLOEXEC | SFD_NONBLOCK);
     old_pipe_ = signal(SIGPIPE, SIG_IGN);  // a closed stdout must not kill the supervisor
@@ -174,6 +181,10 @@ class Supervisor {
     signalfd_siginfo info{};
     while (read(signal_fd_, &info, sizeof(info)) == static_cast<ssize_t>(sizeof(info))) {
       if (info.ssi_signo == SIGCHLD) continue;  // Reap() runs after every poll
+      if (info.ssi_signo == SIGUSR1) {
+        RetryGivenUp();
+        continue;
+      }
       if (!stopping_) {
         spdlog::info("{}: stopping every process", strsignal(static_cast<int>(info.ssi_signo)));
         BeginStop();
@@ -241,13 +252,23 @@ class Supervisor {
       // SIGTERM is how we asked: dying of it (no handler) is a clean stop too.
       const bool clean =
           (WIFEXITED(status) && WEXITSTATUS(status) == 0) || (WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
-      if (!clean) exit_code_ = 1;
+      if (!clean && exit_code_ == 0) exit_code_ = 1;
       spdlog::log(clean ? spdlog::level::info : spdlog::level::warn, "{} stopped ({})", c.command.name,
                   DescribeStatus(status));
       return;
     }
     if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
       spdlog::info("{} exited cleanly after {:.1f} s: the launch ends", c.command.name, ran);
+      BeginStop();
+      return;
+    }
+    if (WIFEXITED(status) && WEXITSTATUS(status) == kConfigurationError) {
+      // Deterministic: the same flags fail the same way, so a restart would only repeat it.
+      spdlog::error(
+          "{} refused its configuration (exit status 2, its message is above): not restarted; the launch "
+          "ends",
+          c.command.name);
+      exit_code_ = kConfigurationError;
       BeginStop();
       return;
     }
@@ -259,15 +280,34 @@ class Supervisor {
     ++c.quick_crashes;
     const RestartPolicy& r = options_.restart;
     if (c.quick_crashes > r.max_restarts) {
-      spdlog::error("{} crashed ({}), {} times in a row: giving up", c.command.name, what, c.quick_crashes);
-      exit_code_ = 1;
-      BeginStop();
+      if (Essential(c.command)) {
+        spdlog::error("{} crashed ({}), {} times in a row: giving up, the match cannot go on", c.command.name, what,
+                      c.quick_crashes);
+        exit_code_ = 1;
+        BeginStop();
+        return;
+      }
+      spdlog::error(
+          "{} crashed ({}), {} times in a row: giving up on it, the match goes on without it (kill -USR1 "
+          "{} tries again)",
+          c.command.name, what, c.quick_crashes, getpid());
+      c.given_up = true;
       return;
     }
     const double delay = std::min(r.backoff_max, r.backoff_initial * std::pow(2.0, c.quick_crashes - 1));
     spdlog::warn("{} crashed ({}): restart {} of {} in {:.2f} s", c.command.name, what, c.quick_crashes, r.max_restarts,
                  delay);
     c.restart_at = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(delay));
+  }
+
+  void RetryGivenUp() {
+    for (Child& c : children_) {
+      if (!c.given_up || stopping_) continue;
+      spdlog::info("SIGUSR1: trying {} again", c.command.name);
+      c.given_up = false;
+      c.quick_crashes = 0;
+      Start(c);
+    }
   }
 
   void BeginStop() {

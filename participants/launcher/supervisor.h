@@ -6,10 +6,15 @@
 //   `turf` itself is killed, the children stop too).
 // - Every line a process prints (stdout and stderr) is printed prefixed with
 //   its name: "vision   | ...".
-// - A process that crashes (killed by a signal, or a non-zero exit) is
+// - A process that exits with status 2 refused its configuration (every turf
+//   participant's exit code for bad flags or files): it is not restarted, the
+//   others are stopped and `turf` exits 2 at once (its message is in its output).
+// - A process that crashes (killed by a signal, or another non-zero exit) is
 //   restarted after a backoff that doubles with each quick crash (one within
-//   `stable_after` of its start) up to `backoff_max`; after `max_restarts`
-//   quick crashes in a row `turf` gives up: it stops the others and exits 1.
+//   `stable_after` of its start) up to `backoff_max`. After `max_restarts`
+//   quick crashes in a row `turf` gives up on it: a bridge or the viewer is left
+//   stopped and the match goes on (SIGUSR1 to `turf` tries every such process
+//   again); turf-sim or the discovery server ends the launch with exit status 1.
 // - A process that exits with status 0 ends the launch: the others are stopped
 //   and `turf` exits 0 (e.g. turf-sim --duration).
 // - SIGINT/SIGTERM stop every process with SIGTERM (a stop_last one, the

@@ -156,6 +156,10 @@ TEST(LaunchCli, ProfileErrorsNameTheKeyAndExitWith2) {
   EXPECT_EQ(RunCommand({Turf(), "launch", "no_such_league"}, &out), 2);
   EXPECT_NE(out.find("ssl_div_a"), std::string::npos) << out;
   std::remove(path.c_str());
+  // A mistyped flag is refused before anything starts (each program's --help is the list), not retried.
+  EXPECT_EQ(RunCommand({Turf(), "launch", "ssl_div_a", "--domain", "231", "--set", "sim.sped=2"}, &out), 2);
+  EXPECT_NE(out.find("sim: turf-sim has no flag --sped"), std::string::npos) << out;
+  EXPECT_EQ(out.find("started"), std::string::npos) << "nothing started: " << out;
 }
 
 }  // namespace

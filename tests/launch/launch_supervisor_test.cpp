@@ -1,7 +1,7 @@
 // `turf launch` supervising real processes: a crashed bridge is restarted and
 // the match resumes; Ctrl-C stops everything cleanly; a process that keeps
-// crashing makes it give up; a clean exit ends the launch; and two launches on
-// other domains or prefixes do not see each other.
+// crashing is given up alone; a configuration error ends the launch at once; a clean exit ends the launch; and two
+// launches on other domains or prefixes do not see each other.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -110,17 +110,49 @@ TEST(LaunchSupervisor, RestartsACrashedBridgeAndStopsCleanlyOnCtrlC) {
   EXPECT_NE(launch.turf->Log().find("sim stopped (exit status 0)"), std::string::npos);
 }
 
-TEST(LaunchSupervisor, GivesUpWhenAProcessKeepsCrashing) {
-  // The vision bridge refuses its address at once: it can never run.
+// A process that refuses its configuration (exit status 2) would refuse it again: no retries, exit 2 at once.
+TEST(LaunchSupervisor, AConfigurationErrorEndsTheLaunchAtOnce) {
+  Launch launch("launch_badconfig", TestDomain(), "lb" + std::to_string(getpid()),
+                "restart: {max_restarts: 5, backoff_initial: 2, backoff_max: 8}\n",
+                {"--set", "vision.address=not-an-address"});
+  ASSERT_TRUE(ExitsWithin(*launch.turf, 20s, 2));
+  const std::string log = launch.turf->Log();
+  EXPECT_NE(log.find("vision refused its configuration (exit status 2"), std::string::npos) << log;
+  EXPECT_EQ(log.find("restart 1 of"), std::string::npos) << "not retried: " << log;
+  EXPECT_NE(log.find("sim stopped (exit status 0)"), std::string::npos) << log;
+}
+
+// A bridge that keeps crashing is given up alone: turf-sim and the other bridge go on, and SIGUSR1 tries again.
+TEST(LaunchSupervisor, GivesUpOnACrashLoopingBridgeAndTheMatchGoesOn) {
+  const int busy_port = FreePort();
+  auto squatter = std::make_unique<UdpSocket>("127.0.0.1", busy_port);  // the grSim bridge cannot bind it: exit 1
+  ASSERT_TRUE(squatter->ok());
   Launch launch("launch_crashloop", TestDomain(), "lc" + std::to_string(getpid()),
                 "restart: {max_restarts: 2, backoff_initial: 0.1, backoff_max: 0.2}\n",
-                {"--set", "vision.address=not-an-address"});
-  ASSERT_TRUE(ExitsWithin(*launch.turf, 20s, 1));
-  const std::string log = launch.turf->Log();
-  EXPECT_NE(log.find("vision crashed (exit status 2"), std::string::npos) << log;
+                {"--set", "grsim.port=" + std::to_string(busy_port)});
+  ASSERT_TRUE(WaitFor([&] { return launch.turf->Log().find("giving up on it") != std::string::npos; }, 30s))
+      << launch.turf->Log();
+  std::string log = launch.turf->Log();
+  EXPECT_NE(log.find("grsim crashed (exit status 1"), std::string::npos) << log;
   EXPECT_NE(log.find("restart 2 of 2 in 0.20 s"), std::string::npos) << log;
-  EXPECT_NE(log.find("3 times in a row: giving up"), std::string::npos) << log;
-  EXPECT_NE(log.find("sim stopped (exit status 0)"), std::string::npos) << log;
+  EXPECT_NE(log.find("the match goes on without it"), std::string::npos) << log;
+  // The match goes on: vision still streams what turf-sim simulates, and turf keeps running.
+  VisionClient client("127.0.0.1", launch.vision_port);
+  EXPECT_TRUE(client.WaitForStream(2, 15s)) << launch.turf->Log();
+  EXPECT_FALSE(launch.turf->Wait(0ms).has_value()) << launch.turf->Log();
+  EXPECT_TRUE(Alive(launch.ChildPid("sim")));
+
+  // The port is free again; SIGUSR1 brings the bridge back.
+  squatter.reset();
+  const pid_t gave_up = launch.ChildPid("grsim");
+  launch.turf->Signal(SIGUSR1);
+  ASSERT_TRUE(WaitFor([&] { return launch.ChildPid("grsim") != gave_up; }, 10s)) << launch.turf->Log();
+  EXPECT_NE(launch.turf->Log().find("SIGUSR1: trying grsim again"), std::string::npos);
+  UdpSocket team;
+  EXPECT_GT(DriveBlueRobot(team, "127.0.0.1", busy_port, client, 1, -3.0, 2.0, 600ms).value_or(0), 0.2)
+      << launch.turf->Log();
+  launch.turf->Signal(SIGINT);
+  ASSERT_TRUE(ExitsWithin(*launch.turf, 10s, 0));
 }
 
 TEST(LaunchSupervisor, ACleanExitEndsTheLaunch) {
