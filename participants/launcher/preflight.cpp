@@ -12,13 +12,16 @@ namespace turf::launch {
 
 namespace {
 
-// What `executable --help` prints, or "" if it cannot be run.
-std::string HelpText(const std::string& executable) {
-  std::string quoted = "'";
-  for (const char c : executable) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  quoted += "'";
+// What `argv... --help` prints (stdout and stderr), or "" if it cannot be run.
+std::string HelpText(const std::vector<std::string>& argv) {
+  std::string command;
+  for (const std::string& a : argv) {
+    command += "'";
+    for (const char c : a) command += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    command += "' ";
+  }
   std::string out;
-  FILE* pipe = popen((quoted + " --help 2>&1").c_str(), "r");
+  FILE* pipe = popen((command + "--help 2>&1").c_str(), "r");
   if (pipe == nullptr) return out;
   char buffer[4096];
   size_t n;
@@ -27,32 +30,37 @@ std::string HelpText(const std::string& executable) {
   return out;
 }
 
+}  // namespace
+
 std::set<std::string> LongFlags(const std::string& text) {
-  static const std::regex kFlag("--[a-z0-9][a-z0-9-]*");
+  static const std::regex kFlag("--[a-z0-9][a-z0-9-]*[a-z0-9]");
   std::set<std::string> flags;
   for (auto it = std::sregex_iterator(text.begin(), text.end(), kFlag); it != std::sregex_iterator(); ++it)
     flags.insert(it->str());
   return flags;
 }
 
-}  // namespace
+std::optional<std::set<std::string>> HelpFlags(const std::vector<std::string>& argv) {
+  const std::string help = HelpText(argv);
+  if (help.find("--help") == std::string::npos) return std::nullopt;
+  return LongFlags(help);
+}
 
 std::vector<std::string> UnknownFlags(const LaunchPlan& plan) {
   std::vector<std::string> errors;
   for (const ProcessCommand& c : plan.commands) {
     const Program* program = FindProgram(c.name);
     if (program == nullptr || program->build_dir.empty() || c.argv.empty()) continue;
-    const std::string help = HelpText(c.argv[0]);
-    if (help.find("--help") == std::string::npos) {
+    const std::optional<std::set<std::string>> known = HelpFlags({c.argv[0]});
+    if (!known) {
       errors.push_back(fmt::format("{}: {} --help printed no flags: is it a turf executable?", c.name, c.argv[0]));
       continue;
     }
-    const std::set<std::string> known = LongFlags(help);
     for (size_t i = 1; i < c.argv.size(); ++i) {
       const std::string& arg = c.argv[i];
       if (arg.rfind("--", 0) != 0) continue;
       const std::string flag = arg.substr(0, arg.find('='));
-      if (!known.count(flag))
+      if (!known->count(flag))
         errors.push_back(fmt::format("{}: {} has no flag {} ({} --help lists its flags)", c.name, program->binary, flag,
                                      program->binary));
     }
