@@ -39,8 +39,8 @@ class FanoutReader final : public ReaderEndpoint {
 
 FanoutBus::FanoutBus(Bus& first, Bus& second) : Bus(first.prefix()), first_(first), second_(second) {
   if (first.prefix() != second.prefix())
-    throw std::invalid_argument("FanoutBus: the two buses have different topic prefixes: " + first.prefix() +
-                                " and " + second.prefix());
+    throw std::invalid_argument("FanoutBus: the two buses have different topic prefixes: " + first.prefix() + " and " +
+                                second.prefix());
 }
 
 FanoutBus::~FanoutBus() = default;
