@@ -4,11 +4,12 @@
 #   bench/run.sh ssl [sim seconds]       turf-sim alone, SSL scenes
 #   bench/run.sh simspark [sim seconds]  SimSpark agents through turf-simspark-bridge
 #   bench/run.sh snapshot                kernel snapshots: size, Save and Restore next to a step
+#   bench/run.sh sync [requests]         SSL sync port round trip: separate bridge over DDS vs in turf-sim's process
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
 WHAT=all
-if [[ "${1:-}" == ssl || "${1:-}" == simspark || "${1:-}" == snapshot ]]; then
+if [[ "${1:-}" == ssl || "${1:-}" == simspark || "${1:-}" == snapshot || "${1:-}" == sync ]]; then
   WHAT=$1
   shift
 fi
@@ -66,11 +67,14 @@ case "$WHAT" in
   ssl) ssl ;;
   simspark) simspark ;;
   snapshot) "$BUILD_DIR/bench/turf-bench-snapshot" ;;
+  sync) "$BUILD_DIR/bench/turf-bench-sync" --requests "${1:-1000}" ;;
   all)
     ssl
     echo
     simspark
     echo
     "$BUILD_DIR/bench/turf-bench-snapshot"
+    echo
+    "$BUILD_DIR/bench/turf-bench-sync"
     ;;
 esac

@@ -2,12 +2,15 @@
 //
 // A UDP client on 127.0.0.1 sends SimulationSyncRequests (sim_step 1/60 s, commands for six robots) one after the
 // other and times each until its SimulationSyncResponse arrives, against:
-//   dds         turf-sim's node and a SimprotoBridge on their own DDS participants (what turf-sim plus a separate
-//               turf-simproto-bridge process do), both in this process with Fast DDS's intra-process delivery off,
-//               so samples take the same transport as between two processes on one host;
-//   in-process  turf-sim with the front-end served in its process (SimHost, turf-sim --simproto);
-//   physics     the same number of physics steps of the kernel alone (SslKernel::Step, the same commands).
-// Prints mean, p50 and p99 per request and the overhead beyond physics (each row minus the physics row).
+//   (a)  turf-sim's node and a SimprotoBridge on their own DDS participants (what turf-sim plus a separate
+//        turf-simproto-bridge process do), both in this process with Fast DDS's intra-process delivery off, so
+//        samples take the same transport as between two processes on one host;
+//   (b)  turf-sim with the front-end served in its process (SimHost, turf-sim --simproto): the node on DDS and on
+//        an in-memory bus, the front-end on the in-memory bus;
+//   (b') diagnostic: the node and the front-end on one MemoryBus, no DDS participant at all;
+//   (c)  the same number of physics steps of the kernel alone (SslKernel::Step, the same commands), no threads.
+// All run side by side and take one request each in turn, so load from elsewhere falls on every row alike.
+// Prints mean, p50 and p99 per request and the overhead beyond physics (each row minus (c)). bench/run.sh sync.
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
