@@ -10,6 +10,8 @@
 #include <cmath>
 #include <functional>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -84,7 +86,18 @@ class RemoteObserver {
 // turf-sim (lockstep) with the in-process front-end on free loopback ports, on a thread.
 struct Host {
   explicit Host(const dds::ParticipantOptions& dds) : host(Make(dds)) {}
+  // The ports are picked free, released, then bound by the front-end: another process may take one in between,
+  // so a failed bind picks new ones (a few times).
   std::unique_ptr<SimHost> Make(const dds::ParticipantOptions& dds) {
+    for (int attempt = 1;; ++attempt) {
+      try {
+        return TryMake(dds);
+      } catch (const std::runtime_error& e) {
+        if (attempt == 5 || std::string(e.what()).find("cannot bind") == std::string::npos) throw;
+      }
+    }
+  }
+  std::unique_ptr<SimHost> TryMake(const dds::ParticipantOptions& dds) {
     SimNodeOptions node = test::OnDds<SimNodeOptions>(dds);
     node.mode = TimeMode::kLockstep;
     SimprotoBridgeOptions simproto;
