@@ -1,7 +1,7 @@
 // turf-bench-sync: what the SSL simulation protocol's sync port costs beyond physics, per request.
 //
 // A UDP client on 127.0.0.1 sends SimulationSyncRequests (sim_step 1/60 s, commands for six robots) one after the
-// other and times each until its SimulationSyncResponse arrives, against:
+// other and times each from sending it until its SimulationSyncResponse arrives (parsed after), against:
 //   (a)  turf-sim's node and a SimprotoBridge on their own DDS participants (what turf-sim plus a separate
 //        turf-simproto-bridge process do), both in this process with Fast DDS's intra-process delivery off, so
 //        samples take the same transport as between two processes on one host;
@@ -109,13 +109,13 @@ class SyncClient {
         std::this_thread::sleep_for(10ms);
     }
   }
-  // The wall time of the next request, from sending it to its response's arrival, in us.
+  // The wall time of the next request, from sending it to its response's arrival (parsed after), in us.
   double Time() {
     const std::string bytes = SyncRequest(sent_++);
     const auto start = SteadyClock::now();
-    const bool ok = Ask(bytes);
+    std::optional<turf::Datagram> d = Exchange(bytes);
     const auto end = SteadyClock::now();
-    if (!ok) throw std::runtime_error("a sync request failed");
+    if (!Answered(d)) throw std::runtime_error("a sync request failed");
     return std::chrono::duration<double, std::micro>(end - start).count();
   }
 
@@ -126,16 +126,19 @@ class SyncClient {
     if (!s) throw std::runtime_error(error);
     return std::move(*s);
   }
-  bool Ask(const std::string& bytes) {
+  std::optional<turf::Datagram> Exchange(const std::string& bytes) {
     std::string error;
     const std::vector<uint8_t> data(bytes.begin(), bytes.end());
     if (!socket_.SendTo(data, to_, &error)) throw std::runtime_error(error);
-    std::optional<turf::Datagram> d = socket_.Receive(65536, 5s);
-    if (!d) return false;
+    return socket_.Receive(65536, 5s);
+  }
+  // A response without errors.
+  static bool Answered(const std::optional<turf::Datagram>& d) {
     ws::SimulationSyncResponse r;
-    return r.ParseFromArray(d->bytes.data(), static_cast<int>(d->bytes.size())) &&
+    return d && r.ParseFromArray(d->bytes.data(), static_cast<int>(d->bytes.size())) &&
            r.robot_control_response().errors_size() == 0;
   }
+  bool Ask(const std::string& bytes) { return Answered(Exchange(bytes)); }
 
   turf::UdpSocket socket_;
   const turf::UdpEndpoint to_;
