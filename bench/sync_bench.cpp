@@ -207,7 +207,12 @@ struct OverDds {
 // (b) turf-sim with the front-end in its process (turf-sim --simproto).
 struct InProcess {
   InProcess(const turf::Scene& scene, const std::string& qos, turf::SimprotoBridgeOptions o)
-      : port(o.sync_port), host(scene, NodeOptions(qos, "host"), turf::InProcessFrontEnds{std::move(o)}) {}
+      : port(o.sync_port), host(scene, NodeOptions(qos, "host"), FrontEnd(std::move(o))) {}
+  static turf::InProcessFrontEnds FrontEnd(turf::SimprotoBridgeOptions o) {
+    turf::InProcessFrontEnds f;
+    f.simproto = std::move(o);
+    return f;
+  }
   const uint16_t port;
   turf::SimHost host;
 };

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <optional>
+#include <regex>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -17,10 +18,12 @@
 
 #include "codecs/proto/ssl_simulation.pb.h"
 #include "dds/participant.h"
+#include "loader/legged_scene_yaml.h"
 #include "participants/common/udp.h"
 #include "participants/sim/sim_host.h"
 #include "participants/sim/sim_node.h"
 #include "tests/core/test_scenes.h"
+#include "tests/simspark/agent_client.h"
 #include "tests/support/in_process.h"
 
 namespace turf {
@@ -107,7 +110,9 @@ struct Host {
     simproto.blue_port = blue = FreePort();
     simproto.yellow_port = yellow = FreePort();
     simproto.sync_port = sync = FreePort();
-    return std::make_unique<SimHost>(test::Teams(2), node, InProcessFrontEnds{simproto});
+    InProcessFrontEnds front_ends;
+    front_ends.simproto = simproto;
+    return std::make_unique<SimHost>(test::Teams(2), node, std::move(front_ends));
   }
   uint16_t control = 0, blue = 0, yellow = 0, sync = 0;
   test::OnThread<SimHost> host;
@@ -184,6 +189,49 @@ TEST(SimHost, SyncRequestsOverUdpStepTheInProcessNodeAndARemoteParticipantSeesIt
   const SimprotoBridgeStats stats = h.host.node().simproto()->Stats();
   EXPECT_EQ(stats.rejected, 0u);
   EXPECT_EQ(stats.commands, 2u * kRequests);
+}
+
+// A legged scene with SimSpark agents served in turf-sim's process (turf-sim --simspark): an agent in sync mode
+// gets a perception per (syn) round, 20 ms apart, and a remote DDS participant sees turf-sim's clock advance.
+TEST(SimHost, SimSparkAgentsInProcessStepTheLeggedNodeAndARemoteParticipantSeesIt) {
+  const dds::ParticipantOptions dds = test::UniqueDds("observer", "hostspark", 43);
+  LeggedSceneLoadResult scene = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/simspark_match.yaml");
+  ASSERT_TRUE(scene.scene.has_value());
+  SimNodeOptions node = test::OnDds<SimNodeOptions>(dds);
+  node.mode = TimeMode::kLockstep;
+  SimSparkBridgeOptions simspark;
+  simspark.listen = "127.0.0.1";
+  simspark.agent_port = 0;  // any free port
+  simspark.monitor_port = 0;
+  simspark.sync_mode = true;
+  InProcessFrontEnds front_ends;
+  front_ends.simspark = simspark;
+  test::OnThread<SimHost> host(std::make_unique<SimHost>(std::move(*scene.scene), node, std::move(front_ends)));
+  ASSERT_NE(host.node().simspark(), nullptr);
+  RemoteObserver remote(dds);
+
+  auto now = [](const std::string& m) {
+    std::smatch match;
+    return std::regex_search(m, match, std::regex(R"(\(time \(now ([-0-9.]+)\)\))")) ? std::stod(match[1]) : NAN;
+  };
+  test::AgentClient agent;
+  ASSERT_TRUE(agent.Connect(host.node().simspark()->agent_port()));
+  agent.Send("(scene rsg/agent/nao/nao_hetero.rsg 0)");
+  ASSERT_TRUE(agent.Receive(10s).has_value()) << "no first perception";
+  for (int i = 1; i < 5; ++i) ASSERT_TRUE(agent.Receive(10s).has_value()) << "grace cycle " << i;
+  std::vector<double> times;
+  for (int i = 0; i < 3; ++i) {
+    agent.Send("(syn)");
+    const std::optional<std::string> m = agent.Receive(10s);
+    ASSERT_TRUE(m.has_value());
+    times.push_back(now(*m));
+  }
+  EXPECT_NEAR(times[1] - times[0], 0.02, 1e-6);
+  EXPECT_NEAR(times[2] - times[1], 0.02, 1e-6);
+  // Over DDS, as any other process would see it: the clock at (at least) the last cycle's time.
+  ASSERT_TRUE(remote.Wait([&](const idl::WorldState&, const idl::Clock& c) {
+    return c.sim_time_ns() >= static_cast<int64_t>(std::llround(times.back() * 1e9)) - 1'000'000;
+  }));
 }
 
 }  // namespace
