@@ -4,11 +4,12 @@
 #   bench/run.sh ssl [sim seconds]       turf-sim alone, SSL scenes
 #   bench/run.sh simspark [sim seconds]  SimSpark agents through turf-simspark-bridge
 #   bench/run.sh snapshot                kernel snapshots: size, Save and Restore next to a step
+#   bench/run.sh sync [requests]         SSL sync port round trip: separate bridge over DDS vs in turf-sim's process
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
 WHAT=all
-if [[ "${1:-}" == ssl || "${1:-}" == simspark || "${1:-}" == snapshot ]]; then
+if [[ "${1:-}" == ssl || "${1:-}" == simspark || "${1:-}" == snapshot || "${1:-}" == sync ]]; then
   WHAT=$1
   shift
 fi
@@ -31,21 +32,34 @@ ssl() {
 
 # One run: turf-sim (simspark_match scene) and turf-simspark-bridge as their
 # own processes on a private DDS domain and ports, then the scripted agents.
+# where=in-process: turf-sim serves the agents itself (--simspark), no bridge process.
 simspark_run() {
-  local agents=$1 mode=$2 motion=$3 header=${4:-}
+  local agents=$1 mode=$2 motion=$3 header=${4:-} where=${5:-bridge}
   local domain=$((90 + RANDOM % 9)) port=$((23100 + RANDOM % 500))
   local prefix="bench$$"
+  local sync_flag="" label="$agents agents, $mode, $motion"
+  if [[ "$where" == in-process ]]; then
+    [[ "$mode" == sync ]] && sync_flag="--simspark-sync"
+    "$BUILD_DIR/participants/sim/turf-sim" --scene configs/scenes/simspark_match.yaml -d "$domain" -p "$prefix" \
+      --lockstep --simspark --simspark-agent-port "$port" --simspark-monitor-port $((port + 1)) $sync_flag \
+      --log-level warn &
+    local sim=$!
+    "$BUILD_DIR/bench/turf-bench-simspark" --port "$port" --agents "$agents" --seconds "$SECONDS_SIM" \
+      --motion "$motion" --label "$label, in turf-sim" $header || true
+    kill -INT "$sim" 2>/dev/null || true
+    wait "$sim" 2>/dev/null || true
+    return
+  fi
   "$BUILD_DIR/participants/sim/turf-sim" --scene configs/scenes/simspark_match.yaml -d "$domain" -p "$prefix" \
     --lockstep --log-level warn &
   local sim=$!
-  local sync_flag=""
   [[ "$mode" == sync ]] && sync_flag="--sync"
   "$BUILD_DIR/participants/simspark_bridge/turf-simspark-bridge" -d "$domain" -p "$prefix" --listen 127.0.0.1 \
     --agent-port "$port" --monitor-port $((port + 1)) $sync_flag --log-level warn &
   local bridge=$!
   # The agents connect as soon as the bridge listens and wait for turf-sim to be ready (no fixed sleep).
   "$BUILD_DIR/bench/turf-bench-simspark" --port "$port" --agents "$agents" --seconds "$SECONDS_SIM" \
-    --motion "$motion" --label "$agents agents, $mode, $motion" $header || true
+    --motion "$motion" --label "$label" $header || true
   kill -INT "$bridge" "$sim" 2>/dev/null || true
   wait "$bridge" "$sim" 2>/dev/null || true
 }
@@ -58,6 +72,8 @@ simspark() {
   simspark_run 22 sync upper
   simspark_run 11 sync all
   simspark_run 22 real-time all
+  simspark_run 22 sync all "" in-process
+  simspark_run 22 sync upper "" in-process
   echo "RTF: simulated seconds per wall second over the measured stretch (sync: as fast as the agents"
   echo "answer). Reference rcssserver3d 0.7.3 on this machine: 0.72x with 22 agents, 1.9x with 11."
 }
@@ -66,11 +82,14 @@ case "$WHAT" in
   ssl) ssl ;;
   simspark) simspark ;;
   snapshot) "$BUILD_DIR/bench/turf-bench-snapshot" ;;
+  sync) "$BUILD_DIR/bench/turf-bench-sync" --requests "${1:-1000}" ;;
   all)
     ssl
     echo
     simspark
     echo
     "$BUILD_DIR/bench/turf-bench-snapshot"
+    echo
+    "$BUILD_DIR/bench/turf-bench-sync"
     ;;
 esac

@@ -1,6 +1,7 @@
 // A transport for turf's topics (topics.h): typed writers and readers, over one of two implementations:
 //  - dds::Participant (participant.h): Fast DDS, one DomainParticipant; QoS from the profiles file;
-//  - dds::MemoryBus (memory_bus.h): in-process, no DDS, for tests and an in-process front-end.
+//  - dds::MemoryBus (memory_bus.h): in-process, no DDS, for tests and an in-process front-end;
+// and dds::FanoutBus (fanout_bus.h), one bus over two (turf-sim on DDS and on a MemoryBus at once).
 // Code that only writes and reads topics takes a Bus&; whoever makes the bus picks the implementation.
 //
 // The typed API: bus.MakeWriter(dds::Topic::kClock) gives a Writer<idl::ClockPubSubType>, bus.MakeReader(topic,
@@ -190,6 +191,8 @@ class Bus {
   virtual std::unique_ptr<ReaderEndpoint> OpenReader(Topic topic, const SampleOps& ops, SampleSink& sink) = 0;
 
  private:
+  friend class FanoutBus;  // opens endpoints on the buses it spans
+
   // Records the endpoint and logs its line at debug: the default (info) output keeps the participant's own
   // start-up lines, or LogTopics(); --log-level debug adds each endpoint's type and QoS profile as it is made.
   void Created(Endpoint endpoint, Topic topic);

@@ -53,10 +53,17 @@ fdds::TypeSupport TypeOf(Topic topic) {
 
 class DdsWriter final : public WriterEndpoint {
  public:
-  DdsWriter(fdds::Publisher* publisher, fdds::DataWriter* writer) : publisher_(publisher), writer_(writer) {}
+  DdsWriter(fdds::Publisher* publisher, fdds::DataWriter* writer)
+      : publisher_(publisher),
+        writer_(writer),
+        volatile_(writer->get_qos().durability().kind == fdds::VOLATILE_DURABILITY_QOS) {}
   ~DdsWriter() override { publisher_->delete_datawriter(writer_); }
 
   bool Write(const void* sample, std::optional<int64_t> source_ns) override {
+    // A volatile sample with no reader matched reaches no one, now or later: skip serialising it. (turf-sim with
+    // its front-end in process and no remote camera reader saves ~0.1 ms per sync request.) Samples of durable
+    // topics are written regardless: a reader that matches later gets the last of them.
+    if (volatile_ && Matched() == 0) return true;
     void* data = const_cast<void*>(sample);
     if (!source_ns) return writer_->write(data);
     eprosima::fastrtps::Time_t t(static_cast<int32_t>(*source_ns / 1000000000),
@@ -72,6 +79,7 @@ class DdsWriter final : public WriterEndpoint {
  private:
   fdds::Publisher* publisher_;
   fdds::DataWriter* writer_;
+  const bool volatile_;
 };
 
 // Takes samples on Fast DDS's thread into a buffer of the topic's type and hands them to the typed queue.

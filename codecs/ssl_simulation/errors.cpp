@@ -78,11 +78,31 @@ void CollectUnknown(const pb::Message& message, const std::string& path, std::ve
   }
 }
 
+// CollectUnknown's walk without building paths: unknown fields are rare, and the paths of every nested message
+// cost more than the rest of decoding a sync request.
+bool AnyUnknown(const pb::Message& message) {
+  const pb::Reflection* reflection = message.GetReflection();
+  if (reflection->GetUnknownFields(message).field_count() > 0) return true;
+  std::vector<const pb::FieldDescriptor*> fields;
+  reflection->ListFields(message, &fields);
+  for (const pb::FieldDescriptor* f : fields) {
+    if (f->cpp_type() != pb::FieldDescriptor::CPPTYPE_MESSAGE) continue;
+    if (f->message_type()->full_name() == "google.protobuf.Any") continue;
+    if (f->is_repeated()) {
+      for (int i = 0; i < reflection->FieldSize(message, f); ++i)
+        if (AnyUnknown(reflection->GetRepeatedMessage(message, f, i))) return true;
+    } else if (AnyUnknown(reflection->GetMessage(message, f))) {
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<std::string> UnknownFields(const pb::Message& message) {
   std::vector<std::string> out;
-  CollectUnknown(message, "", &out);
+  if (AnyUnknown(message)) CollectUnknown(message, "", &out);
   return out;
 }
 

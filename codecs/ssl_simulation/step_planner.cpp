@@ -1,7 +1,7 @@
 #include "codecs/ssl_simulation/step_planner.h"
 
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <limits>
 
@@ -23,11 +23,10 @@ int64_t ToNanoseconds(double seconds) { return std::llround(seconds * 1e9); }
 
 int64_t FloatSecondsToNanoseconds(float seconds) {
   if (!std::isfinite(seconds)) return 0;
+  // The shortest decimal that gives the float back (the closest such, as %.<n>g with the fewest digits n would).
   char text[32];
-  for (int digits = 1; digits <= 9; ++digits) {  // 9 significant digits always give the float back
-    std::snprintf(text, sizeof(text), "%.*g", digits, static_cast<double>(seconds));
-    if (std::strtof(text, nullptr) == seconds) break;
-  }
+  const std::to_chars_result r = std::to_chars(text, text + sizeof(text) - 1, seconds);
+  *r.ptr = '\0';
   return ToNanoseconds(std::strtod(text, nullptr));
 }
 

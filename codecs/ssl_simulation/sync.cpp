@@ -43,11 +43,14 @@ SyncDecode DecodeSyncRequest(const uint8_t* data, size_t size, const ControlCont
   out.command = ConvertSimulatorCommand(message.simulator_command(), sync_context);
   const int per_team = context.field != nullptr ? context.field->robots_per_team() : 0;
   out.robots = ConvertRobotControl(message.robot_control(), Port::kSync, per_team);
-  // Unknown fields inside the parts were reported by their own converters.
-  ws::SimulationSyncRequest top = message;
-  top.clear_simulator_command();
-  top.clear_robot_control();
-  ReportUnknownFields(top, &p.errors());
+  // Unknown fields inside the parts were reported by their own converters; the rest are the top message's own
+  // (sim_step is a scalar). A copy without the parts only when there are some.
+  if (message.GetReflection()->GetUnknownFields(message).field_count() > 0) {
+    ws::SimulationSyncRequest top = message;
+    top.clear_simulator_command();
+    top.clear_robot_control();
+    ReportUnknownFields(top, &p.errors());
+  }
 
   out.errors = std::move(p.errors());
   out.errors.insert(out.errors.end(), out.command.errors.begin(), out.command.errors.end());

@@ -99,16 +99,19 @@ bool UdpSocket::SetMulticastLoop(bool on, std::string* error) {
 std::optional<Datagram> UdpSocket::Receive(size_t max_bytes, std::chrono::milliseconds timeout) {
   pollfd p{fd_.get(), POLLIN, 0};
   if (poll(&p, 1, static_cast<int>(timeout.count())) <= 0 || (p.revents & POLLIN) == 0) return std::nullopt;
+  // Received into a buffer kept per thread, then copied at its size: a fresh zeroed max_bytes buffer per datagram
+  // (64 KiB for most callers) cost more than the rest of a loopback round trip (memset and page faults).
+  thread_local std::vector<uint8_t> buffer;
+  if (buffer.size() < max_bytes) buffer.resize(max_bytes);
   Datagram d;
-  d.bytes.resize(max_bytes);
   socklen_t len = sizeof(d.from.addr);
   // MSG_TRUNC makes recvfrom return the datagram's real length.
   const ssize_t n =
-      recvfrom(fd_.get(), d.bytes.data(), d.bytes.size(), MSG_TRUNC, reinterpret_cast<sockaddr*>(&d.from.addr), &len);
+      recvfrom(fd_.get(), buffer.data(), max_bytes, MSG_TRUNC, reinterpret_cast<sockaddr*>(&d.from.addr), &len);
   if (n < 0) return std::nullopt;
   d.size = static_cast<size_t>(n);
   d.truncated = d.size > max_bytes;
-  d.bytes.resize(std::min(d.size, max_bytes));
+  d.bytes.assign(buffer.begin(), buffer.begin() + static_cast<ptrdiff_t>(std::min(d.size, max_bytes)));
   return d;
 }
 

@@ -12,6 +12,7 @@
 #include "loader/realism_yaml.h"
 #include "loader/scene_yaml.h"
 #include "participants/common/process.h"
+#include "participants/sim/sim_host.h"
 #include "participants/sim/sim_node.h"
 
 namespace turf {
@@ -40,6 +41,16 @@ int RunLegged(const SimCommandLine& command_line) {
     return kExitBadConfig;
   }
   spdlog::info("legged scene file {}", command_line.scene_path);
+  if (command_line.simproto) {
+    spdlog::error("--simproto serves the SSL simulation protocol: it needs an SSL scene, not a legged one");
+    return kExitBadConfig;
+  }
+  if (command_line.simspark) {
+    InProcessFrontEnds front_ends;
+    front_ends.simspark = command_line.simspark_options;
+    SimHost(std::move(*loaded.scene), command_line.node, std::move(front_ends)).Run(StopRequested);
+    return kExitClean;
+  }
   if (!command_line.realism.empty()) {
     const std::optional<SensorRealism> r = LoadRealismOption(command_line.realism);
     if (!r) return kExitBadConfig;
@@ -62,6 +73,16 @@ int RunSsl(const SimCommandLine& command_line) {
     if (!r) return kExitBadConfig;
     loaded.scene->realism = *r;
   }
+  if (command_line.simspark) {
+    spdlog::error("--simspark serves SimSpark agents: it needs a legged scene (kind: legged), not an SSL one");
+    return kExitBadConfig;
+  }
+  if (command_line.simproto) {
+    InProcessFrontEnds front_ends;
+    front_ends.simproto = command_line.simproto_options;
+    SimHost(std::move(*loaded.scene), command_line.node, std::move(front_ends)).Run(StopRequested);
+    return kExitClean;
+  }
   SimNode(std::move(*loaded.scene), command_line.node).Run(StopRequested);
   return kExitClean;
 }
@@ -82,6 +103,55 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
                  "overrides the scene's");
   app.add_option("--duration", node.duration, "stop after this many simulated seconds (0: run until Ctrl-C)")
       ->check(CLI::NonNegativeNumber);
+
+  // The SSL simulation protocol in this process (sim_host.h): the same ports as turf-simproto-bridge.
+  SimprotoBridgeOptions& sp = command_line.simproto_options;
+  sp.name = "turf-sim/simproto";
+  sp.listen = "127.0.0.1";
+  CLI::Option* simproto = app.add_option("--simproto", sp.listen,
+                                         "serve the SSL simulation protocol (UDP: control, blue, yellow and sync "
+                                         "ports) in this process, with no DDS hop to the physics; binds ADDRESS "
+                                         "(default 127.0.0.1; 0.0.0.0: every interface). turf-simproto-bridge "
+                                         "still works as a separate process")
+                              ->expected(0, 1)
+                              ->type_name("[ADDRESS]");
+  app.add_option("--simproto-control-port", sp.control_port,
+                 "with --simproto: UDP port for SimulatorCommand -> SimulatorResponse (0: off)")
+      ->capture_default_str();
+  app.add_option("--simproto-blue-port", sp.blue_port,
+                 "with --simproto: UDP port for the blue team's RobotControl (0: off)")
+      ->capture_default_str();
+  app.add_option("--simproto-yellow-port", sp.yellow_port,
+                 "with --simproto: UDP port for the yellow team's RobotControl (0: off)")
+      ->capture_default_str();
+  app.add_option("--simproto-sync-port", sp.sync_port,
+                 "with --simproto: UDP port for SimulationSyncRequest (lockstep; ids 0..15 blue, 16..31 yellow; "
+                 "0: off)")
+      ->capture_default_str();
+
+  // SimSpark agents and monitors in this process (sim_host.h): the same ports as turf-simspark-bridge.
+  SimSparkBridgeOptions& ss = command_line.simspark_options;
+  ss.name = "turf-sim/simspark";
+  ss.listen = "127.0.0.1";
+  CLI::Option* simspark = app.add_option("--simspark", ss.listen,
+                                         "legged scenes: serve SimSpark agents and monitors (TCP) in this process, "
+                                         "with no DDS hop to the physics; binds ADDRESS (default 127.0.0.1). "
+                                         "turf-simspark-bridge still works as a separate process")
+                              ->expected(0, 1)
+                              ->type_name("[ADDRESS]");
+  app.add_option("--simspark-agent-port", ss.agent_port, "with --simspark: TCP port for agents")->capture_default_str();
+  app.add_option("--simspark-monitor-port", ss.monitor_port, "with --simspark: TCP port for monitors and trainers")
+      ->capture_default_str();
+  app.add_flag("--simspark-sync", ss.sync_mode,
+               "with --simspark: agent sync mode (a cycle runs when every agent has sent (syn))");
+
+  // An empty --simproto or --simspark (no ADDRESS) leaves the default; count() tells whether it was given at all.
+  app.parse_complete_callback([&command_line, simproto, simspark] {
+    command_line.simproto = simproto->count() > 0;
+    if (command_line.simproto_options.listen.empty()) command_line.simproto_options.listen = "127.0.0.1";
+    command_line.simspark = simspark->count() > 0;
+    if (command_line.simspark_options.listen.empty()) command_line.simspark_options.listen = "127.0.0.1";
+  });
 }
 
 bool ApplyTimeMode(const std::string& speed, bool lockstep, SimNodeOptions& node) {

@@ -8,6 +8,8 @@
 
 #include "participants/common/participant_main.h"
 #include "participants/sim/node_options.h"
+#include "participants/simproto_bridge/simproto_bridge.h"
+#include "participants/simspark_bridge/simspark_bridge.h"
 
 namespace turf {
 
@@ -18,6 +20,14 @@ struct SimCommandLine {
   bool lockstep = false;    // --lockstep
   std::string realism;      // --realism: a preset or a file; empty: the scene's
   SimNodeOptions node;      // the common flags, --paused and --duration
+  // --simproto [ADDRESS]: serve the SSL simulation protocol in this process (sim_host.h), on 127.0.0.1 unless an
+  // address is given; --simproto-*-port as turf-simproto-bridge's port flags.
+  bool simproto = false;
+  SimprotoBridgeOptions simproto_options;
+  // --simspark [ADDRESS]: serve SimSpark agents and monitors in this process (legged scenes), on 127.0.0.1 unless
+  // an address is given; --simspark-agent-port, --simspark-monitor-port, --simspark-sync as turf-simspark-bridge's.
+  bool simspark = false;
+  SimSparkBridgeOptions simspark_options;
 };
 
 // Declares turf-sim's flags on `participant`, in the order --help lists them.

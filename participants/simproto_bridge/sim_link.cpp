@@ -15,24 +15,25 @@ namespace turf {
 
 class SimLink::Impl {
  public:
-  explicit Impl(const dds::ParticipantOptions& options)
-      : participant_(options),
-        command_writers_{participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue),
-                         participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow)},
-        control_(participant_, options.name),
-        feedback_readers_{
-            participant_.MakeReader<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackBlue, Wake()),
-            participant_.MakeReader<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackYellow, Wake())},
-        field_reader_(participant_.MakeReader<idl::SslFieldPubSubType>(dds::Topic::kSslField, Wake())),
-        clock_reader_(participant_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock, Wake())),
-        world_reader_(participant_.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState, Wake())),
-        camera_reader_(participant_.MakeReader<idl::CameraFramePubSubType>(dds::Topic::kSslCamera, Wake())) {
+  // `own` null: on `bus`, which outlives the link.
+  Impl(std::unique_ptr<dds::Participant> own, dds::Bus& bus, const std::string& name)
+      : own_(std::move(own)),
+        bus_(bus),
+        command_writers_{bus_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue),
+                         bus_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow)},
+        control_(bus_, name),
+        feedback_readers_{bus_.MakeReader<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackBlue, Wake()),
+                          bus_.MakeReader<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackYellow, Wake())},
+        field_reader_(bus_.MakeReader<idl::SslFieldPubSubType>(dds::Topic::kSslField, Wake())),
+        clock_reader_(bus_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock, Wake())),
+        world_reader_(bus_.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState, Wake())),
+        camera_reader_(bus_.MakeReader<idl::CameraFramePubSubType>(dds::Topic::kSslCamera, Wake())) {
     ready_.store(true);
   }
 
   ~Impl() { ready_.store(false); }
 
-  dds::Participant& participant() { return participant_; }
+  dds::Bus& bus() { return bus_; }
 
   View Now() {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -43,8 +44,9 @@ class SimLink::Impl {
   void Command(const idl::SslRobotCommand& c) { command_writers_[c.team() == idl::TEAM_BLUE ? 0 : 1]->Write(c); }
 
   // Requests are volatile: the client waits until turf-sim's reader is matched.
-  std::vector<dds::ControlOutcome> Control(std::vector<idl::SimControl> requests, std::chrono::milliseconds timeout) {
-    return control_.CallAll(std::move(requests), timeout);
+  std::vector<dds::ControlOutcome> Control(std::vector<idl::SimControl> requests, std::chrono::milliseconds timeout,
+                                           const dds::ControlClient::StopFn& stop) {
+    return control_.CallAll(std::move(requests), timeout, stop);
   }
 
   uint64_t FrameCursor() {
@@ -107,7 +109,8 @@ class SimLink::Impl {
   std::vector<idl::SslRobotFeedback> feedback_;
   std::vector<idl::CameraFrame> camera_inbox_;
 
-  dds::Participant participant_;
+  std::unique_ptr<dds::Participant> own_;
+  dds::Bus& bus_;
   std::unique_ptr<dds::Writer<idl::SslRobotCommandPubSubType>> command_writers_[2];
   dds::ControlClient control_;
   std::unique_ptr<dds::Reader<idl::SslRobotFeedbackPubSubType>> feedback_readers_[2];
@@ -117,15 +120,21 @@ class SimLink::Impl {
   std::unique_ptr<dds::Reader<idl::CameraFramePubSubType>> camera_reader_;
 };
 
-SimLink::SimLink(const dds::ParticipantOptions& options) : impl_(std::make_unique<Impl>(options)) {}
+SimLink::SimLink(const dds::ParticipantOptions& options) {
+  auto own = std::make_unique<dds::Participant>(options);
+  dds::Bus& bus = *own;
+  impl_ = std::make_unique<Impl>(std::move(own), bus, options.name);
+}
+SimLink::SimLink(dds::Bus& bus, const std::string& name) : impl_(std::make_unique<Impl>(nullptr, bus, name)) {}
 SimLink::~SimLink() = default;
-std::string SimLink::TopicName(dds::Topic topic) const { return impl_->participant().TopicName(topic); }
-const dds::ParticipantOptions& SimLink::options() const { return impl_->participant().options(); }
+std::string SimLink::TopicName(dds::Topic topic) const { return impl_->bus().TopicName(topic); }
+std::string SimLink::DescribeBus() const { return impl_->bus().Describe(); }
 SimLink::View SimLink::Now() { return impl_->Now(); }
 void SimLink::Command(const idl::SslRobotCommand& command) { impl_->Command(command); }
 std::vector<dds::ControlOutcome> SimLink::Control(std::vector<idl::SimControl> requests,
-                                                  std::chrono::milliseconds timeout) {
-  return impl_->Control(std::move(requests), timeout);
+                                                  std::chrono::milliseconds timeout,
+                                                  const dds::ControlClient::StopFn& stop) {
+  return impl_->Control(std::move(requests), timeout, stop);
 }
 uint64_t SimLink::FrameCursor() { return impl_->FrameCursor(); }
 std::vector<idl::CameraFrame> SimLink::FramesSince(uint64_t cursor) { return impl_->FramesSince(cursor); }

@@ -40,18 +40,23 @@ class SimLink : Pinned {
     simproto::ContactMap contacts;
   };
 
-  // Throws std::runtime_error if the DDS entities cannot be created.
+  // On a DDS participant of its own. Throws std::runtime_error if the DDS entities cannot be created.
   explicit SimLink(const dds::ParticipantOptions& options);
+  // On `bus` (a dds::MemoryBus shared with turf-sim's node, for a front-end in turf-sim's process), which must
+  // outlive the link; `name` is the control client's.
+  SimLink(dds::Bus& bus, const std::string& name);
   ~SimLink();
 
   std::string TopicName(dds::Topic topic) const;
-  const dds::ParticipantOptions& options() const;
+  // The bus's start-up line (Bus::Describe()).
+  std::string DescribeBus() const;
   View Now();
   // Publishes on the topic of the command's team.
   void Command(const idl::SslRobotCommand& command);
   // Sends the requests in order (as client `name`) once turf-sim is matched,
-  // and waits for every reply until `timeout`: one outcome each, in order.
-  std::vector<dds::ControlOutcome> Control(std::vector<idl::SimControl> requests, std::chrono::milliseconds timeout);
+  // and waits for every reply until `timeout` (or until `stop()` answers true): one outcome each, in order.
+  std::vector<dds::ControlOutcome> Control(std::vector<idl::SimControl> requests, std::chrono::milliseconds timeout,
+                                           const dds::ControlClient::StopFn& stop = {});
   // Camera frames are numbered in arrival order. FrameCursor() is the number
   // received so far; FramesSince(c) returns those received after cursor `c`
   // (the newest kMaxBufferedFrames at most).

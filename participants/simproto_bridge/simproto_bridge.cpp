@@ -39,16 +39,20 @@ constexpr const char* kKindMessages[] = {"SimulatorCommand -> SimulatorResponse"
 
 const char* Name(Kind kind) { return kKindNames[static_cast<int>(kind)]; }
 
+// On `bus`, or (null) on a DDS participant of the link's own.
+SimLink MakeLink(const SimprotoBridgeOptions& o, dds::Bus* bus) {
+  if (bus != nullptr) return SimLink(*bus, o.name);
+  return SimLink(dds::ParticipantOptions{o.domain, o.name, o.prefix, o.qos_file});
+}
+
 const sp::SimError kNotAvailable{sp::kSimNotAvailable, "turf-sim has not been seen yet (field, world state, clock)"};
 
 }  // namespace
 
 class SimprotoBridge::Impl {
  public:
-  explicit Impl(SimprotoBridgeOptions options)
-      : options_(std::move(options)),
-        link_({options_.domain, options_.name, options_.prefix, options_.qos_file}),
-        rejects_("datagram") {
+  Impl(SimprotoBridgeOptions options, dds::Bus* bus)
+      : options_(std::move(options)), link_(MakeLink(options_, bus)), rejects_("datagram") {
     if (!MakeEndpoint(options_.listen, 0))
       throw std::invalid_argument("--listen is not an IPv4 address: " + options_.listen);
     const uint16_t ports[] = {options_.control_port, options_.blue_port, options_.yellow_port, options_.sync_port};
@@ -241,7 +245,7 @@ class SimprotoBridge::Impl {
                     std::optional<idl::SimControlReply>* last = nullptr) {
     if (requests.empty()) return true;
     requests_ += requests.size();
-    const auto replies = link_.Control(requests, options_.reply_timeout);
+    const auto replies = link_.Control(requests, options_.reply_timeout, [this] { return stopping_.load(); });
     bool ok = true;
     for (const dds::ControlOutcome& r : replies) {
       if (!r.reply) {
@@ -277,7 +281,7 @@ class SimprotoBridge::Impl {
       spdlog::info("{} port {}:{}: {}", Name(s.kind), options_.listen, s.socket.LocalPort(),
                    kKindMessages[static_cast<int>(s.kind)]);
     auto name = [this](dds::Topic t) { return link_.TopicName(t); };
-    spdlog::info("DDS domain {}, QoS profiles {}", options_.domain, link_.options().qos_file);
+    spdlog::info("{}", link_.DescribeBus());
     spdlog::info("publishing {}, {}, {}", name(dds::Topic::kSslCommandBlue), name(dds::Topic::kSslCommandYellow),
                  name(dds::Topic::kControl));
     spdlog::info("subscribing {}, {}, {}, {}, {}, {}, {}", name(dds::Topic::kControlReply),
@@ -325,7 +329,10 @@ class SimprotoBridge::Impl {
   RejectLog rejects_;
 };
 
-SimprotoBridge::SimprotoBridge(SimprotoBridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
+SimprotoBridge::SimprotoBridge(SimprotoBridgeOptions options)
+    : impl_(std::make_unique<Impl>(std::move(options), nullptr)) {}
+SimprotoBridge::SimprotoBridge(SimprotoBridgeOptions options, dds::Bus& bus)
+    : impl_(std::make_unique<Impl>(std::move(options), &bus)) {}
 SimprotoBridge::~SimprotoBridge() = default;
 void SimprotoBridge::Run(const std::function<bool()>& stop) { impl_->Run(stop); }
 SimprotoBridgeStats SimprotoBridge::Stats() const { return impl_->Stats(); }

@@ -19,6 +19,8 @@
 //                  for); a request whose share is 0 steps sends no step, and its
 //                  robot commands go with the next one. The carry starts over
 //                  when turf-sim's frame did not continue from the last step.
+// In turf-sim's process (turf-sim --simproto), the same topics on an in-memory bus shared with turf-sim's
+// node: no DDS between them.
 // Writes (topic names <prefix>/..., QoS profiles in configs/qos/turf_qos.xml):
 //   ssl/command/blue, ssl/command/yellow  SslRobotCommand  one per commanded robot
 //   control                               SimControl       teleports, time mode, pause/resume, step
@@ -43,6 +45,10 @@
 
 #include "core/pinned.h"
 #include "participants/common/participant_options.h"
+
+namespace turf::dds {
+class Bus;
+}  // namespace turf::dds
 
 namespace turf {
 
@@ -69,6 +75,10 @@ class SimprotoBridge : Pinned {
   // Throws std::invalid_argument for a bad address, std::runtime_error if a
   // port cannot be bound or the DDS participant cannot be created.
   explicit SimprotoBridge(SimprotoBridgeOptions options);
+  // On `bus` instead of a participant of its own (the options' domain, prefix and QoS file are not used): a
+  // dds::MemoryBus shared with turf-sim's node, so the bridge runs in turf-sim's process (turf-sim --simproto) and a
+  // sync request pays no DDS round trip. The bus must outlive the bridge.
+  SimprotoBridge(SimprotoBridgeOptions options, dds::Bus& bus);
   ~SimprotoBridge();
 
   // Serves every port until `stop()` answers true (checked every 50 ms).

@@ -37,12 +37,20 @@ struct Client {
 
 }  // namespace
 
+namespace {
+
+// On `bus`, or (null) on a DDS participant of the link's own.
+WorldLink MakeLink(const SimSparkBridgeOptions& o, dds::Bus* bus) {
+  if (bus != nullptr) return WorldLink(*bus);
+  return WorldLink(dds::ParticipantOptions{o.domain, "turf-simspark-bridge", o.prefix, o.qos_file});
+}
+
+}  // namespace
+
 class SimSparkBridge::Impl {
  public:
-  explicit Impl(SimSparkBridgeOptions options)
-      : options_(std::move(options)),
-        link_({options_.domain, "turf-simspark-bridge", options_.prefix, options_.qos_file}),
-        rejects_("SimSpark input") {
+  Impl(SimSparkBridgeOptions options, dds::Bus* bus)
+      : options_(std::move(options)), link_(MakeLink(options_, bus)), rejects_("SimSpark input") {
     std::string error;
     auto agents = TcpListener::Listen(options_.listen, options_.agent_port, &error);
     if (!agents) throw std::runtime_error("agent port: " + error);
@@ -116,7 +124,7 @@ class SimSparkBridge::Impl {
         if (!c.monitor) MarkDrop(fd, "turf-sim stopped answering; reconnect when it is back");
       FlushDrops();
     }
-    spdlog::info("waiting for turf-sim's legged scene on DDS domain {} ({})", options_.domain,
+    spdlog::info("waiting for turf-sim's legged scene on {} ({})", link_.DescribeBus(),
                  link_.TopicName(dds::Topic::kLeggedScene));
     std::string error;
     auto scene = link_.Attach(options_.attach_timeout, stop, &error);
@@ -328,7 +336,10 @@ class SimSparkBridge::Impl {
   SimSparkBridgeStats stats_;
 };
 
-SimSparkBridge::SimSparkBridge(SimSparkBridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
+SimSparkBridge::SimSparkBridge(SimSparkBridgeOptions options)
+    : impl_(std::make_unique<Impl>(std::move(options), nullptr)) {}
+SimSparkBridge::SimSparkBridge(SimSparkBridgeOptions options, dds::Bus& bus)
+    : impl_(std::make_unique<Impl>(std::move(options), &bus)) {}
 SimSparkBridge::~SimSparkBridge() = default;
 uint16_t SimSparkBridge::agent_port() const { return impl_->agent_port(); }
 uint16_t SimSparkBridge::monitor_port() const { return impl_->monitor_port(); }

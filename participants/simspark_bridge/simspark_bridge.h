@@ -28,6 +28,10 @@
 #include "core/pinned.h"
 #include "participants/common/participant_options.h"
 
+namespace turf::dds {
+class Bus;
+}  // namespace turf::dds
+
 namespace turf {
 
 struct SimSparkBridgeOptions : ParticipantOptions {
@@ -59,6 +63,10 @@ class SimSparkBridge : Pinned {
  public:
   // Binds the ports; throws std::runtime_error if it cannot.
   explicit SimSparkBridge(SimSparkBridgeOptions options);
+  // On `bus` instead of a participant of its own (the options' domain, prefix and QoS file are not used): a
+  // dds::MemoryBus shared with turf-sim's node, for a front-end in turf-sim's process. The bus must outlive the
+  // bridge.
+  SimSparkBridge(SimSparkBridgeOptions options, dds::Bus& bus);
   ~SimSparkBridge();
 
   uint16_t agent_port() const;

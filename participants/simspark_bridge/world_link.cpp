@@ -30,18 +30,21 @@ std::array<double, 3> A3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 class WorldLink::Impl {
  public:
-  explicit Impl(const dds::ParticipantOptions& options)
-      : participant_(options),
-        control_(participant_, kClient, Wake()),
-        scene_(participant_.MakeReader<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene, Wake())),
-        clock_(participant_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock, Wake())),
-        state_(participant_.MakeReader<idl::LeggedStatePubSubType>(dds::Topic::kRobotsState, Wake())) {}
+  // `own` null: on `bus`, which outlives the link.
+  Impl(std::unique_ptr<dds::Participant> own, dds::Bus& bus)
+      : own_(std::move(own)),
+        bus_(bus),
+        control_(bus_, kClient, Wake()),
+        scene_(bus_.MakeReader<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene, Wake())),
+        clock_(bus_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock, Wake())),
+        state_(bus_.MakeReader<idl::LeggedStatePubSubType>(dds::Topic::kRobotsState, Wake())) {}
 
   std::function<void()> Wake() {
     return [this] { wakeup_.Notify(); };
   }
 
-  std::string TopicName(dds::Topic t) const { return participant_.TopicName(t); }
+  std::string TopicName(dds::Topic t) const { return bus_.TopicName(t); }
+  std::string DescribeBus() const { return bus_.Describe(); }
 
   void Drain() {
     if (scene_->Take(&scene_in_)) scene_info_ = scene_in_.back();
@@ -230,7 +233,8 @@ class WorldLink::Impl {
   static constexpr const char* kClient = "turf-simspark-bridge";
 
   Wakeup wakeup_;
-  dds::Participant participant_;
+  std::unique_ptr<dds::Participant> own_;
+  dds::Bus& bus_;
   dds::ControlClient control_;
   std::unique_ptr<dds::Reader<idl::LeggedSceneInfoPubSubType>> scene_;
   std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_;
@@ -248,9 +252,15 @@ class WorldLink::Impl {
   double step_s_ = 0.0;
 };
 
-WorldLink::WorldLink(const dds::ParticipantOptions& options) : impl_(std::make_unique<Impl>(options)) {}
+WorldLink::WorldLink(const dds::ParticipantOptions& options) {
+  auto own = std::make_unique<dds::Participant>(options);
+  dds::Bus& bus = *own;
+  impl_ = std::make_unique<Impl>(std::move(own), bus);
+}
+WorldLink::WorldLink(dds::Bus& bus) : impl_(std::make_unique<Impl>(nullptr, bus)) {}
 WorldLink::~WorldLink() = default;
 std::string WorldLink::TopicName(dds::Topic topic) const { return impl_->TopicName(topic); }
+std::string WorldLink::DescribeBus() const { return impl_->DescribeBus(); }
 std::optional<WorldLink::Scene> WorldLink::Attach(std::chrono::milliseconds timeout, const std::function<bool()>& stop,
                                                   std::string* error) {
   return impl_->Attach(timeout, stop, error);

@@ -24,9 +24,13 @@ class WorldLink : Pinned {
  public:
   // Throws std::runtime_error if the DDS entities cannot be created.
   explicit WorldLink(const dds::ParticipantOptions& options);
+  // On `bus` (a dds::MemoryBus shared with turf-sim's node), which must outlive the link.
+  explicit WorldLink(dds::Bus& bus);
   ~WorldLink();
 
   std::string TopicName(dds::Topic topic) const;
+  // The bus's start-up line (Bus::Describe()).
+  std::string DescribeBus() const;
 
   struct Scene {
     std::string name;

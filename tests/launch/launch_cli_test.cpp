@@ -111,6 +111,22 @@ TEST(LaunchCli, PrintSimSparkAndItsSyncMode) {
   EXPECT_NE(out.find("sim, simspark"), std::string::npos) << out;
 }
 
+// The SSL simulation protocol served in turf-sim instead of the separate bridge (README, turf-sim --simproto).
+TEST(LaunchCli, PrintSimprotoInTurfSim) {
+  std::string out;
+  ASSERT_EQ(RunCommand({Turf(), "launch", "ssl_div_a", "--print", "--only", "sim,grsim,vision", "--set",
+                        "sim.simproto=0.0.0.0"},
+                       &out),
+            0)
+      << out;
+  const std::vector<std::string> lines = Lines(out);
+  ASSERT_EQ(lines.size(), 3u) << out;
+  EXPECT_NE(lines[0].find("/turf-sim "), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find(" --simproto 0.0.0.0"), std::string::npos) << lines[0];
+  EXPECT_EQ(out.find("turf-simproto-bridge"), std::string::npos) << out;
+  ExpectRunnable(lines);
+}
+
 TEST(LaunchCli, PrintWithOverridesAndADiscoveryServer) {
   std::string out;
   ASSERT_EQ(RunCommand({Turf(), "launch", "ssl_div_a", "--print", "--domain", "42", "--prefix", "field2",

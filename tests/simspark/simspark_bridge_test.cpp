@@ -12,11 +12,13 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <regex>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "dds/memory_bus.h"
 #include "loader/legged_scene_yaml.h"
 #include "participants/sim/sim_node.h"
 #include "participants/simspark_bridge/simspark_bridge.h"
@@ -519,6 +521,48 @@ TEST(SimSparkBridgeTest, TrainerSetsPlayModesAndMovesTheBall) {
     Cycle(a);
   }
   EXPECT_TRUE(saw);
+}
+
+}  // namespace
+}  // namespace turf
+
+namespace turf {
+namespace {
+
+// The bridge on a dds::MemoryBus shared with the legged node, as a front-end in turf-sim's process would run: no
+// DDS domain. Sync mode: each (syn) round is one 20 ms cycle.
+TEST(SimSparkBridgeOnMemoryBus, SyncCyclesAdvanceTheSharedNode) {
+  dds::MemoryBus bus("simspark_memory");
+  LeggedSceneLoadResult scene = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/simspark_match.yaml");
+  ASSERT_TRUE(scene.scene.has_value());
+  SimNodeOptions sim_options;
+  sim_options.mode = TimeMode::kLockstep;
+  SimNode sim(std::move(*scene.scene), sim_options, bus);
+  SimSparkBridgeOptions o;
+  o.listen = "127.0.0.1";
+  o.agent_port = 0;
+  o.monitor_port = 0;
+  o.sync_mode = true;
+  SimSparkBridge bridge(o, bus);
+  std::atomic<bool> stop{false};
+  std::thread sim_thread([&] { sim.Run([&] { return stop.load(); }); });
+  std::thread bridge_thread([&] { bridge.Run([&] { return stop.load(); }); });
+  {
+    AgentClient a;
+    ASSERT_TRUE(a.Connect(bridge.agent_port()));
+    a.Send("(scene rsg/agent/nao/nao_hetero.rsg 0)");
+    std::optional<std::string> first = a.Receive(10s);
+    ASSERT_TRUE(first.has_value());
+    for (int i = 1; i < 5; ++i) ASSERT_TRUE(a.Receive(10s).has_value()) << "grace cycle " << i;
+    const double t0 = Time(Cycle(a));
+    const double t1 = Time(Cycle(a));
+    const double t2 = Time(Cycle(a));
+    EXPECT_NEAR(t1 - t0, 0.02, 1e-6);
+    EXPECT_NEAR(t2 - t1, 0.02, 1e-6);
+  }
+  stop = true;
+  bridge_thread.join();
+  sim_thread.join();
 }
 
 }  // namespace

@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -51,6 +54,35 @@ TEST(StepPlanner, TheFloatAClientSendsForASixtiethGivesFiveHundredStepsASecond) 
       EXPECT_EQ(steps, 500 * (k / 60)) << k;
     }
   }
+}
+
+// FloatSecondsToNanoseconds reads a float as the shortest decimal that gives it back. The same, spelled out: the
+// fewest %g digits that round-trip. Checked over every float in 10 ns .. 1 s with a stride, and some round numbers.
+int64_t ShortestDigitsByPrintf(float seconds) {
+  char text[32];
+  for (int digits = 1; digits <= 9; ++digits) {
+    std::snprintf(text, sizeof(text), "%.*g", digits, static_cast<double>(seconds));
+    if (std::strtof(text, nullptr) == seconds) break;
+  }
+  return ToNanoseconds(std::strtod(text, nullptr));
+}
+
+TEST(StepPlanner, FloatSecondsAreReadAsTheirShortestDecimal) {
+  uint32_t from, to;
+  const float lo = 1e-8f, hi = 1.0f;
+  std::memcpy(&from, &lo, sizeof(from));
+  std::memcpy(&to, &hi, sizeof(to));
+  int checked = 0;
+  for (uint32_t bits = from; bits <= to; bits += 997) {
+    float f;
+    std::memcpy(&f, &bits, sizeof(f));
+    ASSERT_EQ(FloatSecondsToNanoseconds(f), ShortestDigitsByPrintf(f)) << f;
+    ++checked;
+  }
+  EXPECT_GT(checked, 100000);
+  for (float f : {1.0f / 60.0f, 0.016f, 0.002f, 0.1f, 1.0f, 1e-4f})
+    EXPECT_EQ(FloatSecondsToNanoseconds(f), ShortestDigitsByPrintf(f)) << f;
+  EXPECT_EQ(FloatSecondsToNanoseconds(1.0f / 60.0f), 16'666'668);  // 0.016666668
 }
 
 TEST(StepPlanner, AMultipleOfTheStepGivesExactlyThatManySteps) {
