@@ -18,6 +18,7 @@
 #include "core/enum_names.h"
 #include "kernel/time_control.h"
 #include "participants/common/process.h"
+#include "participants/common/protobuf_log.h"
 #include "participants/common/udp.h"
 #include "participants/simproto_bridge/sim_link.h"
 
@@ -330,9 +331,13 @@ class SimprotoBridge::Impl {
 };
 
 SimprotoBridge::SimprotoBridge(SimprotoBridgeOptions options)
-    : impl_(std::make_unique<Impl>(std::move(options), nullptr)) {}
+    : impl_(std::make_unique<Impl>(std::move(options), nullptr)) {
+  RouteProtobufLogs();
+}
 SimprotoBridge::SimprotoBridge(SimprotoBridgeOptions options, dds::Bus& bus)
-    : impl_(std::make_unique<Impl>(std::move(options), &bus)) {}
+    : impl_(std::make_unique<Impl>(std::move(options), &bus)) {
+  RouteProtobufLogs();
+}
 SimprotoBridge::~SimprotoBridge() = default;
 void SimprotoBridge::Run(const std::function<bool()>& stop) { impl_->Run(stop); }
 SimprotoBridgeStats SimprotoBridge::Stats() const { return impl_->Stats(); }
