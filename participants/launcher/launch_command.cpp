@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "participants/common/cli_checks.h"
 #include "participants/common/process.h"
 #include "participants/launcher/launch_profile.h"
 #include "participants/launcher/preflight.h"
@@ -50,7 +51,7 @@ LaunchCommand::LaunchCommand(CLI::App& app) : profile_dir_(DefaultProfileDir()) 
                      "where the turf executables are (default: next to turf in the build tree, then PATH)");
   launch->add_option("--profile-dir", profile_dir_, "where profile names are looked up")->capture_default_str();
   grace_opt_ = launch->add_option("--grace", grace_, "s from SIGTERM to SIGKILL when stopping (overrides the profile)")
-                   ->check(CLI::PositiveNumber);
+                   ->check(FiniteAtLeastZero(/*zero_allowed=*/false));
   launch->add_option("--log-level", log_level_, "the launcher's own messages: trace, debug, info, warn, error")
       ->capture_default_str();
 }

@@ -13,6 +13,11 @@ int main(int argc, char** argv) {
   CLI::App app{"turf: runs a match's processes (turf-sim and its bridges) from a league profile"};
   app.require_subcommand(1);
   turf::launch::LaunchCommand launch(app);
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int printed = app.exit(e);  // --help: 0; a refused flag: says why
+    return printed == 0 ? 0 : 2;      // every refused flag or value is a configuration error (exit status 2)
+  }
   return launch.Run();
 }

@@ -11,6 +11,7 @@
 #include "loader/legged_scene_yaml.h"
 #include "loader/realism_yaml.h"
 #include "loader/scene_yaml.h"
+#include "participants/common/cli_checks.h"
 #include "participants/common/process.h"
 #include "participants/sim/sim_host.h"
 #include "participants/sim/sim_node.h"
@@ -102,7 +103,7 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
                  "sensor realism: a preset (ideal, realistic, harsh in configs/realism/) or a YAML file; "
                  "overrides the scene's");
   app.add_option("--duration", node.duration, "stop after this many simulated seconds (0: run until Ctrl-C)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(FiniteAtLeastZero());
 
   // The SSL simulation protocol in this process (sim_host.h): the same ports as turf-simproto-bridge.
   SimprotoBridgeOptions& sp = command_line.simproto_options;

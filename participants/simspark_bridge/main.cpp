@@ -2,6 +2,7 @@
 // trainer protocols in front of turf-sim. Ports, modes and choices: simspark_bridge.h.
 #include <chrono>
 
+#include "participants/common/cli_checks.h"
 #include "participants/common/participant_main.h"
 #include "participants/common/process.h"
 #include "participants/simspark_bridge/simspark_bridge.h"
@@ -28,7 +29,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 3600000));
   app.add_option("--seed", options.seed, "seed of beam noise and each agent's vision noise")->capture_default_str();
   app.add_option("--duration", options.duration, "stop after this many simulated seconds (0: run until Ctrl-C)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(turf::FiniteAtLeastZero());
   return participant.Run(argc, argv, [&] {
     options.sync_timeout = std::chrono::milliseconds(sync_timeout_ms);
     return turf::SimSparkBridge(options).Run(turf::StopRequested) ? turf::kExitClean : turf::kExitFailure;

@@ -1,5 +1,7 @@
 #include "participants/vision_bridge/vision_bridge_flags.h"
 
+#include "participants/common/cli_checks.h"
+
 namespace turf {
 
 void AddVisionBridgeFlags(ParticipantMain& participant, VisionBridgeOptions& options, std::string& clock) {
@@ -17,7 +19,7 @@ void AddVisionBridgeFlags(ParticipantMain& participant, VisionBridgeOptions& opt
   app.add_option("--geometry-every", options.geometry_every,
                  "send geometry every N capture rounds (also once as soon as the field is known; 0: only then)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(FiniteAtLeastZero());
   app.add_option("--clock", clock,
                  "time stamps: 'run' (Unix time at which turf-sim's run started + simulation time: Unix-looking, "
                  "exact at any speed, monotonic across resets), 'unix' (wall clock at sending) or 'sim' "

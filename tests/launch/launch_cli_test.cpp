@@ -172,6 +172,13 @@ TEST(LaunchCli, ProfileErrorsNameTheKeyAndExitWith2) {
   EXPECT_EQ(RunCommand({Turf(), "launch", "no_such_league"}, &out), 2);
   EXPECT_NE(out.find("ssl_div_a"), std::string::npos) << out;
   std::remove(path.c_str());
+  // A refused value says what is allowed in one short line, and exits 2 (CLI11's own check printed 310 digits).
+  EXPECT_EQ(RunCommand({Turf(), "launch", "ssl_div_a", "--grace", "0"}, &out), 2);
+  EXPECT_NE(out.find("--grace: '0' is not a number > 0"), std::string::npos) << out;
+  EXPECT_LT(out.size(), 200u) << out;
+  EXPECT_EQ(RunCommand({Built("participants/sim/turf-sim"), "--duration", "-1"}, &out), 2);
+  EXPECT_NE(out.find("--duration: '-1' is not a number >= 0"), std::string::npos) << out;
+  EXPECT_LT(out.size(), 200u) << out;
   // A mistyped flag is refused before anything starts (each program's --help is the list), not retried.
   EXPECT_EQ(RunCommand({Turf(), "launch", "ssl_div_a", "--domain", "231", "--set", "sim.sped=2"}, &out), 2);
   EXPECT_NE(out.find("sim: turf-sim has no flag --sped"), std::string::npos) << out;

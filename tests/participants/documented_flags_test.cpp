@@ -28,17 +28,23 @@ std::set<std::string> Help(const std::string& executable) {
 const struct {
   const char* readme;      // from the source tree's top
   const char* executable;  // under build/participants/
+  const char* also = "";   // another executable whose flags the README documents too
 } kParticipants[] = {
     {"participants/grsim_bridge/README.md", "grsim_bridge/turf-grsim-bridge"},
     {"participants/vision_bridge/README.md", "vision_bridge/turf-vision-bridge"},
-    {"participants/simproto_bridge/README.md", "simproto_bridge/turf-simproto-bridge"},
+    // Also served in turf-sim's process: turf-sim --simproto ...
+    {"participants/simproto_bridge/README.md", "simproto_bridge/turf-simproto-bridge", "sim/turf-sim"},
     {"participants/viewer/README.md", "viewer/turf-viewer"},
 };
 
 TEST(DocumentedFlags, EachParticipantsReadmeNamesOnlyFlagsItsHelpLists) {
   for (const auto& p : kParticipants) {
-    const std::set<std::string> offered = Help(p.executable);
+    std::set<std::string> offered = Help(p.executable);
     ASSERT_TRUE(offered.count("--help")) << p.executable << " --help printed no flags";
+    if (*p.also != '\0') {
+      const std::set<std::string> also = Help(p.also);
+      offered.insert(also.begin(), also.end());
+    }
     const std::set<std::string> documented = LongFlags(SourceFile(p.readme));
     EXPECT_FALSE(documented.empty()) << p.readme;
     for (const std::string& flag : documented) EXPECT_TRUE(offered.count(flag)) << p.readme << " documents " << flag;
