@@ -5,8 +5,8 @@
 #include "participants/sim/sim_startup.h"
 
 int main(int argc, char** argv) {
-  turf::ParticipantMain participant("turf-sim",
-                                    "turf-sim: the MuJoCo physics participant of turf (SSL scenes), publishing on DDS");
+  turf::ParticipantMain participant(
+      "turf-sim", "turf-sim: the MuJoCo physics participant of turf (SSL and legged scenes), publishing on DDS");
   turf::SimCommandLine command_line;
   turf::AddSimFlags(participant, command_line);
   return participant.Run(argc, argv, [&] { return turf::RunSim(command_line); });
