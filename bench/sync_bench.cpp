@@ -157,6 +157,7 @@ turf::SimprotoBridgeOptions SyncOnly() {
   o.listen = "127.0.0.1";
   o.control_port = o.blue_port = o.yellow_port = 0;
   o.sync_port = FreePort();
+  o.sync = true;
   return o;
 }
 

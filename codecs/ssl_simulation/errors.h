@@ -48,6 +48,8 @@ inline constexpr char kUnknownField[] = "TURF_UNKNOWN_FIELD";
 inline constexpr char kRejectedBySim[] = "TURF_REJECTED_BY_SIM";
 inline constexpr char kNoReply[] = "TURF_NO_REPLY";
 inline constexpr char kSimNotAvailable[] = "TURF_SIM_NOT_AVAILABLE";
+// A sync request while synchronous mode is off: whoever starts the match enables it (it stops vision for all).
+inline constexpr char kSyncDisabled[] = "TURF_SYNC_DISABLED";
 
 struct SimError {
   std::string code;

@@ -129,6 +129,11 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
                  "with --simproto: UDP port for SimulationSyncRequest (lockstep; ids 0..15 blue, 16..31 yellow; "
                  "0: off)")
       ->capture_default_str();
+  app.add_flag("--simproto-sync", sp.sync,
+               "with --simproto: allow synchronous mode (a SimulationSyncRequest switches this match to lockstep); "
+               "off: such requests are answered TURF_SYNC_DISABLED");
+  app.add_option("--simproto-sync-listen", sp.sync_listen, "with --simproto: IPv4 address the sync port binds to")
+      ->capture_default_str();
 
   // SimSpark agents and monitors in this process (sim_host.h): the same ports as turf-simspark-bridge.
   SimSparkBridgeOptions& ss = command_line.simspark_options;

@@ -26,6 +26,10 @@ int main(int argc, char** argv) {
                  "UDP port for SimulationSyncRequest (lockstep: apply, step sim_step, answer with detections); "
                  "robot ids 0..15 are blue, 16..31 yellow (0: off)")
       ->capture_default_str();
+  app.add_flag("--sync", options.sync,
+               "allow synchronous mode: a SimulationSyncRequest switches turf-sim to lockstep (vision stops for "
+               "every team until someone resumes); off: such requests are answered TURF_SYNC_DISABLED");
+  app.add_option("--sync-listen", options.sync_listen, "IPv4 address the sync port binds to")->capture_default_str();
   app.add_option("--reply-timeout-ms", reply_timeout_ms, "how long to wait for turf-sim's reply to a request")
       ->capture_default_str()
       ->check(CLI::Range(10, 60000));

@@ -47,6 +47,9 @@ SimLink MakeLink(const SimprotoBridgeOptions& o, dds::Bus* bus) {
 }
 
 const sp::SimError kNotAvailable{sp::kSimNotAvailable, "turf-sim has not been seen yet (field, world state, clock)"};
+const sp::SimError kSyncDisabled{sp::kSyncDisabled,
+                                 "synchronous mode is off in this match: whoever starts it enables it "
+                                 "(turf-simproto-bridge --sync, turf-sim --simproto-sync, --set simproto.sync=true)"};
 
 }  // namespace
 
@@ -56,11 +59,14 @@ class SimprotoBridge::Impl {
       : options_(std::move(options)), link_(MakeLink(options_, bus)), rejects_("datagram") {
     if (!MakeEndpoint(options_.listen, 0))
       throw std::invalid_argument("--listen is not an IPv4 address: " + options_.listen);
+    if (!MakeEndpoint(options_.sync_listen, 0))
+      throw std::invalid_argument("--sync-listen is not an IPv4 address: " + options_.sync_listen);
     const uint16_t ports[] = {options_.control_port, options_.blue_port, options_.yellow_port, options_.sync_port};
     for (int k = 0; k < 4; ++k) {
       if (ports[k] == 0) continue;
       std::string error;
-      std::optional<UdpSocket> s = UdpSocket::Bind(options_.listen, ports[k], false, &error);
+      const std::string& ip = static_cast<Kind>(k) == Kind::kSync ? options_.sync_listen : options_.listen;
+      std::optional<UdpSocket> s = UdpSocket::Bind(ip, ports[k], false, &error);
       if (!s) throw std::runtime_error(std::string("cannot bind the ") + kKindNames[k] + " port: " + error);
       sockets_.push_back({static_cast<Kind>(k), std::move(*s)});
     }
@@ -161,6 +167,10 @@ class SimprotoBridge::Impl {
 
   std::vector<uint8_t> HandleSync(const Datagram& d) {
     const SimLink::View view = link_.Now();
+    if (!options_.sync) {
+      Reject("sync.disabled", "from " + d.from.ToString() + ": synchronous mode is off in this match");
+      return sp::EncodeSyncResponse({}, view.field.value_or(idl::SslField()), {}, {}, {kSyncDisabled});
+    }
     if (!view.field || !view.world || !view.clock) {
       Reject("sync.sim_not_available", "from " + d.from.ToString());
       return sp::EncodeSyncResponse({}, view.field.value_or(idl::SslField()), {}, {}, {kNotAvailable});

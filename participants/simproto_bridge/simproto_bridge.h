@@ -8,7 +8,10 @@
 //   blue    10301  RobotControl -> RobotControlResponse: commands for blue only
 //   yellow  10302  RobotControl -> RobotControlResponse: commands for yellow only
 //   sync    10303  SimulationSyncRequest -> SimulationSyncResponse (turf's choice
-//                  of port: the draft names none). Ids 0..15 blue, 16..31 yellow.
+//                  of port: the draft names none), bound to `sync_listen`
+//                  (127.0.0.1 unless told). Only with `sync` (--sync): else each
+//                  request is answered TURF_SYNC_DISABLED and changes nothing.
+//                  Ids 0..15 blue, 16..31 yellow.
 //                  Switches turf-sim to lockstep if it is not, applies the
 //                  command, then ONE step request carrying the robot commands;
 //                  answers after turf-sim's reply with the detections of the
@@ -59,6 +62,10 @@ struct SimprotoBridgeOptions : ParticipantOptions {
   uint16_t blue_port = 10301;
   uint16_t yellow_port = 10302;
   uint16_t sync_port = 10303;
+  // Synchronous mode is the choice of whoever starts the match: a sync request switches turf-sim to lockstep,
+  // and vision stops for every team until someone resumes. Off: sync requests are answered TURF_SYNC_DISABLED.
+  bool sync = false;
+  std::string sync_listen = "127.0.0.1";          // the sync port's address (localhost unless told)
   std::chrono::milliseconds reply_timeout{2000};  // for turf-sim's control replies
 };
 

@@ -55,7 +55,8 @@ TEST(SimprotoInTurfSim, TheSyncPortStepsTurfSimAndTheSeparateBridgeStillWorks) {
                                        "--simproto-yellow-port",
                                        "0",
                                        "--simproto-sync-port",
-                                       std::to_string(sync_port)};
+                                       std::to_string(sync_port),
+                                       "--simproto-sync"};
   sim_args.insert(sim_args.end(), dds.begin(), dds.end());
   Process sim(prefix + "_sim", sim_args);
   std::vector<std::string> bridge_args = {Built("participants/simproto_bridge/turf-simproto-bridge"),

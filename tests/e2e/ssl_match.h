@@ -165,12 +165,12 @@ class Match {
                                  {"--address", "127.0.0.1", "--port", std::to_string(vision_port), "--geometry-every",
                                   "30", "--clock", "sim"},
                                  dds));
-    simproto = std::make_unique<Process>(prefix + "_simproto",
-                                         Args("participants/simproto_bridge/turf-simproto-bridge",
-                                              {"--listen", "127.0.0.1", "--control-port", std::to_string(control_port),
-                                               "--blue-port", std::to_string(blue_port), "--yellow-port",
-                                               std::to_string(yellow_port), "--sync-port", std::to_string(sync_port)},
-                                              dds));
+    simproto = std::make_unique<Process>(
+        prefix + "_simproto", Args("participants/simproto_bridge/turf-simproto-bridge",
+                                   {"--listen", "127.0.0.1", "--control-port", std::to_string(control_port),
+                                    "--blue-port", std::to_string(blue_port), "--yellow-port",
+                                    std::to_string(yellow_port), "--sync-port", std::to_string(sync_port), "--sync"},
+                                   dds));
   }
   ~Match() {
     // Each process must shut down cleanly on SIGTERM.

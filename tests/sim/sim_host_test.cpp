@@ -110,6 +110,7 @@ struct Host {
     simproto.blue_port = blue = FreePort();
     simproto.yellow_port = yellow = FreePort();
     simproto.sync_port = sync = FreePort();
+    simproto.sync = true;
     InProcessFrontEnds front_ends;
     front_ends.simproto = simproto;
     return std::make_unique<SimHost>(test::Teams(2), node, std::move(front_ends));

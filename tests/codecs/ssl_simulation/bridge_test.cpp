@@ -40,20 +40,21 @@ uint16_t FreePort() { return test::BindLoopback().LocalPort(); }
 // turf-sim's node and the bridge, each on a thread of its own.
 class Stack {
  public:
-  Stack(Scene scene, const dds::ParticipantOptions& dds, TimeMode mode, double speed = 1.0)
-      : sim_(std::move(scene), dds, mode, speed), bridge_(MakeBridge(dds)) {}
+  Stack(Scene scene, const dds::ParticipantOptions& dds, TimeMode mode, double speed = 1.0, bool allow_sync = true)
+      : sim_(std::move(scene), dds, mode, speed), bridge_(MakeBridge(dds, allow_sync)) {}
   SimNode& sim() { return sim_.node(); }
   SimprotoBridge& bridge() { return bridge_.node(); }
   uint16_t control = 0, blue = 0, yellow = 0, sync = 0;
 
  private:
-  std::unique_ptr<SimprotoBridge> MakeBridge(const dds::ParticipantOptions& dds) {
+  std::unique_ptr<SimprotoBridge> MakeBridge(const dds::ParticipantOptions& dds, bool allow_sync) {
     auto bo = test::OnDds<SimprotoBridgeOptions>(dds);
     bo.listen = "127.0.0.1";
     bo.control_port = control = FreePort();
     bo.blue_port = blue = FreePort();
     bo.yellow_port = yellow = FreePort();
     bo.sync_port = sync = FreePort();
+    bo.sync = allow_sync;  // most tests here drive the match synchronously
     return std::make_unique<SimprotoBridge>(bo);
   }
   test::SimUnderTest sim_;
@@ -468,6 +469,29 @@ TEST(SimprotoBridge, SyncModeStepsExactlyAndIsReproducible) {
   int yellow_seen = 0;
   for (const auto& d : last.detection()) yellow_seen += d.robots_yellow_size();
   EXPECT_EQ(yellow_seen, 2);
+}
+
+// Synchronous mode is the choice of whoever starts the match: without it, a sync request from anyone is answered
+// TURF_SYNC_DISABLED and the match runs on (one such datagram used to stop vision for every team).
+TEST(SimprotoBridge, SyncRequestsAreRefusedUnlessTheMatchAllowsThem) {
+  const auto dds = UniqueDds();
+  Stack stack(test::Teams(2), dds, TimeMode::kRealtime, 1.0, /*sync=*/false);
+  Team team;
+  ASSERT_TRUE(team.WaitReady(stack.control));
+  ws::SimulationSyncRequest request;
+  request.set_sim_step(1.0f / 60);
+  ws::SimulationSyncResponse response;
+  ASSERT_TRUE(team.Ask(stack.sync, request, &response));
+  bool refused = false;
+  for (const auto& e : response.robot_control_response().errors())
+    refused = refused || e.code() == "TURF_SYNC_DISABLED";
+  EXPECT_TRUE(refused) << response.DebugString();
+  EXPECT_EQ(stack.bridge().Rejected("sync.disabled"), 1u);
+  // The match is still in real time: turf-sim's frame keeps advancing without anyone stepping it.
+  const uint64_t frame = stack.sim().Stats().frame;
+  const auto deadline = Clock::now() + 10s;
+  while (stack.sim().Stats().frame < frame + 50 && Clock::now() < deadline) std::this_thread::sleep_for(5ms);
+  EXPECT_GE(stack.sim().Stats().frame, frame + 50) << "turf-sim stopped: it was switched to lockstep";
 }
 
 TEST(SimprotoBridge, SyncRequestSwitchesARunningSimToLockstep) {
