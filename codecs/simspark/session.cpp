@@ -607,6 +607,10 @@ std::string Session::SaveLeague() const {
   std::vector<const Agent*> players;
   for (const auto& [id, a] : agents_)
     if (a.inited) players.push_back(&a);
+  // By (side, unum), not by connection: the same league gives the same bytes.
+  std::sort(players.begin(), players.end(), [](const Agent* x, const Agent* y) {
+    return std::make_pair(x->side, x->unum) < std::make_pair(y->side, y->unum);
+  });
   out.Put<uint64_t>(players.size());
   for (const Agent* a : players) {
     out.Put(a->side);

@@ -148,7 +148,10 @@ class Session {
   // snapshot's: each (side, unum) of the snapshot connected and in a team, in
   // the same robot, and no other player in a team; otherwise the snapshot is
   // refused (say, before the agents have reconnected). A player's id stays
-  // the connection's; its league state becomes the snapshot's.
+  // the connection's; its league state becomes the snapshot's. A restored run
+  // sends the same bytes as the saved one when the players are the same
+  // connections; after a player reconnected, vision lists the other players
+  // in the new connection order (and draws their noise in that order).
   std::string RestoreLeague(std::string_view snapshot);
 
  private:

@@ -884,8 +884,10 @@ namespace {
 // --- league snapshots ---
 
 // A scripted match of four players: beams, a coin-toss kick-off, joints, say,
-// a trainer move onto the ball (a touch: PlayOn). Step(i) gives cycle i's
-// inputs, the same on every run, and returns every byte the session sent.
+// a trainer move onto the ball (a touch: PlayOn), back to BeforeKickOff with
+// beams and another coin toss. Inputs(i) gives cycle i's inputs, the same on
+// every run; Step(i) also runs the cycle and returns every byte the session
+// sent, by player (agent ids change when a player reconnects).
 struct LeagueMatch {
   LeagueMatch() : h(5, Options()) {
     a = h.Join("Alpha", 1);
@@ -899,25 +901,38 @@ struct LeagueMatch {
     return options;
   }
 
-  std::string Step(int i) {
-    if (i == 1) {
+  void Inputs(int i) {
+    if (i == 1 || i == 22) {
       h.session.Receive(a, "(beam -1 0.5 0)");
       h.session.Receive(c, "(beam -3 2 45)");
     }
-    if (i == 3) h.session.Trainer("(kickOff None)");
+    if (i == 3 || i == 24) h.session.Trainer("(kickOff None)");
     if (i == 14) h.session.Receive(d, "(beam -2 -2 90)");  // ignored once in play
     if (i == 16) h.session.Trainer("(agent (team Left)(unum 1)(pos 0.05 0 0.4))");
+    if (i == 21) h.session.Trainer("(playMode BeforeKickOff)");
     h.session.Receive(b, "(he1 " + std::to_string(0.1 * i) + ")(say b" + std::to_string(i) + ")");
     if (i % 2 == 1) h.session.Receive(d, "(lae1 -0.5)(say d" + std::to_string(i) + ")");
     if (i % 5 == 0) h.session.Receive(a, "(say a" + std::to_string(i) + ")");
+  }
+  std::string Cycle() {
     std::string log;
-    for (const auto& [id, text] : h.Cycle()) log += std::to_string(id) + ":" + text + "\n";
+    for (const auto& [id, text] : h.Cycle()) log += Name(id) + ":" + text + "\n";
     return log + "monitor:" + h.session.TakeMonitorOutput() + "\n";
+  }
+  std::string Step(int i) {
+    Inputs(i);
+    return Cycle();
   }
   std::string Run(int from, int to) {
     std::string log;
     for (int i = from; i < to; ++i) log += Step(i);
     return log;
+  }
+  std::string Name(int id) const {
+    const std::pair<int, const char*> names[] = {{a, "a"}, {b, "b"}, {c, "c"}, {d, "d"}};
+    for (const auto& [agent, name] : names)
+      if (agent == id) return name;
+    return std::to_string(id);
   }
 
   Harness h;
@@ -930,7 +945,8 @@ TEST(SessionLeagueSnapshot, RestoredMatchSendsTheSameBytes) {
   const std::string snapshot = m.h.session.SaveLeague();
   const FakeWorld world = m.h.world;  // the kernel's snapshot, in a real run
   const std::string first = m.Run(10, 30);
-  for (const char* part : {"(See", "(pol ", "(hear Alpha", "(hear Beta", "(pm PlayOn)", "(pm KickOff_"})
+  for (const char* part :
+       {"(See", "(pol ", "(hear Alpha", "(hear Beta", "(pm PlayOn)", "(pm KickOff_", "(pm BeforeKickOff)"})
     EXPECT_TRUE(Contains(first, part)) << "the script must exercise " << part;
 
   // Without the league's state the perceptions go on differently.
@@ -941,6 +957,38 @@ TEST(SessionLeagueSnapshot, RestoredMatchSendsTheSameBytes) {
   ASSERT_EQ(m.h.session.RestoreLeague(snapshot), "");
   EXPECT_EQ(m.h.session.cycle(), 10u);
   EXPECT_EQ(m.Run(10, 30), first);
+}
+
+// Saved between a cycle's inputs and its step: said messages, beams and joint
+// velocities not yet taken are in the snapshot.
+TEST(SessionLeagueSnapshot, SavedWithInputsPendingGoesOnTheSame) {
+  LeagueMatch m;
+  m.Run(0, 22);
+  m.Inputs(22);
+  const std::string snapshot = m.h.session.SaveLeague();
+  const FakeWorld world = m.h.world;
+  const std::string first = m.Cycle() + m.Run(23, 30);
+  m.h.world = world;
+  ASSERT_EQ(m.h.session.RestoreLeague(snapshot), "");
+  EXPECT_EQ(m.Cycle() + m.Run(23, 30), first);
+}
+
+// A player that left and came back (another connection, another noise
+// generator) takes the snapshot's player state: the league state is the
+// snapshot's again. (Its perceptions are not byte for byte the saved run's:
+// vision lists the other players in connection order.)
+TEST(SessionLeagueSnapshot, ReconnectedPlayerTakesTheSavedState) {
+  LeagueMatch m;
+  m.Run(0, 10);
+  const std::string snapshot = m.h.session.SaveLeague();
+  m.Run(10, 20);
+  m.h.session.Disconnect(m.d);
+  m.h.session.Disconnect(m.a);
+  m.a = m.h.Join("Alpha", 1);
+  m.d = m.h.Join("Beta", 2);
+  m.h.Cycle();
+  ASSERT_EQ(m.h.session.RestoreLeague(snapshot), "");
+  EXPECT_EQ(m.h.session.SaveLeague(), snapshot);
 }
 
 TEST(SessionLeagueSnapshot, SnapshotOfTheSameStateIsTheSameBytes) {
