@@ -141,7 +141,8 @@ class Session {
   // calibration offset, perception count (when it sees), pending GS
   // announcement. Not in it: connection-level things (agent ids, sync flags,
   // outputs and issues not yet taken, monitor frames) and agents without a
-  // team (no init), which a restore leaves as they are.
+  // team (no init), whose own state a restore leaves as it is (the world
+  // requests not yet taken are all the snapshot's, for every robot).
   std::string SaveLeague() const;
   // Restores what SaveLeague saved; "" on success, else why, and then
   // nothing changed. The players connected now must be exactly the

@@ -1029,6 +1029,20 @@ TEST(SessionLeagueSnapshot, TruncatedOrCorruptedIsRefusedAndChangesNothing) {
   EXPECT_EQ(m.h.session.SaveLeague(), now);
 }
 
+// A generator state of all zeros (found by fuzz_league) would make the vision
+// noise wait forever for a non-zero draw.
+TEST(SessionLeagueSnapshot, AllZeroNoiseGeneratorIsRefused) {
+  LeagueMatch m;
+  m.Run(0, 4);
+  std::string snapshot = m.h.session.SaveLeague();
+  const std::string now = snapshot;
+  // The last player's generator ends the snapshot: four state words, has_spare, spare.
+  const size_t state_at = snapshot.size() - (4 * 8 + 1 + 8);
+  std::fill(snapshot.begin() + state_at, snapshot.begin() + state_at + 4 * 8, '\0');
+  EXPECT_EQ(m.h.session.RestoreLeague(snapshot), "invalid league snapshot: random generator state all zero");
+  EXPECT_EQ(m.h.session.SaveLeague(), now);
+}
+
 TEST(SessionLeagueSnapshot, PlayerNotConnectedIsRefused) {
   LeagueMatch m;
   m.Run(0, 6);
