@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 #include <type_traits>
 #include <variant>
 
@@ -432,5 +433,309 @@ std::vector<std::pair<int, std::string>> Session::TakeOutputs() { return std::ex
 std::vector<SessionIssue> Session::TakeIssues() { return std::exchange(issues_, {}); }
 std::vector<int> Session::TakeKicked() { return std::exchange(kicked_, {}); }
 std::string Session::TakeMonitorOutput() { return std::exchange(monitor_, {}); }
+
+// --- league snapshots ---
+
+namespace {
+
+constexpr uint32_t kLeagueVersion = 1;
+constexpr size_t kMaxItems = 4096;  // robots, joints, links, moves, players: far above any scene
+constexpr size_t kMaxName = 256;    // a robot, joint, link or team name
+
+void PutVector(const Eigen::Vector3d& v, StateWriter& out) {
+  for (int k = 0; k < 3; ++k) out.Put(v[k]);
+}
+
+void PutArray(const std::array<double, 3>& v, StateWriter& out) {
+  for (double x : v) out.Put(x);
+}
+
+void PutQuaternion(const Eigen::Quaterniond& q, StateWriter& out) {
+  for (int k = 0; k < 4; ++k) out.Put(q.coeffs()[k]);
+}
+
+// Each Get* fails the reader on a value that is not finite.
+double GetFinite(StateReader& in) {
+  const double v = in.Get<double>();
+  if (!std::isfinite(v)) in.Fail("value not finite");
+  return v;
+}
+
+Eigen::Vector3d GetVector(StateReader& in) {
+  Eigen::Vector3d v;
+  for (int k = 0; k < 3; ++k) v[k] = GetFinite(in);
+  return v;
+}
+
+std::array<double, 3> GetArray(StateReader& in) {
+  std::array<double, 3> v{};
+  for (double& x : v) x = GetFinite(in);
+  return v;
+}
+
+Eigen::Quaterniond GetQuaternion(StateReader& in) {
+  Eigen::Quaterniond q;
+  for (int k = 0; k < 4; ++k) q.coeffs()[k] = GetFinite(in);
+  return q;
+}
+
+// A generator restored with an all-zero xoshiro state (never reached from a
+// seed) gives zeros forever, and Rng::Normal would wait for a non-zero draw
+// forever: such a state fails the reader.
+void CheckRngState(const Rng& rng, StateReader& in) {
+  StateWriter out;
+  rng.Save(out);
+  const std::string bytes = out.Take();
+  if (bytes.size() >= 4 * sizeof(uint64_t) &&
+      std::all_of(bytes.begin(), bytes.begin() + 4 * sizeof(uint64_t), [](char c) { return c == 0; }))
+    in.Fail("random generator state all zero");
+}
+
+void SaveWorld(const WorldSnapshot& w, StateWriter& out) {
+  out.Put(w.time);
+  PutVector(w.ball, out);
+  PutVector(w.ball_velocity, out);
+  out.Put<uint64_t>(w.robots.size());
+  for (const RobotSnapshot& r : w.robots) {
+    out.Str(r.name);
+    out.Put<uint64_t>(r.joint_names.size());
+    for (const std::string& j : r.joint_names) out.Str(j);
+    out.Doubles(r.joint_positions);
+    PutArray(r.gyro, out);
+    PutArray(r.accelerometer, out);
+    out.Put<uint64_t>(r.feet.size());
+    for (const RobotSnapshot::Foot& f : r.feet) {
+      out.Str(f.name);
+      out.Put(f.contact);
+      PutArray(f.point, out);
+      PutArray(f.force, out);
+    }
+    out.Put<uint64_t>(r.links.size());
+    for (const RobotSnapshot::Link& l : r.links) {
+      out.Str(l.name);
+      PutVector(l.position, out);
+      PutQuaternion(l.orientation, out);
+    }
+  }
+}
+
+WorldSnapshot RestoreWorld(StateReader& in) {
+  WorldSnapshot w;
+  w.time = GetFinite(in);
+  w.ball = GetVector(in);
+  w.ball_velocity = GetVector(in);
+  w.robots.resize(in.Count(kMaxItems));
+  for (RobotSnapshot& r : w.robots) {
+    r.name = in.Str(kMaxName);
+    r.joint_names.resize(in.Count(kMaxItems));
+    for (std::string& j : r.joint_names) j = in.Str(kMaxName);
+    in.Doubles(&r.joint_positions, r.joint_names.size());
+    r.gyro = GetArray(in);
+    r.accelerometer = GetArray(in);
+    r.feet.resize(in.Count(kMaxItems));
+    for (RobotSnapshot::Foot& f : r.feet) {
+      f.name = in.Str(kMaxName);
+      f.contact = in.Bool();
+      f.point = GetArray(in);
+      f.force = GetArray(in);
+    }
+    r.links.resize(in.Count(kMaxItems));
+    for (RobotSnapshot::Link& l : r.links) {
+      l.name = in.Str(kMaxName);
+      l.position = GetVector(in);
+      l.orientation = GetQuaternion(in);
+    }
+    if (!in.ok()) break;
+  }
+  return w;
+}
+
+void SaveMove(const RobotMove& m, StateWriter& out) {
+  out.Str(m.robot);
+  PutVector(m.position, out);
+  PutQuaternion(m.orientation, out);
+  out.Put(m.reset_joints);
+}
+
+RobotMove RestoreMove(StateReader& in) {
+  RobotMove m;
+  m.robot = in.Str(kMaxName);
+  m.position = GetVector(in);
+  m.orientation = GetQuaternion(in);
+  m.reset_joints = in.Bool();
+  return m;
+}
+
+void SaveJoints(const std::map<std::string, std::vector<JointVelocity>>& joints, StateWriter& out) {
+  out.Put<uint64_t>(joints.size());
+  for (const auto& [robot, targets] : joints) {
+    out.Str(robot);
+    out.Put<uint64_t>(targets.size());
+    for (const JointVelocity& t : targets) {
+      out.Str(t.joint);
+      out.Put(t.velocity);
+    }
+  }
+}
+
+std::map<std::string, std::vector<JointVelocity>> RestoreJoints(StateReader& in) {
+  std::map<std::string, std::vector<JointVelocity>> joints;
+  const size_t n = in.Count(kMaxItems);
+  for (size_t i = 0; i < n && in.ok(); ++i) {
+    const std::string robot = in.Str(kMaxName);
+    std::vector<JointVelocity> targets(in.Count(kMaxItems));
+    for (JointVelocity& t : targets) {
+      t.joint = in.Str(kMaxName);
+      t.velocity = GetFinite(in);
+    }
+    if (!joints.emplace(robot, std::move(targets)).second) in.Fail("robot twice");
+  }
+  return joints;
+}
+
+}  // namespace
+
+std::string Session::SaveLeague() const {
+  StateWriter out;
+  out.Tag(StateTag("TSLG"));
+  out.Put(kLeagueVersion);
+  out.Put(cycle_);
+  game_.Save(out);
+  radio_.Save(out);
+  beam_rng_.Save(out);
+  out.Tag(StateTag("SREQ"));
+  out.Put<uint64_t>(requests_.moves.size());
+  for (const RobotMove& m : requests_.moves) SaveMove(m, out);
+  out.Put(requests_.ball.has_value());
+  if (requests_.ball) {
+    PutVector(requests_.ball->position, out);
+    PutVector(requests_.ball->velocity, out);
+  }
+  SaveJoints(requests_.joints, out);
+  SaveJoints(held_joints_, out);
+  out.Put(last_.has_value());
+  if (last_) SaveWorld(*last_, out);
+  out.Tag(StateTag("SPLY"));
+  std::vector<const Agent*> players;
+  for (const auto& [id, a] : agents_)
+    if (a.inited) players.push_back(&a);
+  // By (side, unum), not by connection: the same league gives the same bytes.
+  std::sort(players.begin(), players.end(), [](const Agent* x, const Agent* y) {
+    return std::make_pair(x->side, x->unum) < std::make_pair(y->side, y->unum);
+  });
+  out.Put<uint64_t>(players.size());
+  for (const Agent* a : players) {
+    out.Put(a->side);
+    out.Put<int32_t>(a->unum);
+    out.Str(a->team);
+    out.Put<int32_t>(a->type);
+    out.Str(a->robot >= 0 ? robots_[a->robot] : std::string());
+    out.Put(a->announce);
+    out.Put(a->scene_cycle);
+    out.Put(a->perceptions);
+    PutVector(a->calibration, out);
+    a->rng.Save(out);
+  }
+  return out.Take();
+}
+
+std::string Session::RestoreLeague(std::string_view snapshot) {
+  StateReader in(snapshot);
+  if (in.Get<uint32_t>() != StateTag("TSLG") || !in.ok()) return "not a SimSpark league snapshot";
+  if (in.Get<uint32_t>() != kLeagueVersion || !in.ok()) return "league snapshot format version differs";
+  // Everything into copies first: a refused snapshot changes nothing.
+  const uint64_t cycle = in.Get<uint64_t>();
+  Game game = game_;
+  game.Restore(in);
+  Radio radio = radio_;
+  radio.Restore(in);
+  Rng beam_rng;
+  beam_rng.Restore(in);
+  CheckRngState(beam_rng, in);
+  in.Tag(StateTag("SREQ"));
+  const auto known_robot = [&](const std::string& name) {
+    if (std::find(robots_.begin(), robots_.end(), name) == robots_.end()) in.Fail("a robot not in the scene");
+  };
+  WorldRequests requests;
+  requests.moves.resize(in.Count(kMaxItems));
+  for (RobotMove& m : requests.moves) {
+    m = RestoreMove(in);
+    known_robot(m.robot);
+  }
+  if (in.Bool()) requests.ball = BallMove{GetVector(in), GetVector(in)};
+  requests.joints = RestoreJoints(in);
+  std::map<std::string, std::vector<JointVelocity>> held = RestoreJoints(in);
+  for (const auto* joints : {&requests.joints, &held})
+    for (const auto& [robot, targets] : *joints) known_robot(robot);
+  std::optional<WorldSnapshot> last;
+  if (in.Bool()) last = RestoreWorld(in);
+  in.Tag(StateTag("SPLY"));
+  // Each player of the snapshot onto the connected agent that is that player.
+  std::map<int, Agent> players;  // by agent id: the agent with its league state replaced
+  std::string refused;
+  const size_t n = in.Count(kMaxItems);
+  for (size_t i = 0; i < n && in.ok() && refused.empty(); ++i) {
+    const Side side = in.Enum(static_cast<Side>(2));
+    const int unum = in.Get<int32_t>();
+    const std::string team = in.Str(kMaxName);
+    const int type = in.Get<int32_t>();
+    const std::string robot = in.Str(kMaxName);
+    if (type < 0 || type >= kRobotTypes) in.Fail("robot type out of range");
+    Agent state;
+    state.announce = in.Bool();
+    state.scene_cycle = in.Get<uint64_t>();
+    state.perceptions = in.Get<uint64_t>();
+    state.calibration = GetVector(in);
+    state.rng.Restore(in);
+    CheckRngState(state.rng, in);
+    if (!in.ok()) break;
+    const std::string who = fmt::format("player {} {}", SideName(side), unum);
+    const Agent* a = nullptr;
+    for (const auto& [id, agent] : agents_)
+      if (agent.inited && agent.side == side && agent.unum == unum) a = &agent;
+    if (a == nullptr) {
+      refused = fmt::format("the snapshot's {} is not connected (or has no team)", who);
+    } else if (a->robot < 0 || robots_[a->robot] != robot) {
+      refused = fmt::format("the snapshot's {} drove {}, now {}", who, robot.empty() ? "no robot" : robot,
+                            a->robot < 0 ? "none" : robots_[a->robot]);
+    } else if (players.count(a->id) > 0) {
+      in.Fail("a player twice");
+    } else {
+      Agent restored = *a;
+      restored.type = type;
+      restored.team = team;
+      restored.announce = state.announce;
+      restored.scene_cycle = state.scene_cycle;
+      restored.perceptions = state.perceptions;
+      restored.calibration = state.calibration;
+      restored.rng = state.rng;
+      players.emplace(a->id, std::move(restored));
+    }
+  }
+  if (in.ok() && refused.empty() && !in.AtEnd()) in.Fail("trailing bytes");
+  if (!in.ok()) return std::string("invalid league snapshot: ") + in.error();
+  if (!refused.empty()) return refused;
+  // The game's teams must be the players' (a snapshot from SaveLeague always is).
+  int per_side[2] = {0, 0};
+  for (const auto& [id, a] : players) {
+    ++per_side[a.side == Side::kLeft ? 0 : 1];
+    if (game.TeamName(a.side) != a.team) return "invalid league snapshot: a player's team is not its side's";
+  }
+  if (game.PlayerCount(Side::kLeft) != per_side[0] || game.PlayerCount(Side::kRight) != per_side[1])
+    return "invalid league snapshot: the game's teams are not the players";
+  for (const auto& [id, a] : agents_) {
+    if (a.inited && players.count(id) == 0)
+      return fmt::format("player {} {} is connected but not in the snapshot", SideName(a.side), a.unum);
+  }
+  cycle_ = cycle;
+  game_ = std::move(game);
+  radio_ = std::move(radio);
+  beam_rng_ = beam_rng;
+  requests_ = std::move(requests);
+  held_joints_ = std::move(held);
+  last_ = std::move(last);
+  for (auto& [id, a] : players) agents_.at(id) = std::move(a);
+  return "";
+}
 
 }  // namespace turf::simspark

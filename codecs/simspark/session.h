@@ -23,6 +23,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/rng.h"
@@ -130,6 +131,29 @@ class Session {
   const Game& game() const { return game_; }
   // Agents not synced (sync mode), for diagnostics.
   std::vector<int> Waiting() const;
+
+  // The league's state, for a snapshot next to the world's (the kernel's):
+  // the cycle, the game (referee), the radio's messages in flight and
+  // capacities, the beam noise, the world requests not yet taken (beams,
+  // ball placements, the joint velocities held for the next step), the last
+  // world seen (say positions, trainer moves), and per player, keyed by
+  // (side, unum): team, robot type, robot, vision noise generator and
+  // calibration offset, perception count (when it sees), pending GS
+  // announcement. Not in it: connection-level things (agent ids, sync flags,
+  // outputs and issues not yet taken, monitor frames) and agents without a
+  // team (no init), whose own state a restore leaves as it is (the world
+  // requests not yet taken are all the snapshot's, for every robot).
+  std::string SaveLeague() const;
+  // Restores what SaveLeague saved; "" on success, else why, and then
+  // nothing changed. The players connected now must be exactly the
+  // snapshot's: each (side, unum) of the snapshot connected and in a team, in
+  // the same robot, and no other player in a team; otherwise the snapshot is
+  // refused (say, before the agents have reconnected). A player's id stays
+  // the connection's; its league state becomes the snapshot's. A restored run
+  // sends the same bytes as the saved one when the players are the same
+  // connections; after a player reconnected, vision lists the other players
+  // in the new connection order (and draws their noise in that order).
+  std::string RestoreLeague(std::string_view snapshot);
 
  private:
   struct Agent {

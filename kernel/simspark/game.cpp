@@ -438,3 +438,117 @@ void Game::DropBall() {
 }
 
 }  // namespace turf::simspark
+
+namespace turf::simspark {
+
+namespace {
+
+constexpr size_t kMaxTeamName = 256;  // far above any team name an init accepts
+
+void SaveVector(const Eigen::Vector3d& v, StateWriter& out) {
+  for (int k = 0; k < 3; ++k) out.Put(v[k]);
+}
+
+Eigen::Vector3d RestoreVector(StateReader& in) {
+  Eigen::Vector3d v;
+  for (int k = 0; k < 3; ++k) v[k] = in.Get<double>();
+  return v;
+}
+
+// A finite double; anything else fails the reader.
+double Finite(StateReader& in) {
+  const double v = in.Get<double>();
+  if (!std::isfinite(v)) in.Fail("value not finite");
+  return v;
+}
+
+template <class T, class SaveT>
+void SaveOptional(const std::optional<T>& v, StateWriter& out, SaveT save) {
+  out.Put(v.has_value());
+  if (v) save(*v);
+}
+
+}  // namespace
+
+void Game::Save(StateWriter& out) const {
+  out.Tag(StateTag("SGAM"));
+  for (const Team& team : teams_) {
+    SaveOptional(team.name, out, [&](const std::string& name) { out.Str(name); });
+    out.Put<uint64_t>(team.players.size());
+    for (const auto& [unum, type] : team.players) {
+      out.Put<int32_t>(unum);
+      out.Put<int32_t>(type);
+    }
+  }
+  out.Put(mode_);
+  out.Put(reported_mode_);
+  out.Put(game_time_);
+  out.Put(mode_start_);
+  out.Put(idle_time_);
+  out.Put<int32_t>(half_);
+  out.Put<int32_t>(last_kick_off_half_);
+  SaveOptional(next_half_kick_off_, out, [&](Side side) { out.Put(side); });
+  out.Put(kick_check_);
+  SaveOptional(kick_taker_, out, [&](const Toucher& t) {
+    out.Put(t.side);
+    out.Put<int32_t>(t.unum);
+    out.Put(t.known);
+  });
+  out.Put(kick_time_);
+  SaveOptional(kick_off_team_no_score_, out, [&](Side side) { out.Put(side); });
+  out.Put(goal_kick_touched_);
+  out.Put<int32_t>(score_[0]);
+  out.Put<int32_t>(score_[1]);
+  out.Put(pending_drop_);
+  SaveOptional(out_position_, out, [&](const Eigen::Vector3d& v) { SaveVector(v, out); });
+  out.Put(out_time_);
+}
+
+void Game::Restore(StateReader& in) {
+  Game g(rules_);
+  in.Tag(StateTag("SGAM"));
+  for (Team& team : g.teams_) {
+    if (in.Bool()) team.name = in.Str(kMaxTeamName);
+    const size_t n = in.Count(static_cast<size_t>(std::max(rules_.max_players, 0)));
+    for (size_t i = 0; i < n && in.ok(); ++i) {
+      const int unum = in.Get<int32_t>();
+      const int type = in.Get<int32_t>();
+      if (type < 0 || type >= kRobotTypes) in.Fail("robot type out of range");
+      if (!team.players.emplace(unum, type).second) in.Fail("player number twice in a team");
+    }
+    if (!team.players.empty() && !team.name) in.Fail("players in a team without a name");
+  }
+  g.mode_ = in.Enum(PlayMode::kCount);
+  g.reported_mode_ = in.Enum(PlayMode::kCount);
+  g.game_time_ = Finite(in);
+  g.mode_start_ = Finite(in);
+  g.idle_time_ = Finite(in);
+  g.half_ = in.Get<int32_t>();
+  g.last_kick_off_half_ = in.Get<int32_t>();
+  if (g.half_ < 1 || g.half_ > 2 || g.last_kick_off_half_ < 0 || g.last_kick_off_half_ > 2)
+    in.Fail("half out of range");
+  if (in.Bool()) g.next_half_kick_off_ = in.Enum(static_cast<Side>(2));
+  g.kick_check_ = in.Bool();
+  if (in.Bool()) {
+    Toucher t;
+    t.side = in.Enum(static_cast<Side>(2));
+    t.unum = in.Get<int32_t>();
+    t.known = in.Bool();
+    g.kick_taker_ = t;
+  }
+  g.kick_time_ = Finite(in);
+  if (in.Bool()) g.kick_off_team_no_score_ = in.Enum(static_cast<Side>(2));
+  g.goal_kick_touched_ = in.Bool();
+  g.score_[0] = in.Get<int32_t>();
+  g.score_[1] = in.Get<int32_t>();
+  if (g.score_[0] < 0 || g.score_[1] < 0) in.Fail("negative score");
+  g.pending_drop_ = in.Bool();
+  if (in.Bool()) {
+    g.out_position_ = RestoreVector(in);
+    if (!g.out_position_->allFinite()) in.Fail("value not finite");
+  }
+  g.out_time_ = Finite(in);
+  if (in.ok()) *this = std::move(g);
+}
+
+}  // namespace turf::simspark

@@ -51,6 +51,7 @@
 #include <vector>
 
 #include "core/rng.h"
+#include "core/state_io.h"
 #include "kernel/simspark/types.h"
 
 namespace turf::simspark {
@@ -173,6 +174,12 @@ class Game {
   // Where a drop ball at `ball` goes: out of the penalty areas (to their front
   // corner on the ball's side), inside the field, on the ground.
   Eigen::Vector3d DropPosition(const Eigen::Vector3d& ball) const;
+
+  // Everything the game changes (teams, play mode, times, score, kick
+  // checks), for snapshots; the rules are configuration, not saved. A restore
+  // that fails (truncated, a value out of range) leaves the game unchanged.
+  void Save(StateWriter& out) const;
+  void Restore(StateReader& in);
 
  private:
   struct Team {

@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/state_io.h"
 #include "kernel/simspark/types.h"
 
 namespace turf::simspark {
@@ -46,6 +47,12 @@ class Radio {
   void EndCycle();
   // Forgets a listener's capacity (e.g. when the agent leaves).
   void Forget(Side side, int unum);
+
+  // The messages said this cycle and the listeners' capacities, for
+  // snapshots (the parameters are configuration, not saved). A restore that
+  // fails leaves the radio unchanged.
+  void Save(StateWriter& out) const;
+  void Restore(StateReader& in);
 
  private:
   struct Said {

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
 
 namespace turf::simspark {
 namespace {
@@ -599,6 +602,88 @@ TEST(GameTrainer, DropBallScoreTimeAndModes) {
   game.SetPlayMode(PlayMode::kPassRight);
   EXPECT_NEAR(CyclesUntilModeChange(&game, kCentre, 1000), 200, 1);
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+}
+
+}  // namespace
+}  // namespace turf::simspark
+
+namespace turf::simspark {
+namespace {
+
+// A game some way into a match: teams, a kick-off, a touch, a score, a time.
+Game GameInPlay() {
+  Game game;
+  EXPECT_TRUE(game.Init("Alpha", 1, 0).ok);
+  EXPECT_TRUE(game.Init("Alpha", 2, 1).ok);
+  EXPECT_TRUE(game.Init("Beta", 1, 2).ok);
+  game.KickOff(Side::kLeft, nullptr);
+  for (int i = 0; i < 10; ++i)
+    game.Update(kDt, kCentre, i == 3 ? std::vector<Toucher>{{Side::kLeft, 1}} : std::vector<Toucher>{});
+  game.SetScore(2, 1);
+  game.SetGameTime(123.4);
+  return game;
+}
+
+std::string Saved(const Game& game) {
+  StateWriter out;
+  game.Save(out);
+  return out.Take();
+}
+
+TEST(GameSnapshot, RoundTripKeepsModeScoreTimesAndTeams) {
+  const Game played = GameInPlay();
+  ASSERT_EQ(played.play_mode(), PlayMode::kPlayOn);
+  const std::string bytes = Saved(played);
+  Game game;
+  StateReader in(bytes);
+  game.Restore(in);
+  ASSERT_TRUE(in.ok()) << in.error();
+  EXPECT_TRUE(in.AtEnd());
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  EXPECT_EQ(game.score(Side::kLeft), 2);
+  EXPECT_EQ(game.score(Side::kRight), 1);
+  EXPECT_DOUBLE_EQ(game.game_time(), 123.4);
+  EXPECT_DOUBLE_EQ(game.mode_time(), played.mode_time());
+  EXPECT_EQ(game.half(), 1);
+  EXPECT_EQ(game.TeamName(Side::kLeft), "Alpha");
+  EXPECT_EQ(game.TeamName(Side::kRight), "Beta");
+  EXPECT_EQ(game.PlayerCount(Side::kLeft), 2);
+  EXPECT_EQ(Saved(game), bytes);
+  // Both go on the same way: the taker's double touch, then the free kick's timeout.
+  Game original = played;
+  const std::vector<Toucher> taker{{Side::kLeft, 1}};
+  for (int i = 0; i < 1000; ++i) {
+    const GameUpdate a = original.Update(kDt, kCentre, i == 5 ? taker : std::vector<Toucher>{});
+    const GameUpdate b = game.Update(kDt, kCentre, i == 5 ? taker : std::vector<Toucher>{});
+    ASSERT_EQ(a.play_mode_changed, b.play_mode_changed) << i;
+    ASSERT_EQ(a.place_ball.has_value(), b.place_ball.has_value()) << i;
+  }
+  EXPECT_EQ(Saved(game), Saved(original));
+  // The taken team and number are kept: a third Alpha number 2 is refused.
+  EXPECT_FALSE(game.Init("Alpha", 2, 0).ok);
+}
+
+TEST(GameSnapshot, TruncatedOrOutOfRangeChangesNothing) {
+  const std::string bytes = Saved(GameInPlay());
+  Game game;
+  ASSERT_TRUE(game.Init("Gamma", 3, 0).ok);
+  const std::string before = Saved(game);
+  for (size_t cut = 0; cut < bytes.size(); ++cut) {
+    StateReader in(std::string_view(bytes).substr(0, cut));
+    game.Restore(in);
+    ASSERT_FALSE(in.ok()) << cut;
+    ASSERT_EQ(Saved(game), before) << cut;
+  }
+  // The play mode (right after the two teams) past the last one.
+  std::string bad = bytes;
+  // tag, then per team: has name, name (length, chars), player count, (unum, type) per player.
+  const size_t mode_at = 4 + (1 + 8 + 5 + 8 + 2 * 8) + (1 + 8 + 4 + 8 + 1 * 8);
+  const auto count = static_cast<int32_t>(PlayMode::kCount);
+  std::memcpy(bad.data() + mode_at, &count, sizeof(count));
+  StateReader in(bad);
+  game.Restore(in);
+  EXPECT_STREQ(in.error(), "enum value out of range");
+  EXPECT_EQ(Saved(game), before);
 }
 
 }  // namespace

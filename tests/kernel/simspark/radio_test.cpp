@@ -110,3 +110,36 @@ TEST(Radio, CapacityRecoversAfterSilenceAndEndCycleForgetsMessages) {
 
 }  // namespace
 }  // namespace turf::simspark
+
+namespace turf::simspark {
+namespace {
+
+TEST(RadioSnapshot, MessagesInFlightAndCapacitiesRoundTrip) {
+  Radio radio;
+  radio.Say(Left(1, 0, 0), "one", 1.0);
+  radio.Deliver(Left(2, 1, 0), 1);  // spends listener 2's teammate budget
+  radio.Say(Right(3, 5, 5), "three", 1.0);
+  StateWriter out;
+  radio.Save(out);
+  const std::string bytes = out.Take();
+  Radio copy;
+  StateReader in(bytes);
+  copy.Restore(in);
+  ASSERT_TRUE(in.ok()) << in.error();
+  EXPECT_TRUE(in.AtEnd());
+  // Listener 2 spent its budget at cycle 1: hears only the opponent at cycle 2.
+  for (Radio* r : {&radio, &copy}) {
+    const std::vector<Heard> heard = r->Deliver(Left(2, 1, 0), 2);
+    ASSERT_EQ(heard.size(), 1u);
+    EXPECT_EQ(heard[0].message, "three");
+  }
+  // Truncated: refused, the radio unchanged.
+  StateReader cut(std::string_view(bytes).substr(0, bytes.size() - 1));
+  Radio empty;
+  empty.Restore(cut);
+  EXPECT_FALSE(cut.ok());
+  EXPECT_TRUE(empty.Deliver(Left(1, 0, 0), 1).empty());
+}
+
+}  // namespace
+}  // namespace turf::simspark
