@@ -1,5 +1,8 @@
 #include "core/rng.h"
 
+#include <algorithm>
+#include <iterator>
+
 namespace turf {
 
 namespace {
@@ -63,9 +66,17 @@ void Rng::Save(StateWriter& out) const {
 }
 
 void Rng::Restore(StateReader& in) {
-  for (uint64_t& word : s_) word = in.Get<uint64_t>();
-  has_spare_ = in.Bool();
-  spare_ = in.Get<double>();
+  uint64_t s[4];
+  for (uint64_t& word : s) word = in.Get<uint64_t>();
+  // An all-zero xoshiro state (never reached from a seed) gives zeros forever, and Normal() would wait for a
+  // non-zero draw forever: a snapshot (untrusted bytes) with one fails.
+  if ((s[0] | s[1] | s[2] | s[3]) == 0) in.Fail("random generator state all zero");
+  const bool has_spare = in.Bool();
+  const double spare = in.Get<double>();
+  if (!in.ok()) return;
+  std::copy(std::begin(s), std::end(s), std::begin(s_));
+  has_spare_ = has_spare;
+  spare_ = spare;
 }
 
 }  // namespace turf

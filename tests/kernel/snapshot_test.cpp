@@ -2,6 +2,8 @@
 // mismatched snapshot is refused with a reason and changes nothing.
 #include <gtest/gtest.h>
 
+#include "core/rng.h"
+#include "core/state_io.h"
 #include "tests/kernel/kernel_fixtures.h"
 
 namespace turf {
@@ -64,6 +66,22 @@ TEST(SnapshotTest, CorruptedValuesAreRefusedNotObeyed) {
     }
   }
   EXPECT_GT(refused, 0);
+}
+
+// An all-zero generator state is never reached from a seed and would make Normal() wait forever for a non-zero
+// draw: a snapshot carrying one is refused (the SimSpark league snapshot's fuzzer found the hang).
+TEST(SnapshotTest, AnAllZeroRandomStateIsRefused) {
+  Rng rng(7);
+  StateWriter zeros;
+  for (int i = 0; i < 4; ++i) zeros.Put<uint64_t>(0);
+  zeros.Put(false);
+  zeros.Put(0.0);
+  const std::string bytes = zeros.Take();
+  StateReader in(bytes);
+  const uint64_t next = Rng(rng).Next();
+  rng.Restore(in);
+  EXPECT_FALSE(in.ok());
+  EXPECT_EQ(rng.Next(), next) << "a refused restore changes nothing";
 }
 
 }  // namespace
