@@ -25,6 +25,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench/bench_qos.h"
 #include "codecs/grsim/grsim_codec.h"
 #include "codecs/proto/grsim.pb.h"
 #include "codecs/ssl_vision/detection.h"
@@ -66,20 +67,6 @@ class Samples {
   std::mutex mutex_;
   std::vector<int64_t> values_;
 };
-
-// The shipped QoS file with Fast DDS's intra-process shortcut switched off.
-std::string QosWithoutIntraprocess() {
-  std::ifstream in(turf::dds::DefaultQosFile());
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string xml = text.str();
-  const std::string anchor = "<profiles>";
-  xml.insert(xml.find(anchor),
-             "<library_settings><intraprocess_delivery>OFF</intraprocess_delivery></library_settings>\n  ");
-  const std::string path = "/tmp/turf_bench_latency_qos_" + std::to_string(getpid()) + ".xml";
-  std::ofstream(path) << xml;
-  return path;
-}
 
 std::string GrsimPacket(int seq) {
   turf::wire::grsim::grSim_Packet p;
@@ -222,7 +209,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(10, 100000));
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::warn);
-  const std::string qos = QosWithoutIntraprocess();
+  const std::string qos = turf::bench::QosWithoutIntraprocess("latency");
   const int domain = 1 + static_cast<int>(getpid() % 99);
   const std::string prefix = "latency" + std::to_string(getpid());
   turf::dds::Participant sim({domain, "bench-sim", prefix, qos});

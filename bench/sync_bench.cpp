@@ -29,6 +29,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench/bench_qos.h"
 #include "codecs/proto/ssl_simulation.pb.h"
 #include "codecs/ssl_simulation/step_planner.h"
 #include "dds/memory_bus.h"
@@ -77,20 +78,6 @@ std::string SyncRequest(int i) {
       v->set_angular(Angular(i, k));
     }
   return r.SerializeAsString();
-}
-
-// The shipped QoS file with Fast DDS's intra-process shortcut switched off (as bridge_latency.cpp).
-std::string QosWithoutIntraprocess() {
-  std::ifstream in(turf::dds::DefaultQosFile());
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string xml = text.str();
-  const std::string anchor = "<profiles>";
-  xml.insert(xml.find(anchor),
-             "<library_settings><intraprocess_delivery>OFF</intraprocess_delivery></library_settings>\n  ");
-  const std::string path = "/tmp/turf_bench_sync_qos_" + std::to_string(getpid()) + ".xml";
-  std::ofstream(path) << xml;
-  return path;
 }
 
 // A team on UDP: one socket, one sync request at a time.
@@ -280,7 +267,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "cannot load %s\n", scene_path.c_str());
     return 2;
   }
-  const std::string qos = QosWithoutIntraprocess();
+  const std::string qos = turf::bench::QosWithoutIntraprocess("sync");
   // All side by side, one request to each in turn (the order rotating), so that load from elsewhere on the machine
   // falls on every row alike. Idle lockstep nodes only wake every 50 ms.
   Result dds, local, memory, physics;

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 namespace turf {
@@ -20,6 +21,17 @@ inline CLI::Validator FiniteAtLeastZero(bool zero_allowed = true) {
         return "";
       },
       zero_allowed ? "NUMBER >= 0" : "NUMBER > 0");
+}
+
+// A port flag: 0..65535 (1..65535 unless `zero_allowed`), refused with the range it must be in
+// ("--port: Value 99999 not in range 0 to 65535") rather than a bare conversion error. `port` must outlive parsing.
+inline CLI::Option* AddPortOption(CLI::App& app, const std::string& name, uint16_t& port, const std::string& help,
+                                  bool zero_allowed = false) {
+  return app
+      .add_option_function<int>(
+          name, [&port](int value) { port = static_cast<uint16_t>(value); }, help)
+      ->default_str(std::to_string(port))
+      ->check(CLI::Range(zero_allowed ? 0 : 1, 65535));
 }
 
 }  // namespace turf

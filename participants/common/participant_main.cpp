@@ -1,5 +1,7 @@
 #include "participants/common/participant_main.h"
 
+#include "participants/common/cli_checks.h"
+
 #include <spdlog/spdlog.h>
 
 #include <exception>
@@ -22,11 +24,7 @@ void ParticipantMain::AddCommonFlags(ParticipantOptions& options, const CommonFl
 
 CLI::Option* ParticipantMain::AddPort(const std::string& name, uint16_t& port, const std::string& help,
                                       bool zero_allowed) {
-  return app_
-      .add_option_function<int>(
-          name, [&port](int value) { port = static_cast<uint16_t>(value); }, help)
-      ->default_str(std::to_string(port))
-      ->check(CLI::Range(zero_allowed ? 0 : 1, 65535));
+  return AddPortOption(app_, name, port, help, zero_allowed);
 }
 
 int ParticipantMain::Run(int argc, const char* const* argv, const std::function<int()>& body) {

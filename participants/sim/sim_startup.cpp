@@ -15,6 +15,7 @@
 #include "participants/common/process.h"
 #include "participants/sim/sim_host.h"
 #include "participants/sim/sim_node.h"
+#include "participants/simproto_bridge/simproto_flags.h"
 
 namespace turf {
 namespace {
@@ -116,24 +117,7 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
                                          "still works as a separate process")
                               ->expected(0, 1)
                               ->type_name("[ADDRESS]");
-  app.add_option("--simproto-control-port", sp.control_port,
-                 "with --simproto: UDP port for SimulatorCommand -> SimulatorResponse (0: off)")
-      ->capture_default_str();
-  app.add_option("--simproto-blue-port", sp.blue_port,
-                 "with --simproto: UDP port for the blue team's RobotControl (0: off)")
-      ->capture_default_str();
-  app.add_option("--simproto-yellow-port", sp.yellow_port,
-                 "with --simproto: UDP port for the yellow team's RobotControl (0: off)")
-      ->capture_default_str();
-  app.add_option("--simproto-sync-port", sp.sync_port,
-                 "with --simproto: UDP port for SimulationSyncRequest (lockstep; ids 0..15 blue, 16..31 yellow; "
-                 "0: off)")
-      ->capture_default_str();
-  app.add_flag("--simproto-sync", sp.sync,
-               "with --simproto: allow synchronous mode (a SimulationSyncRequest switches this match to lockstep); "
-               "off: such requests are answered TURF_SYNC_DISABLED");
-  app.add_option("--simproto-sync-listen", sp.sync_listen, "with --simproto: IPv4 address the sync port binds to")
-      ->capture_default_str();
+  AddSimprotoPortFlags(app, sp, "simproto-", "with --simproto: ");
 
   // SimSpark agents and monitors in this process (sim_host.h): the same ports as turf-simspark-bridge.
   SimSparkBridgeOptions& ss = command_line.simspark_options;

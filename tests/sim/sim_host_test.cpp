@@ -25,6 +25,7 @@
 #include "tests/core/test_scenes.h"
 #include "tests/simspark/agent_client.h"
 #include "tests/support/in_process.h"
+#include "tests/support/world_observer.h"
 
 namespace turf {
 namespace {
@@ -54,36 +55,6 @@ class Team {
 
  private:
   UdpSocket socket_ = test::BindLoopback();
-};
-
-// Any other participant on the domain: turf-sim's world state and clock over DDS.
-class RemoteObserver {
- public:
-  explicit RemoteObserver(const dds::ParticipantOptions& o)
-      : participant_(o),
-        state_(participant_.MakeReader(dds::Topic::kWorldState)),
-        clock_(participant_.MakeReader(dds::Topic::kClock)) {}
-  bool Wait(const std::function<bool(const idl::WorldState&, const idl::Clock&)>& done) {
-    const auto end = SteadyClock::now() + 15s;
-    while (SteadyClock::now() < end) {
-      std::vector<idl::WorldState> states;
-      if (state_->Take(&states)) state_now_ = states.back(), has_state_ = true;
-      std::vector<idl::Clock> clocks;
-      if (clock_->Take(&clocks)) clock_now_ = clocks.back();
-      if (has_state_ && done(state_now_, clock_now_)) return true;
-      std::this_thread::sleep_for(2ms);
-    }
-    return false;
-  }
-  const idl::WorldState& state() const { return state_now_; }
-
- private:
-  dds::Participant participant_;
-  std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> state_;
-  std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_;
-  idl::WorldState state_now_;
-  bool has_state_ = false;
-  idl::Clock clock_now_;
 };
 
 // turf-sim (lockstep) with the in-process front-end on free loopback ports, on a thread.
@@ -145,7 +116,7 @@ TEST(SimHost, SyncRequestsOverUdpStepTheInProcessNodeAndARemoteParticipantSeesIt
   const dds::ParticipantOptions dds = test::UniqueDds("observer", "host", 41);
   Host h(dds);
   ASSERT_NE(h.host.node().simproto(), nullptr);
-  RemoteObserver remote(dds);
+  test::WorldObserver remote(dds);
   Team team;
   ASSERT_TRUE(WaitReady(team, h.control));
 
@@ -209,7 +180,7 @@ TEST(SimHost, SimSparkAgentsInProcessStepTheLeggedNodeAndARemoteParticipantSeesI
   front_ends.simspark = simspark;
   test::OnThread<SimHost> host(std::make_unique<SimHost>(std::move(*scene.scene), node, std::move(front_ends)));
   ASSERT_NE(host.node().simspark(), nullptr);
-  RemoteObserver remote(dds);
+  test::WorldObserver remote(dds);
 
   auto now = [](const std::string& m) {
     std::smatch match;

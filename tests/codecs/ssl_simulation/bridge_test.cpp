@@ -21,6 +21,7 @@
 #include "participants/simproto_bridge/simproto_bridge.h"
 #include "tests/core/test_scenes.h"
 #include "tests/support/in_process.h"
+#include "tests/support/world_observer.h"
 
 namespace turf {
 namespace {
@@ -105,41 +106,6 @@ class Team {
   UdpSocket socket_;
 };
 
-// Watches world_state and clock over DDS, as any participant could.
-class Observer {
- public:
-  explicit Observer(const dds::ParticipantOptions& o)
-      : participant_(o),
-        state_(participant_.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
-        clock_(participant_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock)) {}
-  bool Wait(const std::function<bool(const idl::WorldState&, const idl::Clock&)>& done,
-            std::chrono::milliseconds timeout = 5s) {
-    const auto end = Clock::now() + timeout;
-    while (Clock::now() < end) {
-      std::vector<idl::WorldState> states;
-      if (state_->Take(&states)) {
-        state_now_ = states.back();
-        has_state_ = true;
-      }
-      std::vector<idl::Clock> clocks;
-      if (clock_->Take(&clocks)) clock_now_ = clocks.back();
-      if (has_state_ && done(state_now_, clock_now_)) return true;
-      std::this_thread::sleep_for(2ms);
-    }
-    return false;
-  }
-  const idl::WorldState& state() const { return state_now_; }
-  const idl::Clock& clock() const { return clock_now_; }
-
- private:
-  dds::Participant participant_;
-  std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> state_;
-  std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_;
-  idl::WorldState state_now_;
-  bool has_state_ = false;
-  idl::Clock clock_now_;
-};
-
 // turf-sim and the bridge, a team on UDP and a DDS observer of the world, on
 // the test's own domain and prefix.
 struct Rig {
@@ -150,7 +116,7 @@ struct Rig {
   const dds::ParticipantOptions dds = UniqueDds();
   Stack stack;
   Team team;
-  Observer world;
+  test::WorldObserver world;
 };
 
 const idl::RobotState& FindRobot(const idl::WorldState& s, idl::Team team, int id) {
@@ -180,7 +146,7 @@ bool HasError(const google::protobuf::RepeatedPtrField<ws::SimulatorError>& erro
 // A positive marker for negative checks: teleports the ball to (x, y) through
 // the control port and waits for a world state that shows it. turf-sim handles
 // requests in order, so that state comes after everything asked before.
-bool BallMarker(Team& team, uint16_t control_port, Observer& world, float x, float y) {
+bool BallMarker(Team& team, uint16_t control_port, test::WorldObserver& world, float x, float y) {
   ws::SimulatorCommand c;
   c.mutable_control()->mutable_teleport_ball()->set_x(x);
   c.mutable_control()->mutable_teleport_ball()->set_y(y);
