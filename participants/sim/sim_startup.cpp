@@ -34,6 +34,33 @@ std::optional<SensorRealism> LoadRealismOption(const std::string& realism) {
   return r.realism;
 }
 
+// Either kind of scene: the command line's realism, then turf-sim's node alone or with the front-end the command
+// line asks for in this process (sim_host.h); the other kind's front-end is refused.
+template <class SceneKind>
+int RunScene(SceneKind scene, const SimCommandLine& command_line, bool legged) {
+  if (!command_line.realism.empty()) {
+    const std::optional<SensorRealism> r = LoadRealismOption(command_line.realism);
+    if (!r) return kExitBadConfig;
+    scene.realism = *r;  // legged scenes: the encoders, IMU and touch streams
+  }
+  if (legged ? command_line.simproto : command_line.simspark) {
+    spdlog::error(legged ? "--simproto serves the SSL simulation protocol: it needs an SSL scene, not a legged one"
+                         : "--simspark serves SimSpark agents: it needs a legged scene (kind: legged), not an SSL one");
+    return kExitBadConfig;
+  }
+  if (legged ? command_line.simspark : command_line.simproto) {
+    InProcessFrontEnds front_ends;
+    if (legged)
+      front_ends.simspark = command_line.simspark_options;
+    else
+      front_ends.simproto = command_line.simproto_options;
+    SimHost(std::move(scene), command_line.node, std::move(front_ends)).Run(StopRequested);
+    return kExitClean;
+  }
+  SimNode(std::move(scene), command_line.node).Run(StopRequested);
+  return kExitClean;
+}
+
 // Scenes with `kind: legged`: any MJCF robots on joint topics (sim_node.h).
 int RunLegged(const SimCommandLine& command_line) {
   LeggedSceneLoadResult loaded = LoadLeggedSceneFile(command_line.scene_path);
@@ -43,23 +70,7 @@ int RunLegged(const SimCommandLine& command_line) {
     return kExitBadConfig;
   }
   spdlog::info("legged scene file {}", command_line.scene_path);
-  if (command_line.simproto) {
-    spdlog::error("--simproto serves the SSL simulation protocol: it needs an SSL scene, not a legged one");
-    return kExitBadConfig;
-  }
-  if (command_line.simspark) {
-    InProcessFrontEnds front_ends;
-    front_ends.simspark = command_line.simspark_options;
-    SimHost(std::move(*loaded.scene), command_line.node, std::move(front_ends)).Run(StopRequested);
-    return kExitClean;
-  }
-  if (!command_line.realism.empty()) {
-    const std::optional<SensorRealism> r = LoadRealismOption(command_line.realism);
-    if (!r) return kExitBadConfig;
-    loaded.scene->realism = *r;  // encoders and IMU
-  }
-  SimNode(std::move(*loaded.scene), command_line.node).Run(StopRequested);
-  return kExitClean;
+  return RunScene(std::move(*loaded.scene), command_line, /*legged=*/true);
 }
 
 int RunSsl(const SimCommandLine& command_line) {
@@ -70,23 +81,7 @@ int RunSsl(const SimCommandLine& command_line) {
     return kExitBadConfig;
   }
   spdlog::info("scene file {}", command_line.scene_path);
-  if (!command_line.realism.empty()) {
-    const std::optional<SensorRealism> r = LoadRealismOption(command_line.realism);
-    if (!r) return kExitBadConfig;
-    loaded.scene->realism = *r;
-  }
-  if (command_line.simspark) {
-    spdlog::error("--simspark serves SimSpark agents: it needs a legged scene (kind: legged), not an SSL one");
-    return kExitBadConfig;
-  }
-  if (command_line.simproto) {
-    InProcessFrontEnds front_ends;
-    front_ends.simproto = command_line.simproto_options;
-    SimHost(std::move(*loaded.scene), command_line.node, std::move(front_ends)).Run(StopRequested);
-    return kExitClean;
-  }
-  SimNode(std::move(*loaded.scene), command_line.node).Run(StopRequested);
-  return kExitClean;
+  return RunScene(std::move(*loaded.scene), command_line, /*legged=*/false);
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include "participants/common/udp.h"
 #include "participants/sim/sim_host.h"
 #include "participants/sim/sim_node.h"
+#include "tests/codecs/ssl_simulation/test_util.h"
 #include "tests/core/test_scenes.h"
 #include "tests/simspark/agent_client.h"
 #include "tests/support/in_process.h"
@@ -90,15 +91,6 @@ struct Host {
   test::OnThread<SimHost> host;
 };
 
-void AddLocal(ws::RobotControl* rc, uint32_t id, float forward) {
-  ws::RobotCommand* c = rc->add_robot_commands();
-  c->set_id(id);
-  auto* v = c->mutable_move_command()->mutable_local_velocity();
-  v->set_forward(forward);
-  v->set_left(0.0f);
-  v->set_angular(0.0f);
-}
-
 // Until the front-end has seen turf-sim: an empty control command is answered without errors.
 bool WaitReady(Team& team, uint16_t control_port) {
   const auto end = SteadyClock::now() + 10s;
@@ -136,8 +128,8 @@ TEST(SimHost, SyncRequestsOverUdpStepTheInProcessNodeAndARemoteParticipantSeesIt
     SCOPED_TRACE(i);
     ws::SimulationSyncRequest request;
     request.set_sim_step(1.0f / 60.0f);
-    AddLocal(request.mutable_robot_control(), 0, 0.5f);   // blue 0
-    AddLocal(request.mutable_robot_control(), 17, 0.5f);  // yellow 1
+    simproto::test::AddLocal(request.mutable_robot_control(), 0, 0.5f);   // blue 0
+    simproto::test::AddLocal(request.mutable_robot_control(), 17, 0.5f);  // yellow 1
     ws::SimulationSyncResponse response;
     ASSERT_TRUE(team.Ask(h.sync, request, &response));
     EXPECT_EQ(response.robot_control_response().errors_size(), 0) << response.DebugString();

@@ -28,16 +28,6 @@ RobotControlDecode Decode(const std::vector<uint8_t>& bytes, Port port = Port::k
   return DecodeRobotControl(bytes.data(), bytes.size(), port, per_team);
 }
 
-ws::RobotCommand* AddLocal(ws::RobotControl* rc, uint32_t id, float forward) {
-  ws::RobotCommand* c = rc->add_robot_commands();
-  c->set_id(id);
-  auto* v = c->mutable_move_command()->mutable_local_velocity();
-  v->set_forward(forward);
-  v->set_left(0.0f);
-  v->set_angular(0.0f);
-  return c;
-}
-
 void ExpectRefused(const RobotControlDecode& d, DecodeError error) {
   EXPECT_EQ(d.error, error) << DecodeErrorName(d.error);
   EXPECT_TRUE(d.commands.empty());

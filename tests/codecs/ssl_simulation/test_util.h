@@ -64,8 +64,24 @@ std::vector<uint8_t> Serialize(const Message& m) {
 
 }  // namespace turf::simproto::test
 
+namespace turf::simproto::test {
+
+// A robot command moving robot `id` forward at `forward` m/s in its own frame.
+inline wire::simulation::RobotCommand* AddLocal(wire::simulation::RobotControl* rc, uint32_t id, float forward) {
+  wire::simulation::RobotCommand* c = rc->add_robot_commands();
+  c->set_id(id);
+  auto* v = c->mutable_move_command()->mutable_local_velocity();
+  v->set_forward(forward);
+  v->set_left(0.0f);
+  v->set_angular(0.0f);
+  return c;
+}
+
+}  // namespace turf::simproto::test
+
 namespace turf::simproto {
 // What every codec test of this folder names unqualified.
 namespace ws = wire::simulation;
+using test::AddLocal;
 using test::Serialize;
 }  // namespace turf::simproto
