@@ -8,9 +8,13 @@
 //   (b)  turf-sim with the front-end served in its process (SimHost, turf-sim --simproto): the node on DDS and on
 //        an in-memory bus, the front-end on the in-memory bus;
 //   (b') diagnostic: the node and the front-end on one MemoryBus, no DDS participant at all;
-//   (c)  the same number of physics steps of the kernel alone (SslKernel::Step, the same commands), no threads.
+//   (c)  the same number of physics steps of the kernel alone (SslKernel::Step, the same commands), no threads;
+//   (u)  the floor for any UDP server of this physics: a thread that runs (c)'s work for each request, then
+//        answers with the bytes of a response turf gave (physics plus what the two datagrams and the two thread
+//        wake-ups cost on this machine, whoever serves them).
 // All run side by side and take one request each in turn, so load from elsewhere falls on every row alike.
-// Prints mean, p50 and p99 per request and the overhead beyond physics (each row minus (c)). bench/run.sh sync.
+// Prints mean, p50 and p99 per request, the overhead beyond physics (each row minus (c)) and beyond the UDP floor
+// (each row minus (u)). bench/run.sh sync.
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
@@ -103,6 +107,7 @@ class SyncClient {
     std::optional<turf::Datagram> d = Exchange(bytes);
     const auto end = SteadyClock::now();
     if (!Answered(d)) throw std::runtime_error("a sync request failed");
+    last_response_ = d->bytes;
     return std::chrono::duration<double, std::micro>(end - start).count();
   }
 
@@ -125,11 +130,53 @@ class SyncClient {
     return d && r.ParseFromArray(d->bytes.data(), static_cast<int>(d->bytes.size())) &&
            r.robot_control_response().errors_size() == 0;
   }
-  bool Ask(const std::string& bytes) { return Answered(Exchange(bytes)); }
+  bool Ask(const std::string& bytes) {
+    std::optional<turf::Datagram> d = Exchange(bytes);
+    if (!Answered(d)) return false;
+    last_response_ = d->bytes;
+    return true;
+  }
 
+ public:
+  const std::vector<uint8_t>& last_response() const { return last_response_; }
+
+ private:
   turf::UdpSocket socket_;
   const turf::UdpEndpoint to_;
   int sent_ = 0;
+  std::vector<uint8_t> last_response_;
+};
+
+// (u) Answers every datagram with `response` on a thread of its own, as a front-end would, after `work()`.
+class UdpEcho {
+ public:
+  UdpEcho(std::vector<uint8_t> response, std::function<void()> work)
+      : socket_(turf::UdpSocket::Bind("127.0.0.1", 0, false, &error_).value()),
+        response_(std::move(response)),
+        work_(work),
+        thread_([this] { Serve(); }) {}
+  ~UdpEcho() {
+    stop_.store(true);
+    thread_.join();
+  }
+  uint16_t port() const { return socket_.LocalPort(); }
+
+ private:
+  void Serve() {
+    while (!stop_.load()) {
+      std::optional<turf::Datagram> d = socket_.Receive(65536, 50ms);
+      if (!d) continue;
+      work_();
+      std::string error;
+      socket_.SendTo(response_, d->from, &error);
+    }
+  }
+  std::string error_;
+  turf::UdpSocket socket_;
+  const std::vector<uint8_t> response_;
+  const std::function<void()> work_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
 };
 
 uint16_t FreePort() {
@@ -257,8 +304,9 @@ int main(int argc, char** argv) {
   app.add_option("--requests", requests, "timed requests to each")->capture_default_str();
   app.add_option("--warmup", warmup, "untimed requests to each before the timed ones")->capture_default_str();
   app.add_option("--scene", scene_path, "scene file")->capture_default_str();
-  std::string only = "abmc";
-  app.add_option("--only", only, "rows to measure: a, b, m (b'), c; e.g. 'bc' under a profiler")->capture_default_str();
+  std::string only = "abmcu";
+  app.add_option("--only", only, "rows to measure: a, b, m (b'), c, u; e.g. 'bc' under a profiler")
+      ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::warn);
 
@@ -270,7 +318,7 @@ int main(int argc, char** argv) {
   const std::string qos = turf::bench::QosWithoutIntraprocess("sync");
   // All side by side, one request to each in turn (the order rotating), so that load from elsewhere on the machine
   // falls on every row alike. Idle lockstep nodes only wake every 50 ms.
-  Result dds, local, memory, physics;
+  Result dds, local, memory, physics, udp;
   {
     OverDds over_dds(*loaded.scene, qos);
     InProcess in_process(*loaded.scene, qos, SyncOnly());
@@ -286,10 +334,16 @@ int main(int argc, char** argv) {
     to_host.WaitReady(warmup);
     to_memory.WaitReady(warmup);
     for (int i = 0; i < warmup; ++i) physics_only.Time();
+    const std::vector<uint8_t> response =
+        !to_host.last_response().empty() ? to_host.last_response() : to_memory.last_response();
+    PhysicsOnly echo_physics(*loaded.scene);
+    UdpEcho echo(response, [&echo_physics] { echo_physics.Time(); });
+    SyncClient to_echo(echo.port());
+    to_echo.WaitReady(warmup);
     for (int i = 0; i < requests; ++i)
-      for (int k = 0; k < 4; ++k) {
-        if (only.find("abmc"[(i + k) % 4]) == std::string::npos) continue;
-        switch ((i + k) % 4) {
+      for (int k = 0; k < 5; ++k) {
+        if (only.find("abmcu"[(i + k) % 5]) == std::string::npos) continue;
+        switch ((i + k) % 5) {
           case 0:
             dds.us.push_back(to_dds.Time());
             break;
@@ -299,8 +353,11 @@ int main(int argc, char** argv) {
           case 2:
             memory.us.push_back(to_memory.Time());
             break;
-          default:
+          case 3:
             physics.us.push_back(physics_only.Time());
+            break;
+          default:
+            udp.us.push_back(to_echo.Time());
             break;
         }
       }
@@ -310,18 +367,21 @@ int main(int argc, char** argv) {
   std::printf("SSL sync port, %s, sim_step 1/60 s (8.33 physics steps of 2 ms), %d robots commanded; ",
               scene_path.substr(scene_path.find_last_of('/') + 1).c_str(), 2 * kCommanded);
   std::printf("%d requests to each, in turn; %u cores\n", requests, std::thread::hardware_concurrency());
-  std::printf("| path | mean us | p50 us | p99 us | overhead beyond physics: mean / p50 us |\n");
-  std::printf("| --- | --- | --- | --- | --- |\n");
+  std::printf(
+      "| path | mean us | p50 us | p99 us | beyond physics (c): mean / p50 us | beyond the UDP floor (u): mean / p50 "
+      "us "
+      "|\n");
+  std::printf("| --- | --- | --- | --- | --- | --- |\n");
   auto row = [&](const char* name, const Result& r, bool overhead) {
     std::printf("| %s | %.0f | %.0f | %.0f |", name, r.Mean(), r.Percentile(0.5), r.Percentile(0.99));
-    if (overhead)
-      std::printf(" %.0f / %.0f |\n", r.Mean() - physics.Mean(), r.Percentile(0.5) - physics.Percentile(0.5));
-    else
-      std::printf(" |\n");
+    if (!overhead) return (void)std::printf(" | |\n");
+    std::printf(" %.0f / %.0f |", r.Mean() - physics.Mean(), r.Percentile(0.5) - physics.Percentile(0.5));
+    std::printf(" %.0f / %.0f |\n", r.Mean() - udp.Mean(), r.Percentile(0.5) - udp.Percentile(0.5));
   };
   row("(a) turf-sim + separate bridge over Fast DDS", dds, true);
   row("(b) turf-sim --simproto (in process)", local, true);
   row("(b') node and front-end on one MemoryBus, no DDS at all", memory, true);
   row("(c) physics alone (SslKernel::Step)", physics, false);
+  row("(u) UDP floor: (c) served over UDP by a bare thread", udp, true);
   return 0;
 }

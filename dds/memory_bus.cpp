@@ -6,6 +6,21 @@
 
 namespace turf::dds {
 
+namespace {
+
+thread_local int t_delivering = 0;  // MemoryBus::Write calls delivering on this thread (they may nest)
+
+struct Delivering {
+  Delivering() { ++t_delivering; }
+  ~Delivering() { --t_delivering; }
+  Delivering(const Delivering&) = delete;
+  Delivering& operator=(const Delivering&) = delete;
+};
+
+}  // namespace
+
+bool MemoryBus::DeliveringOnThisThread() { return t_delivering > 0; }
+
 // The sink is reached under the bus's lock (Push) and, for on_data, while `open`, counted in `running`: closing a
 // reader takes it out of the topic, clears `open` and waits for the on_data calls running, so no delivery
 // outlives its endpoint. No lock is held while on_data runs (it may write, and wake other readers).
@@ -111,6 +126,7 @@ bool MemoryBus::Write(Topic topic, MemoryWriter& writer, const void* sample) {
     for (const std::shared_ptr<Slot>& slot : t.readers)
       if (slot->sink.Push(sample)) woken.push_back(slot);
   }
+  const Delivering delivering;
   for (const std::shared_ptr<Slot>& slot : woken) slot->Notify();
   return true;
 }

@@ -37,6 +37,11 @@ class MemoryBus final : public Bus {
 
   std::string Describe() const override;
 
+  // True while this thread delivers a sample it wrote on a MemoryBus (inside that Write, in a reader's on_data):
+  // the writer waits for the call, so an on_data may serve the sample right there instead of waking another thread
+  // (turf-sim serves an in-process front-end's control request so, participants/sim/control_loop.h).
+  static bool DeliveringOnThisThread();
+
  protected:
   std::unique_ptr<WriterEndpoint> OpenWriter(Topic topic, const SampleOps& ops) override;
   std::unique_ptr<ReaderEndpoint> OpenReader(Topic topic, const SampleOps& ops, SampleSink& sink) override;

@@ -12,6 +12,7 @@
 
 #include <google/protobuf/message.h>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -93,8 +94,15 @@ void ReportUnknownFields(const google::protobuf::Message& message, std::vector<S
 // all are reported.
 class Problems {
  public:
-  // False (and recorded) if `value` is not finite or outside [lo, hi].
-  bool Check(double value, double lo, double hi, const std::string& what);
+  // False (and recorded) if `value` is not finite or outside [lo, hi]. The value's name is the parts of `what`
+  // joined, built only for a refusal (a sync request checks dozens of values).
+  template <class... Parts>
+  bool Check(double value, double lo, double hi, const Parts&... what) {
+    if (std::isfinite(value) && value >= lo && value <= hi) return true;
+    std::string name;
+    (name.append(what), ...);
+    return Refuse(value, lo, hi, name);
+  }
   void Add(DecodeError error, std::string message);
   void AddUnsupported(const char* code, std::string message);
   DecodeError error() const { return error_; }
@@ -102,6 +110,8 @@ class Problems {
   std::vector<SimError>& errors() { return errors_; }
 
  private:
+  bool Refuse(double value, double lo, double hi, const std::string& what);
+
   DecodeError error_ = DecodeError::kOk;
   std::vector<SimError> errors_;
 };

@@ -1,8 +1,8 @@
 #include "codecs/ssl_simulation/robot_control.h"
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
-#include <set>
 #include <string>
 
 #include "core/input_limits.h"
@@ -46,12 +46,13 @@ bool MapId(uint32_t wire_id, Port port, int robots_per_team, idl::Team* team, ui
   return true;
 }
 
-void CheckVelocity(double x, double y, double angular, const std::string& what, Problems* p) {
-  bool ok = p->Check(x, -kMaxCommandSpeed, kMaxCommandSpeed, what + ".x");
-  ok = p->Check(y, -kMaxCommandSpeed, kMaxCommandSpeed, what + ".y") && ok;
-  ok = p->Check(angular, -kMaxCommandAngularSpeed, kMaxCommandAngularSpeed, what + ".angular") && ok;
+// `who`'s velocity command `what` ("local_velocity (forward, left)").
+void CheckVelocity(double x, double y, double angular, const std::string& who, const char* what, Problems* p) {
+  bool ok = p->Check(x, -kMaxCommandSpeed, kMaxCommandSpeed, who, ": ", what, ".x");
+  ok = p->Check(y, -kMaxCommandSpeed, kMaxCommandSpeed, who, ": ", what, ".y") && ok;
+  ok = p->Check(angular, -kMaxCommandAngularSpeed, kMaxCommandAngularSpeed, who, ": ", what, ".angular") && ok;
   if (ok && std::hypot(x, y) > kMaxCommandSpeed)
-    p->Add(DecodeError::kOutOfRange, what + ": speed above " + std::to_string(kMaxCommandSpeed) + " m/s");
+    p->Add(DecodeError::kOutOfRange, who + ": " + what + ": speed above " + std::to_string(kMaxCommandSpeed) + " m/s");
 }
 
 void ConvertMove(const ws::RobotCommand& in, const std::string& who, idl::SslRobotCommand* out, Problems* p) {
@@ -62,21 +63,21 @@ void ConvertMove(const ws::RobotCommand& in, const std::string& who, idl::SslRob
       const double wheels[4] = {w.front_right(), w.back_right(), w.back_left(), w.front_left()};
       const char* names[4] = {"front_right", "back_right", "back_left", "front_left"};
       for (int i = 0; i < 4; ++i)
-        p->Check(wheels[i], -kMaxCommandSpeed, kMaxCommandSpeed, who + ": wheel_velocity." + names[i]);
+        p->Check(wheels[i], -kMaxCommandSpeed, kMaxCommandSpeed, who, ": wheel_velocity.", names[i]);
       out->move(idl::MOVE_WHEEL_VELOCITY);
       out->wheel_velocity({wheels[0], wheels[1], wheels[2], wheels[3]});
       break;
     }
     case ws::RobotMoveCommand::kLocalVelocity: {
       const ws::MoveLocalVelocity& v = move.local_velocity();
-      CheckVelocity(v.forward(), v.left(), v.angular(), who + ": local_velocity (forward, left)", p);
+      CheckVelocity(v.forward(), v.left(), v.angular(), who, "local_velocity (forward, left)", p);
       out->move(idl::MOVE_LOCAL_VELOCITY);
       out->velocity(V3(v.forward(), v.left(), v.angular()));
       break;
     }
     case ws::RobotMoveCommand::kGlobalVelocity: {
       const ws::MoveGlobalVelocity& v = move.global_velocity();
-      CheckVelocity(v.x(), v.y(), v.angular(), who + ": global_velocity", p);
+      CheckVelocity(v.x(), v.y(), v.angular(), who, "global_velocity", p);
       out->move(idl::MOVE_GLOBAL_VELOCITY);
       out->velocity(V3(v.x(), v.y(), v.angular()));
       break;
@@ -89,8 +90,8 @@ void ConvertMove(const ws::RobotCommand& in, const std::string& who, idl::SslRob
 
 void ConvertKickAndDribbler(const ws::RobotCommand& in, const std::string& who, idl::SslRobotCommand* out,
                             Problems* p) {
-  const bool speed_ok = p->Check(in.kick_speed(), 0.0, kMaxKickSpeed, who + ": kick_speed");
-  const bool angle_ok = p->Check(in.kick_angle(), 0.0, kMaxKickAngleDeg, who + ": kick_angle (degrees)");
+  const bool speed_ok = p->Check(in.kick_speed(), 0.0, kMaxKickSpeed, who, ": kick_speed");
+  const bool angle_ok = p->Check(in.kick_angle(), 0.0, kMaxKickAngleDeg, who, ": kick_angle (degrees)");
   if (angle_ok && in.kick_angle() >= kMaxKickAngleDeg)
     p->Add(DecodeError::kOutOfRange, who + ": kick_angle must be below 90 degrees");
   if (speed_ok && in.kick_speed() > 0.0) {
@@ -100,7 +101,7 @@ void ConvertKickAndDribbler(const ws::RobotCommand& in, const std::string& who, 
   } else {
     out->kick(idl::KICK_NONE);
   }
-  p->Check(in.dribbler_speed(), 0.0, kMaxDribblerSpeed, who + ": dribbler_speed (rpm)");
+  p->Check(in.dribbler_speed(), 0.0, kMaxDribblerSpeed, who, ": dribbler_speed (rpm)");
   out->dribbler_speed(in.dribbler_speed());
 }
 
@@ -109,7 +110,7 @@ void ConvertKickAndDribbler(const ws::RobotCommand& in, const std::string& who, 
 RobotControlDecode ConvertRobotControl(const ws::RobotControl& message, Port port, int robots_per_team) {
   RobotControlDecode out;
   Problems p;
-  std::set<std::pair<idl::Team, uint8_t>> seen;
+  std::bitset<256> seen[2];  // by team, robot id
   for (const ws::RobotCommand& in : message.robot_commands()) {
     idl::SslRobotCommand c;
     idl::Team team = idl::TEAM_BLUE;
@@ -120,7 +121,9 @@ RobotControlDecode ConvertRobotControl(const ws::RobotControl& message, Port por
       continue;
     }
     const std::string who = std::string(TeamName(team)) + " robot " + std::to_string(id);
-    if (!seen.insert({team, id}).second) p.Add(DecodeError::kDuplicateRobot, who + " is commanded twice");
+    std::bitset<256>& team_seen = seen[team == idl::TEAM_BLUE ? 0 : 1];
+    if (team_seen.test(id)) p.Add(DecodeError::kDuplicateRobot, who + " is commanded twice");
+    team_seen.set(id);
     c.team(team);
     c.id(id);
     ConvertMove(in, who, &c, &p);

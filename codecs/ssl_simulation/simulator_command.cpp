@@ -60,9 +60,9 @@ bool Coordinate(bool has, float value, const std::string& what, const double* cu
 }
 
 bool Velocity(float vx, float vy, float vz, double max, const std::string& what, Problems* p) {
-  bool ok = p->Check(vx, -max, max, what + ".x");
-  ok = p->Check(vy, -max, max, what + ".y") && ok;
-  ok = p->Check(vz, -max, max, what + ".z") && ok;
+  bool ok = p->Check(vx, -max, max, what, ".x");
+  ok = p->Check(vy, -max, max, what, ".y") && ok;
+  ok = p->Check(vz, -max, max, what, ".z") && ok;
   return ok;
 }
 
@@ -158,7 +158,7 @@ void ConvertRobot(const ws::TeleportRobot& in, int index, const ControlContext& 
   ok =
       Coordinate(in.has_orientation(), in.orientation(), who + ".orientation", was_on ? &cur[2] : &zero, p, &yaw) && ok;
   ok = Velocity(in.v_x(), in.v_y(), 0.0f, kMaxTeleportSpeed, who + ".v", p) && ok;
-  ok = p->Check(in.v_angular(), -kMaxCommandAngularSpeed, kMaxCommandAngularSpeed, who + ".v_angular") && ok;
+  ok = p->Check(in.v_angular(), -kMaxCommandAngularSpeed, kMaxCommandAngularSpeed, who, ".v_angular") && ok;
   if (!ok) return;
   // The one placement check of every protocol (core/input_limits.h), on or off the field.
   RobotTeleport placement;

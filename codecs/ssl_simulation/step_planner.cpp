@@ -23,11 +23,17 @@ int64_t ToNanoseconds(double seconds) { return std::llround(seconds * 1e9); }
 
 int64_t FloatSecondsToNanoseconds(float seconds) {
   if (!std::isfinite(seconds)) return 0;
+  // A team asks for the same sim_step request after request: the last answer is kept (per thread).
+  thread_local float last_seconds = 0.0f;
+  thread_local int64_t last_ns = 0;
+  if (seconds == last_seconds && std::signbit(seconds) == std::signbit(last_seconds)) return last_ns;
   // The shortest decimal that gives the float back (the closest such, as %.<n>g with the fewest digits n would).
   char text[32];
   const std::to_chars_result r = std::to_chars(text, text + sizeof(text) - 1, seconds);
   *r.ptr = '\0';
-  return ToNanoseconds(std::strtod(text, nullptr));
+  last_seconds = seconds;
+  last_ns = ToNanoseconds(std::strtod(text, nullptr));
+  return last_ns;
 }
 
 uint32_t StepPlanner::Plan(int64_t request_ns, int64_t step_ns) {

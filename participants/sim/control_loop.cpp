@@ -7,6 +7,7 @@
 #include <cmath>
 #include <thread>
 
+#include "dds/memory_bus.h"
 #include "dds/participant.h"
 
 namespace turf {
@@ -58,36 +59,96 @@ ControlLoop::ControlLoop(dds::Bus& bus, const SimNodeOptions& options, Timing ti
       state_every_(std::max<int64_t>(1, std::llround(1.0 / (timing.state_hz * timing.step_s)))),
       clock_writer_(bus.MakeWriter<idl::ClockPubSubType>(dds::Topic::kClock)),
       reply_writer_(bus.MakeWriter<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
-      control_reader_(bus.MakeReader<idl::SimControlPubSubType>(dds::Topic::kControl, [this] { Wake(); })),
+      control_reader_(bus.MakeReader<idl::SimControlPubSubType>(dds::Topic::kControl, [this] { OnControl(); })),
       time_(options.mode, options.speed, options.start_paused),
       rejects_("input") {}
 
-void ControlLoop::Run(const std::function<bool()>& stop) {
-  // The run's epoch: the wall clock once, here; sim time then counts on from it.
-  run_epoch_unix_ns_.store(UnixNowNs() - node_.TimeNs());
-  PublishState();
-  const int64_t end_ns = options_.duration > 0 ? std::llround(options_.duration * 1e9) : -1;
-  pacer_.Anchor(Pacer::Clock::now(), node_.TimeNs());
-  auto next_status = Pacer::Clock::now() + std::chrono::seconds(10);
-  while (!stop()) {
-    TakeInputs();
-    const auto now = Pacer::Clock::now();
-    pacer_.Measure(now, node_.TimeNs());
-    if (now >= next_status) {
-      node_.ReportStatus();
-      next_status = now + std::chrono::seconds(10);
-    }
-    if (!time_.CanStep()) {
-      wakeup_.WaitUntil(now + std::chrono::milliseconds(50));
-      pacer_.Anchor(Pacer::Clock::now(), node_.TimeNs());
-      continue;
-    }
-    if (time_.Paces()) Pace();
-    node_.Step();
-    AfterStep();
-    if (end_ns >= 0 && node_.TimeNs() >= end_ns) break;
+class ControlLoop::RunLock {
+ public:
+  RunLock(ControlLoop& loop, bool try_only) : loop_(loop) {
+    if (loop.run_holder_.load() == std::this_thread::get_id()) return;  // held further up this thread's stack
+    owns_ = try_only ? loop.run_mutex_.try_lock() : (loop.run_mutex_.lock(), true);
+    if (owns_) loop.run_holder_.store(std::this_thread::get_id());
   }
+  explicit RunLock(ControlLoop& loop) : RunLock(loop, false) {}
+  ~RunLock() {
+    if (!owns_) return;
+    loop_.run_holder_.store(std::thread::id());
+    loop_.run_mutex_.unlock();
+  }
+  RunLock(const RunLock&) = delete;
+  RunLock& operator=(const RunLock&) = delete;
+  bool owns() const { return owns_; }
+
+ private:
+  ControlLoop& loop_;
+  bool owns_ = false;
+};
+
+void ControlLoop::Run(const std::function<bool()>& stop) {
+  {
+    const RunLock lock(*this);
+    // The run's epoch: the wall clock once, here; sim time then counts on from it.
+    run_epoch_unix_ns_.store(UnixNowNs() - node_.TimeNs());
+    PublishState();
+    end_ns_ = options_.duration > 0 ? std::llround(options_.duration * 1e9) : -1;
+    pacer_.Anchor(Pacer::Clock::now(), node_.TimeNs());
+    next_status_ = Pacer::Clock::now() + std::chrono::seconds(10);
+    steps_on_request_.store(time_.paused() || time_.mode() == TimeMode::kLockstep);
+    running_ = true;
+  }
+  while (!stop()) {
+    bool idle = false;
+    {
+      const RunLock lock(*this);
+      if (end_ns_ >= 0 && node_.TimeNs() >= end_ns_) break;
+      idle = !Iterate();
+    }
+    if (!idle) continue;
+    wakeup_.WaitUntil(Pacer::Clock::now() + std::chrono::milliseconds(50));
+    const RunLock lock(*this);
+    pacer_.Anchor(Pacer::Clock::now(), node_.TimeNs());
+  }
+  const RunLock lock(*this);
+  running_ = false;
   node_.ReportStatus();
+}
+
+bool ControlLoop::Iterate() {
+  TakeInputs();
+  const auto now = Pacer::Clock::now();
+  pacer_.Measure(now, node_.TimeNs());
+  if (now >= next_status_) {
+    node_.ReportStatus();
+    next_status_ = now + std::chrono::seconds(10);
+  }
+  if (!time_.CanStep()) return false;
+  if (time_.Paces()) Pace();
+  node_.Step();
+  AfterStep();
+  return true;
+}
+
+void ControlLoop::OnControl() {
+  if (dds::MemoryBus::DeliveringOnThisThread() && ServeInCaller()) return;
+  Wake();
+}
+
+// In the writer's thread, inside its MemoryBus::Write. Not while another thread holds the run lock (the loop's
+// thread takes the request at its next pass), nor on a thread that holds it already.
+bool ControlLoop::ServeInCaller() {
+  const RunLock lock(*this, !steps_on_request_.load());
+  if (!lock.owns() || !running_) return false;
+  TakeInputs();
+  if (steps_on_request_.load() && time_.pending_steps() <= kInlineStepBudget) {
+    while (time_.CanStep() && (end_ns_ < 0 || node_.TimeNs() < end_ns_)) {
+      node_.Step();
+      AfterStep();
+    }
+  }
+  // Whatever is left (real time runs on, a long STEP) goes on in the loop's thread.
+  if (time_.CanStep()) Wake();
+  return true;
 }
 
 void ControlLoop::ReportTimeMode() const {
@@ -113,6 +174,7 @@ void ControlLoop::TakeInputs() {
   }
   const uint64_t overflow = node_.CommandsOverflowed() + control_reader_->Overflowed();
   overflow_.Check(overflow, [this](const char* kind, const std::string& detail) { Reject(kind, detail); });
+  steps_on_request_.store(time_.paused() || time_.mode() == TimeMode::kLockstep);
 }
 
 void ControlLoop::HandleControl(const idl::SimControl& request) {

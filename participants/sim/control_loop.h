@@ -14,8 +14,19 @@
 //   control        SimControl       pause/resume, step, reset, time mode here;
 //                                   teleports and realism go to the node
 // The node (SSL or legged) owns its world and its other topics and answers the
-// loop through ControlLoop::Node. Every call to the node comes from the loop's
-// thread; Stats() and Rejected() may be called from any thread.
+// loop through ControlLoop::Node. Every call to the node is made under the
+// loop's run lock, from the loop's thread or from the thread of an in-process
+// front-end's control request (below); Stats() and Rejected() may be called from
+// any thread.
+//
+// Served in the caller: a control request written on a dds::MemoryBus (a
+// front-end in turf-sim's process, such as the SSL sync port) while the loop is
+// idle between steps is handled on the writer's thread, and so are the steps it
+// queues in lockstep or paused (up to kInlineStepBudget): its reply is there when
+// the write returns, with no hop to the loop's thread and back. In lockstep or
+// paused the caller waits for a running loop pass to end (passes are short
+// then); in real time it leaves the request to the loop's thread if a pass is
+// running. The loop's own thread handles everything else, as it would have.
 #pragma once
 
 #include <turf/idl/ClockPubSubTypes.h>
@@ -29,6 +40,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "core/legged/legged_world.h"
@@ -62,6 +74,9 @@ idl::ControlError ControlErrorOf(Error error);
 
 class ControlLoop : Pinned {
  public:
+  // Steps a request served in its caller's thread may run there; more are left to the loop's thread.
+  static constexpr uint64_t kInlineStepBudget = 5000;
+
   // What a node does for the loop: the requests it handles answer a ControlAnswer.
   class Node {
    public:
@@ -122,6 +137,11 @@ class ControlLoop : Pinned {
   uint64_t Rejected(const std::string& kind) const { return rejects_.Count(kind); }
 
  private:
+  // One pass of Run under the run lock: inputs, status, and a step if one may run; false if the loop is idle.
+  bool Iterate();
+  // The control reader's on_data: serves the request here if it came on a MemoryBus and the loop is idle.
+  void OnControl();
+  bool ServeInCaller();
   void Pace();
   void TakeInputs();
   void HandleControl(const idl::SimControl& request);
@@ -138,6 +158,17 @@ class ControlLoop : Pinned {
   int64_t state_every_ = 1;
   Pacer pacer_;
   Wakeup wakeup_;
+  // Held while the node, the time control and the pacer are used: the whole of a loop pass (not its idle wait), or
+  // a request served in its caller. Its holder is known, so a delivery on the holding thread never takes it again.
+  class RunLock;
+  std::mutex run_mutex_;
+  std::atomic<std::thread::id> run_holder_{};
+  bool running_ = false;  // under run_mutex_: Run is between its first and last publication
+  // Paused or lockstep (written under run_mutex_): the loop's passes then never wait for the wall clock, so a
+  // request served in its caller waits for a pass to end rather than handing over to the loop's thread.
+  std::atomic<bool> steps_on_request_{false};
+  int64_t end_ns_ = -1;  // under run_mutex_: the duration's end in sim time, -1 for none
+  Pacer::Clock::time_point next_status_;
   std::unique_ptr<dds::Writer<idl::ClockPubSubType>> clock_writer_;
   std::unique_ptr<dds::Writer<idl::SimControlReplyPubSubType>> reply_writer_;
   std::unique_ptr<dds::Reader<idl::SimControlPubSubType>> control_reader_;

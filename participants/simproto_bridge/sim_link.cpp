@@ -83,13 +83,21 @@ class SimLink::Impl {
 
   void PumpLocked() {
     if (!ready_.load()) return;
-    if (field_reader_->Take(&fields_)) view_.field = fields_.back();
+    if (field_reader_->Take(&fields_)) view_.field = std::make_shared<const idl::SslField>(std::move(fields_.back()));
     if (clock_reader_->Take(&clocks_)) view_.clock = clocks_.back();
-    if (world_reader_->Take(&worlds_)) view_.world = worlds_.back();
+    if (world_reader_->Take(&worlds_)) view_.world = std::make_shared<const idl::WorldState>(std::move(worlds_.back()));
+    bool contacts_changed = false;
     for (auto& reader : feedback_readers_) {
       if (!reader->Take(&feedback_)) continue;
-      for (const idl::SslRobotFeedback& f : feedback_) view_.contacts[{f.team(), f.id()}] = f.ball_contact();
+      for (const idl::SslRobotFeedback& f : feedback_) {
+        const simproto::ContactMap::key_type robot{f.team(), f.id()};
+        auto it = contacts_.find(robot);
+        if (it != contacts_.end() && it->second == f.ball_contact()) continue;
+        contacts_[robot] = f.ball_contact();
+        contacts_changed = true;
+      }
     }
+    if (contacts_changed) view_.contacts = std::make_shared<const simproto::ContactMap>(contacts_);
     if (camera_reader_->Take(&camera_inbox_)) {
       for (idl::CameraFrame& f : camera_inbox_) frames_.push_back(std::move(f));
       frames_received_ += camera_inbox_.size();
@@ -101,6 +109,7 @@ class SimLink::Impl {
   std::atomic<bool> ready_{false};
   std::mutex mutex_;
   View view_;
+  simproto::ContactMap contacts_;        // view_.contacts' source
   std::deque<idl::CameraFrame> frames_;  // the newest received, in arrival order
   uint64_t frames_received_ = 0;
   std::vector<idl::SslField> fields_;

@@ -32,12 +32,13 @@ class SimLink : Pinned {
  public:
   static constexpr size_t kMaxBufferedFrames = 4096;
 
-  // What turf-sim said last; each part is empty until it first arrives.
+  // What turf-sim said last; each part is null until it first arrives. The parts are shared and never change (a
+  // new sample replaces its part), so a View is cheap to take and keep.
   struct View {
-    std::optional<idl::SslField> field;
-    std::optional<idl::WorldState> world;
+    std::shared_ptr<const idl::SslField> field;
+    std::shared_ptr<const idl::WorldState> world;
     std::optional<idl::Clock> clock;
-    simproto::ContactMap contacts;
+    std::shared_ptr<const simproto::ContactMap> contacts = std::make_shared<const simproto::ContactMap>();
   };
 
   // On a DDS participant of its own. Throws std::runtime_error if the DDS entities cannot be created.

@@ -148,7 +148,7 @@ class SimprotoBridge::Impl {
     if (!Accepted(kind, decoded.error, decoded.errors, d)) return sp::EncodeRobotControlResponse(decoded, {});
     for (const idl::SslRobotCommand& c : decoded.commands) link_.Command(c);
     commands_ += decoded.commands.size();
-    return sp::EncodeRobotControlResponse(decoded, view.contacts);
+    return sp::EncodeRobotControlResponse(decoded, *view.contacts);
   }
 
   std::vector<uint8_t> HandleControl(const Datagram& d) {
@@ -169,11 +169,11 @@ class SimprotoBridge::Impl {
     const SimLink::View view = link_.Now();
     if (!options_.sync) {
       Reject("sync.disabled", "from " + d.from.ToString() + ": synchronous mode is off in this match");
-      return sp::EncodeSyncResponse({}, view.field.value_or(idl::SslField()), {}, {}, {kSyncDisabled});
+      return sp::EncodeSyncResponse({}, view.field ? *view.field : idl::SslField(), {}, {}, {kSyncDisabled});
     }
     if (!view.field || !view.world || !view.clock) {
       Reject("sync.sim_not_available", "from " + d.from.ToString());
-      return sp::EncodeSyncResponse({}, view.field.value_or(idl::SslField()), {}, {}, {kNotAvailable});
+      return sp::EncodeSyncResponse({}, view.field ? *view.field : idl::SslField(), {}, {}, {kNotAvailable});
     }
     const idl::SslField& field = *view.field;
     const sp::ControlContext context{&field, &*view.world, true};
@@ -183,7 +183,7 @@ class SimprotoBridge::Impl {
 
     std::vector<sp::SimError> errors;
     auto answer = [&](const std::vector<idl::CameraFrame>& frames) {
-      return sp::EncodeSyncResponse(frames, field, request, link_.Now().contacts, errors);
+      return sp::EncodeSyncResponse(frames, field, request, *link_.Now().contacts, errors);
     };
     if (view.clock->mode() != idl::TIME_LOCKSTEP) {
       idl::SimControl lockstep;

@@ -16,6 +16,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -98,6 +99,32 @@ TEST(MemoryBusNode, ServerIsMatchedAtOnceAndStepsReplyAtTheFrameReached) {
   // Lockstep: nothing steps between requests.
   ASSERT_TRUE(states.WaitFor([](const auto& s) { return s.back().frame() == 8u; }));
   for (const idl::WorldState& s : states.samples()) EXPECT_LE(s.frame(), 8u);
+}
+
+// An in-process front-end's STEP in lockstep runs in its own thread, inside the write: the reply is there when
+// Send returns, with no hop to the loop's thread (which may be in one of its idle passes: the write waits for it).
+TEST(MemoryBusNode, ALockstepStepOnTheMemoryBusIsServedInTheWritersThread) {
+  dds::MemoryBus bus("mem");
+  test::SimUnderTest sim(test::OneRobot(), bus, TimeMode::kLockstep);
+  dds::ControlClient client(bus, "test");
+  ASSERT_TRUE(client.Call(test::StepRequest(1), kDeadline).ok());  // the loop runs
+
+  int served_in_send = 0;
+  uint64_t frame = 1;
+  for (int i = 0; i < 50; ++i) {
+    const uint64_t id = client.Send(test::StepRequest(2), kDeadline);
+    std::optional<dds::ControlOutcome> outcome = client.TryTake(id);
+    if (outcome) {
+      ++served_in_send;
+    } else {
+      outcome = client.Wait(id);
+    }
+    ASSERT_TRUE(outcome->ok()) << outcome->Describe();
+    frame += 2;
+    EXPECT_EQ(outcome->reply->frame(), frame);
+  }
+  EXPECT_EQ(served_in_send, 50);
+  EXPECT_EQ(sim.node().Stats().frame, frame);
 }
 
 TEST(MemoryBusNode, ATeleportMovesTheBallOnWorldState) {
