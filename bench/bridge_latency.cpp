@@ -21,8 +21,12 @@
 #include <cstdio>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "bench/bench_qos.h"
@@ -89,12 +93,24 @@ struct PathResult {
   Samples direct, dds;
 };
 
+// Two loopback sockets: datagrams go from `tx` to `rx` (at `to`).
+struct UdpPair {
+  UdpPair() : rx(Bind()), tx(Bind()), to(*turf::MakeEndpoint("127.0.0.1", rx.LocalPort())) {}
+  static turf::UdpSocket Bind() {
+    std::string error;
+    std::optional<turf::UdpSocket> s = turf::UdpSocket::Bind("127.0.0.1", 0, false, &error);
+    if (!s) throw std::runtime_error("cannot bind a loopback UDP socket: " + error);
+    return std::move(*s);
+  }
+  turf::UdpSocket rx;
+  turf::UdpSocket tx;
+  const turf::UdpEndpoint to;
+};
+
 // UDP in -> decode -> (DDS or direct) -> inbox.
 void CommandPath(turf::dds::Participant& bridge, turf::dds::Participant& sim, int count, PathResult* out) {
   std::string error;
-  auto rx = turf::UdpSocket::Bind("127.0.0.1", 0, false, &error);
-  auto tx = turf::UdpSocket::Bind("127.0.0.1", 0, false, &error);
-  const auto to = *turf::MakeEndpoint("127.0.0.1", rx->LocalPort());
+  UdpPair udp;
   std::vector<int64_t> sent(count, 0);
   bool via_dds = false;
   auto writer = bridge.MakeWriter<idl::SslRobotCommandPubSubType>(Topic::kSslCommandBlue);
@@ -109,7 +125,7 @@ void CommandPath(turf::dds::Participant& bridge, turf::dds::Participant& sim, in
   std::atomic<bool> done{false};
   std::thread bridge_thread([&] {
     while (!done) {
-      auto d = rx->Receive(65536, std::chrono::milliseconds(20));
+      auto d = udp.rx.Receive(65536, std::chrono::milliseconds(20));
       if (!d) continue;
       const auto decoded = turf::grsim::Decode(d->bytes.data(), d->bytes.size(), config);
       for (const auto& c : decoded.requests.commands) {
@@ -126,7 +142,7 @@ void CommandPath(turf::dds::Participant& bridge, turf::dds::Participant& sim, in
     for (int i = 0; i < count; ++i) {
       const std::string bytes = GrsimPacket(i);
       sent[i] = NowNs();
-      tx->SendTo(std::vector<uint8_t>(bytes.begin(), bytes.end()), to, &error);
+      udp.tx.SendTo(std::vector<uint8_t>(bytes.begin(), bytes.end()), udp.to, &error);
       std::this_thread::sleep_for(std::chrono::microseconds(2000));
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
@@ -138,15 +154,13 @@ void CommandPath(turf::dds::Participant& bridge, turf::dds::Participant& sim, in
 // Frame -> (DDS or direct) -> encode -> UDP -> received.
 void FramePath(turf::dds::Participant& sim, turf::dds::Participant& bridge, int count, PathResult* out) {
   std::string error;
-  auto rx = turf::UdpSocket::Bind("127.0.0.1", 0, false, &error);
-  auto tx = turf::UdpSocket::Bind("127.0.0.1", 0, false, &error);
-  const auto to = *turf::MakeEndpoint("127.0.0.1", rx->LocalPort());
+  UdpPair udp;
   std::vector<int64_t> sent(count, 0);
   std::atomic<bool> via_dds{false};
   auto send_encoded = [&](const idl::CameraFrame& f) {
     turf::vision::FrameTimes times{1.0 + f.frame_number(), 1.0 + f.frame_number()};
     const std::vector<uint8_t> bytes = turf::vision::EncodeDetection(f, times, nullptr);
-    tx->SendTo(bytes, to, &error);
+    udp.tx.SendTo(bytes, udp.to, &error);
   };
   auto writer = sim.MakeWriter<idl::CameraFramePubSubType>(Topic::kSslCamera);
   std::unique_ptr<turf::dds::Reader<idl::CameraFramePubSubType>> reader;
@@ -159,7 +173,7 @@ void FramePath(turf::dds::Participant& sim, turf::dds::Participant& bridge, int 
   std::atomic<bool> done{false};
   std::thread receiver([&] {
     while (!done) {
-      auto d = rx->Receive(65536, std::chrono::milliseconds(20));
+      auto d = udp.rx.Receive(65536, std::chrono::milliseconds(20));
       if (!d) continue;
       turf::wire::vision::SSL_WrapperPacket p;
       if (!p.ParseFromArray(d->bytes.data(), static_cast<int>(d->bytes.size())) || !p.has_detection()) continue;

@@ -31,6 +31,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "bench/bench_qos.h"
@@ -340,26 +341,17 @@ int main(int argc, char** argv) {
     UdpEcho echo(response, [&echo_physics] { echo_physics.Time(); });
     SyncClient to_echo(echo.port());
     to_echo.WaitReady(warmup);
+    // The rows in the order of `only`'s letters "abmcu", each with what it times.
+    const std::pair<Result*, std::function<double()>> rows[] = {
+        {&dds, [&] { return to_dds.Time(); }},       {&local, [&] { return to_host.Time(); }},
+        {&memory, [&] { return to_memory.Time(); }}, {&physics, [&] { return physics_only.Time(); }},
+        {&udp, [&] { return to_echo.Time(); }},
+    };
+    constexpr int kRows = static_cast<int>(std::size(rows));
     for (int i = 0; i < requests; ++i)
-      for (int k = 0; k < 5; ++k) {
-        if (only.find("abmcu"[(i + k) % 5]) == std::string::npos) continue;
-        switch ((i + k) % 5) {
-          case 0:
-            dds.us.push_back(to_dds.Time());
-            break;
-          case 1:
-            local.us.push_back(to_host.Time());
-            break;
-          case 2:
-            memory.us.push_back(to_memory.Time());
-            break;
-          case 3:
-            physics.us.push_back(physics_only.Time());
-            break;
-          default:
-            udp.us.push_back(to_echo.Time());
-            break;
-        }
+      for (int k = 0; k < kRows; ++k) {
+        const int r = (i + k) % kRows;
+        if (only.find("abmcu"[r]) != std::string::npos) rows[r].first->us.push_back(rows[r].second());
       }
   }
   std::remove(qos.c_str());

@@ -1,4 +1,7 @@
-# turf_fuzz(<name> SOURCES <files> [INCLUDES <dirs>] [LIBS <libs>] [DEPENDS <targets>])
+# turf_fuzz(<name> SOURCES <files> [PROTOS <protos>] [IDL <types>] [INCLUDES <dirs>] [LIBS <libs>]
+#           [DEPENDS <targets>])
+# PROTOS ssl_vision ...: the generated codecs/proto/<name>.pb.cc (with protobuf); IDL Common Clock ...: the
+# generated turf/idl/<name>.cxx (with Fast CDR); their include directories and build targets come with them.
 # Builds a libFuzzer target with clang (ASan + UBSan) from the listed sources
 # and registers ctest `fuzz_<name>`, which fuzzes for TURF_FUZZ_SECONDS (10 s).
 # Seeds: tests/fuzz/seeds/<name>/ (read only); new inputs go to the build tree.
@@ -8,7 +11,25 @@ find_program(TURF_CLANGXX NAMES clang++-14 clang++)
 set(TURF_FUZZ_SECONDS 10 CACHE STRING "seconds each fuzz test runs in ctest")
 
 function(turf_fuzz name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;INCLUDES;LIBS;DEPENDS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;PROTOS;IDL;INCLUDES;LIBS;DEPENDS" ${ARGN})
+  if(ARG_PROTOS)
+    set(gen ${CMAKE_BINARY_DIR}/codecs/proto/gen)
+    foreach(proto ${ARG_PROTOS})
+      list(APPEND ARG_SOURCES ${gen}/codecs/proto/${proto}.pb.cc)
+    endforeach()
+    list(APPEND ARG_INCLUDES ${gen})
+    list(APPEND ARG_LIBS -lprotobuf)
+    list(APPEND ARG_DEPENDS turf_ssl_proto)
+  endif()
+  if(ARG_IDL)
+    set(gen ${CMAKE_BINARY_DIR}/idl/gen)
+    foreach(type ${ARG_IDL})
+      list(APPEND ARG_SOURCES ${gen}/turf/idl/${type}.cxx)
+    endforeach()
+    list(APPEND ARG_INCLUDES ${gen})
+    list(APPEND ARG_LIBS -lfastcdr)
+    list(APPEND ARG_DEPENDS turf_idl)
+  endif()
   if(NOT TURF_CLANGXX)
     add_test(NAME fuzz_${name} COMMAND ${CMAKE_COMMAND} -E echo "clang++ not found: fuzz_${name} skipped")
     set_tests_properties(fuzz_${name} PROPERTIES SKIP_REGULAR_EXPRESSION "skipped")

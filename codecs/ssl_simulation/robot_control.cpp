@@ -46,8 +46,9 @@ bool MapId(uint32_t wire_id, Port port, int robots_per_team, idl::Team* team, ui
   return true;
 }
 
-// `who`'s velocity command `what` ("local_velocity (forward, left)").
-void CheckVelocity(double x, double y, double angular, const std::string& who, const char* what, Problems* p) {
+// `who`'s velocity command `what` ("local_velocity (forward, left)"): x, y in m/s and z the angular speed.
+void CheckVelocity(const idl::Vec3& v, const std::string& who, const char* what, Problems* p) {
+  const double x = v.x(), y = v.y(), angular = v.z();
   bool ok = p->Check(x, -kMaxCommandSpeed, kMaxCommandSpeed, who, ": ", what, ".x");
   ok = p->Check(y, -kMaxCommandSpeed, kMaxCommandSpeed, who, ": ", what, ".y") && ok;
   ok = p->Check(angular, -kMaxCommandAngularSpeed, kMaxCommandAngularSpeed, who, ": ", what, ".angular") && ok;
@@ -70,16 +71,18 @@ void ConvertMove(const ws::RobotCommand& in, const std::string& who, idl::SslRob
     }
     case ws::RobotMoveCommand::kLocalVelocity: {
       const ws::MoveLocalVelocity& v = move.local_velocity();
-      CheckVelocity(v.forward(), v.left(), v.angular(), who, "local_velocity (forward, left)", p);
+      const idl::Vec3 velocity = V3(v.forward(), v.left(), v.angular());
+      CheckVelocity(velocity, who, "local_velocity (forward, left)", p);
       out->move(idl::MOVE_LOCAL_VELOCITY);
-      out->velocity(V3(v.forward(), v.left(), v.angular()));
+      out->velocity(velocity);
       break;
     }
     case ws::RobotMoveCommand::kGlobalVelocity: {
       const ws::MoveGlobalVelocity& v = move.global_velocity();
-      CheckVelocity(v.x(), v.y(), v.angular(), who, "global_velocity", p);
+      const idl::Vec3 velocity = V3(v.x(), v.y(), v.angular());
+      CheckVelocity(velocity, who, "global_velocity", p);
       out->move(idl::MOVE_GLOBAL_VELOCITY);
-      out->velocity(V3(v.x(), v.y(), v.angular()));
+      out->velocity(velocity);
       break;
     }
     case ws::RobotMoveCommand::COMMAND_NOT_SET:

@@ -157,6 +157,11 @@ void ControlLoop::ReportTimeMode() const {
                time_.paused() ? ", paused" : "");
 }
 
+void ControlLoop::ReportStatusLine(const std::string& health) const {
+  spdlog::info("t={:.1f}s frame={} rtf={:.2f} refused={} {}", node_.TimeNs() * 1e-9, node_.Frame(),
+               pacer_.real_time_factor(), rejects_.Total(), health);
+}
+
 void ControlLoop::Pace() {
   const auto deadline = pacer_.Deadline(node_.TimeNs() + timing_.step_ns, time_.speed());
   const auto now = Pacer::Clock::now();

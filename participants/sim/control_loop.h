@@ -125,6 +125,8 @@ class ControlLoop : Pinned {
   void Reject(const std::string& kind, const std::string& detail) { rejects_.Reject(kind, detail); }
   // Logs the time mode, as the last line of a node's startup report.
   void ReportTimeMode() const;
+  // The status line a node logs every 10 s: sim time, frame, real-time factor, refusals, then the node's `health`.
+  void ReportStatusLine(const std::string& health) const;
 
   TimeMode mode() const { return time_.mode(); }
   double speed() const { return time_.speed(); }

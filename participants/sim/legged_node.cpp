@@ -244,8 +244,7 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
   }
 
   void ReportStatus() const override {
-    spdlog::info("t={:.1f}s frame={} rtf={:.2f} refused={} recoveries={}", kernel_.time_ns() * 1e-9, kernel_.frame(),
-                 loop_.real_time_factor(), loop_.rejected(), kernel_.world().health().instability_recoveries);
+    loop_.ReportStatusLine(fmt::format("recoveries={}", kernel_.world().health().instability_recoveries));
     ReportStreams(last_stats_);
   }
 

@@ -190,9 +190,8 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
 
   void ReportStatus() const override {
     const WorldHealth& h = kernel_.world().health();
-    spdlog::info("t={:.1f}s frame={} rtf={:.2f} refused={} containment={} recoveries={}", kernel_.time_ns() * 1e-9,
-                 kernel_.frame(), loop_.real_time_factor(), loop_.rejected(), h.containment_corrections,
-                 h.instability_recoveries);
+    loop_.ReportStatusLine(
+        fmt::format("containment={} recoveries={}", h.containment_corrections, h.instability_recoveries));
     ReportStreams(last_stats_);
   }
 

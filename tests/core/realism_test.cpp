@@ -129,15 +129,20 @@ WorldSnapshot RobotsAndBall(const std::vector<std::pair<double, double>>& robots
   return s;
 }
 
-TEST(CameraModel, PositionAndOrientationNoiseHaveTheConfiguredStddev) {
+// One robot at (2, 2) and the ball at (3, 1) under the first camera of an empty division A field.
+class CameraModelOneRobot : public ::testing::Test {
+ protected:
   const Scene scene = test::EmptyDivA();
   const CameraSpec cam = CameraLayout(scene)[0];
+  const WorldSnapshot w = RobotsAndBall({{2.0, 2.0}}, {3.0, 1.0, 0.0215});
+};
+
+TEST_F(CameraModelOneRobot, PositionAndOrientationNoiseHaveTheConfiguredStddev) {
   CameraRealism r;
   r.robot_position_stddev = 0.01;
   r.robot_orientation_stddev = 0.02;
   r.ball_position_stddev = 0.003;
   Rng rng(StreamSeed(1, "test"));
-  const WorldSnapshot w = RobotsAndBall({{2.0, 2.0}}, {3.0, 1.0, 0.0215});
   std::vector<double> dx, dphi, bx;
   for (int i = 0; i < kSamples; ++i) {
     CameraFrame f = Detect(cam, w, 0.15);
@@ -152,14 +157,11 @@ TEST(CameraModel, PositionAndOrientationNoiseHaveTheConfiguredStddev) {
   EXPECT_NEAR(Stats(bx).stddev, 0.003, 0.05 * 0.003);
 }
 
-TEST(CameraModel, VanishingMatchesTheSetting) {
-  const Scene scene = test::EmptyDivA();
-  const CameraSpec cam = CameraLayout(scene)[0];
+TEST_F(CameraModelOneRobot, VanishingMatchesTheSetting) {
   CameraRealism r;
   r.robot_vanish = 0.05;
   r.ball_vanish = 0.2;
   Rng rng(9);
-  const WorldSnapshot w = RobotsAndBall({{2.0, 2.0}}, {3.0, 1.0, 0.0215});
   int robots = 0, balls = 0;
   for (int i = 0; i < kSamples; ++i) {
     CameraFrame f = Detect(cam, w, 0.15);

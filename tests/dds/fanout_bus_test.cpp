@@ -50,9 +50,15 @@ bool WaitFor(const std::function<bool()>& done) {
   return done();
 }
 
-TEST(FanoutBus, AWriteReachesTheReadersOfBothBusesOnce) {
-  dds::MemoryBus a("test"), b("test");
-  dds::FanoutBus fanout(a, b);
+// Two memory buses and a fanout over them; the tests' common ground.
+class FanoutBusTest : public ::testing::Test {
+ protected:
+  dds::MemoryBus a{"test"};
+  dds::MemoryBus b{"test"};
+  dds::FanoutBus fanout{a, b};
+};
+
+TEST_F(FanoutBusTest, AWriteReachesTheReadersOfBothBusesOnce) {
   auto on_a = a.MakeReader(dds::Topic::kClock);
   auto on_b = b.MakeReader(dds::Topic::kClock);
   auto writer = fanout.MakeWriter(dds::Topic::kClock);
@@ -68,9 +74,7 @@ TEST(FanoutBus, AWriteReachesTheReadersOfBothBusesOnce) {
   EXPECT_EQ(got[0].frame(), 3u);
 }
 
-TEST(FanoutBus, AReaderTakesFromBothBusesEachSampleOnce) {
-  dds::MemoryBus a("test"), b("test");
-  dds::FanoutBus fanout(a, b);
+TEST_F(FanoutBusTest, AReaderTakesFromBothBusesEachSampleOnce) {
   int woken = 0;
   auto reader = fanout.MakeReader(dds::Topic::kControl, [&] { ++woken; });
   auto from_a = a.MakeWriter(dds::Topic::kControl);
@@ -91,9 +95,9 @@ TEST(FanoutBus, AReaderTakesFromBothBusesEachSampleOnce) {
 
 // The front-end's side and the remote side do not see each other's samples through the fanout: only the fanout's
 // own endpoints span both.
-TEST(FanoutBus, EndpointsOnOneSideDoNotReachTheOther) {
-  dds::MemoryBus remote("test"), local("test");
-  dds::FanoutBus fanout(remote, local);
+TEST_F(FanoutBusTest, EndpointsOnOneSideDoNotReachTheOther) {
+  dds::MemoryBus& remote = a;
+  dds::MemoryBus& local = b;
   auto node_reader = fanout.MakeReader(dds::Topic::kControl);
   auto remote_reader = remote.MakeReader(dds::Topic::kControl);
   auto local_writer = local.MakeWriter(dds::Topic::kControl);
@@ -103,9 +107,7 @@ TEST(FanoutBus, EndpointsOnOneSideDoNotReachTheOther) {
   EXPECT_FALSE(remote_reader->Take(&got));
 }
 
-TEST(FanoutBus, LatchedSamplesReachLateReadersOnEitherSide) {
-  dds::MemoryBus a("test"), b("test");
-  dds::FanoutBus fanout(a, b);
+TEST_F(FanoutBusTest, LatchedSamplesReachLateReadersOnEitherSide) {
   auto writer = fanout.MakeWriter(dds::Topic::kSslField);
   idl::SslField field;
   field.robots_per_team(11);
@@ -124,9 +126,7 @@ TEST(FanoutBus, RefusesBusesWithDifferentPrefixes) {
   EXPECT_THROW(dds::FanoutBus(a, b), std::invalid_argument);
 }
 
-TEST(FanoutBus, ListsItsTopicsOnItselfAndOnBothBuses) {
-  dds::MemoryBus a("test"), b("test");
-  dds::FanoutBus fanout(a, b);
+TEST_F(FanoutBusTest, ListsItsTopicsOnItselfAndOnBothBuses) {
   auto writer = fanout.MakeWriter(dds::Topic::kWorldState);
   auto reader = fanout.MakeReader(dds::Topic::kControl);
   EXPECT_EQ(fanout.Endpoints().size(), 2u);

@@ -188,10 +188,9 @@ TEST(LeggedDdsTest, JointCommandMovesTheJointAndBadOnesAreCounted) {
   client.Command("nao_1", "hj1", idl::JOINT_VELOCITY, NAN);
   client.Command("nao_1", "hj1", idl::JOINT_VELOCITY, 7.0);
   ASSERT_TRUE(client.WaitFor([&] { return sim.node().Stats().rejected >= 4; }));
-  EXPECT_EQ(sim.node().Rejected("joint_command.unknown_robot"), 1u);
-  EXPECT_EQ(sim.node().Rejected("joint_command.unknown_joint"), 1u);
-  EXPECT_EQ(sim.node().Rejected("joint_command.not_finite"), 1u);
-  EXPECT_EQ(sim.node().Rejected("joint_command.out_of_range"), 1u);
+  for (const char* kind : {"joint_command.unknown_robot", "joint_command.unknown_joint", "joint_command.not_finite",
+                           "joint_command.out_of_range"})
+    EXPECT_EQ(sim.node().Rejected(kind), 1u) << kind;
 }
 
 TEST(LeggedDdsTest, LockstepStepsExactlyAndResetRestarts) {

@@ -29,6 +29,7 @@
 #include "participants/sim/sim_node.h"
 #include "tests/core/test_scenes.h"
 #include "tests/sim/sim_harness.h"
+#include "tests/support/wake_wait.h"
 
 namespace turf {
 namespace {
@@ -43,33 +44,21 @@ template <class PubSub>
 class Inbox {
  public:
   using Sample = dds::SampleOf<PubSub>;
-  Inbox(dds::Bus& bus, const dds::TopicDef<PubSub>& topic) : reader_(bus.MakeReader(topic, [this] { Wake(); })) {}
+  Inbox(dds::Bus& bus, const dds::TopicDef<PubSub>& topic) : reader_(bus.MakeReader(topic, [this] { wake_.Wake(); })) {}
 
   // Waits until `done(every sample so far)` holds; false if it did not by the deadline.
   bool WaitFor(const std::function<bool(const std::vector<Sample>&)>& done) {
-    const auto deadline = SteadyClock::now() + kDeadline;
-    std::unique_lock<std::mutex> lock(mutex_);
-    while (true) {
+    return wake_.Until(SteadyClock::now() + kDeadline, [&] {
       std::vector<Sample> got;
       if (reader_->Take(&got)) samples_.insert(samples_.end(), got.begin(), got.end());
-      if (done(samples_)) return true;
-      if (!changed_.wait_until(lock, deadline, [this] { return pending_; })) return false;
-      pending_ = false;
-    }
+      return done(samples_);
+    });
   }
   // The samples taken by the last WaitFor.
   const std::vector<Sample>& samples() const { return samples_; }
 
  private:
-  void Wake() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    pending_ = true;
-    changed_.notify_all();
-  }
-
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  bool pending_ = false;
+  test::WakeWait wake_;
   std::vector<Sample> samples_;
   std::unique_ptr<dds::Reader<PubSub>> reader_;
 };

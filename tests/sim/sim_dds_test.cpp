@@ -144,10 +144,9 @@ TEST_F(SimDds, BadSamplesAreCountedAndMoveNothing) {
   ASSERT_NE(r, nullptr);
   EXPECT_DOUBLE_EQ(r->position().x(), 0.0);
   EXPECT_DOUBLE_EQ(r->position().y(), 0.0);
-  EXPECT_GT(sim.node().Rejected("command.not_finite"), 0u);
-  EXPECT_GT(sim.node().Rejected("command.out_of_range"), 0u);
-  EXPECT_GT(sim.node().Rejected("command.unknown_robot"), 0u);
-  EXPECT_GT(sim.node().Rejected("command.team_mismatch"), 0u);
+  for (const char* kind :
+       {"command.not_finite", "command.out_of_range", "command.unknown_robot", "command.team_mismatch"})
+    EXPECT_GT(sim.node().Rejected(kind), 0u) << kind;
 }
 
 TEST(SimDdsScenes, CamerasReportWhatEachCameraSees) {

@@ -6,13 +6,12 @@
 #include <turf/idl/WorldStatePubSubTypes.h>
 
 #include <chrono>
-#include <condition_variable>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <vector>
 
 #include "dds/participant.h"
+#include "tests/support/wake_wait.h"
 
 namespace turf::test {
 
@@ -20,37 +19,25 @@ class WorldObserver {
  public:
   explicit WorldObserver(const dds::ParticipantOptions& o)
       : participant_(o),
-        state_(participant_.MakeReader(dds::Topic::kWorldState, [this] { Wake(); })),
-        clock_(participant_.MakeReader(dds::Topic::kClock, [this] { Wake(); })) {}
+        state_(participant_.MakeReader(dds::Topic::kWorldState, [this] { wake_.Wake(); })),
+        clock_(participant_.MakeReader(dds::Topic::kClock, [this] { wake_.Wake(); })) {}
 
   // Until `done(newest state, newest clock)` holds (once a state has arrived); false after `timeout`.
   bool Wait(const std::function<bool(const idl::WorldState&, const idl::Clock&)>& done,
             std::chrono::milliseconds timeout = std::chrono::seconds(15)) {
-    const auto end = std::chrono::steady_clock::now() + timeout;
-    std::unique_lock<std::mutex> lock(mutex_);
-    while (true) {
+    return wake_.Until(std::chrono::steady_clock::now() + timeout, [&] {
       std::vector<idl::WorldState> states;
       if (state_->Take(&states)) state_now_ = states.back(), has_state_ = true;
       std::vector<idl::Clock> clocks;
       if (clock_->Take(&clocks)) clock_now_ = clocks.back();
-      if (has_state_ && done(state_now_, clock_now_)) return true;
-      if (!changed_.wait_until(lock, end, [this] { return pending_; })) return false;
-      pending_ = false;
-    }
+      return has_state_ && done(state_now_, clock_now_);
+    });
   }
   const idl::WorldState& state() const { return state_now_; }
   const idl::Clock& clock() const { return clock_now_; }
 
  private:
-  void Wake() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    pending_ = true;
-    changed_.notify_all();
-  }
-
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  bool pending_ = false;
+  WakeWait wake_;
   dds::Participant participant_;
   std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> state_;
   std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_;
