@@ -2,9 +2,18 @@
 
 #include <spdlog/spdlog.h>
 
+#include <stdlib.h>
+
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <system_error>
 #include <vector>
 
 #include "participants/common/cli_checks.h"
@@ -21,6 +30,38 @@ int Fail(const std::vector<std::string>& errors) {
   for (const std::string& e : errors) std::fprintf(stderr, "turf launch: %s\n", e.c_str());
   return 2;
 }
+
+// A directory of this launch's own for turf-sim's resume file (turf-sim --resume-dir): a turf-sim the supervisor
+// restarts after a crash continues the match where its last snapshot was; a new launch starts a new match.
+// Removed, with what is in it, when the launch ends. A profile that sets sim's resume-dir keeps its own.
+class ResumeDirectory {
+ public:
+  explicit ResumeDirectory(std::vector<ProcessCommand>* commands) {
+    auto sim =
+        std::find_if(commands->begin(), commands->end(), [](const ProcessCommand& c) { return c.name == "sim"; });
+    if (sim == commands->end() || std::find(sim->argv.begin(), sim->argv.end(), "--resume-dir") != sim->argv.end())
+      return;
+    const char* tmp = std::getenv("TMPDIR");
+    std::string pattern = std::string(tmp != nullptr && *tmp != '\0' ? tmp : "/tmp") + "/turf-launch-XXXXXX";
+    if (mkdtemp(pattern.data()) == nullptr) {
+      spdlog::warn("no directory for turf-sim's snapshots ({}): a crashed turf-sim restarts from the scene's start",
+                   std::strerror(errno));
+      return;
+    }
+    path_ = pattern;
+    sim->argv.insert(sim->argv.end(), {"--resume-dir", path_});
+  }
+  ~ResumeDirectory() {
+    if (path_.empty()) return;
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  ResumeDirectory(const ResumeDirectory&) = delete;
+  ResumeDirectory& operator=(const ResumeDirectory&) = delete;
+
+ private:
+  std::string path_;
+};
 
 }  // namespace
 
@@ -82,7 +123,9 @@ int LaunchCommand::Run() {
   options.restart = profile.restart;
   const double grace_s = grace_opt_->count() > 0 ? grace_ : profile.stop_grace;
   options.grace = std::chrono::milliseconds(static_cast<int64_t>(grace_s * 1000));
-  return Supervise(plan.commands, options);
+  std::vector<ProcessCommand> commands = plan.commands;
+  const ResumeDirectory resume(&commands);
+  return Supervise(commands, options);
 }
 
 }  // namespace turf::launch

@@ -9,6 +9,7 @@
 
 #include "dds/memory_bus.h"
 #include "dds/participant.h"
+#include "participants/sim/resume_file.h"
 
 namespace turf {
 
@@ -88,6 +89,7 @@ class ControlLoop::RunLock {
 void ControlLoop::Run(const std::function<bool()>& stop) {
   {
     const RunLock lock(*this);
+    Resume();
     // The run's epoch: the wall clock once, here; sim time then counts on from it.
     run_epoch_unix_ns_.store(UnixNowNs() - node_.TimeNs());
     PublishState();
@@ -276,12 +278,39 @@ void ControlLoop::AfterStep() {
   time_ns_.store(node_.TimeNs());
   if (frame % state_every_ == 0 || time_.FinishesAt(frame)) PublishState();
   node_.AfterStep();
+  WriteSnapshotIfDue();
   finished_.clear();
   time_.Stepped(frame, &finished_);
   for (uint64_t token : finished_) {
     Reply(step_requests_.at(token), {});
     step_requests_.erase(token);
   }
+}
+
+void ControlLoop::Resume() {
+  if (options_.resume_dir.empty()) return;
+  const std::string path = ResumePath(options_.resume_dir, options_.prefix);
+  const ResumeRead read = ReadResumeFile(path, node_.SceneIdentity());
+  if (!read.why_not.empty()) spdlog::warn("not resuming: {}; starting from the scene's start", read.why_not);
+  if (read.snapshot) {
+    if (const std::string e = node_.RestoreKernel(*read.snapshot); !e.empty())
+      spdlog::warn("not resuming from {}: {}; starting from the scene's start", path, e);
+    else
+      spdlog::info("resumed from {} at t={:.3f}s (frame {})", path, node_.TimeNs() * 1e-9, node_.Frame());
+  }
+  const int64_t every_ns = std::max<int64_t>(timing_.step_ns, std::llround(options_.snapshot_every * 1e9));
+  next_snapshot_ns_ = (node_.TimeNs() / every_ns + 1) * every_ns;
+  spdlog::info("writing a snapshot every {} s of sim time to {}", every_ns * 1e-9, path);
+}
+
+// At the first step at or past each multiple of snapshot_every: a crash loses at most that much simulated time.
+void ControlLoop::WriteSnapshotIfDue() {
+  if (options_.resume_dir.empty() || node_.TimeNs() < next_snapshot_ns_) return;
+  const int64_t every_ns = std::max<int64_t>(timing_.step_ns, std::llround(options_.snapshot_every * 1e9));
+  next_snapshot_ns_ = (node_.TimeNs() / every_ns + 1) * every_ns;
+  const std::string path = ResumePath(options_.resume_dir, options_.prefix);
+  if (const std::string e = WriteResumeFile(path, node_.SceneIdentity(), node_.SaveKernel()); !e.empty())
+    Reject("snapshot", e);
 }
 
 // The clock goes first: a reader that sees a state (a reset's, say) already has

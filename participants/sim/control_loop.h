@@ -40,6 +40,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -100,6 +101,11 @@ class ControlLoop : Pinned {
     virtual ControlAnswer ChangeRealism(const RealismChange& change) = 0;
     // The world back to the scene's start (the loop cancels pending steps).
     virtual void ResetWorld() = 0;
+    // The kernel's snapshot, and a restore of one ("" on success, else why, and nothing changed); the scene and
+    // seed in one line, so a snapshot is restored only into the match it was taken from.
+    virtual std::string SaveKernel() const = 0;
+    virtual std::string RestoreKernel(std::string_view snapshot) = 0;
+    virtual std::string SceneIdentity() const = 0;
     virtual void ReportStatus() const = 0;
 
    protected:
@@ -153,6 +159,9 @@ class ControlLoop : Pinned {
   void Reply(const idl::SimControl& request, const ControlAnswer& answer);
   void AfterStep();
   void PublishState();
+  // --resume-dir: continue from the match's resume file, if there is one; then write one every snapshot_every.
+  void Resume();
+  void WriteSnapshotIfDue();
 
   Node& node_;
   const SimNodeOptions options_;
@@ -171,6 +180,7 @@ class ControlLoop : Pinned {
   std::atomic<bool> steps_on_request_{false};
   int64_t end_ns_ = -1;  // under run_mutex_: the duration's end in sim time, -1 for none
   Pacer::Clock::time_point next_status_;
+  int64_t next_snapshot_ns_ = 0;  // under run_mutex_
   std::unique_ptr<dds::Writer<idl::ClockPubSubType>> clock_writer_;
   std::unique_ptr<dds::Writer<idl::SimControlReplyPubSubType>> reply_writer_;
   std::unique_ptr<dds::Reader<idl::SimControlPubSubType>> control_reader_;

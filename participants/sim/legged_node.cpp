@@ -122,6 +122,11 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
     kernel_.Reset();
     PublishReleased();
   }
+  std::string SaveKernel() const override { return kernel_.Save(); }
+  std::string RestoreKernel(std::string_view snapshot) override { return kernel_.Restore(snapshot); }
+  std::string SceneIdentity() const override {
+    return fmt::format("legged scene '{}' seed {}", kernel_.scene().name, kernel_.scene().seed);
+  }
 
   // --- Inputs ---
 

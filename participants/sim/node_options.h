@@ -15,6 +15,10 @@ struct SimNodeOptions : ParticipantOptions {
   double speed = 1.0;  // for kScaled
   bool start_paused = false;
   double duration = 0.0;  // s of simulation time, then Run returns; 0 = until stopped
+  // Resume after a crash (participants/sim/resume_file.h): a snapshot every `snapshot_every` s of simulation time
+  // into this directory, and a start continues from the one there. Empty: neither.
+  std::string resume_dir;
+  double snapshot_every = 1.0;
 };
 
 struct SimNodeStats {

@@ -125,6 +125,11 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
   }
 
   void ResetWorld() override { kernel_.Reset(); }
+  std::string SaveKernel() const override { return kernel_.Save(); }
+  std::string RestoreKernel(std::string_view snapshot) override { return kernel_.Restore(snapshot); }
+  std::string SceneIdentity() const override {
+    return fmt::format("ssl scene '{}' seed {}", kernel_.scene().name, kernel_.scene().seed);
+  }
 
   // --- Outputs ---
 

@@ -100,6 +100,13 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
                  "overrides the scene's");
   app.add_option("--duration", node.duration, "stop after this many simulated seconds (0: run until Ctrl-C)")
       ->check(FiniteAtLeastZero());
+  app.add_option("--resume-dir", node.resume_dir,
+                 "write a snapshot of the match to DIR/<prefix>.resume every --snapshot-every s of sim time, and "
+                 "continue from it when started again (after a crash; `turf launch` passes a directory of its own)")
+      ->check(CLI::ExistingDirectory);
+  app.add_option("--snapshot-every", node.snapshot_every, "with --resume-dir: seconds of sim time between snapshots")
+      ->check(CLI::Range(0.01, 3600.0))
+      ->capture_default_str();
 
   // The SSL simulation protocol in this process (sim_host.h): the same ports as turf-simproto-bridge.
   SimprotoBridgeOptions& sp = command_line.simproto_options;

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <regex>
@@ -17,6 +18,7 @@
 
 #include "tests/multihost/support/ssl_client.h"
 #include "tests/support/process.h"
+#include "tests/support/world_observer.h"
 #include "tests/test_domain.h"
 
 namespace turf::test {
@@ -154,6 +156,55 @@ TEST(LaunchSupervisor, GivesUpOnACrashLoopingBridgeAndTheMatchGoesOn) {
       << launch.turf->Log();
   launch.turf->Signal(SIGINT);
   ASSERT_TRUE(ExitsWithin(*launch.turf, 10s, 0));
+}
+
+// kill -9 of turf-sim: the supervisor restarts it, and it continues from its newest snapshot (every 0.5 s of sim
+// time here) instead of from kick-off; the bridges go on without a restart.
+TEST(LaunchSupervisor, ACrashedTurfSimResumesWhereItWasAndTheBridgesGoOn) {
+  const int domain = TestDomain();
+  const std::string prefix = "lk" + std::to_string(getpid());
+  Launch launch("launch_resume", domain, prefix,
+                "sim: {speed: 2, snapshot-every: 0.5}\nrestart: {backoff_initial: 0.2}\n");
+  VisionClient client("127.0.0.1", launch.vision_port);
+  ASSERT_TRUE(client.WaitForStream(2, 15s)) << launch.turf->Log();
+  const dds::ParticipantOptions observer{domain, "test-observer", prefix, dds::DefaultQosFile()};
+  int64_t before_ns = 0;
+  {
+    WorldObserver world(observer);
+    ASSERT_TRUE(
+        world.Wait([](const idl::WorldState& s, const idl::Clock&) { return s.sim_time_ns() >= 8'000'000'000; }, 30s))
+        << launch.turf->Log();
+    before_ns = world.state().sim_time_ns();
+  }
+  const pid_t sim = launch.ChildPid("sim"), vision = launch.ChildPid("vision");
+  kill(sim, SIGKILL);
+  ASSERT_TRUE(WaitFor([&] { return launch.ChildPid("sim") != sim; }, 10s)) << launch.turf->Log();
+
+  // The restarted turf-sim says where it resumed, and what it publishes starts there.
+  std::smatch resumed;
+  ASSERT_TRUE(WaitFor(
+      [&] {
+        const std::string log = launch.turf->Log();
+        return std::regex_search(log, resumed, std::regex("resumed from \\S+ at t=([0-9.]+)s"));
+      },
+      15s))
+      << launch.turf->Log();
+  const double resumed_s = std::stod(resumed[1]);
+  EXPECT_GE(resumed_s, before_ns * 1e-9 - 1.0) << "lost more than 1 s of the match";
+  WorldObserver world(observer);  // a new participant: it hears only the restarted turf-sim
+  ASSERT_TRUE(world.Wait([](const idl::WorldState&, const idl::Clock&) { return true; }, 15s)) << launch.turf->Log();
+  EXPECT_GE(world.state().sim_time_ns() * 1e-9, resumed_s - 1e-9);
+
+  EXPECT_EQ(launch.ChildPid("vision"), vision) << "the bridges are not restarted";
+  client.Drain(100ms);
+  ASSERT_TRUE(client.UntilDetection(15s).has_value()) << launch.turf->Log();
+  launch.turf->Signal(SIGINT);
+  ASSERT_TRUE(ExitsWithin(*launch.turf, 10s, 0));
+  // The launch's snapshot directory goes with it: a new launch is a new match.
+  const std::string log = launch.turf->Log();
+  std::smatch file;
+  ASSERT_TRUE(std::regex_search(log, file, std::regex("of sim time to (\\S+)/[^/\\s]+\\.resume"))) << log;
+  EXPECT_FALSE(std::filesystem::exists(file[1].str())) << file[1];
 }
 
 TEST(LaunchSupervisor, ACleanExitEndsTheLaunch) {
