@@ -102,8 +102,8 @@ TEST(Discovery, AnotherPrefixsWritersAreNotListed) {
       if (w.participant.name == "sim-b") return true;
     return false;
   };
-  const Writers seen = a.WaitForOtherWriters(dds::Topic::kWorldState, has_b,
-                                             std::chrono::steady_clock::now() + kDiscoveryDeadline);
+  const Writers seen =
+      a.WaitForOtherWriters(dds::Topic::kWorldState, has_b, std::chrono::steady_clock::now() + kDiscoveryDeadline);
   ASSERT_TRUE(has_b(seen));
   ASSERT_EQ(seen.size(), 1u) << seen.back().participant.Describe();
   EXPECT_EQ(other.OtherWriters(dds::Topic::kWorldState).size(), 0u);

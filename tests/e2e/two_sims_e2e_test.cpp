@@ -2,10 +2,10 @@
 // (exit 2, naming the first one's pid), and another writer of world_state that appears while turf-sim runs is
 // reported by turf-sim and by a bridge, each line naming the writers, while turf-sim keeps running.
 #include <gtest/gtest.h>
-#include <turf/idl/ClockPubSubTypes.h>
-#include <turf/idl/WorldStatePubSubTypes.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
+#include <turf/idl/ClockPubSubTypes.h>
+#include <turf/idl/WorldStatePubSubTypes.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -82,8 +82,7 @@ TEST(TwoSims, TheSecondOnTheSameDomainAndPrefixExitsTwoNamingTheFirst) {
   ASSERT_TRUE(WIFEXITED(*status)) << second.Log();
   EXPECT_EQ(WEXITSTATUS(*status), 2) << second.Log();
   const std::string line = LineWith(second.Log(), "refusing to start");
-  EXPECT_NE(line.find("turf-sim (pid " + std::to_string(first.pid()) + " on host "), std::string::npos)
-      << second.Log();
+  EXPECT_NE(line.find("turf-sim (pid " + std::to_string(first.pid()) + " on host "), std::string::npos) << second.Log();
   EXPECT_NE(line.find(d.prefix + "/world_state"), std::string::npos) << line;
   EXPECT_EQ(second.Log().find("publishing"), std::string::npos) << "it started anyway:\n" << second.Log();
 
@@ -118,8 +117,7 @@ TEST(TwoSims, AnotherWriterWhileRunningIsReportedByTurfSimAndABridge) {
 
   const std::string test_pid = "(pid " + std::to_string(getpid()) + " on host ";
   ASSERT_TRUE(WaitForLog(sim, "another writer of " + d.prefix + "/world_state")) << sim.Log();
-  EXPECT_NE(LineWith(sim.Log(), "another writer of").find("'intruder' " + test_pid), std::string::npos)
-      << sim.Log();
+  EXPECT_NE(LineWith(sim.Log(), "another writer of").find("'intruder' " + test_pid), std::string::npos) << sim.Log();
   ASSERT_TRUE(WaitForLog(bridge, "2 writers of " + d.prefix + "/world_state")) << bridge.Log();
   const std::string line = LineWith(bridge.Log(), "2 writers of");
   EXPECT_NE(line.find("turf-sim (pid " + std::to_string(sim.pid()) + " on host "), std::string::npos) << line;

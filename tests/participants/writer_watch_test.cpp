@@ -4,11 +4,11 @@
 #include "participants/common/writer_watch.h"
 
 #include <gtest/gtest.h>
-#include <turf/idl/ClockPubSubTypes.h>
-#include <turf/idl/WorldStatePubSubTypes.h>
 #include <spdlog/sinks/base_sink.h>
 #include <spdlog/spdlog.h>
 #include <sys/wait.h>
+#include <turf/idl/ClockPubSubTypes.h>
+#include <turf/idl/WorldStatePubSubTypes.h>
 #include <unistd.h>
 
 #include <chrono>
