@@ -1,5 +1,6 @@
 #include "dds/participant.h"
 
+#include <errno.h>  // program_invocation_short_name (glibc)
 #include <spdlog/spdlog.h>
 #include <turf/idl/ClockPubSubTypes.h>
 #include <turf/idl/JointsPubSubTypes.h>
@@ -8,8 +9,10 @@
 #include <turf/idl/SslRobotPubSubTypes.h>
 #include <turf/idl/SslVisionPubSubTypes.h>
 #include <turf/idl/WorldStatePubSubTypes.h>
+#include <unistd.h>
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/domain/DomainParticipantListener.hpp>
 #include <fastdds/dds/publisher/DataWriter.hpp>
 #include <fastdds/dds/publisher/Publisher.hpp>
 #include <fastdds/dds/subscriber/DataReader.hpp>
@@ -19,11 +22,15 @@
 #include <fastdds/dds/topic/Topic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
 
+#include <algorithm>
+#include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 
 namespace turf::dds {
 
@@ -138,14 +145,203 @@ void LoadProfiles(const std::string& file) {
   loaded.insert(file);
 }
 
+// Properties a turf participant announces (propagated with its discovery data), so a peer can name the process.
+constexpr const char* kHostProperty = "turf.host";
+constexpr const char* kPidProperty = "turf.pid";
+constexpr const char* kProgramProperty = "turf.program";
+constexpr const char* kStartedProperty = "turf.started_ns";
+
+template <class T>
+std::string Printed(const T& value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+std::string HostName() {
+  char name[256] = {};
+  if (gethostname(name, sizeof(name) - 1) != 0) return "unknown";
+  return name;
+}
+
+// The executable's name: what `ps` shows, the same for every participant of the process.
+std::string ProgramName() {
+  const char* name = program_invocation_short_name;  // glibc
+  return name != nullptr ? name : "";
+}
+
+int64_t ToInt(const std::string& text) {
+  try {
+    return std::stoll(text);
+  } catch (const std::exception&) {
+    return 0;  // a malformed value from another implementation: as if it said nothing
+  }
+}
+
+// What a participant's discovery data says about it.
+PeerInfo PeerOf(const eprosima::fastrtps::rtps::ParticipantProxyData& data) {
+  PeerInfo peer;
+  peer.name = data.m_participantName.to_string();
+  peer.guid_prefix = Printed(data.m_guid.guidPrefix);
+  for (auto it = data.m_properties.begin(); it != data.m_properties.end(); ++it) {
+    const std::string key = it->first();
+    if (key == kHostProperty) peer.host = it->second();
+    if (key == kPidProperty) peer.pid = ToInt(it->second());
+    if (key == kProgramProperty) peer.program = it->second();
+    if (key == kStartedProperty) peer.started_unix_ns = ToInt(it->second());
+  }
+  return peer;
+}
+
 }  // namespace
+
+std::string PeerInfo::Describe() const {
+  if (pid == 0 && host.empty())
+    return "participant '" + name + "' (guid prefix " + guid_prefix + "; not a turf participant, no host or pid)";
+  // The participant's name too where it says more than the program's (a test's participants, a bridge's watch).
+  const std::string who = program.empty() || program == name ? name : program + " '" + name + "'";
+  return who + " (pid " + std::to_string(pid) + " on host " + host + ")";
+}
+
+// Fast DDS's participant listener: keeps the other participants it discovered (by GUID prefix) and their writers of
+// topics under the prefix, and tells the writer listeners. Fast DDS calls it from its own threads (receive threads
+// for discovery data, the event thread for expired leases): `events_mutex_` serialises the calls and the listeners'
+// deliveries, so a listener sees events one at a time and in order; `mutex_` guards the lists for readers.
+class Participant::Discovery final : public fdds::DomainParticipantListener {
+ public:
+  explicit Discovery(std::string topic_prefix) : topic_prefix_(std::move(topic_prefix) + "/") {}
+
+  // This participant's GUID prefix: its own writers are not others'.
+  void SetOwn(const std::string& guid_prefix) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    own_prefix_ = guid_prefix;
+  }
+
+  std::vector<RemoteWriter> Writers(const std::string& topic) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return WritersLocked(topic);
+  }
+
+  std::vector<RemoteWriter> Wait(const std::string& topic,
+                                 const std::function<bool(const std::vector<RemoteWriter>&)>& done,
+                                 std::chrono::steady_clock::time_point deadline) const {
+    std::unique_lock<std::mutex> lock(mutex_);
+    std::vector<RemoteWriter> writers = WritersLocked(topic);
+    while (!done(writers)) {
+      if (changed_.wait_until(lock, deadline) == std::cv_status::timeout) return WritersLocked(topic);
+      writers = WritersLocked(topic);
+    }
+    return writers;
+  }
+
+  uint64_t Seen() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return seen_;
+  }
+
+  uint64_t AddListener(WriterListener listener) {
+    std::lock_guard<std::mutex> lock(events_mutex_);
+    listeners_[++last_listener_] = std::move(listener);
+    return last_listener_;
+  }
+  void RemoveListener(uint64_t id) {
+    std::lock_guard<std::mutex> lock(events_mutex_);
+    listeners_.erase(id);
+  }
+
+ private:
+  using Events = std::vector<std::pair<WriterEvent, RemoteWriter>>;
+
+  void on_participant_discovery(fdds::DomainParticipant* /*participant*/,
+                                eprosima::fastrtps::rtps::ParticipantDiscoveryInfo&& info) override {
+    using Status = eprosima::fastrtps::rtps::ParticipantDiscoveryInfo;
+    std::lock_guard<std::mutex> events_lock(events_mutex_);
+    const PeerInfo peer = PeerOf(info.info);
+    Events events;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (info.status == Status::DISCOVERED_PARTICIPANT || info.status == Status::CHANGED_QOS_PARTICIPANT) {
+        peers_[peer.guid_prefix] = peer;
+        for (RemoteWriter& w : writers_)
+          if (w.participant.guid_prefix == peer.guid_prefix) w.participant = peer;
+        return;
+      }
+      // Removed or dropped (its lease expired): its writers go with it, whether or not Fast DDS tells of each.
+      peers_.erase(peer.guid_prefix);
+      for (auto it = writers_.begin(); it != writers_.end();) {
+        if (it->participant.guid_prefix != peer.guid_prefix) {
+          ++it;
+          continue;
+        }
+        events.emplace_back(WriterEvent::kGone, *it);
+        it = writers_.erase(it);
+      }
+    }
+    Deliver(events);
+  }
+
+  void on_publisher_discovery(fdds::DomainParticipant* /*participant*/,
+                              eprosima::fastrtps::rtps::WriterDiscoveryInfo&& info) override {
+    using Status = eprosima::fastrtps::rtps::WriterDiscoveryInfo;
+    const std::string topic = info.info.topicName().to_string();
+    if (topic.compare(0, topic_prefix_.size(), topic_prefix_) != 0) return;  // another prefix's, or not turf's
+    std::lock_guard<std::mutex> events_lock(events_mutex_);
+    const std::string participant = Printed(info.info.guid().guidPrefix);
+    const std::string guid = Printed(info.info.guid());
+    Events events;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (participant == own_prefix_) return;
+      auto it = std::find_if(writers_.begin(), writers_.end(), [&](const RemoteWriter& w) { return w.guid == guid; });
+      if (info.status == Status::DISCOVERED_WRITER && it == writers_.end()) {
+        RemoteWriter writer{topic, guid, {}};
+        auto peer = peers_.find(participant);
+        writer.participant = peer != peers_.end() ? peer->second : PeerInfo{"", "", 0, "", 0, participant};
+        writers_.push_back(writer);
+        ++seen_;
+        events.emplace_back(WriterEvent::kAppeared, std::move(writer));
+      } else if (info.status == Status::REMOVED_WRITER && it != writers_.end()) {
+        events.emplace_back(WriterEvent::kGone, *it);
+        writers_.erase(it);
+      }
+    }
+    Deliver(events);
+  }
+
+  // Under events_mutex_ (not mutex_: a listener may read the lists).
+  void Deliver(const Events& events) {
+    if (events.empty()) return;
+    changed_.notify_all();
+    for (const auto& [event, writer] : events)
+      for (const auto& [id, listener] : listeners_) listener(event, writer);
+  }
+
+  std::vector<RemoteWriter> WritersLocked(const std::string& topic) const {
+    std::vector<RemoteWriter> out;
+    for (const RemoteWriter& w : writers_)
+      if (w.topic == topic) out.push_back(w);
+    return out;
+  }
+
+  const std::string topic_prefix_;  // "<prefix>/"
+  std::mutex events_mutex_;
+  std::map<uint64_t, WriterListener> listeners_;  // under events_mutex_
+  uint64_t last_listener_ = 0;
+  mutable std::mutex mutex_;
+  mutable std::condition_variable changed_;
+  std::string own_prefix_;
+  std::map<std::string, PeerInfo> peers_;  // by GUID prefix
+  std::vector<RemoteWriter> writers_;      // in discovery order
+  uint64_t seen_ = 0;
+};
 
 std::string DefaultQosFile() {
   if (const char* env = std::getenv("TURF_QOS_FILE"); env != nullptr && *env != '\0') return env;
   return TURF_DEFAULT_QOS_FILE;
 }
 
-Participant::Participant(const ParticipantOptions& options) : Bus(options.prefix), options_(options) {
+Participant::Participant(const ParticipantOptions& options)
+    : Bus(options.prefix), options_(options), discovery_(std::make_unique<Discovery>(options.prefix)) {
   if (options_.qos_file.empty()) options_.qos_file = DefaultQosFile();
   LoadProfiles(options_.qos_file);
   auto* factory = fdds::DomainParticipantFactory::get_instance();
@@ -154,9 +350,14 @@ Participant::Participant(const ParticipantOptions& options) : Bus(options.prefix
     spdlog::warn("QoS file {} has no participant profile '{}'; using Fast DDS defaults", options_.qos_file,
                  kParticipantProfile);
   qos.name(options_.name);
-  participant_ = factory->create_participant(options_.domain, qos);
+  AnnounceSelf(qos);
+  // The listener from the start: a peer discovered while the participant is being made is not missed. Discovery
+  // callbacks are not masked by status; no status callback is wanted here (the readers have their own).
+  participant_ = factory->create_participant(options_.domain, qos, discovery_.get(), fdds::StatusMask::none());
   if (participant_ == nullptr)
     throw std::runtime_error("cannot create a DDS participant on domain " + std::to_string(options_.domain));
+  self_.guid_prefix = Printed(participant_->guid().guidPrefix);
+  discovery_->SetOwn(self_.guid_prefix);
   publisher_ = participant_->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
   subscriber_ = participant_->create_subscriber(fdds::SUBSCRIBER_QOS_DEFAULT);
   if (publisher_ == nullptr || subscriber_ == nullptr) {
@@ -171,6 +372,36 @@ Participant::~Participant() {
   participant_->delete_contained_entities();
   fdds::DomainParticipantFactory::get_instance()->delete_participant(participant_);
 }
+
+void Participant::AnnounceSelf(fdds::DomainParticipantQos& qos) {
+  self_.name = options_.name;
+  self_.host = HostName();
+  self_.pid = getpid();
+  self_.program = ProgramName();
+  self_.started_unix_ns =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+  auto& properties = qos.properties().properties();
+  properties.emplace_back(kHostProperty, self_.host, /*propagate=*/true);
+  properties.emplace_back(kPidProperty, std::to_string(self_.pid), true);
+  properties.emplace_back(kProgramProperty, self_.program, true);
+  properties.emplace_back(kStartedProperty, std::to_string(self_.started_unix_ns), true);
+}
+
+std::vector<RemoteWriter> Participant::OtherWriters(Topic topic) const { return discovery_->Writers(TopicName(topic)); }
+
+std::vector<RemoteWriter> Participant::WaitForOtherWriters(
+    Topic topic, const std::function<bool(const std::vector<RemoteWriter>&)>& done,
+    std::chrono::steady_clock::time_point deadline) const {
+  return discovery_->Wait(TopicName(topic), done, deadline);
+}
+
+uint64_t Participant::OtherWritersSeen() const { return discovery_->Seen(); }
+
+uint64_t Participant::AddWriterListener(WriterListener listener) {
+  return discovery_->AddListener(std::move(listener));
+}
+
+void Participant::RemoveWriterListener(uint64_t id) { discovery_->RemoveListener(id); }
 
 std::string Participant::Describe() const {
   return "DDS domain " + std::to_string(options_.domain) + ", QoS profiles " + options_.qos_file;

@@ -7,15 +7,20 @@
 // entities it keeps.
 #pragma once
 
+#include <chrono>
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "dds/bus.h"
 
 namespace eprosima::fastdds::dds {
 class DomainParticipant;
+class DomainParticipantQos;
 class Publisher;
 class Subscriber;
 class Topic;
@@ -30,6 +35,34 @@ struct ParticipantOptions {
   std::string qos_file;         // Fast DDS XML profiles; empty: built-in defaults
 };
 
+// Who a participant is, as its discovery data tells: a turf participant announces its host, process id, program
+// and start time (as propagated participant properties, "turf.host" and so on), so that a peer can name the
+// process behind a writer. Another DDS application's participant says none of that: empty strings and zeros.
+struct PeerInfo {
+  std::string name;             // the participant's DDS name (e.g. "turf-sim")
+  std::string host;             // host name; "" if it did not say
+  int64_t pid = 0;              // process id on that host; 0 if it did not say
+  std::string program;          // the executable's name (e.g. "turf-sim"); "" if it did not say
+  int64_t started_unix_ns = 0;  // when the participant was made (wall clock); 0 if it did not say
+  std::string guid_prefix;      // the participant's GUID prefix, as Fast DDS prints it: unique per participant
+
+  // "turf-sim (pid 4242 on host lab-3)", "my_test 'sim-b' (pid 4242 on host lab-3)" where the participant's name is
+  // not the program's, or "participant 'x' (guid prefix ...; not a turf participant, no host or pid)".
+  std::string Describe() const;
+};
+
+// Another participant's writer of one of this participant's topics (<prefix>/...), as discovery tells it.
+struct RemoteWriter {
+  std::string topic;  // full name
+  std::string guid;   // the writer's GUID, as Fast DDS prints it
+  PeerInfo participant;
+};
+
+// What a writer listener is told: a writer of another participant appeared (discovered) or is gone (removed by its
+// participant, or its participant left or stopped answering for its lease, 5 s with turf's QoS).
+enum class WriterEvent { kAppeared, kGone };
+using WriterListener = std::function<void(WriterEvent event, const RemoteWriter& writer)>;
+
 // The QoS profiles file shipped with turf, found next to the executable's
 // install or source tree; empty if none is found.
 std::string DefaultQosFile();
@@ -43,6 +76,27 @@ class Participant final : public Bus {
   const ParticipantOptions& options() const { return options_; }
   std::string Describe() const override;
 
+  // --- Discovery of other participants' writers (two simulators on one domain and prefix, issue 20) ---
+  // Thread-safe; Fast DDS's discovery threads keep the list. Only writers of topics under this participant's prefix
+  // are kept, and never this participant's own.
+
+  // What this participant announces about itself.
+  const PeerInfo& Self() const { return self_; }
+  // Other participants' writers of `topic` known now, in discovery order.
+  std::vector<RemoteWriter> OtherWriters(Topic topic) const;
+  // Waits until `done(OtherWriters(topic))` holds or `deadline` passes (checked at once and at each discovery event,
+  // under the participant's discovery lock: `done` must not call the participant); OtherWriters(topic) then.
+  std::vector<RemoteWriter> WaitForOtherWriters(Topic topic,
+                                                const std::function<bool(const std::vector<RemoteWriter>&)>& done,
+                                                std::chrono::steady_clock::time_point deadline) const;
+  // Other participants' writers discovered so far (every topic under the prefix), gone ones included.
+  uint64_t OtherWritersSeen() const;
+  // `listener` is called for every writer that appears or goes from now on, one event at a time, in order, on a
+  // Fast DDS thread; it must not add or remove listeners. Returns the id for RemoveWriterListener, after which no
+  // call runs or starts.
+  uint64_t AddWriterListener(WriterListener listener);
+  void RemoveWriterListener(uint64_t id);
+
  protected:
   std::unique_ptr<WriterEndpoint> OpenWriter(Topic topic, const SampleOps& ops) override;
   std::unique_ptr<ReaderEndpoint> OpenReader(Topic topic, const SampleOps& ops, SampleSink& sink) override;
@@ -50,8 +104,15 @@ class Participant final : public Bus {
  private:
   eprosima::fastdds::dds::Topic* GetTopic(Topic topic);
   [[noreturn]] void Fail(const char* what, Topic topic) const;
+  // Fills self_ and puts it in the participant's QoS as propagated properties (PeerInfo).
+  void AnnounceSelf(eprosima::fastdds::dds::DomainParticipantQos& qos);
 
   ParticipantOptions options_;
+  PeerInfo self_;
+  // Fast DDS's listener and the writers it learnt of (participant.cpp); made before and deleted after the
+  // DomainParticipant, which calls it until it is deleted.
+  class Discovery;
+  std::unique_ptr<Discovery> discovery_;
   eprosima::fastdds::dds::DomainParticipant* participant_ = nullptr;
   eprosima::fastdds::dds::Publisher* publisher_ = nullptr;
   eprosima::fastdds::dds::Subscriber* subscriber_ = nullptr;

@@ -4,6 +4,7 @@
 
 #include "participants/common/participant_main.h"
 #include "participants/common/process.h"
+#include "participants/common/writer_watch.h"
 #include "participants/grsim_bridge/grsim_bridge.h"
 #include "participants/grsim_bridge/grsim_bridge_flags.h"
 
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
   turf::AddGrsimBridgeFlags(participant, options, wheel_order);
   return participant.Run(argc, argv, [&] {
     turf::ApplyWheelOrder(wheel_order, options.codec);
+    const turf::BridgeWriterWatch watch(options);  // two simulators on the bridge's domain and prefix
     turf::GrsimBridge(options).Run(turf::StopRequested);
     return turf::kExitClean;
   });

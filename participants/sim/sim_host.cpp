@@ -62,6 +62,7 @@ class SimHost::Impl {
   }
 
   SimNode& node() { return node_; }
+  dds::Participant& participant() { return dds_; }
   SimprotoBridge* simproto() { return simproto_.get(); }
   SimSparkBridge* simspark() { return simspark_.get(); }
 
@@ -81,6 +82,7 @@ SimHost::SimHost(LeggedScene scene, SimNodeOptions options, InProcessFrontEnds f
 SimHost::~SimHost() = default;
 void SimHost::Run(const std::function<bool()>& stop) { impl_->Run(stop); }
 SimNode& SimHost::node() { return impl_->node(); }
+dds::Participant& SimHost::participant() { return impl_->participant(); }
 SimprotoBridge* SimHost::simproto() { return impl_->simproto(); }
 SimSparkBridge* SimHost::simspark() { return impl_->simspark(); }
 

@@ -25,6 +25,9 @@
 namespace turf {
 
 class SimNode;
+namespace dds {
+class Participant;
+}  // namespace dds
 
 struct InProcessFrontEnds {
   std::optional<SimprotoBridgeOptions> simproto;  // --simproto: its listen address and ports (SSL scenes)
@@ -44,6 +47,8 @@ class SimHost : Pinned {
   // duration is reached or a front-end's loop ends; the front-ends stop with the node.
   void Run(const std::function<bool()>& stop);
   SimNode& node();
+  // The node's DDS participant (what remote participants see of turf-sim).
+  dds::Participant& participant();
   // The in-process front-ends, if any.
   SimprotoBridge* simproto();
   SimSparkBridge* simspark();

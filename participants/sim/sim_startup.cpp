@@ -3,16 +3,20 @@
 #include <mujoco/mujoco.h>
 #include <spdlog/spdlog.h>
 
+#include <chrono>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <optional>
 #include <utility>
 
+#include "dds/participant.h"
 #include "loader/legged_scene_yaml.h"
 #include "loader/realism_yaml.h"
 #include "loader/scene_yaml.h"
 #include "participants/common/cli_checks.h"
 #include "participants/common/process.h"
+#include "participants/common/writer_watch.h"
 #include "participants/sim/sim_host.h"
 #include "participants/sim/sim_node.h"
 #include "participants/simproto_bridge/simproto_flags.h"
@@ -32,6 +36,38 @@ std::optional<SensorRealism> LoadRealismOption(const std::string& realism) {
   }
   spdlog::info("sensor realism from '{}'", realism);
   return r.realism;
+}
+
+// How long turf-sim waits, once its writers exist, for discovery to show another simulator on its domain and prefix.
+// Discovery on one host or a LAN takes tens of milliseconds (a new participant announces itself every 0.1 s at
+// first); the window leaves room for a loaded host or a lossy network. Start-up takes the whole window when there is
+// no other simulator: nothing in discovery says "that was everyone".
+constexpr std::chrono::milliseconds kDiscoveryWindow{1500};
+
+// Runs the node (`run`) unless another simulator already writes the world state on this domain and prefix (issue
+// 20): then exits 2 with one line naming it. While running, another writer that appears is reported as an error
+// (WriterWatch) and the node keeps publishing: stopping would leave the other one, which may be the wrong world,
+// alone; an operator decides which one goes.
+int RunAlone(dds::Participant& dds, const std::function<void()>& run) {
+  const auto start = std::chrono::steady_clock::now();
+  if (const std::optional<dds::RemoteWriter> other =
+          FindEarlierWriter(dds, dds::Topic::kWorldState, kDiscoveryWindow)) {
+    spdlog::error("{}", RefusalLine(dds, dds::Topic::kWorldState, *other));
+    return kExitBadConfig;
+  }
+  spdlog::debug(
+      "no other simulator on {} after {} ms of discovery", dds.TopicName(dds::Topic::kWorldState),
+      std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start).count());
+  WriterWatch watch(dds, {{dds::Topic::kWorldState}, /*own_writer=*/true});
+  run();
+  if (const uint64_t n = watch.Conflicts(); n > 0)
+    spdlog::warn("{} other writer(s) of {} appeared while this simulator ran", n,
+                 dds.TopicName(dds::Topic::kWorldState));
+  return kExitClean;
+}
+
+dds::ParticipantOptions DdsOptions(const SimNodeOptions& node) {
+  return {node.domain, node.name, node.prefix, node.qos_file};
 }
 
 // Either kind of scene: the command line's realism, then turf-sim's node alone or with the front-end the command
@@ -54,11 +90,12 @@ int RunScene(SceneKind scene, const SimCommandLine& command_line, bool legged) {
       front_ends.simspark = command_line.simspark_options;
     else
       front_ends.simproto = command_line.simproto_options;
-    SimHost(std::move(scene), command_line.node, std::move(front_ends)).Run(StopRequested);
-    return kExitClean;
+    SimHost host(std::move(scene), command_line.node, std::move(front_ends));
+    return RunAlone(host.participant(), [&] { host.Run(StopRequested); });
   }
-  SimNode(std::move(scene), command_line.node).Run(StopRequested);
-  return kExitClean;
+  dds::Participant dds(DdsOptions(command_line.node));  // outlives the node
+  SimNode node(std::move(scene), command_line.node, dds);
+  return RunAlone(dds, [&] { node.Run(StopRequested); });
 }
 
 // Scenes with `kind: legged`: any MJCF robots on joint topics (sim_node.h).

@@ -38,7 +38,9 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line);
 bool ApplyTimeMode(const std::string& speed, bool lockstep, SimNodeOptions& node);
 
 // Checks the time mode, loads the scene and realism, then runs the SSL or the
-// legged node until StopRequested(). Returns an ExitCode (participant_main.h).
+// legged node until StopRequested(). Returns an ExitCode (participant_main.h):
+// kExitBadConfig also when another simulator already writes world_state on the
+// same domain and prefix (found in a 1.5 s discovery window, before the node runs).
 int RunSim(SimCommandLine command_line);
 
 }  // namespace turf

@@ -5,6 +5,7 @@
 
 #include "participants/common/participant_main.h"
 #include "participants/common/process.h"
+#include "participants/common/writer_watch.h"
 #include "participants/simproto_bridge/simproto_bridge.h"
 #include "participants/simproto_bridge/simproto_flags.h"
 
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(10, 60000));
   return participant.Run(argc, argv, [&] {
     options.reply_timeout = std::chrono::milliseconds(reply_timeout_ms);
+    const turf::BridgeWriterWatch watch(options);  // two simulators on the bridge's domain and prefix
     turf::SimprotoBridge(options).Run(turf::StopRequested);
     return turf::kExitClean;
   });

@@ -5,6 +5,7 @@
 #include "participants/common/cli_checks.h"
 #include "participants/common/participant_main.h"
 #include "participants/common/process.h"
+#include "participants/common/writer_watch.h"
 #include "participants/simspark_bridge/simspark_bridge.h"
 
 int main(int argc, char** argv) {
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
       ->check(turf::FiniteAtLeastZero());
   return participant.Run(argc, argv, [&] {
     options.sync_timeout = std::chrono::milliseconds(sync_timeout_ms);
+    const turf::BridgeWriterWatch watch(options);  // two simulators on the bridge's domain and prefix
     return turf::SimSparkBridge(options).Run(turf::StopRequested) ? turf::kExitClean : turf::kExitFailure;
   });
 }

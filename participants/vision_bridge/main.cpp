@@ -7,6 +7,7 @@
 #include "codecs/ssl_vision/timestamps.h"
 #include "participants/common/participant_main.h"
 #include "participants/common/process.h"
+#include "participants/common/writer_watch.h"
 #include "participants/vision_bridge/vision_bridge.h"
 #include "participants/vision_bridge/vision_bridge_flags.h"
 
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
   turf::AddVisionBridgeFlags(participant, options, clock);
   return participant.Run(argc, argv, [&] {
     options.clock = *turf::vision::ParseClockMode(clock);
+    const turf::BridgeWriterWatch watch(options);  // two simulators on the bridge's domain and prefix
     turf::VisionBridge(options).Run(turf::StopRequested);
     return turf::kExitClean;
   });
