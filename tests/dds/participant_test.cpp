@@ -1,7 +1,6 @@
 // The topic table against DDS: every constant's type registers the type name in its row, every topic gets a
 // writer and a reader with its QoS profile, and a participant's start-up lines list what it writes and reads.
 #include <gtest/gtest.h>
-#include <spdlog/sinks/ostream_sink.h>
 #include <spdlog/spdlog.h>
 #include <turf/idl/ClockPubSubTypes.h>
 #include <turf/idl/JointsPubSubTypes.h>
@@ -14,12 +13,12 @@
 #include <fastdds/dds/topic/TypeSupport.hpp>
 
 #include <memory>
-#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
 
 #include "dds/participant.h"
+#include "tests/support/captured_log.h"
 #include "tests/test_domain.h"
 
 namespace turf {
@@ -37,26 +36,6 @@ TEST(TopicTypes, EveryTopicsTypeRegistersTheNameInItsRow) {
   std::apply([](const auto&... topic) { (ExpectRegisteredName(topic), ...); }, dds::kTypedTopics);
 }
 
-// Logs of the default logger, at debug and above, while it lives.
-class CapturedLog {
- public:
-  CapturedLog() : previous_(spdlog::default_logger()) {
-    auto sink = std::make_shared<spdlog::sinks::ostream_sink_mt>(text_);
-    sink->set_pattern("%l %v");
-    auto logger = std::make_shared<spdlog::logger>("captured", sink);
-    logger->set_level(spdlog::level::debug);
-    spdlog::set_default_logger(logger);
-  }
-  ~CapturedLog() { spdlog::set_default_logger(previous_); }
-  CapturedLog(const CapturedLog&) = delete;
-  CapturedLog& operator=(const CapturedLog&) = delete;
-  std::string Text() const { return text_.str(); }
-
- private:
-  std::shared_ptr<spdlog::logger> previous_;
-  std::ostringstream text_;
-};
-
 dds::ParticipantOptions Options(const char* name) {
   static int g_counter = 0;
   dds::ParticipantOptions o;
@@ -68,7 +47,7 @@ dds::ParticipantOptions Options(const char* name) {
 }
 
 TEST(ParticipantTopics, ListsWhatItWritesAndReadsOnceEach) {
-  CapturedLog log;
+  test::CapturedLog log(spdlog::level::debug);
   {
     dds::Participant participant(Options("topics_list"));
     const std::string p = participant.options().prefix;
@@ -102,7 +81,7 @@ TEST(ParticipantTopics, ListsWhatItWritesAndReadsOnceEach) {
 // Every row: a writer and a reader of its type, with its QoS profile found in the QoS file (the participant
 // warns when a profile is missing).
 TEST(ParticipantTopics, EveryTopicGetsAWriterAndAReaderWithItsProfile) {
-  CapturedLog log;
+  test::CapturedLog log(spdlog::level::debug);
   dds::Participant participant(Options("topics_all"));
   std::apply(
       [&participant](const auto&... topic) {

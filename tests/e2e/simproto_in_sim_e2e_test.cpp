@@ -2,6 +2,7 @@
 // steps it in lockstep and answers with the step's detections), a separate turf-simproto-bridge on other ports
 // working next to it over DDS, and both stopping cleanly on SIGTERM.
 #include "tests/e2e/ssl_match.h"
+#include "tests/support/bridge_args.h"
 
 namespace turf::test {
 namespace {
@@ -59,19 +60,7 @@ TEST(SimprotoInTurfSim, TheSyncPortStepsTurfSimAndTheSeparateBridgeStillWorks) {
                                        "--simproto-sync"};
   sim_args.insert(sim_args.end(), dds.begin(), dds.end());
   Process sim(prefix + "_sim", sim_args);
-  std::vector<std::string> bridge_args = {Built("participants/simproto_bridge/turf-simproto-bridge"),
-                                          "--listen",
-                                          "127.0.0.1",
-                                          "--control-port",
-                                          std::to_string(bridge_control_port),
-                                          "--blue-port",
-                                          "0",
-                                          "--yellow-port",
-                                          "0",
-                                          "--sync-port",
-                                          "0"};
-  bridge_args.insert(bridge_args.end(), dds.begin(), dds.end());
-  Process bridge(prefix + "_bridge", bridge_args);
+  Process bridge(prefix + "_bridge", SimprotoControlOnly(bridge_control_port, dds));
   Udp team;
 
   // A teleport through the separate bridge, over DDS (asked again until the bridge listens and has seen turf-sim).

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "dds/participant.h"
+#include "tests/support/bridge_args.h"
 #include "tests/support/process.h"
 #include "tests/test_domain.h"
 
@@ -94,19 +95,7 @@ TEST(TwoSims, TheSecondOnTheSameDomainAndPrefixExitsTwoNamingTheFirst) {
 TEST(TwoSims, AnotherWriterWhileRunningIsReportedByTurfSimAndABridge) {
   const Domain d{TestDomain(89), "twosimsrun" + std::to_string(getpid())};
   Process sim(d.prefix + "_sim", SimArgs(d));
-  std::vector<std::string> bridge_args = {Built("participants/simproto_bridge/turf-simproto-bridge"),
-                                          "--listen",
-                                          "127.0.0.1",
-                                          "--control-port",
-                                          std::to_string(FreePort()),
-                                          "--blue-port",
-                                          "0",
-                                          "--yellow-port",
-                                          "0",
-                                          "--sync-port",
-                                          "0"};
-  for (const std::string& a : d.Args()) bridge_args.push_back(a);
-  Process bridge(d.prefix + "_bridge", bridge_args);
+  Process bridge(d.prefix + "_bridge", SimprotoControlOnly(FreePort(), d.Args()));
   {
     // Made after turf-sim's participant (seen through discovery first), so turf-sim does not give way to it.
     dds::Participant watcher(d.Participant("test-watcher"));

@@ -4,7 +4,6 @@
 #include "participants/common/writer_watch.h"
 
 #include <gtest/gtest.h>
-#include <spdlog/sinks/base_sink.h>
 #include <spdlog/spdlog.h>
 #include <sys/wait.h>
 #include <turf/idl/ClockPubSubTypes.h>
@@ -16,6 +15,7 @@
 #include <mutex>
 #include <string>
 
+#include "tests/support/captured_log.h"
 #include "tests/test_domain.h"
 
 namespace turf {
@@ -25,41 +25,7 @@ using namespace std::chrono_literals;
 
 constexpr auto kDeadline = 15s;
 
-// Lines of the default logger, at info and above, while it lives ("<level> <message>"); read from any thread.
-class CapturedLog {
- public:
-  CapturedLog() : previous_(spdlog::default_logger()), sink_(std::make_shared<Sink>()) {
-    sink_->set_pattern("%l %v");
-    auto logger = std::make_shared<spdlog::logger>("captured", sink_);
-    logger->set_level(spdlog::level::info);
-    spdlog::set_default_logger(logger);
-  }
-  ~CapturedLog() { spdlog::set_default_logger(previous_); }
-  CapturedLog(const CapturedLog&) = delete;
-  CapturedLog& operator=(const CapturedLog&) = delete;
-  std::string Text() const { return sink_->Text(); }
-
- private:
-  class Sink final : public spdlog::sinks::base_sink<std::mutex> {
-   public:
-    std::string Text() {
-      std::lock_guard<std::mutex> lock(mutex_);
-      return text_;
-    }
-
-   private:
-    void sink_it_(const spdlog::details::log_msg& msg) override {
-      spdlog::memory_buf_t line;
-      formatter_->format(msg, line);
-      text_.append(line.data(), line.size());
-    }
-    void flush_() override {}
-    std::string text_;
-  };
-
-  std::shared_ptr<spdlog::logger> previous_;
-  std::shared_ptr<Sink> sink_;
-};
+using test::CapturedLog;
 
 ParticipantOptions Options(const std::string& name, const std::string& prefix) {
   ParticipantOptions o;
