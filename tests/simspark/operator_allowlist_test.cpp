@@ -33,12 +33,12 @@ TEST(OperatorAllowlist, RangesMatchTheirPrefixBits) {
   EXPECT_TRUE(list.Allows("[2001:db8:1::7]:3200"));
   EXPECT_FALSE(list.Allows("[2001:db9::7]:3200"));
   EXPECT_TRUE(AddressAllowlist({"0.0.0.0/0"}).Allows("8.8.8.8:53"));  // everybody, if one insists
-  EXPECT_FALSE(AddressAllowlist({}).Allows("127.0.0.1:1"));            // nobody
+  EXPECT_FALSE(AddressAllowlist({}).Allows("127.0.0.1:1"));           // nobody
 }
 
 TEST(OperatorAllowlist, BadEntriesAreNamed) {
-  for (const char* bad : {"localhost", "10.0.0.0/33", "::1/129", "10.0.0.0/", "10.0.0.0/-1", "10.0.0.0/8x",
-                          "10.0.0/8", "", "1.2.3.4:80"}) {
+  for (const char* bad : {"localhost", "10.0.0.0/33", "::1/129", "10.0.0.0/", "10.0.0.0/-1", "10.0.0.0/8x", "10.0.0/8",
+                          "", "1.2.3.4:80"}) {
     std::string error;
     EXPECT_FALSE(ParseAddressRange(bad, &error).has_value()) << bad;
     EXPECT_NE(error.find(bad), std::string::npos) << error;

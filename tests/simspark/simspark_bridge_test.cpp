@@ -543,6 +543,18 @@ uint64_t Refused(const SimSparkBridgeStats& stats, const std::string& kind) {
   return it == stats.refused_by_kind.end() ? 0 : it->second;
 }
 
+// Real time: init, then the first GS that announces the agent's team within
+// 25 perceptions ("" when none came: the init was refused).
+std::string JoinTeam(AgentClient& a, const std::string& team) {
+  a.Send("(init (unum 0)(teamname " + team + "))");
+  for (int i = 0; i < 25; ++i) {
+    const std::optional<std::string> m = a.Receive(5s);
+    if (!m) break;
+    if (m->find("(GS (unum") != std::string::npos) return *m;
+  }
+  return "";
+}
+
 // Issue 20: a (killsim) from anyone who could reach the monitor port ended the
 // match. Here the operators are 127.0.0.1 alone; a trainer from 127.0.0.2 (this
 // machine too, but not in the list) stands for any other host.
@@ -577,26 +589,39 @@ TEST(SimSparkBridgeTest, OnlyAnOperatorsTrainerCanEndTheMatch) {
 // refused until the bridge restarted.
 TEST(SimSparkBridgeTest, ATeamNameIsFreedWhenItsLastAgentLeaves) {
   Match match(/*sync=*/false);
-  // Init, then the first GS that announces the agent's team ("" when none came).
-  const auto join = [](AgentClient& a, const std::string& team) {
-    a.Send("(init (unum 0)(teamname " + team + "))");
-    for (int i = 0; i < 25; ++i) {
-      const std::optional<std::string> m = a.Receive(5s);
-      if (!m) break;
-      if (m->find("(GS (unum") != std::string::npos) return *m;
-    }
-    return std::string();
-  };
   {
     AgentClient squat1 = match.Agent();
     AgentClient squat2 = match.Agent();
-    EXPECT_NE(join(squat1, "Squat1").find("(team left)"), std::string::npos);
-    EXPECT_NE(join(squat2, "Squat2").find("(team right)"), std::string::npos);
+    EXPECT_NE(JoinTeam(squat1, "Squat1").find("(team left)"), std::string::npos);
+    EXPECT_NE(JoinTeam(squat2, "Squat2").find("(team right)"), std::string::npos);
   }  // both leave
   EXPECT_EQ(match.bridge().WaitForStats([](const SimSparkBridgeStats& s) { return s.agents == 0; }, 10s).agents, 0);
   AgentClient real = match.Agent();
-  const std::string gs = join(real, "Real");
+  const std::string gs = JoinTeam(real, "Real");
   EXPECT_NE(gs.find("(GS (unum 1) (team left)"), std::string::npos) << gs;
+}
+
+// Squatters that stay connected: an operator frees their side with turf's
+// (turfResetTeam Right); their connections are dropped and the real team takes the side.
+TEST(SimSparkBridgeTest, AnOperatorFreesASideWhoseSquattersStayConnected) {
+  Match match(/*sync=*/false);
+  AgentClient squat1 = match.Agent();
+  AgentClient squat2 = match.Agent();
+  ASSERT_NE(JoinTeam(squat1, "Squat1").find("(team left)"), std::string::npos);
+  ASSERT_NE(JoinTeam(squat2, "Squat2").find("(team right)"), std::string::npos);
+  AgentClient op;
+  ASSERT_TRUE(op.Connect(match.bridge().monitor_port()));
+  ASSERT_TRUE(op.Receive(5s).has_value());
+  op.Send("(turfResetTeam Right)");
+  // The squatter's connection ends (its perceptions stop, then the close).
+  bool closed = false;
+  const auto deadline = std::chrono::steady_clock::now() + 10s;
+  while (!closed && std::chrono::steady_clock::now() < deadline) closed = !squat2.Receive(1s).has_value();
+  EXPECT_TRUE(closed) << "the reset side's agent is still connected";
+  AgentClient real = match.Agent();
+  const std::string gs = JoinTeam(real, "Real");
+  EXPECT_NE(gs.find("(GS (unum 1) (team right)"), std::string::npos) << gs;
+  EXPECT_TRUE(squat1.Receive(5s).has_value());  // the other side plays on
 }
 
 // Logs of the default logger while it lives (info and above), for reading once the bridge has stopped.
