@@ -106,12 +106,22 @@ void Session::Issue(int agent, const std::string& kind, const std::string& detai
 void Session::Disconnect(int agent) {
   Agent* a = FindAgent(agent);
   if (a == nullptr) return;
-  if (a->inited) {
-    game_.Leave(a->side, a->unum, a->type);
-    radio_.Forget(a->side, a->unum);
-  }
+  LeaveTeam(a);
   ReleaseRobot(a);
   agents_.erase(agent);
+}
+
+void Session::LeaveTeam(Agent* agent) {
+  if (!agent->inited) return;
+  game_.Leave(agent->side, agent->unum, agent->type);
+  radio_.Forget(agent->side, agent->unum);
+  agent->inited = false;
+}
+
+void Session::Kick(Agent* agent) {
+  if (agent->kicked) return;
+  agent->kicked = true;
+  kicked_.push_back(agent->id);
 }
 
 void Session::TakeRobot(Agent* agent, int type) {
@@ -150,7 +160,7 @@ void Session::PlaceAgent(Agent* agent, const Pose2& pose) {
 
 void Session::Receive(int agent_id, const std::string& payload) {
   Agent* agent = FindAgent(agent_id);
-  if (agent == nullptr) return;
+  if (agent == nullptr || agent->kicked) return;
   const AgentMessage m = ParseAgentMessage(payload);
   for (const EffectorIssue& issue : m.issues) Issue(agent_id, EffectorErrorName(issue.error), issue.detail);
   if (m.scene) {
@@ -291,7 +301,7 @@ struct TrainerCommandVisitor {
   void operator()(const KillAgent& c) const {
     const std::optional<Side> side = SideOf(c.team);
     Session::Agent* a = side ? s->FindPlayer(*side, c.unum) : nullptr;
-    if (a != nullptr) s->kicked_.push_back(a->id);
+    if (a != nullptr) s->Kick(a);
   }
   void operator()(const SelectAgent&) const {}  // selection only matters to a monitor's display
   void operator()(const ReposAgent& c) const {
@@ -307,13 +317,32 @@ struct TrainerCommandVisitor {
   }
   void operator()(const KillSim&) const { s->quit_ = true; }
   void operator()(const AgentStateCmd&) const {}
+  void operator()(const ResetTeamCmd& c) const {
+    // The players leave the team now, not when the participant has dropped
+    // their connections: a team that claims the side meanwhile keeps its
+    // players whatever unums the old ones had.
+    const Side side = SideOf(c.team).value_or(Side::kLeft);
+    for (auto& [id, a] : s->agents_) {
+      if (!a.inited || a.side != side) continue;
+      s->LeaveTeam(&a);
+      s->Kick(&a);
+    }
+    s->game_.ResetTeam(side);
+  }
 };
 
-void Session::Trainer(const std::string& payload) {
+void Session::Trainer(const std::string& payload, TrainerRole role) {
   const TrainerMessage m = ParseTrainerMessage(payload);
   for (const TrainerIssue& issue : m.issues) Issue(-1, "trainer." + issue.error, issue.detail);
   const TrainerCommandVisitor visitor{this};
-  for (const TrainerCommand& c : m.commands) std::visit(visitor, c);
+  for (const TrainerCommand& c : m.commands) {
+    if (role != TrainerRole::kOperator && IsMatchControl(c)) {
+      Issue(-1, "trainer.not_operator",
+            fmt::format("({} ...) ends, restarts or rewrites the match: operators only", TrainerCommandName(c)));
+      continue;
+    }
+    std::visit(visitor, c);
+  }
 }
 
 void Session::Advance(WorldSnapshot snapshot) {

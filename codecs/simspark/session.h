@@ -97,6 +97,12 @@ struct SessionOptions {
   GameRules rules;
 };
 
+// Who sends trainer commands. Only an operator may end, restart or rewrite
+// the match (IsMatchControl, trainer.h); such a command from anyone else is
+// refused ("trainer.not_operator") and changes nothing. Which connection is an
+// operator's is the participant's business (its address allowlist).
+enum class TrainerRole { kTrainer, kOperator };
+
 // Why an agent's input was refused (counted per kind, logged by the participant).
 struct SessionIssue {
   int agent = -1;  // -1: the trainer
@@ -113,14 +119,14 @@ class Session {
   int Connect();  // a new agent's id
   void Disconnect(int agent);
   void Receive(int agent, const std::string& payload);
-  void Trainer(const std::string& payload);
+  void Trainer(const std::string& payload, TrainerRole role);
 
   bool ReadyToStep() const;
   WorldRequests TakeRequests();
   void Advance(WorldSnapshot world);
   std::vector<std::pair<int, std::string>> TakeOutputs();
   std::vector<SessionIssue> TakeIssues();
-  std::vector<int> TakeKicked();        // agents to disconnect (trainer kill)
+  std::vector<int> TakeKicked();        // agents to disconnect (trainer kill, turfResetTeam)
   std::string TakeMonitorOutput();      // game predicates for monitors, every 2nd cycle (0.04 s)
   std::string MonitorGreeting() const;  // a new monitor's first frame: environment and game
   bool quit_requested() const { return quit_; }
@@ -168,6 +174,7 @@ class Session {
     uint64_t scene_cycle = 0;
     uint64_t perceptions = 0;
     bool synced = false;
+    bool kicked = false;  // waiting for the participant to disconnect it: its input is ignored
     Eigen::Vector3d calibration = Eigen::Vector3d::Zero();
     Rng rng;
     std::optional<std::string> say;
@@ -178,6 +185,8 @@ class Session {
   void Issue(int agent, const std::string& kind, const std::string& detail);
   void TakeRobot(Agent* agent, int type);
   void ReleaseRobot(Agent* agent);
+  void LeaveTeam(Agent* agent);
+  void Kick(Agent* agent);
   void PlaceAgent(Agent* agent, const Pose2& pose);
   std::string Perceive(Agent* agent, const WorldSnapshot& world, bool touched);
   SeeItems See(const Agent& agent, const RobotSnapshot& robot, const WorldSnapshot& world);

@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 
 #include "codecs/simspark/sexpr.h"
+#include "core/input_limits.h"
 
 namespace turf::simspark {
 
@@ -11,6 +13,10 @@ namespace {
 
 constexpr int kMaxUnum = 99;
 constexpr int kMaxScore = 999;
+constexpr double kMaxBattery = 100.0;        // %
+constexpr double kMinTemperature = -273.15;  // deg C: absolute zero
+constexpr double kMaxTemperature = 1000.0;
+constexpr double kRadPerDeg = M_PI / 180.0;
 
 std::string Name(std::string_view name) { return std::string(name.substr(0, 32)); }
 
@@ -52,6 +58,30 @@ Result Integer(const SExpr& e, int lo, int hi, int* out) {
     return Refusal{"out_of_range",
                    head + " " + std::to_string(*out) + " outside " + std::to_string(lo) + ".." + std::to_string(hi)};
   return std::nullopt;
+}
+
+// Every decoded number's range check (the integers': Integer above).
+Result InRange(const std::string& what, double v, double lo, double hi) {
+  if (v >= lo && v <= hi) return std::nullopt;
+  return Refusal{"out_of_range", what + " " + FormatMonitorNumber(v) + " outside " + FormatMonitorNumber(lo) + ".." +
+                                     FormatMonitorNumber(hi)};
+}
+
+// Where the trainer puts an agent's torso or the ball (field frame): the placement values every protocol's
+// teleports are checked with (core/input_limits.h: x, y and the yaw), and a height from the ground up.
+Result CheckPosition(const std::string& what, const std::array<double, 3>& pos, double yaw_deg) {
+  RobotTeleport placement;
+  placement.x = pos[0];
+  placement.y = pos[1];
+  placement.orientation = yaw_deg * kRadPerDeg;
+  if (const InputProblem p = CheckPlacementValues(placement); !p.ok())
+    return Refusal{ErrorName(p.error), what + ": " + p.field + " past its limit"};
+  return InRange(what + " z", pos[2], 0.0, kMaxTeleportHeight);
+}
+
+// The ball's velocity: a speed a teleport may give (core/input_limits.h).
+Result CheckVelocity(const std::string& what, const std::array<double, 3>& v) {
+  return InRange(what + " speed", std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), 0.0, kMaxTeleportSpeed);
 }
 
 std::optional<TrainerTeam> TeamFromName(std::string_view name) {
@@ -118,12 +148,15 @@ Result Agent(const SExpr& e, std::vector<TrainerCommand>* out) {
       *r = Numbers(part, turn ? 4 : 3, v);
       move.pos = {v[0], v[1], v[2]};
       move.yaw_deg = turn ? std::optional<double>(v[3]) : std::nullopt;
+      if (!*r) *r = CheckPosition(std::string("agent ") + (turn ? "move" : "pos"), move.pos, v[3]);
       has_move = true;
       return true;
     }
     if (part.IsCall("battery") || part.IsCall("temperature")) {
       double v = 0;
       *r = Numbers(part, 1, &v);
+      if (!*r && part.IsCall("battery")) *r = InRange("agent battery", v, 0.0, kMaxBattery);
+      if (!*r && part.IsCall("temperature")) *r = InRange("agent temperature", v, kMinTemperature, kMaxTemperature);
       has_state = true;
       return true;
     }
@@ -143,7 +176,9 @@ Result Ball(const SExpr& e, std::vector<TrainerCommand>* out) {
     std::array<double, 3> v{};
     if (!part.IsCall("pos") && !part.IsCall("vel")) return Bad("ball: expected (pos x y z) and/or (vel x y z)");
     if (Result r = Vector3(part, &v)) return r;
-    (part.IsCall("pos") ? ball.pos : ball.vel) = v;
+    const bool pos = part.IsCall("pos");
+    if (Result r = pos ? CheckPosition("ball pos", v, 0.0) : CheckVelocity("ball vel", v)) return r;
+    (pos ? ball.pos : ball.vel) = v;
   }
   if (!ball.pos && !ball.vel) return Bad("ball: expected (pos x y z) and/or (vel x y z)");
   out->push_back(ball);
@@ -168,7 +203,7 @@ Result KickOff(const SExpr& e, std::vector<TrainerCommand>* out) {
 Result Time(const SExpr& e, std::vector<TrainerCommand>* out) {
   double t = 0;
   if (Result r = Numbers(e, 1, &t)) return r;
-  if (t < 0) return Refusal{"out_of_range", "time: negative"};
+  if (Result r = InRange("time", t, 0.0, kMaxTrainerTime)) return r;
   out->push_back(SetGameTime{t});
   return std::nullopt;
 }
@@ -187,6 +222,14 @@ Result Score(const SExpr& e, std::vector<TrainerCommand>* out) {
   return std::nullopt;
 }
 
+Result ResetTeam(const SExpr& e, std::vector<TrainerCommand>* out) {
+  ResetTeamCmd c;
+  if (Result r = Team(e, &c.team)) return r;
+  if (c.team == TrainerTeam::kNone) return Bad("turfResetTeam: expected Left or Right");
+  out->push_back(c);
+  return std::nullopt;
+}
+
 Result Command(const SExpr& e, std::vector<TrainerCommand>* out) {
   const std::string_view name = e.Head();
   if (name == "agent") return Agent(e, out);
@@ -201,6 +244,7 @@ Result Command(const SExpr& e, std::vector<TrainerCommand>* out) {
   if (name == "select") return Addressed<SelectAgent>(e, out);
   if (name == "repos") return Addressed<ReposAgent>(e, out);
   if (name == "killsim") return Plain<KillSim>(e, out);
+  if (name == "turfResetTeam") return ResetTeam(e, out);
   if (name == "getAck") {
     if (e.items.size() != 1) return Bad("getAck: takes no arguments");
     return std::nullopt;
@@ -235,6 +279,32 @@ TrainerMessage ParseTrainerMessage(std::string_view payload) {
     }
   }
   return message;
+}
+
+bool IsMatchControl(const TrainerCommand& command) {
+  if (const auto* mode = std::get_if<SetPlayModeCmd>(&command)) {
+    switch (mode->mode) {
+      case PlayMode::kBeforeKickOff:
+      case PlayMode::kKickOffLeft:
+      case PlayMode::kKickOffRight:
+      case PlayMode::kGameOver:
+        return true;
+      default:
+        return false;
+    }
+  }
+  return std::holds_alternative<KillSim>(command) || std::holds_alternative<KillAgent>(command) ||
+         std::holds_alternative<KickOffCmd>(command) || std::holds_alternative<SetGameTime>(command) ||
+         std::holds_alternative<SetScoreCmd>(command) || std::holds_alternative<ResetTeamCmd>(command);
+}
+
+const char* TrainerCommandName(const TrainerCommand& command) {
+  // In the variant's order.
+  static constexpr const char* kNames[] = {"agent",        "ball",    "playMode", "kickOff",      "dropBall",
+                                           "reqfullstate", "time",    "score",    "kill",         "select",
+                                           "repos",        "killsim", "agent",    "turfResetTeam"};
+  static_assert(std::size(kNames) == std::variant_size_v<TrainerCommand>);
+  return kNames[command.index()];
 }
 
 std::string FormatMonitorNumber(double v) {

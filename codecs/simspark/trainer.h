@@ -57,13 +57,25 @@ struct ReposAgent {  // (repos (unum N) (team T))
 };
 struct KillSim {};        // (killsim)
 struct AgentStateCmd {};  // (agent ... (battery B)) / (temperature T): accepted, no effect on a Nao
+// (turfResetTeam Left|Right): turf's own command, not rcssserver3d's (whose trainer cannot free a team name): the
+// side's players are disconnected and its team name is freed, so that another team can claim the side (say, after
+// a throwaway agent claimed the real team's name or side).
+struct ResetTeamCmd {
+  TrainerTeam team = TrainerTeam::kLeft;  // Left or Right
+};
 
 using TrainerCommand =
     std::variant<MoveAgent, SetBall, SetPlayModeCmd, KickOffCmd, DropBallCmd, RequestFullState, SetGameTime,
-                 SetScoreCmd, KillAgent, SelectAgent, ReposAgent, KillSim, AgentStateCmd>;
+                 SetScoreCmd, KillAgent, SelectAgent, ReposAgent, KillSim, AgentStateCmd, ResetTeamCmd>;
+
+// The ranges every decoded value is in (a value outside is refused, "out_of_range"). Positions: x and y within
+// core/input_limits.h's kMaxPlacementCoordinate, height (z) 0..kMaxTeleportHeight; a move's yaw within
+// kMaxPlacementOrientation (as radians); the ball's speed at most kMaxTeleportSpeed. Game time 0..kMaxTrainerTime,
+// score 0..999, unum 0..99, battery 0..100 (%), temperature -273.15..1000 (deg C).
+inline constexpr double kMaxTrainerTime = 86400.0;  // s: no match is near a day long
 
 // error: "parse" (not S-expressions: nothing applied), "unknown_command", "bad_arguments" (wrong form, unknown
-// team, play mode or agent part), "not_finite", "out_of_range" (time < 0, score outside 0..999, unum outside 0..99).
+// team, play mode or agent part), "not_finite", "out_of_range" (a value outside the ranges above).
 struct TrainerIssue {
   std::string error;
   std::string detail;
@@ -78,6 +90,15 @@ struct TrainerMessage {
 };
 
 TrainerMessage ParseTrainerMessage(std::string_view payload);
+
+// Whether a command ends, restarts or rewrites the match: only an operator may send it (session.h, TrainerRole).
+// They are (killsim) (ends the run), (kill ...) (ends a player's connection), (kickOff ...) and the play modes
+// BeforeKickOff, KickOff_Left, KickOff_Right and GameOver (restart or end play), (time ...) (rewinds the clock or
+// ends a half or the match), (score ...) (rewrites the result) and (turfResetTeam ...). The rest (moving the ball
+// and agents, (dropBall), the other play modes, (select), (repos), (reqfullstate), agent state) is open to every
+// trainer: it is what training tools do.
+bool IsMatchControl(const TrainerCommand& command);
+const char* TrainerCommandName(const TrainerCommand& command);  // its wire name: "killsim", "playMode", ...
 
 struct MonitorGameState {
   double time = 0;  // game time s

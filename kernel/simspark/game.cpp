@@ -119,8 +119,12 @@ InitResult Game::Init(const std::string& team_name, int requested_unum, int robo
 }
 
 void Game::Leave(Side side, int unum, int /*robot_type: the one registered at init is used*/) {
-  teams_[Index(side)].players.erase(unum);
+  Team& team = teams_[Index(side)];
+  team.players.erase(unum);
+  if (team.players.empty()) team.name.reset();
 }
+
+void Game::ResetTeam(Side side) { teams_[Index(side)] = Team{}; }
 
 std::optional<std::string> Game::TeamName(Side side) const { return teams_[Index(side)].name; }
 

@@ -130,7 +130,15 @@ class Game {
   // only an unused type. A rejected init changes nothing (the reference server
   // keeps a new team name even then).
   InitResult Init(const std::string& team, int requested_unum, int robot_type);
+  // A player leaves. When the last one of its team leaves, the team's name is
+  // freed and the next new team name takes the side (turf's choice: the
+  // reference server keeps a name until it restarts, so two throwaway agents
+  // could lock the real teams out). A team that reconnects all its players
+  // gets its side back unless another team claimed it meanwhile.
   void Leave(Side side, int unum, int robot_type);
+  // The trainer's (turfResetTeam): the side's players leave and its name is
+  // freed. The caller disconnects the players' agents.
+  void ResetTeam(Side side);
   std::optional<std::string> TeamName(Side side) const;
   int PlayerCount(Side side) const;
 

@@ -40,7 +40,8 @@ void InstallStopSignals() {
 bool StopRequested() { return g_stop_signals.load() > 0; }
 void RequestStop() { g_stop_signals.fetch_add(1); }
 
-RejectLog::RejectLog(std::string what, std::chrono::seconds interval) : what_(std::move(what)), interval_(interval) {}
+RejectLog::RejectLog(std::string what, std::chrono::seconds interval, LogLine line)
+    : what_(std::move(what)), interval_(interval), line_(line) {}
 
 void RejectLog::Reject(const std::string& kind, const std::string& detail) {
   std::lock_guard<std::mutex> lock(mutex_);
@@ -50,10 +51,13 @@ void RejectLog::Reject(const std::string& kind, const std::string& detail) {
   auto it = last_log_.find(kind);
   if (it != last_log_.end() && now - it->second < interval_) return;
   const uint64_t since = n - reported_[kind];
+  const bool refusal = line_ == LogLine::kRefusal;
+  const std::string text = fmt::format("{}{} ({}): {}", refusal ? "refused " : "", what_, kind, detail);
+  const spdlog::level::level_enum level = refusal ? spdlog::level::warn : spdlog::level::info;
   if (since <= 1)
-    spdlog::warn("refused {} ({}): {}", what_, kind, detail);
+    spdlog::log(level, "{}", text);
   else
-    spdlog::warn("refused {} ({}): {} [{} refused since last report, {} in all]", what_, kind, detail, since, n);
+    spdlog::log(level, "{} [{} {} since last report, {} in all]", text, since, refusal ? "refused" : "times", n);
   reported_[kind] = n;
   last_log_[kind] = now;
 }

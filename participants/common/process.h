@@ -23,10 +23,15 @@ void RequestStop();
 
 // Counts refused inputs per kind and logs them: the first of each kind at
 // once, then at most one summary line per kind every `interval`. Thread-safe:
-// a participant's threads share one.
+// a participant's threads share one. With LogLine::kEvent the same counting
+// and limit serve events that anyone can cause in bulk (clients connecting and
+// leaving): information lines "<what> (<kind>): <detail>" instead of warnings
+// "refused <what> (<kind>): <detail>".
+enum class LogLine { kRefusal, kEvent };
 class RejectLog {
  public:
-  explicit RejectLog(std::string what, std::chrono::seconds interval = std::chrono::seconds(5));
+  explicit RejectLog(std::string what, std::chrono::seconds interval = std::chrono::seconds(5),
+                     LogLine line = LogLine::kRefusal);
   void Reject(const std::string& kind, const std::string& detail);
   uint64_t Count(const std::string& kind) const;
   uint64_t Total() const { return total_.load(); }
@@ -35,6 +40,7 @@ class RejectLog {
  private:
   const std::string what_;
   const std::chrono::seconds interval_;
+  const LogLine line_;
   std::atomic<uint64_t> total_{0};
   mutable std::mutex mutex_;
   std::map<std::string, uint64_t> counts_;

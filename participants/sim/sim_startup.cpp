@@ -20,6 +20,7 @@
 #include "participants/sim/sim_host.h"
 #include "participants/sim/sim_node.h"
 #include "participants/simproto_bridge/simproto_flags.h"
+#include "participants/simspark_bridge/simspark_flags.h"
 
 namespace turf {
 namespace {
@@ -173,6 +174,7 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
       ->capture_default_str();
   app.add_flag("--simspark-sync", ss.sync_mode,
                "with --simspark: agent sync mode (a cycle runs when every agent has sent (syn))");
+  AddSimSparkOperatorFlag(app, ss, "simspark-", "with --simspark: ");
 
   // An empty --simproto or --simspark (no ADDRESS) leaves the default; count() tells whether it was given at all.
   app.parse_complete_callback([&command_line, simproto, simspark] {

@@ -7,6 +7,7 @@
 #include "participants/common/process.h"
 #include "participants/common/writer_watch.h"
 #include "participants/simspark_bridge/simspark_bridge.h"
+#include "participants/simspark_bridge/simspark_flags.h"
 
 int main(int argc, char** argv) {
   turf::ParticipantMain participant(
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
   app.add_option("--seed", options.seed, "seed of beam noise and each agent's vision noise")->capture_default_str();
   app.add_option("--duration", options.duration, "stop after this many simulated seconds (0: run until Ctrl-C)")
       ->check(turf::FiniteAtLeastZero());
+  turf::AddSimSparkOperatorFlag(app, options);
   return participant.Run(argc, argv, [&] {
     options.sync_timeout = std::chrono::milliseconds(sync_timeout_ms);
     const turf::BridgeWriterWatch watch(options);  // two simulators on the bridge's domain and prefix

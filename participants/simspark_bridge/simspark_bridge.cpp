@@ -28,12 +28,19 @@ constexpr double kCycleSeconds = 0.02;
 constexpr int kSendBuffer = 128 * 1024;  // kernel buffer per client (bounds what a stalled client holds)
 constexpr size_t kMaxReadPerPoll = 1 << 18;
 
+constexpr auto kConnectionLogInterval = std::chrono::seconds(1);  // per kind of connection line
+
 struct Client {
   std::unique_ptr<TcpPeer> peer;
   simspark::FrameDecoder decoder;
   bool monitor = false;
-  int agent = -1;  // session id (agents only)
+  int agent = -1;                                                // session id (agents only)
+  simspark::TrainerRole role = simspark::TrainerRole::kTrainer;  // monitors only: from an operator's address?
 };
+
+const char* RoleName(simspark::TrainerRole role) {
+  return role == simspark::TrainerRole::kOperator ? "operator" : "not an operator";
+}
 
 }  // namespace
 
@@ -50,7 +57,11 @@ WorldLink MakeLink(const SimSparkBridgeOptions& o, dds::Bus* bus) {
 class SimSparkBridge::Impl {
  public:
   Impl(SimSparkBridgeOptions options, dds::Bus* bus)
-      : options_(std::move(options)), link_(MakeLink(options_, bus)), rejects_("SimSpark input") {
+      : options_(std::move(options)),
+        link_(MakeLink(options_, bus)),
+        operators_(options_.operator_allow),
+        rejects_("SimSpark input"),
+        connections_("SimSpark client", kConnectionLogInterval, LogLine::kEvent) {
     std::string error;
     auto agents = TcpListener::Listen(options_.listen, options_.agent_port, &error);
     if (!agents) throw std::runtime_error("agent port: " + error);
@@ -67,6 +78,7 @@ class SimSparkBridge::Impl {
     if (!Attach(stop)) return stop();
     spdlog::info("agents: TCP {}:{}; monitors and trainers: TCP {}:{}; {} mode", options_.listen, agent_port(),
                  options_.listen, monitor_port(), options_.sync_mode ? "sync" : "real-time");
+    spdlog::info("operators (may end, restart or rewrite the match from the monitor port): {}", operators_.Describe());
     auto next_cycle = Clock::now();
     auto waiting_since = Clock::now();
     auto next_status = Clock::now() + std::chrono::seconds(10);
@@ -171,18 +183,28 @@ class SimSparkBridge::Impl {
     }
     FlushDrops();
     split_.bridge += Clock::now() - stepped;
+    ReportIssues();
+    std::lock_guard<std::mutex> lock(stats_mutex_);
+    stats_.cycles = session_->cycle();
+    stats_.sim_time = sim_time;
+    stats_.agents = session_->agents();
+    stats_changed_.notify_all();
+    return true;
+  }
+
+  // The session's refusals into the log, and every refusal into the stats,
+  // after each cycle and each poll: a trainer's refused command counts even
+  // while no cycle runs (sync mode without agents).
+  void ReportIssues() {
     for (const simspark::SessionIssue& issue : session_->TakeIssues()) {
       rejects_.Reject(issue.kind, issue.agent < 0 ? "trainer: " + issue.detail
                                                   : fmt::format("agent {}: {}", issue.agent, issue.detail));
     }
     std::lock_guard<std::mutex> lock(stats_mutex_);
-    stats_.cycles = session_->cycle();
-    stats_.sim_time = sim_time;
-    stats_.agents = session_->agents();
+    if (stats_.refused == rejects_.Total()) return;
     stats_.refused = rejects_.Total();
     stats_.refused_by_kind = rejects_.counts();
     stats_changed_.notify_all();
-    return true;
   }
 
   void PollSockets(std::chrono::milliseconds timeout) {
@@ -207,6 +229,7 @@ class SimSparkBridge::Impl {
       if (fds[i].revents & (POLLIN | POLLHUP | POLLERR)) ReadClient(fds[i].fd);
     }
     FlushDrops();
+    ReportIssues();
   }
 
   void AcceptAll(TcpListener* listener, bool monitor) {
@@ -220,13 +243,14 @@ class SimSparkBridge::Impl {
       }
       Client c{std::move(peer), simspark::FrameDecoder(), monitor, -1};
       if (monitor) {
-        spdlog::info("monitor {} connected", address);
+        if (operators_.Allows(address)) c.role = simspark::TrainerRole::kOperator;
+        connections_.Reject("monitor_connected", fmt::format("{} ({})", address, RoleName(c.role)));
         const std::string greeting = simspark::Frame(session_->MonitorGreeting());
         clients_.emplace(fd, std::move(c));
         Send(fd, greeting);
       } else {
         c.agent = session_->Connect();
-        spdlog::info("agent {} connected from {}", c.agent, address);
+        connections_.Reject("agent_connected", fmt::format("agent {} from {}", c.agent, address));
         clients_.emplace(fd, std::move(c));
         std::lock_guard<std::mutex> lock(stats_mutex_);
         stats_.agents = session_->agents();
@@ -243,7 +267,7 @@ class SimSparkBridge::Impl {
     c.decoder.Feed(bytes.data(), bytes.size());
     while (auto payload = c.decoder.Next()) {
       if (c.monitor) {
-        session_->Trainer(*payload);
+        session_->Trainer(*payload, c.role);
       } else {
         session_->Receive(c.agent, *payload);
       }
@@ -286,9 +310,10 @@ class SimSparkBridge::Impl {
       auto it = clients_.find(fd);
       if (it == clients_.end()) continue;
       if (it->second.monitor) {
-        spdlog::info("monitor {} left: {}", it->second.peer->address(), why);
+        connections_.Reject("monitor_left", fmt::format("{}: {}", it->second.peer->address(), why));
       } else {
-        spdlog::info("agent {} ({}) left: {}", it->second.agent, it->second.peer->address(), why);
+        connections_.Reject("agent_left",
+                            fmt::format("agent {} ({}): {}", it->second.agent, it->second.peer->address(), why));
         session_->Disconnect(it->second.agent);
       }
       clients_.erase(it);
@@ -322,6 +347,7 @@ class SimSparkBridge::Impl {
   WorldLink link_;
   TcpListener agent_listener_;
   TcpListener monitor_listener_;
+  AddressAllowlist operators_;
   std::unique_ptr<simspark::Session> session_;
   std::map<int, Client> clients_;
   std::vector<std::pair<int, std::string>> drops_;
@@ -331,6 +357,7 @@ class SimSparkBridge::Impl {
     uint64_t cycles = 0;
   } split_;
   RejectLog rejects_;
+  RejectLog connections_;  // clients connecting and leaving (LogLine::kEvent)
   mutable std::mutex stats_mutex_;
   mutable std::condition_variable stats_changed_;
   SimSparkBridgeStats stats_;

@@ -15,7 +15,14 @@
 //
 // Untrusted input: a frame longer than 64 KiB, or a client that stops reading
 // (more than max_unsent bytes waiting), drops that client; a malformed message or predicate
-// is logged, counted and ignored. Facts: shared/protocols/simspark.md.
+// is logged, counted and ignored; so is a trainer value out of range
+// (codecs/simspark/trainer.h). Trainer commands that end, restart or rewrite
+// the match (simspark::IsMatchControl) are accepted only from operators:
+// monitor-port clients whose address is in operator_allow; anyone else's are
+// refused ("trainer.not_operator"). A team's name is freed when its last agent
+// leaves. Clients connecting and leaving are logged at most once a second per
+// kind (with counts), so a connection flood cannot flood the log. Facts:
+// shared/protocols/simspark.md; the trust model: README.md beside this file.
 #pragma once
 
 #include <chrono>
@@ -24,9 +31,11 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/pinned.h"
 #include "participants/common/participant_options.h"
+#include "participants/simspark_bridge/operator_allowlist.h"
 
 namespace turf::dds {
 class Bus;
@@ -48,6 +57,8 @@ struct SimSparkBridgeOptions : ParticipantOptions {
   size_t max_clients = 64;
   size_t max_unsent = 1 << 20;  // bytes a client may leave unread before it is dropped
   double duration = 0.0;        // stop after this many simulated seconds (0: run until stopped)
+  // Operators' addresses, "ADDR" or "ADDR/PREFIX" (operator_allowlist.h); empty: nobody.
+  std::vector<std::string> operator_allow = kDefaultOperatorAllow;
 };
 
 struct SimSparkBridgeStats {
@@ -61,7 +72,7 @@ struct SimSparkBridgeStats {
 
 class SimSparkBridge : Pinned {
  public:
-  // Binds the ports; throws std::runtime_error if it cannot.
+  // Binds the ports; throws std::runtime_error if it cannot, std::invalid_argument for a bad operator_allow entry.
   explicit SimSparkBridge(SimSparkBridgeOptions options);
   // On `bus` instead of a participant of its own (the options' domain, prefix and QoS file are not used): a
   // dds::MemoryBus shared with turf-sim's node, for a front-end in turf-sim's process. The bus must outlive the

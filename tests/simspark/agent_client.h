@@ -26,9 +26,20 @@ class AgentClient {
   AgentClient& operator=(const AgentClient&) = delete;
   AgentClient(AgentClient&& o) noexcept : fd_(o.fd_), in_(std::move(o.in_)) { o.fd_ = -1; }
 
-  bool Connect(uint16_t port) {
+  // To 127.0.0.1:port, from `source` (an IPv4 address of this machine, e.g. another loopback address such as
+  // 127.0.0.2) when given.
+  bool Connect(uint16_t port, const char* source = nullptr) {
     Close();
     fd_ = socket(AF_INET, SOCK_STREAM, 0);
+    if (source != nullptr) {
+      sockaddr_in from{};
+      from.sin_family = AF_INET;
+      if (inet_pton(AF_INET, source, &from.sin_addr) != 1 ||
+          bind(fd_, reinterpret_cast<sockaddr*>(&from), sizeof(from)) != 0) {
+        Close();
+        return false;
+      }
+    }
     sockaddr_in addr{};
     addr.sin_family = AF_INET;
     addr.sin_port = htons(port);

@@ -11,12 +11,17 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <memory>
 #include <optional>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <spdlog/sinks/ostream_sink.h>
+#include <spdlog/spdlog.h>
 
 #include "dds/memory_bus.h"
 #include "loader/legged_scene_yaml.h"
@@ -35,7 +40,9 @@ using test::AgentClient;
 class Match {
  public:
   // start_sim false: the bridge waits for turf-sim until StartSim().
-  explicit Match(bool sync, size_t max_unsent = 1 << 20, bool start_sim = true) : sync_(sync) {
+  explicit Match(bool sync, size_t max_unsent = 1 << 20, bool start_sim = true,
+                 std::vector<std::string> operator_allow = kDefaultOperatorAllow)
+      : sync_(sync) {
     static int counter = 0;
     const std::string prefix = "simspark" + std::to_string(getpid()) + "_" + std::to_string(++counter);
     const std::string qos = TURF_SOURCE_DIR "/configs/qos/turf_qos.xml";
@@ -53,8 +60,12 @@ class Match {
     o.monitor_port = 0;
     o.sync_mode = sync;
     o.max_unsent = max_unsent;
+    o.operator_allow = std::move(operator_allow);
     bridge_ = std::make_unique<SimSparkBridge>(o);
-    bridge_thread_ = std::thread([this] { bridge_->Run([this] { return stop_.load(); }); });
+    bridge_thread_ = std::thread([this] {
+      bridge_->Run([this] { return stop_.load(); });
+      ended_.set_value();
+    });
   }
   ~Match() {
     stop_ = true;
@@ -74,6 +85,8 @@ class Match {
     sim_.reset();
   }
   SimSparkBridge& bridge() { return *bridge_; }
+  // Whether the bridge's Run returned by itself (a trainer's killsim) within `timeout`.
+  bool Ended(std::chrono::milliseconds timeout) { return ended_future_.wait_for(timeout) == std::future_status::ready; }
 
   // A connected agent with a robot (scene sent, first perception read).
   AgentClient Agent(int type = 0) {
@@ -95,6 +108,8 @@ class Match {
   std::unique_ptr<SimSparkBridge> bridge_;
   std::thread sim_thread_;
   std::thread bridge_thread_;
+  std::promise<void> ended_;
+  std::future<void> ended_future_ = ended_.get_future();
 };
 
 double Number(const std::string& message, const std::string& pattern) {
@@ -521,6 +536,148 @@ TEST(SimSparkBridgeTest, TrainerSetsPlayModesAndMovesTheBall) {
     Cycle(a);
   }
   EXPECT_TRUE(saw);
+}
+
+uint64_t Refused(const SimSparkBridgeStats& stats, const std::string& kind) {
+  auto it = stats.refused_by_kind.find(kind);
+  return it == stats.refused_by_kind.end() ? 0 : it->second;
+}
+
+// Real time: init, then the first GS that announces the agent's team within
+// 25 perceptions ("" when none came: the init was refused).
+std::string JoinTeam(AgentClient& a, const std::string& team) {
+  a.Send("(init (unum 0)(teamname " + team + "))");
+  for (int i = 0; i < 25; ++i) {
+    const std::optional<std::string> m = a.Receive(5s);
+    if (!m) break;
+    if (m->find("(GS (unum") != std::string::npos) return *m;
+  }
+  return "";
+}
+
+// Issue 20: a (killsim) from anyone who could reach the monitor port ended the
+// match. Here the operators are 127.0.0.1 alone; a trainer from 127.0.0.2 (this
+// machine too, but not in the list) stands for any other host.
+TEST(SimSparkBridgeTest, OnlyAnOperatorsTrainerCanEndTheMatch) {
+  Match match(/*sync=*/false, 1 << 20, true, {"127.0.0.1/32"});
+  AgentClient a = match.Agent();
+  AgentClient outsider;
+  ASSERT_TRUE(outsider.Connect(match.bridge().monitor_port(), "127.0.0.2"));
+  ASSERT_TRUE(outsider.Receive(5s).has_value());  // the greeting: monitors are served to anyone
+  outsider.Send("(killsim)(kickOff Left)(time 250)");
+  const SimSparkBridgeStats refused = match.bridge().WaitForStats(
+      [](const SimSparkBridgeStats& s) { return Refused(s, "trainer.not_operator") >= 3; }, 10s);
+  EXPECT_EQ(Refused(refused, "trainer.not_operator"), 3u);
+  // The match goes on.
+  const uint64_t cycles = refused.cycles;
+  EXPECT_GT(
+      match.bridge().WaitForStats([&](const SimSparkBridgeStats& s) { return s.cycles > cycles + 5; }, 10s).cycles,
+      cycles + 5);
+  EXPECT_FALSE(match.Ended(0ms));
+  std::optional<std::string> m = a.Receive(5s);
+  ASSERT_TRUE(m.has_value());
+  EXPECT_NE(m->find("(pm BeforeKickOff)"), std::string::npos) << *m;
+  // The operator's killsim ends it.
+  AgentClient operator_;
+  ASSERT_TRUE(operator_.Connect(match.bridge().monitor_port(), "127.0.0.1"));
+  ASSERT_TRUE(operator_.Receive(5s).has_value());
+  operator_.Send("(killsim)");
+  EXPECT_TRUE(match.Ended(10s));
+}
+
+// Issue 20: two throwaway agents claimed both team names, and the real team was
+// refused until the bridge restarted.
+TEST(SimSparkBridgeTest, ATeamNameIsFreedWhenItsLastAgentLeaves) {
+  Match match(/*sync=*/false);
+  {
+    AgentClient squat1 = match.Agent();
+    AgentClient squat2 = match.Agent();
+    EXPECT_NE(JoinTeam(squat1, "Squat1").find("(team left)"), std::string::npos);
+    EXPECT_NE(JoinTeam(squat2, "Squat2").find("(team right)"), std::string::npos);
+  }  // both leave
+  EXPECT_EQ(match.bridge().WaitForStats([](const SimSparkBridgeStats& s) { return s.agents == 0; }, 10s).agents, 0);
+  AgentClient real = match.Agent();
+  const std::string gs = JoinTeam(real, "Real");
+  EXPECT_NE(gs.find("(GS (unum 1) (team left)"), std::string::npos) << gs;
+}
+
+// Squatters that stay connected: an operator frees their side with turf's
+// (turfResetTeam Right); their connections are dropped and the real team takes the side.
+TEST(SimSparkBridgeTest, AnOperatorFreesASideWhoseSquattersStayConnected) {
+  Match match(/*sync=*/false);
+  AgentClient squat1 = match.Agent();
+  AgentClient squat2 = match.Agent();
+  ASSERT_NE(JoinTeam(squat1, "Squat1").find("(team left)"), std::string::npos);
+  ASSERT_NE(JoinTeam(squat2, "Squat2").find("(team right)"), std::string::npos);
+  AgentClient op;
+  ASSERT_TRUE(op.Connect(match.bridge().monitor_port()));
+  ASSERT_TRUE(op.Receive(5s).has_value());
+  op.Send("(turfResetTeam Right)");
+  // The squatter's connection ends (its perceptions stop, then the close).
+  bool closed = false;
+  const auto deadline = std::chrono::steady_clock::now() + 10s;
+  while (!closed && std::chrono::steady_clock::now() < deadline) closed = !squat2.Receive(1s).has_value();
+  EXPECT_TRUE(closed) << "the reset side's agent is still connected";
+  AgentClient real = match.Agent();
+  const std::string gs = JoinTeam(real, "Real");
+  EXPECT_NE(gs.find("(GS (unum 1) (team right)"), std::string::npos) << gs;
+  EXPECT_TRUE(squat1.Receive(5s).has_value());  // the other side plays on
+}
+
+// Logs of the default logger while it lives (info and above), for reading once the bridge has stopped.
+class CapturedLog {
+ public:
+  CapturedLog() : previous_(spdlog::default_logger()) {
+    auto sink = std::make_shared<spdlog::sinks::ostream_sink_mt>(text_);
+    sink->set_pattern("%v");
+    spdlog::set_default_logger(std::make_shared<spdlog::logger>("captured", sink));
+    spdlog::set_level(spdlog::level::info);
+  }
+  ~CapturedLog() { spdlog::set_default_logger(previous_); }
+  CapturedLog(const CapturedLog&) = delete;
+  CapturedLog& operator=(const CapturedLog&) = delete;
+  std::string Text() const { return text_.str(); }
+
+ private:
+  std::shared_ptr<spdlog::logger> previous_;
+  std::ostringstream text_;
+};
+
+int CountLines(const std::string& text, const std::regex& pattern) {
+  std::istringstream lines(text);
+  int n = 0;
+  for (std::string line; std::getline(lines, line);) n += std::regex_search(line, pattern);
+  return n;
+}
+
+// Issue 20: every connect and disconnect was a log line, so a client looping
+// connect/close filled the log. Now: at most one line a second per kind.
+TEST(SimSparkBridgeTest, AConnectionFloodLogsAtMostALineASecondPerKind) {
+  CapturedLog log;
+  constexpr int kFlood = 50;  // below max_clients: none is refused
+  double seconds = 0;
+  {
+    Match match(/*sync=*/false);
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < kFlood; ++i) {
+      AgentClient c;
+      ASSERT_TRUE(c.Connect(match.bridge().agent_port()));
+    }
+    const SimSparkBridgeStats stats = match.bridge().WaitForStats(
+        [](const SimSparkBridgeStats& s) { return s.dropped_clients >= static_cast<uint64_t>(kFlood); }, 20s);
+    ASSERT_EQ(stats.dropped_clients, static_cast<uint64_t>(kFlood));
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  const std::string text = log.Text();
+  // Main's lines ("agent 3 connected from ...", "agent 3 (...) left: ...") and the rate-limited ones
+  // ("SimSpark client (agent_connected): agent 3 from ...", "... (agent_left): agent 3 (...): ...").
+  const int connected = CountLines(text, std::regex(R"(agent \d+ (connected )?from)"));
+  const int left = CountLines(text, std::regex(R"(agent \d+ \([^)]*\):? (left: )?)"));
+  const int allowed = 1 + static_cast<int>(std::ceil(seconds));
+  EXPECT_GE(connected, 1) << text;
+  EXPECT_LE(connected, allowed) << text;
+  EXPECT_GE(left, 1) << text;
+  EXPECT_LE(left, allowed) << text;
 }
 
 }  // namespace

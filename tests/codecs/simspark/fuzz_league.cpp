@@ -45,7 +45,7 @@ struct Match {
     session.Receive(b, "(scene rsg/agent/nao/nao_hetero.rsg 1)(init (unum 1)(teamname Beta))");
     for (int i = 0; i < 4; ++i) Cycle();
     session.Receive(a, "(say hi)(he1 0.5)");
-    session.Trainer("(kickOff Left)");
+    session.Trainer("(kickOff Left)", ss::TrainerRole::kOperator);
     start = session.SaveLeague();
   }
   void Cycle() {

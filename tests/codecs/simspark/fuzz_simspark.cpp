@@ -3,7 +3,8 @@
 // frames by FrameDecoder, each frame parsed as an agent message and as a
 // trainer message. The raw stream is parsed directly too (most inputs are not
 // framed). Whatever is accepted must hold the decoders' promises: finite
-// numbers, values in range, nothing applied from an unparsable payload.
+// numbers, values in range (trainer.h's ranges), nothing applied from an
+// unparsable payload.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -17,6 +18,7 @@
 #include "codecs/simspark/framing.h"
 #include "codecs/simspark/nao_joints.h"
 #include "codecs/simspark/trainer.h"
+#include "core/input_limits.h"
 
 namespace {
 
@@ -49,6 +51,13 @@ bool Finite3(const std::array<double, 3>& v) {
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
 }
 
+// A placement the trainer may ask (trainer.h's ranges): finite, x and y within core/input_limits.h's limit,
+// height from the ground up.
+bool Placeable(const std::array<double, 3>& p) {
+  return Finite3(p) && std::abs(p[0]) <= turf::kMaxPlacementCoordinate &&
+         std::abs(p[1]) <= turf::kMaxPlacementCoordinate && p[2] >= 0 && p[2] <= turf::kMaxTeleportHeight;
+}
+
 void CheckTrainer(std::string_view payload) {
   const ss::TrainerMessage m = ss::ParseTrainerMessage(payload);
   for (const ss::TrainerIssue& issue : m.issues) {
@@ -57,15 +66,21 @@ void CheckTrainer(std::string_view payload) {
   }
   auto unum_ok = [](int unum) { return unum >= 0 && unum <= 99; };
   for (const ss::TrainerCommand& c : m.commands) {
+    Require(ss::TrainerCommandName(c)[0] != '\0');
+    ss::IsMatchControl(c);
     if (const auto* a = std::get_if<ss::MoveAgent>(&c)) {
-      Require(unum_ok(a->unum) && Finite3(a->pos) && (!a->yaw_deg || std::isfinite(*a->yaw_deg)));
+      Require(unum_ok(a->unum) && Placeable(a->pos) && (!a->yaw_deg || std::isfinite(*a->yaw_deg)));
     } else if (const auto* b = std::get_if<ss::SetBall>(&c)) {
       Require(b->pos || b->vel);
-      Require((!b->pos || Finite3(*b->pos)) && (!b->vel || Finite3(*b->vel)));
+      Require(!b->pos || Placeable(*b->pos));
+      Require(!b->vel || (Finite3(*b->vel) && std::hypot((*b->vel)[0], (*b->vel)[1], (*b->vel)[2]) <=
+                                                  turf::kMaxTeleportSpeed * (1 + 1e-12)));
     } else if (const auto* p = std::get_if<ss::SetPlayModeCmd>(&c)) {
       Require(static_cast<int>(p->mode) >= 0 && p->mode < ss::PlayMode::kCount);
     } else if (const auto* t = std::get_if<ss::SetGameTime>(&c)) {
-      Require(std::isfinite(t->time) && t->time >= 0);
+      Require(std::isfinite(t->time) && t->time >= 0 && t->time <= ss::kMaxTrainerTime);
+    } else if (const auto* reset = std::get_if<ss::ResetTeamCmd>(&c)) {
+      Require(reset->team != ss::TrainerTeam::kNone);
     } else if (const auto* s = std::get_if<ss::SetScoreCmd>(&c)) {
       Require(s->left || s->right);
       Require((!s->left || (*s->left >= 0 && *s->left <= 999)) && (!s->right || (*s->right >= 0 && *s->right <= 999)));

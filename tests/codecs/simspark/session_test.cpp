@@ -506,7 +506,8 @@ TEST(SessionPerception, SeeListsBallAndOtherPlayers) {
   h.Cycle();  // both at their start poses now
   // In PlayOn (BeforeKickOff holds the ball at the centre), the ball 2 m in
   // front of a (facing +x, head 0.6 m high) and b 3 m in front of it.
-  h.session.Trainer("(playMode PlayOn)(ball (pos -12.2 9.2 0.042))(agent (unum 1) (team Right) (pos -11.2 9.2 0.4))");
+  h.session.Trainer("(playMode PlayOn)(ball (pos -12.2 9.2 0.042))(agent (unum 1) (team Right) (pos -11.2 9.2 0.4))",
+                    TrainerRole::kOperator);
   h.Cycle();
   h.Cycle();
   const std::string p = OutputFor(h.Cycle(), a);  // a's 4th perception
@@ -554,7 +555,7 @@ TEST(SessionBeam, IgnoredInPlayOn) {
   Harness h(1);
   const int a = h.Join("Alpha", 1);
   h.Cycle();
-  h.session.Trainer("(playMode PlayOn)");
+  h.session.Trainer("(playMode PlayOn)", TrainerRole::kOperator);
   h.session.Receive(a, "(beam -2 1 90)");
   EXPECT_TRUE(h.session.TakeRequests().moves.empty());
   EXPECT_TRUE(h.session.TakeIssues().empty());
@@ -632,7 +633,7 @@ TEST(SessionSync, OffMeansAlwaysReady) {
 
 TEST(SessionTrainer, BallPositionAndVelocity) {
   Harness h(1);
-  h.session.Trainer("(ball (pos 1 2 0.042) (vel 0 0 0))");
+  h.session.Trainer("(ball (pos 1 2 0.042) (vel 0 0 0))", TrainerRole::kOperator);
   WorldRequests requests = h.session.TakeRequests();
   ASSERT_TRUE(requests.ball);
   EXPECT_TRUE(requests.ball->position.isApprox(Eigen::Vector3d(1, 2, 0.042)));
@@ -642,7 +643,7 @@ TEST(SessionTrainer, BallPositionAndVelocity) {
   // Velocity only: the ball stays where the world last had it.
   h.world.Apply(requests);
   h.session.Advance(h.world.Snapshot());  // no player registered: the ball is not held at the centre
-  h.session.Trainer("(ball (vel 1 0 0))");
+  h.session.Trainer("(ball (vel 1 0 0))", TrainerRole::kOperator);
   requests = h.session.TakeRequests();
   ASSERT_TRUE(requests.ball);
   EXPECT_TRUE(requests.ball->position.isApprox(Eigen::Vector3d(1, 2, 0.042)));
@@ -653,7 +654,7 @@ TEST(SessionTrainer, MoveAgentKeepsItsOrientation) {
   Harness h(2);
   h.Join("Alpha", 1);
   h.Cycle();
-  h.session.Trainer("(agent (unum 1) (team Left) (pos -3 0 0.4))");
+  h.session.Trainer("(agent (unum 1) (team Left) (pos -3 0 0.4))", TrainerRole::kOperator);
   const WorldRequests requests = h.session.TakeRequests();
   ASSERT_EQ(requests.moves.size(), 1u);
   const RobotMove& m = requests.moves[0];
@@ -668,7 +669,7 @@ TEST(SessionTrainer, MoveAgentWithYaw) {
   Harness h(1);
   h.Join("Alpha", 1);
   h.Cycle();
-  h.session.Trainer("(agent (unum 1) (team Left) (move -3 0 0.4 0))");
+  h.session.Trainer("(agent (unum 1) (team Left) (move -3 0 0.4 0))", TrainerRole::kOperator);
   const RobotMove* m = FindMove(h.session.TakeRequests(), "nao_1");
   ASSERT_NE(m, nullptr);
   EXPECT_LT(ForwardErrorDeg(m->orientation, Eigen::Vector3d::UnitY()), 1e-6);  // raw yaw 0: model axes
@@ -678,7 +679,8 @@ TEST(SessionTrainer, MoveUnknownAgentIsAnIssue) {
   Harness h(1);
   h.Join("Alpha", 1);
   h.Cycle();
-  h.session.Trainer("(agent (unum 2) (team Left) (pos -3 0 0.4))(agent (unum 1) (team Right) (pos -3 0 0.4))");
+  h.session.Trainer("(agent (unum 2) (team Left) (pos -3 0 0.4))(agent (unum 1) (team Right) (pos -3 0 0.4))",
+                    TrainerRole::kOperator);
   EXPECT_EQ(IssueKinds(h.session.TakeIssues()), (std::vector<std::string>{"unknown_agent", "unknown_agent"}));
   EXPECT_TRUE(h.session.TakeRequests().moves.empty());
 }
@@ -687,7 +689,7 @@ TEST(SessionTrainer, KickOffLeftShowsInTheNextGs) {
   Harness h(1);
   const int a = h.Join("Alpha", 1);
   h.Cycle();
-  h.session.Trainer("(kickOff Left)");
+  h.session.Trainer("(kickOff Left)", TrainerRole::kOperator);
   EXPECT_EQ(h.session.game().play_mode(), PlayMode::kKickOffLeft);
   const std::string gs = Gs(OutputFor(h.Cycle(), a));
   EXPECT_TRUE(Contains(gs, "(pm KickOff_Left)")) << gs;
@@ -698,20 +700,20 @@ TEST(SessionTrainer, KillKicksTheAgentAndKillsimQuits) {
   Harness h(2);
   h.Join("Alpha", 1);
   const int b = h.Join("Alpha", 2);
-  h.session.Trainer("(kill (unum 2) (team Left))");
+  h.session.Trainer("(kill (unum 2) (team Left))", TrainerRole::kOperator);
   EXPECT_EQ(h.session.TakeKicked(), std::vector<int>{b});
   EXPECT_TRUE(h.session.TakeKicked().empty());
-  h.session.Trainer("(kill (unum 3) (team Left))");
+  h.session.Trainer("(kill (unum 3) (team Left))", TrainerRole::kOperator);
   EXPECT_TRUE(h.session.TakeKicked().empty());
   EXPECT_FALSE(h.session.quit_requested());
-  h.session.Trainer("(killsim)");
+  h.session.Trainer("(killsim)", TrainerRole::kOperator);
   EXPECT_TRUE(h.session.quit_requested());
 }
 
 TEST(SessionTrainer, ScoreAndTime) {
   Harness h(1);
   const int a = h.Join("Alpha", 1);
-  h.session.Trainer("(score (left 2) (right 1))(time 12.5)");
+  h.session.Trainer("(score (left 2) (right 1))(time 12.5)", TrainerRole::kOperator);
   const std::string gs = Gs(OutputFor(h.Cycle(), a));
   EXPECT_TRUE(Contains(gs, "(sl 2) (sr 1) (t 12.50)")) << gs;
 }
@@ -719,7 +721,7 @@ TEST(SessionTrainer, ScoreAndTime) {
 TEST(SessionTrainer, MalformedInputIsAnIssue) {
   Harness h(1);
   for (const char* bad : {"(ball (pos 1 2))", "(frobnicate 1)", "((", "(playMode NoSuchMode)"}) {
-    h.session.Trainer(bad);
+    h.session.Trainer(bad, TrainerRole::kOperator);
     const std::vector<SessionIssue> issues = h.session.TakeIssues();
     ASSERT_EQ(issues.size(), 1u) << bad;
     EXPECT_EQ(issues[0].agent, -1);
@@ -830,7 +832,7 @@ std::string RunScript(uint64_t seed) {
       h.session.Receive(a, "(beam -1 0.5 0)");
       h.session.Receive(c, "(beam -3 2 45)");
     }
-    if (cycle == 3) h.session.Trainer("(kickOff None)");
+    if (cycle == 3) h.session.Trainer("(kickOff None)", TrainerRole::kOperator);
     h.session.Receive(b, "(he1 " + std::to_string(0.1 * cycle) + ")(say b" + std::to_string(cycle) + ")");
     for (const auto& [id, text] : h.Cycle()) log += std::to_string(id) + ":" + text + "\n";
     log += h.session.TakeMonitorOutput() + "\n";
@@ -862,7 +864,7 @@ TEST(SessionMonitor, GameStateEverySecondCycle) {
     }
   }
   EXPECT_EQ(written, (std::vector<bool>{false, true, false, true}));
-  h.session.Trainer("(kickOff Left)");
+  h.session.Trainer("(kickOff Left)", TrainerRole::kOperator);
   h.Cycle();
   h.Cycle();
   EXPECT_TRUE(Contains(h.session.TakeMonitorOutput(), "(play_mode 1)"));
@@ -906,10 +908,10 @@ struct LeagueMatch {
       h.session.Receive(a, "(beam -1 0.5 0)");
       h.session.Receive(c, "(beam -3 2 45)");
     }
-    if (i == 3 || i == 24) h.session.Trainer("(kickOff None)");
+    if (i == 3 || i == 24) h.session.Trainer("(kickOff None)", TrainerRole::kOperator);
     if (i == 14) h.session.Receive(d, "(beam -2 -2 90)");  // ignored once in play
-    if (i == 16) h.session.Trainer("(agent (team Left)(unum 1)(pos 0.05 0 0.4))");
-    if (i == 21) h.session.Trainer("(playMode BeforeKickOff)");
+    if (i == 16) h.session.Trainer("(agent (team Left)(unum 1)(pos 0.05 0 0.4))", TrainerRole::kOperator);
+    if (i == 21) h.session.Trainer("(playMode BeforeKickOff)", TrainerRole::kOperator);
     h.session.Receive(b, "(he1 " + std::to_string(0.1 * i) + ")(say b" + std::to_string(i) + ")");
     if (i % 2 == 1) h.session.Receive(d, "(lae1 -0.5)(say d" + std::to_string(i) + ")");
     if (i % 5 == 0) h.session.Receive(a, "(say a" + std::to_string(i) + ")");
@@ -1082,6 +1084,86 @@ TEST(SessionLeagueSnapshot, PlayerInAnotherRobotIsRefused) {
   m.h.Join("", 0);  // takes nao_1
   m.a = m.h.Join("Alpha", 1);
   EXPECT_EQ(m.h.session.RestoreLeague(snapshot), "the snapshot's player left 1 drove nao_1, now nao_5");
+}
+
+// Issue 20: an unauthenticated (killsim) ended the match. A trainer that is
+// not an operator may move things but not end, restart or rewrite the match.
+TEST(SessionTrainer, MatchControlNeedsAnOperator) {
+  Harness h(2);
+  const int a = h.Join("Alpha", 1);
+  h.Join("Beta", 1);
+  h.Cycle();
+  for (const char* text : {"(killsim)", "(kill (unum 1) (team Left))", "(kickOff Left)", "(time 250)",
+                           "(score (left 5))", "(playMode GameOver)", "(turfResetTeam Right)"}) {
+    h.session.Trainer(text, TrainerRole::kTrainer);
+    EXPECT_TRUE(h.OneIssue("trainer.not_operator")) << text;
+  }
+  EXPECT_FALSE(h.session.quit_requested());
+  EXPECT_TRUE(h.session.TakeKicked().empty());
+  EXPECT_EQ(h.session.game().play_mode(), PlayMode::kBeforeKickOff);
+  EXPECT_EQ(h.session.game().game_time(), 0.0);
+  EXPECT_EQ(h.session.game().score(Side::kLeft), 0);
+  EXPECT_EQ(h.session.game().TeamName(Side::kRight), "Beta");
+  // In one message, the allowed commands still apply.
+  h.session.Trainer("(playMode GameOver)(ball (pos 1 2 0.042))", TrainerRole::kTrainer);
+  EXPECT_TRUE(h.OneIssue("trainer.not_operator"));
+  ASSERT_TRUE(h.session.TakeRequests().ball.has_value());
+  // An operator's are carried out.
+  h.session.Trainer("(kickOff Left)", TrainerRole::kOperator);
+  EXPECT_EQ(h.session.game().play_mode(), PlayMode::kKickOffLeft);
+  h.session.Trainer("(killsim)", TrainerRole::kOperator);
+  EXPECT_TRUE(h.session.quit_requested());
+  EXPECT_TRUE(h.session.TakeIssues().empty());
+  EXPECT_FALSE(OutputFor(h.Cycle(), a).empty());
+}
+
+TEST(SessionTrainer, OutOfRangeValuesChangeNothing) {
+  Harness h(1);
+  h.Join("Alpha", 1);
+  h.session.Trainer("(time 12)", TrainerRole::kOperator);
+  h.session.Trainer("(time 1e308)", TrainerRole::kOperator);
+  EXPECT_TRUE(h.OneIssue("trainer.out_of_range"));
+  EXPECT_EQ(h.session.game().game_time(), 12.0);
+  h.session.Trainer("(ball (pos 0 0 0.042) (vel 1e300 0 0))", TrainerRole::kOperator);
+  EXPECT_TRUE(h.OneIssue("trainer.out_of_range"));
+  EXPECT_FALSE(h.session.TakeRequests().ball.has_value());
+}
+
+// Issue 20: two throwaway agents claimed both team names and the real team was
+// refused until a restart.
+TEST(SessionTeams, ATeamNameIsFreedWhenItsLastAgentDisconnects) {
+  Harness h(3);
+  const int squat1 = h.Join("Squat1", 1);
+  const int squat2 = h.Join("Squat2", 1);
+  h.Cycle();
+  h.session.Disconnect(squat1);
+  h.session.Disconnect(squat2);
+  const int real = h.Join("Real", 0);
+  EXPECT_TRUE(h.session.TakeIssues().empty());
+  const std::string gs = Gs(OutputFor(h.Cycle(), real));
+  EXPECT_TRUE(Contains(gs, "(unum 1) (team left)")) << gs;
+  EXPECT_EQ(h.session.game().TeamName(Side::kLeft), "Real");
+  EXPECT_FALSE(h.session.game().TeamName(Side::kRight).has_value());
+}
+
+TEST(SessionTeams, AnOperatorResetsASideWhoseSquattersStayConnected) {
+  Harness h(3);
+  h.Join("Squat1", 1);
+  const int squat2 = h.Join("Squat2", 1);
+  h.Cycle();
+  h.session.Trainer("(turfResetTeam Right)", TrainerRole::kOperator);
+  EXPECT_EQ(h.session.TakeKicked(), std::vector<int>{squat2});
+  // The side is free at once, before the participant has dropped the squatter...
+  const int real = h.Join("Real", 1);
+  EXPECT_TRUE(h.session.TakeIssues().empty());
+  EXPECT_EQ(h.session.game().TeamName(Side::kRight), "Real");
+  // ...whose input is ignored meanwhile, and whose leaving takes nothing from the new team.
+  h.session.Receive(squat2, "(init (unum 1)(teamname Squat2))");
+  h.session.Disconnect(squat2);
+  EXPECT_EQ(h.session.game().PlayerCount(Side::kRight), 1);
+  EXPECT_EQ(h.session.game().TeamName(Side::kRight), "Real");
+  const std::string gs = Gs(OutputFor(h.Cycle(), real));
+  EXPECT_TRUE(Contains(gs, "(unum 1) (team right)")) << gs;
 }
 
 }  // namespace

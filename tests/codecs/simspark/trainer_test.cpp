@@ -226,5 +226,70 @@ TEST(Monitor, GameStateFullThenChangesOnly) {
             "(time 12.5)(team_left FHO)(team_right Probe)(half 2)(score_left 0)(score_right 1)(play_mode 14)");
 }
 
+// Every number is range-checked; one value out of range drops its command whole (issue 20: (time 1e308) was
+// accepted). The limits: trainer.h.
+TEST(Trainer, ValuesOutOfRangeAreRefusedWhole) {
+  for (const char* text : {"(time 1e308)",
+                           "(time 86400.5)",  // game time
+                           "(ball (pos 1e308 0 0.042))",
+                           "(ball (pos 0 -1001 0.042))",
+                           "(ball (pos 0 0 -0.1))",  // ball position
+                           "(ball (pos 0 0 10.5))",
+                           "(ball (pos 0 0 0.042) (vel 31 0 0))",
+                           "(ball (vel 0 0 -30.5))",
+                           "(ball (vel 20 20 11))",                           // past 30 m/s in x, y and z together
+                           "(agent (unum 2) (team Left) (pos 1e300 0 0.4))",  // agent position
+                           "(agent (unum 2) (team Left) (pos 0 0 -1))",
+                           "(agent (unum 2) (team Left) (pos 0 0 11))",
+                           "(agent (unum 2) (team Left) (move 0 0 0.4 1e308))",         // yaw
+                           "(agent (unum 2) (team Left) (pos 0 0 0.4) (battery 101))",  // agent state
+                           "(agent (unum 2) (team Left) (battery -1))",
+                           "(agent (unum 2) (team Left) (temperature -300))",
+                           "(agent (unum 2) (team Left) (temperature 1e9))",
+                           "(kill (unum 100) (team Left))",
+                           "(select (unum -1) (team Left))",
+                           "(score (left 1000))"}) {
+    const TrainerMessage m = ParseTrainerMessage(text);
+    EXPECT_TRUE(m.commands.empty()) << text;
+    EXPECT_EQ(Errors(m), std::vector<std::string>{"out_of_range"}) << text;
+    EXPECT_FALSE(m.issues.empty() || m.issues[0].detail.empty()) << text;
+  }
+  // The limits themselves are in range.
+  EXPECT_DOUBLE_EQ(Only<SetGameTime>(ParseTrainerMessage("(time 86400)")).time, kMaxTrainerTime);
+  Only<SetBall>(ParseTrainerMessage("(ball (pos -1000 1000 10) (vel 0 0 -30))"));
+  Only<SetBall>(ParseTrainerMessage("(ball (pos 0 0 0))"));
+  Only<MoveAgent>(ParseTrainerMessage("(agent (unum 99) (team Right) (move 1000 -1000 0 -90))"));
+  Only<AgentStateCmd>(ParseTrainerMessage("(agent (unum 2) (team Left) (battery 0) (temperature -273.15))"));
+}
+
+TEST(Trainer, ResetTeamIsTurfsOwnCommand) {
+  EXPECT_EQ(Only<ResetTeamCmd>(ParseTrainerMessage("(turfResetTeam Left)")).team, TrainerTeam::kLeft);
+  EXPECT_EQ(Only<ResetTeamCmd>(ParseTrainerMessage("(turfResetTeam Right)")).team, TrainerTeam::kRight);
+  for (const char* text : {"(turfResetTeam None)", "(turfResetTeam)", "(turfResetTeam Blue)",
+                           "(turfResetTeam Left Right)", "(turfResetTeam (team Left))"})
+    EXPECT_EQ(Errors(ParseTrainerMessage(text)), std::vector<std::string>{"bad_arguments"}) << text;
+}
+
+TEST(Trainer, MatchControlCommandsAreTheOnesThatEndRestartOrRewriteTheMatch) {
+  const auto control = [](const char* text) {
+    const TrainerMessage m = ParseTrainerMessage(text);
+    EXPECT_EQ(m.commands.size(), 1u) << text;
+    return !m.commands.empty() && IsMatchControl(m.commands[0]);
+  };
+  for (const char* text : {"(killsim)", "(kill (unum 1) (team Left))", "(kickOff None)", "(time 10)",
+                           "(score (left 1))", "(turfResetTeam Right)", "(playMode BeforeKickOff)",
+                           "(playMode KickOff_Left)", "(playMode KickOff_Right)", "(playMode GameOver)"})
+    EXPECT_TRUE(control(text)) << text;
+  for (const char* text : {"(ball (pos 0 0 0.042))", "(agent (unum 1) (team Left) (pos 0 0 0.4))",
+                           "(agent (unum 1) (team Left) "
+                           "(battery 50))",
+                           "(dropBall)", "(playMode PlayOn)", "(playMode free_kick_left)", "(playMode Goal_Left)",
+                           "(select (unum 1) (team Left))", "(repos (unum 1) (team Left))", "(reqfullstate)"})
+    EXPECT_FALSE(control(text)) << text;
+  EXPECT_STREQ(TrainerCommandName(ParseTrainerMessage("(turfResetTeam Left)").commands.at(0)), "turfResetTeam");
+  EXPECT_STREQ(TrainerCommandName(ParseTrainerMessage("(killsim)").commands.at(0)), "killsim");
+  EXPECT_STREQ(TrainerCommandName(ParseTrainerMessage("(playMode PlayOn)").commands.at(0)), "playMode");
+}
+
 }  // namespace
 }  // namespace turf::simspark

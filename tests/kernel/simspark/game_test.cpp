@@ -686,5 +686,38 @@ TEST(GameSnapshot, TruncatedOrOutOfRangeChangesNothing) {
   EXPECT_EQ(Saved(game), before);
 }
 
+// turf's rule (game.h): a side whose last player left is free for a new team;
+// the reference keeps both names until it restarts.
+TEST(GameTeams, ANameIsFreedWhenItsLastPlayerLeaves) {
+  Game game;
+  ASSERT_TRUE(game.Init("Squat1", 1, 0).ok);
+  ASSERT_TRUE(game.Init("Squat2", 1, 0).ok);
+  ASSERT_TRUE(game.Init("Squat1", 2, 1).ok);
+  EXPECT_FALSE(game.Init("Real", 1, 0).ok);  // both sides taken
+  game.Leave(Side::kLeft, 1, 0);
+  EXPECT_EQ(game.TeamName(Side::kLeft), "Squat1");  // one player is still in
+  EXPECT_FALSE(game.Init("Real", 1, 0).ok);
+  game.Leave(Side::kLeft, 2, 1);
+  EXPECT_FALSE(game.TeamName(Side::kLeft).has_value());
+  const InitResult real = game.Init("Real", 1, 0);
+  ASSERT_TRUE(real.ok) << real.error;
+  EXPECT_EQ(real.side, Side::kLeft);
+  EXPECT_EQ(game.TeamName(Side::kRight), "Squat2");
+}
+
+TEST(GameTeams, ResetTeamFreesTheSideAndItsPlayers) {
+  Game game;
+  ASSERT_TRUE(game.Init("Squat1", 1, 0).ok);
+  ASSERT_TRUE(game.Init("Squat2", 1, 0).ok);
+  game.ResetTeam(Side::kRight);
+  EXPECT_FALSE(game.TeamName(Side::kRight).has_value());
+  EXPECT_EQ(game.PlayerCount(Side::kRight), 0);
+  const InitResult real = game.Init("Real", 1, 0);
+  ASSERT_TRUE(real.ok) << real.error;
+  EXPECT_EQ(real.side, Side::kRight);
+  EXPECT_EQ(game.TeamName(Side::kLeft), "Squat1");  // the other side is untouched
+  EXPECT_EQ(game.PlayerCount(Side::kLeft), 1);
+}
+
 }  // namespace
 }  // namespace turf::simspark
