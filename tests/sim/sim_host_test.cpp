@@ -26,6 +26,7 @@
 #include "tests/core/test_scenes.h"
 #include "tests/simspark/agent_client.h"
 #include "tests/support/in_process.h"
+#include "tests/support/process.h"
 #include "tests/support/world_observer.h"
 
 namespace turf {
@@ -35,7 +36,7 @@ using namespace std::chrono_literals;
 using SteadyClock = std::chrono::steady_clock;
 namespace ws = wire::simulation;
 
-uint16_t FreePort() { return test::BindLoopback().LocalPort(); }
+uint16_t FreePort() { return static_cast<uint16_t>(test::FreePort()); }
 
 // A team on UDP: one socket, request and answer.
 class Team {

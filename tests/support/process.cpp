@@ -7,10 +7,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <random>
+#include <set>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 namespace turf::test {
@@ -92,16 +97,41 @@ std::string LogDir() {
 
 std::string Built(const std::string& relative) { return std::string(TURF_BINARY_DIR) + "/" + relative; }
 
-int FreePort(int type) {
+namespace {
+
+// True if a socket of `type` binds 127.0.0.1:`port` now (it is closed again at once).
+bool Binds(int type, int port) {
   const int fd = socket(AF_INET, type, 0);
+  if (fd < 0) return false;
   sockaddr_in addr{};
   addr.sin_family = AF_INET;
   addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof(addr));
-  socklen_t len = sizeof(addr);
-  getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &len);
+  addr.sin_port = htons(static_cast<uint16_t>(port));
+  const bool ok = bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) == 0;
   close(fd);
-  return ntohs(addr.sin_port);
+  return ok;
+}
+
+}  // namespace
+
+// Below the kernel's ephemeral range (32768 and up, what a socket bound to port 0 gets: DDS, other tests' clients),
+// so nothing else is handed the port between this pick and the test's bind; away from the ports DDS derives from
+// test domains (7400 + 250 x domain + 0..63) and from turf's own defaults; never the same port twice in a process.
+int FreePort(int type) {
+  static std::mutex mutex;
+  static std::mt19937 rng(static_cast<uint32_t>(getpid()) ^
+                          static_cast<uint32_t>(std::chrono::steady_clock::now().time_since_epoch().count()));
+  static std::set<int> given;
+  std::lock_guard<std::mutex> lock(mutex);
+  std::uniform_int_distribution<int> pick(20000, 32700);
+  for (int attempt = 0; attempt < 10000; ++attempt) {
+    const int port = pick(rng);
+    if ((port - 7400) % 250 < 64 || port == 20011 || port == 30011 || port == 30012) continue;
+    if (given.count(port) != 0 || !Binds(type, port)) continue;
+    given.insert(port);
+    return port;
+  }
+  throw std::runtime_error("FreePort: no free port left in 20000..32700");
 }
 
 }  // namespace turf::test

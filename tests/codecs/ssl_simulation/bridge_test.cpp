@@ -21,6 +21,7 @@
 #include "participants/simproto_bridge/simproto_bridge.h"
 #include "tests/core/test_scenes.h"
 #include "tests/support/in_process.h"
+#include "tests/support/process.h"
 #include "tests/support/world_observer.h"
 
 namespace turf {
@@ -36,7 +37,7 @@ dds::ParticipantOptions UniqueDds() {
   return o;
 }
 
-uint16_t FreePort() { return test::BindLoopback().LocalPort(); }
+uint16_t FreePort() { return static_cast<uint16_t>(test::FreePort()); }
 
 // turf-sim's node and the bridge, each on a thread of its own.
 class Stack {
