@@ -106,6 +106,13 @@ bool AnyUnknown(const pb::Message& root) {
 
 }  // namespace
 
+pb::ArenaOptions ArenaOnStack(char* block, size_t size) {
+  pb::ArenaOptions options;
+  options.initial_block = block;
+  options.initial_block_size = size;
+  return options;
+}
+
 std::vector<std::string> UnknownFields(const pb::Message& message) {
   std::vector<std::string> out;
   if (AnyUnknown(message)) CollectUnknown(message, "", &out);

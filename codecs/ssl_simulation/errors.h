@@ -10,6 +10,7 @@
 //    names what was left out. Nothing is ignored silently.
 #pragma once
 
+#include <google/protobuf/arena.h>
 #include <google/protobuf/message.h>
 
 #include <cmath>
@@ -70,11 +71,19 @@ DecodeError CheckSize(size_t size, std::string* why);
 // (naming the fields) if a required field is absent.
 DecodeError Parse(const uint8_t* data, size_t size, google::protobuf::Message* message, std::string* why);
 
+// Arena options whose first block is `block` (the caller's, e.g. on its stack); more blocks come from the heap.
+constexpr size_t kArenaBlockBytes = 16 * 1024;
+google::protobuf::ArenaOptions ArenaOnStack(char* block, size_t size);
+
 // Parses a `Message` and converts it with `convert(message)`; a datagram that
 // does not parse gives a `Decode` with only the error (and its SimError).
+// The message lives on an arena whose first block is on the stack: a sync request's dozens of nested messages cost
+// no heap allocation each (they showed in the sync port's profile).
 template <class Message, class Decode, class Convert>
 Decode ParseThen(const uint8_t* data, size_t size, Convert convert) {
-  Message message;
+  alignas(16) char block[kArenaBlockBytes];
+  google::protobuf::Arena arena(ArenaOnStack(block, sizeof block));
+  Message& message = *google::protobuf::Arena::CreateMessage<Message>(&arena);
   std::string why;
   const DecodeError error = Parse(data, size, &message, &why);
   if (error == DecodeError::kOk) return convert(message);

@@ -10,6 +10,8 @@
 
 namespace turf::simproto {
 
+namespace pb = google::protobuf;
+
 namespace ws = wire::simulation;
 
 namespace {
@@ -99,7 +101,9 @@ void FillSyncResponse(const std::vector<idl::CameraFrame>& frames, const idl::Ss
 std::vector<uint8_t> EncodeSyncResponse(const std::vector<idl::CameraFrame>& frames, const idl::SslField& field,
                                         const SyncDecode& request, const ContactMap& contacts,
                                         const std::vector<SimError>& extra) {
-  ws::SimulationSyncResponse response;
+  alignas(16) char block[kArenaBlockBytes];  // as ParseThen: no heap allocation per detection
+  pb::Arena arena(ArenaOnStack(block, sizeof block));
+  ws::SimulationSyncResponse& response = *pb::Arena::CreateMessage<ws::SimulationSyncResponse>(&arena);
   FillSyncResponse(frames, field, request, contacts, extra, &response);
   if (response.ByteSizeLong() > kMaxResponseBytes) {
     // Leave out the oldest detections; the error itself needs room too.

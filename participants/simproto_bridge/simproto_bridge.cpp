@@ -204,8 +204,9 @@ class SimprotoBridge::Impl {
       // turf-sim cannot step 0: the commands go with the session's next step,
       // the same simulation instant (no time passes in between).
       sync_.held = std::move(commands);
-      spdlog::debug("sync request from {}: {} ns asked, 0 steps (carry {} ns)", d.from.ToString(), request.sim_step_ns,
-                    sync_.planner.carry_ns());
+      if (spdlog::should_log(spdlog::level::debug))  // the address's text is not made for a line nobody logs
+        spdlog::debug("sync request from {}: {} ns asked, 0 steps (carry {} ns)", d.from.ToString(),
+                      request.sim_step_ns, sync_.planner.carry_ns());
       return answer({});
     }
     idl::SimControl step;
@@ -229,8 +230,9 @@ class SimprotoBridge::Impl {
       sync_.planner.Rebase(request.sim_step_ns, steps);
     }
     sync_.last_frame = reply->frame();
-    spdlog::debug("sync request from {}: {} ns asked, {} steps, now t = {} ns (carry {} ns)", d.from.ToString(),
-                  request.sim_step_ns, steps, reply->sim_time_ns(), sync_.planner.carry_ns());
+    if (spdlog::should_log(spdlog::level::debug))
+      spdlog::debug("sync request from {}: {} ns asked, {} steps, now t = {} ns (carry {} ns)", d.from.ToString(),
+                    request.sim_step_ns, steps, reply->sim_time_ns(), sync_.planner.carry_ns());
     return answer(link_.FramesSince(cursor));
   }
 
