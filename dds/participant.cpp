@@ -351,9 +351,15 @@ Participant::Participant(const ParticipantOptions& options)
                  kParticipantProfile);
   qos.name(options_.name);
   AnnounceSelf(qos);
+  if (!options_.security.empty()) EnableSecurity(qos);
   // The listener from the start: a peer discovered while the participant is being made is not missed. Discovery
   // callbacks are not masked by status; no status callback is wanted here (the readers have their own).
   participant_ = factory->create_participant(options_.domain, qos, discovery_.get(), fdds::StatusMask::none());
+  if (participant_ == nullptr && !options_.security.empty())
+    throw std::invalid_argument("DDS Security refused the identity in " + options_.security +
+                                ": its certificate, permissions or governance do not verify against its ca.pem "
+                                "(tampered with, expired, or signed by another CA; Fast DDS's error above says "
+                                "which)");
   if (participant_ == nullptr)
     throw std::runtime_error("cannot create a DDS participant on domain " + std::to_string(options_.domain));
   self_.guid_prefix = Printed(participant_->guid().guidPrefix);
@@ -371,6 +377,30 @@ Participant::~Participant() {
   // owner destroys first; delete whatever is left, then the participant.
   participant_->delete_contained_entities();
   fdds::DomainParticipantFactory::get_instance()->delete_participant(participant_);
+}
+
+// The builtin plugins of DDS Security with the identity's files; a missing file is a configuration error.
+void Participant::EnableSecurity(fdds::DomainParticipantQos& qos) const {
+  const std::string dir = options_.security;
+  auto file = [&](const std::string& name) {
+    const std::string path = dir + "/" + name;
+    if (access(path.c_str(), R_OK) != 0)
+      throw std::invalid_argument("--security " + dir + ": no readable " + name +
+                                  " (make the directory with `turf security init`)");
+    return "file://" + std::filesystem::absolute(path).string();  // Fast DDS's form: file:// and the path
+  };
+  auto& properties = qos.properties().properties();
+  const std::string auth = "dds.sec.auth.builtin.PKI-DH.";
+  const std::string access_control = "dds.sec.access.builtin.Access-Permissions.";
+  properties.emplace_back("dds.sec.auth.plugin", "builtin.PKI-DH");
+  properties.emplace_back(auth + "identity_ca", file("ca.pem"));
+  properties.emplace_back(auth + "identity_certificate", file("cert.pem"));
+  properties.emplace_back(auth + "private_key", file("key.pem"));
+  properties.emplace_back("dds.sec.access.plugin", "builtin.Access-Permissions");
+  properties.emplace_back(access_control + "permissions_ca", file("ca.pem"));
+  properties.emplace_back(access_control + "governance", file("governance.p7s"));
+  properties.emplace_back(access_control + "permissions", file("permissions.p7s"));
+  properties.emplace_back("dds.sec.crypto.plugin", "builtin.AES-GCM-GMAC");
 }
 
 void Participant::AnnounceSelf(fdds::DomainParticipantQos& qos) {
@@ -404,7 +434,8 @@ uint64_t Participant::AddWriterListener(WriterListener listener) {
 void Participant::RemoveWriterListener(uint64_t id) { discovery_->RemoveListener(id); }
 
 std::string Participant::Describe() const {
-  return "DDS domain " + std::to_string(options_.domain) + ", QoS profiles " + options_.qos_file;
+  return "DDS domain " + std::to_string(options_.domain) + ", QoS profiles " + options_.qos_file +
+         (options_.security.empty() ? "" : ", DDS Security as " + options_.security);
 }
 
 fdds::Topic* Participant::GetTopic(Topic topic) {

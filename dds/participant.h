@@ -33,6 +33,10 @@ struct ParticipantOptions {
   std::string name = "turf";
   std::string prefix = "turf";  // topic names: <prefix>/<suffix>
   std::string qos_file;         // Fast DDS XML profiles; empty: built-in defaults
+  // DDS Security: an identity's directory made by `turf security init` (its files: security_policy.h's
+  // kIdentityFiles); empty: security off. The participant then authenticates with that identity's certificate,
+  // may publish and subscribe only what its signed permissions allow, and meets only participants of the same CA.
+  std::string security;
 };
 
 // Who a participant is, as its discovery data tells: a turf participant announces its host, process id, program
@@ -105,6 +109,7 @@ class Participant final : public Bus {
   eprosima::fastdds::dds::Topic* GetTopic(Topic topic);
   [[noreturn]] void Fail(const char* what, Topic topic) const;
   // Fills self_ and puts it in the participant's QoS as propagated properties (PeerInfo).
+  void EnableSecurity(eprosima::fastdds::dds::DomainParticipantQos& qos) const;
   void AnnounceSelf(eprosima::fastdds::dds::DomainParticipantQos& qos);
 
   ParticipantOptions options_;

@@ -20,6 +20,11 @@ void ParticipantMain::AddCommonFlags(ParticipantOptions& options, const CommonFl
   app_.add_option("-p,--prefix", options.prefix, help.prefix)->capture_default_str();
   app_.add_option("--qos", options.qos_file, "Fast DDS XML QoS profiles (default: configs/qos/turf_qos.xml)")
       ->check(CLI::ExistingFile);  // a missing file is a configuration error (exit 2), told before anything starts
+  app_.add_option("--security", options.security,
+                  "DDS Security: this participant's identity directory, DIR/<identity> of `turf security init DIR` "
+                  "(authenticated, only what its signed permissions allow, encrypted); default: off")
+      ->type_name("DIR")
+      ->check(CLI::ExistingDirectory);
 }
 
 CLI::Option* ParticipantMain::AddPort(const std::string& name, uint16_t& port, const std::string& help,

@@ -1,5 +1,5 @@
 // The skeleton of every turf participant's main(): the flags all of them share
-// (-d/--domain, -p/--prefix, --qos, --log-level; --help), log setup, stop
+// (-d/--domain, -p/--prefix, --qos, --security, --log-level; --help), log setup, stop
 // signals, one exception boundary and the exit codes. A main declares its own
 // flags on app(), puts the common ones where its --help shows them, and hands
 // its body to Run():
@@ -47,7 +47,7 @@ class ParticipantMain {
   // The participant's own flags go here, in the order --help lists them.
   CLI::App& app() { return app_; }
 
-  // Adds -d/--domain (checked: 0..232), -p/--prefix and --qos, parsed into
+  // Adds -d/--domain (checked: 0..232), -p/--prefix, --qos and --security, parsed into
   // `options` (which must outlive Run), at this point of --help.
   void AddCommonFlags(ParticipantOptions& options, const CommonFlagHelp& help = {});
 

@@ -2,11 +2,13 @@
 // and topic prefix to join, with which QoS profiles, under which name. Each
 // participant's options struct derives from it and sets its own name.
 //
-// The same four fields as dds::ParticipantOptions (dds/participant.h), kept
-// apart so that option headers stay free of Fast DDS; the nodes copy them over.
+// The same fields as dds::ParticipantOptions (dds/participant.h, which needs no
+// Fast DDS headers either); DdsOptions() is the one conversion.
 #pragma once
 
 #include <string>
+
+#include "dds/participant.h"
 
 namespace turf {
 
@@ -15,6 +17,13 @@ struct ParticipantOptions {
   std::string prefix = "turf";  // -p, --prefix: topic names are <prefix>/<suffix>
   std::string qos_file;         // --qos: Fast DDS XML profiles; empty: the shipped ones
   std::string name = "turf";    // the DDS participant's name (the process's, e.g. "turf-sim")
+  std::string security;         // --security: an identity directory of `turf security init`; empty: off
 };
+
+// The DDS participant these options describe; `name`, if given, replaces theirs (a second participant of one
+// process, such as a writer watch).
+inline dds::ParticipantOptions DdsOptions(const ParticipantOptions& o, const std::string& name = "") {
+  return {o.domain, name.empty() ? o.name : name, o.prefix, o.qos_file, o.security};
+}
 
 }  // namespace turf

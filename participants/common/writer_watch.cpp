@@ -144,7 +144,7 @@ namespace {
 
 dds::ParticipantOptions WatchParticipant(const ParticipantOptions& options) {
   // Its own name, so that a peer's log tells it from the bridge's participant.
-  return {options.domain, options.name + "/watch", options.prefix, options.qos_file};
+  return DdsOptions(options, options.name + "/watch");
 }
 
 }  // namespace

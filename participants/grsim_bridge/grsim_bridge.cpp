@@ -39,7 +39,7 @@ class GrsimBridge::Impl {
       : options_(CheckedOptions(std::move(options))),
         codec_(options_.codec),
         socket_(BindSocket(options_)),
-        participant_({options_.domain, options_.name, options_.prefix, options_.qos_file}),
+        participant_(DdsOptions(options_)),
         command_writers_{participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue),
                          participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow)},
         control_(participant_, options_.name),

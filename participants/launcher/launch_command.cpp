@@ -21,6 +21,7 @@
 #include "participants/launcher/launch_profile.h"
 #include "participants/launcher/preflight.h"
 #include "participants/launcher/programs.h"
+#include "participants/launcher/security_init.h"
 #include "participants/launcher/supervisor.h"
 
 namespace turf::launch {
@@ -90,6 +91,11 @@ LaunchCommand::LaunchCommand(CLI::App& app) : profile_dir_(DefaultProfileDir()) 
   launch->add_option("--set", overrides_.sets, "PROCESS.FLAG=VALUE: change one process's flag (repeatable)");
   launch->add_option("--bin-dir", overrides_.bin_dir,
                      "where the turf executables are (default: next to turf in the build tree, then PATH)");
+  launch
+      ->add_option("--security", overrides_.security,
+                   "DDS Security: every process runs as DIR/<identity> (sim, the bridges, the viewer as operator); "
+                   "a DIR without a CA is made first (`turf security init DIR`, lab profile, this prefix)")
+      ->type_name("DIR");
   launch->add_option("--profile-dir", profile_dir_, "where profile names are looked up")->capture_default_str();
   grace_opt_ = launch->add_option("--grace", grace_, "s from SIGTERM to SIGKILL when stopping (overrides the profile)")
                    ->check(FiniteAtLeastZero(/*zero_allowed=*/false));
@@ -108,6 +114,13 @@ int LaunchCommand::Run() {
   const LaunchProfile& profile = *loaded.profile;
   const LaunchPlan plan = BuildPlan(profile, overrides_, SelfDir());
   if (!plan.errors.empty()) return Fail(plan.errors);
+  if (!print_ && !overrides_.security.empty() && !std::filesystem::exists(overrides_.security + "/ca.pem")) {
+    SecurityInitOptions init;
+    init.dir = overrides_.security;
+    init.prefix = plan.prefix;
+    if (const std::vector<std::string> errors = InitSecurity(init); !errors.empty()) return Fail(errors);
+    std::printf("turf launch: made a CA and identities in %s (turf security init)\n", init.dir.c_str());
+  }
 
   if (print_) {
     for (const auto& command : plan.commands) std::printf("%s\n", ShellLine(command).c_str());

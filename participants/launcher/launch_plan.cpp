@@ -115,6 +115,10 @@ void ApplyOverrides(const LaunchOverrides& o, LaunchProfile* profile, std::vecto
     if (profile->discovery.server.empty()) errors->push_back("--start-discovery-server needs --discovery-server");
     profile->discovery.start = true;
   }
+  if (!o.security.empty() && !profile->discovery.server.empty())
+    errors->push_back(
+        "--security with a discovery server: the server would be an unauthenticated participant; use multicast "
+        "discovery (the default) or initial peers in a --qos file");
   for (const std::string& set : o.sets) ApplySet(set, profile, errors);
 }
 
@@ -132,7 +136,8 @@ std::vector<ProcessSpec> Specs(const LaunchProfile& profile) {
   return specs;
 }
 
-ProcessCommand MakeCommand(const ProcessSpec& spec, const LaunchProfile& profile, const std::string& binary) {
+ProcessCommand MakeCommand(const ProcessSpec& spec, const LaunchProfile& profile, const std::string& binary,
+                           const std::string& security) {
   ProcessCommand command{spec.name, {binary}, {}};
   if (spec.name == "discovery") {
     // Stopped last, so the others' goodbyes still reach their peers through it.
@@ -146,6 +151,9 @@ ProcessCommand MakeCommand(const ProcessSpec& spec, const LaunchProfile& profile
   }
   command.argv.insert(command.argv.end(), {"--domain", std::to_string(profile.domain), "--prefix", profile.prefix});
   if (!profile.qos.empty()) command.argv.insert(command.argv.end(), {"--qos", profile.qos});
+  if (!security.empty())
+    command.argv.insert(command.argv.end(),
+                        {"--security", security + "/" + std::string(FindProgram(spec.name)->identity)});
   AddFlags(spec.flags, &command.argv);
   if (!profile.discovery.server.empty()) command.env.emplace_back("ROS_DISCOVERY_SERVER", profile.discovery.server);
   return command;
@@ -178,7 +186,7 @@ LaunchPlan BuildPlan(LaunchProfile profile, const LaunchOverrides& o, const std:
           program->build_dir.empty() ? "install it; Debian: fastdds-tools" : "build turf, or give --bin-dir"));
       binary = program->binary;
     }
-    plan.commands.push_back(MakeCommand(spec, profile, binary));
+    plan.commands.push_back(MakeCommand(spec, profile, binary, o.security));
   }
   plan.domain = profile.domain;
   plan.prefix = profile.prefix;

@@ -21,6 +21,7 @@ struct LaunchOverrides {
   std::vector<std::string> sets;                // "PROCESS.FLAG=VALUE" (VALUE true/false: a switch)
   std::vector<std::string> only;                // process names to run here; empty: all
   std::string bin_dir;                          // where the turf executables are; empty: next to `turf`, then PATH
+  std::string security;  // DDS Security directory of `turf security init`: each process gets --security DIR/<identity>
 };
 
 struct ProcessCommand {

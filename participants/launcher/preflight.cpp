@@ -1,33 +1,21 @@
 #include "participants/launcher/preflight.h"
 
 #include <fmt/format.h>
-#include <stdio.h>
 
 #include <regex>
 #include <set>
 
 #include "participants/launcher/programs.h"
+#include "participants/launcher/run_program.h"
 
 namespace turf::launch {
 
 namespace {
 
 // What `argv... --help` prints (stdout and stderr), or "" if it cannot be run.
-std::string HelpText(const std::vector<std::string>& argv) {
-  std::string command;
-  for (const std::string& a : argv) {
-    command += "'";
-    for (const char c : a) command += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    command += "' ";
-  }
-  std::string out;
-  FILE* pipe = popen((command + "--help 2>&1").c_str(), "r");
-  if (pipe == nullptr) return out;
-  char buffer[4096];
-  size_t n;
-  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) out.append(buffer, n);
-  pclose(pipe);
-  return out;
+std::string HelpText(std::vector<std::string> argv) {
+  argv.push_back("--help");
+  return RunProgram(argv).output;
 }
 
 }  // namespace

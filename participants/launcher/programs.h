@@ -15,18 +15,20 @@ struct Program {
   std::string_view binary;     // executable name
   std::string_view build_dir;  // under <build>/participants/; empty: a system tool found on PATH
   Scenes scenes = Scenes::kAny;
+  std::string_view identity = "";  // with `turf launch --security DIR`: it runs as DIR/<identity> (security_policy.h)
 };
 
 inline constexpr Program kPrograms[] = {
     {"discovery", "fast-discovery-server", ""},  // Fast DDS discovery server (Debian: fastdds-tools)
-    {"sim", "turf-sim", "sim"},
-    {"grsim", "turf-grsim-bridge", "grsim_bridge", Scenes::kSsl},
-    {"vision", "turf-vision-bridge", "vision_bridge", Scenes::kSsl},
-    {"simproto", "turf-simproto-bridge", "simproto_bridge", Scenes::kSsl},
+    {"sim", "turf-sim", "sim", Scenes::kAny, "sim"},
+    {"grsim", "turf-grsim-bridge", "grsim_bridge", Scenes::kSsl, "grsim-bridge"},
+    {"vision", "turf-vision-bridge", "vision_bridge", Scenes::kSsl, "vision-bridge"},
+    {"simproto", "turf-simproto-bridge", "simproto_bridge", Scenes::kSsl, "simproto-bridge"},
     // Steps turf-sim itself (switches it to lockstep).
-    {"simspark", "turf-simspark-bridge", "simspark_bridge", Scenes::kLegged},
-    // The web view (not a bridge, but started like one: listed under a profile's `bridges:`).
-    {"viewer", "turf-viewer", "viewer"},
+    {"simspark", "turf-simspark-bridge", "simspark_bridge", Scenes::kLegged, "simspark-bridge"},
+    // The web view (not a bridge, but started like one: listed under a profile's `bridges:`); it pauses and
+    // teleports, as the operator.
+    {"viewer", "turf-viewer", "viewer", Scenes::kAny, "operator"},
 };
 
 // Bridges a profile may list under `bridges:` (every program but discovery and sim).

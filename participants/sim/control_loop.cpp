@@ -49,8 +49,7 @@ RealismChange RealismChangeOf(const idl::SimControl& request) {
 }  // namespace
 
 std::unique_ptr<dds::Bus> MakeNodeParticipant(const SimNodeOptions& options) {
-  return std::make_unique<dds::Participant>(
-      dds::ParticipantOptions{options.domain, options.name, options.prefix, options.qos_file});
+  return std::make_unique<dds::Participant>(DdsOptions(options));
 }
 
 ControlLoop::ControlLoop(dds::Bus& bus, const SimNodeOptions& options, Timing timing, Node& node)

@@ -20,10 +20,7 @@ class SimHost::Impl {
  public:
   template <class SceneKind>
   Impl(SceneKind scene, SimNodeOptions options, InProcessFrontEnds front_ends)
-      : dds_({options.domain, options.name, options.prefix, options.qos_file}),
-        local_(options.prefix),
-        bus_(dds_, local_),
-        node_(std::move(scene), options, bus_) {
+      : dds_(DdsOptions(options)), local_(options.prefix), bus_(dds_, local_), node_(std::move(scene), options, bus_) {
     constexpr bool kLegged = std::is_same_v<SceneKind, LeggedScene>;
     if (front_ends.simproto) {
       if (kLegged) throw std::invalid_argument("the SSL simulation protocol needs an SSL scene, not a legged one");

@@ -67,10 +67,6 @@ int RunAlone(dds::Participant& dds, const std::function<void()>& run) {
   return kExitClean;
 }
 
-dds::ParticipantOptions DdsOptions(const SimNodeOptions& node) {
-  return {node.domain, node.name, node.prefix, node.qos_file};
-}
-
 // Either kind of scene: the command line's realism, then turf-sim's node alone or with the front-end the command
 // line asks for in this process (sim_host.h); the other kind's front-end is refused.
 template <class SceneKind>

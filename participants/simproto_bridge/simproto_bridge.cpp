@@ -43,7 +43,7 @@ const char* Name(Kind kind) { return kKindNames[static_cast<int>(kind)]; }
 // On `bus`, or (null) on a DDS participant of the link's own.
 SimLink MakeLink(const SimprotoBridgeOptions& o, dds::Bus* bus) {
   if (bus != nullptr) return SimLink(*bus, o.name);
-  return SimLink(dds::ParticipantOptions{o.domain, o.name, o.prefix, o.qos_file});
+  return SimLink(DdsOptions(o));
 }
 
 const sp::SimError kNotAvailable{sp::kSimNotAvailable, "turf-sim has not been seen yet (field, world state, clock)"};

@@ -49,7 +49,7 @@ namespace {
 // On `bus`, or (null) on a DDS participant of the link's own.
 WorldLink MakeLink(const SimSparkBridgeOptions& o, dds::Bus* bus) {
   if (bus != nullptr) return WorldLink(*bus);
-  return WorldLink(dds::ParticipantOptions{o.domain, "turf-simspark-bridge", o.prefix, o.qos_file});
+  return WorldLink(DdsOptions(o, "turf-simspark-bridge"));
 }
 
 }  // namespace

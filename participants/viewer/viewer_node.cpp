@@ -59,7 +59,7 @@ class ViewerNode::Impl {
       : options_((CheckOptions(options), std::move(options))),
         client_(fmt::format("{}-{}", options_.name, getpid())),
         model_(client_, options_.prefix),
-        participant_({options_.domain, options_.name, options_.prefix, options_.qos_file}),
+        participant_(DdsOptions(options_)),
         state_reader_(Reader<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
         clock_reader_(Reader<idl::ClockPubSubType>(dds::Topic::kClock)),
         field_reader_(Reader<idl::SslFieldPubSubType>(dds::Topic::kSslField)),
@@ -307,7 +307,7 @@ class ViewerNode::Impl {
                  : everywhere ? ": every interface, so use this machine's name or address"
                               : "");
     spdlog::info("serving the page from {}", options_.web_root);
-    spdlog::info("DDS domain {}, QoS profiles {}", options_.domain, participant_.options().qos_file);
+    spdlog::info("{}", participant_.Describe());
     spdlog::info("subscribing {}, {}, {} (latched), {}, {}, {}; legged scenes: {} (latched), {}",
                  name(dds::Topic::kWorldState), name(dds::Topic::kClock), name(dds::Topic::kSslField),
                  name(dds::Topic::kSslCamera), name(dds::Topic::kStats), name(dds::Topic::kControlReply),

@@ -60,7 +60,7 @@ class VisionBridge::Impl {
         target_(Endpoint(options_.address, options_.port, "--address")),
         tracked_target_(Endpoint(options_.tracked_address, options_.tracked_port, "--tracked-address")),
         socket_(OpenSocket()),
-        participant_({options_.domain, options_.name, options_.prefix, options_.qos_file}),
+        participant_(DdsOptions(options_)),
         camera_reader_(
             participant_.MakeReader<idl::CameraFramePubSubType>(dds::Topic::kSslCamera, [this] { wakeup_.Notify(); })),
         field_reader_(
@@ -293,7 +293,7 @@ class VisionBridge::Impl {
 
   void ReportStartup() const {
     auto name = [this](dds::Topic t) { return participant_.TopicName(t); };
-    spdlog::info("DDS domain {}, QoS profiles {}", options_.domain, participant_.options().qos_file);
+    spdlog::info("{}", participant_.Describe());
     spdlog::info("subscribing {} and {} (latched){}{}", name(dds::Topic::kSslCamera), name(dds::Topic::kSslField),
                  options_.tracked ? fmt::format(", {}", name(dds::Topic::kWorldState)) : "",
                  clock_reader_ ? fmt::format(", {} (run epoch)", name(dds::Topic::kClock)) : "");
