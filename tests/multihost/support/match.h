@@ -19,6 +19,7 @@ struct MatchSetup {
   const TwoHosts* hosts = nullptr;  // nullptr: everything on this host's loopback
   Process::Env env;                 // for every participant, e.g. ROS_DISCOVERY_SERVER
   std::string scene = "ssl_div_a";  // configs/scenes/<scene>.yaml
+  std::string security;             // a `turf security init` directory: each process runs as its identity; "": off
 };
 
 class Match {
@@ -35,7 +36,7 @@ class Match {
 
  private:
   std::unique_ptr<Process> Start(const std::string& name, const std::string& binary, std::vector<std::string> args,
-                                 bool bridge_host) const;
+                                 bool bridge_host, const std::string& identity) const;
   MatchSetup setup_;
 };
 
