@@ -221,18 +221,24 @@ int main(int argc, char** argv) {
   app.add_option("--samples", count, "samples per path and variant")
       ->capture_default_str()
       ->check(CLI::Range(10, 100000));
+  std::string security;
+  app.add_option("--security", security,
+                 "DDS Security: a `turf security init --prefix '*'` directory; the two ends run as its sim and "
+                 "simproto-bridge identities");
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::warn);
   const std::string qos = turf::bench::QosWithoutIntraprocess("latency");
   const int domain = 1 + static_cast<int>(getpid() % 99);
   const std::string prefix = "latency" + std::to_string(getpid());
-  turf::dds::Participant sim({domain, "bench-sim", prefix, qos});
-  turf::dds::Participant bridge({domain, "bench-bridge", prefix, qos});
+  const auto identity = [&](const char* name) { return security.empty() ? "" : security + "/" + name; };
+  turf::dds::Participant sim({domain, "bench-sim", prefix, qos, identity("sim")});
+  turf::dds::Participant bridge({domain, "bench-bridge", prefix, qos, identity("simproto-bridge")});
   PathResult command, frame;
   CommandPath(bridge, sim, count, &command);
   FramePath(sim, bridge, count, &frame);
   std::remove(qos.c_str());
-  std::printf("DDS hop latency on loopback, %d samples per variant at 500 Hz; microseconds\n", count);
+  std::printf("DDS hop latency on loopback, %d samples per variant at 500 Hz; microseconds; DDS Security: %s\n", count,
+              security.empty() ? "off" : security.substr(security.find_last_of('/') + 1).c_str());
   std::printf("| %-44s | %6s | %7s | %7s | %7s | %7s | %8s | %8s |\n", "path", "n", "in p50", "in p99", "dds p50",
               "dds p99", "+p50", "+p99");
   std::printf("|%s|--------|---------|---------|---------|---------|----------|----------|\n",

@@ -5,11 +5,12 @@
 #   bench/run.sh simspark [sim seconds]  SimSpark agents through turf-simspark-bridge
 #   bench/run.sh snapshot                kernel snapshots: size, Save and Restore next to a step
 #   bench/run.sh sync [requests]         SSL sync port round trip: separate bridge over DDS vs in turf-sim's process
+#   bench/run.sh security [sim seconds]  what DDS Security costs: the SSL bench and the DDS hop latency, off and on
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
 WHAT=all
-if [[ "${1:-}" == ssl || "${1:-}" == simspark || "${1:-}" == snapshot || "${1:-}" == sync ]]; then
+if [[ "${1:-}" =~ ^(ssl|simspark|snapshot|sync|security)$ ]]; then
   WHAT=$1
   shift
 fi
@@ -78,11 +79,34 @@ simspark() {
   echo "answer). Reference rcssserver3d 0.7.3 on this machine: 0.72x with 22 agents, 1.9x with 11."
 }
 
+# DDS Security off, on without encryption (authentication and access control), on with encryption: the SSL bench
+# with a driving client, then the DDS hop latency, each variant in this one run.
+security() {
+  local dir
+  dir=$(mktemp -d)
+  "$BUILD_DIR/participants/launcher/turf" security init "$dir/no-encryption" --prefix '*' --no-encryption >/dev/null
+  "$BUILD_DIR/participants/launcher/turf" security init "$dir/encrypted" --prefix '*' >/dev/null
+  local scene=configs/scenes/ssl_div_a.yaml
+  echo "turf-sim free-running with a driving client, DDS Security off / on without encryption / on; $(nproc) cores"
+  "$BUILD_DIR/bench/turf-bench-sim" --header --seconds "$SECONDS_SIM" --scene "$scene" --drive
+  for variant in no-encryption encrypted; do
+    "$BUILD_DIR/bench/turf-bench-sim" --seconds "$SECONDS_SIM" --scene "$scene" --drive --security "$dir/$variant"
+  done
+  echo
+  "$BUILD_DIR/bench/turf-bench-latency"
+  for variant in no-encryption encrypted; do
+    echo
+    "$BUILD_DIR/bench/turf-bench-latency" --security "$dir/$variant"
+  done
+  rm -rf "$dir"
+}
+
 case "$WHAT" in
   ssl) ssl ;;
   simspark) simspark ;;
   snapshot) "$BUILD_DIR/bench/turf-bench-snapshot" ;;
   sync) "$BUILD_DIR/bench/turf-bench-sync" --requests "${1:-1000}" ;;
+  security) security ;;
   all)
     ssl
     echo

@@ -76,11 +76,15 @@ int main(int argc, char** argv) {
   bool subscribe = false;
   bool drive = false;
   bool header = false;
+  std::string security;
   app.add_option("--scene", scene_path, "scene file")->required();
   app.add_option("--seconds", seconds, "simulated seconds to run")->capture_default_str();
   app.add_flag("--subscribe", subscribe, "a second process subscribes to world state and cameras");
   app.add_flag("--drive", drive, "the second process also commands every robot at each world state");
   app.add_flag("--header", header, "print the table header first");
+  app.add_option("--security", security,
+                 "DDS Security: a `turf security init --prefix '*'` directory; turf-sim runs as its sim identity, "
+                 "the client as simproto-bridge (which may command both teams)");
   CLI11_PARSE(app, argc, argv);
   subscribe = subscribe || drive;
   spdlog::set_level(spdlog::level::warn);
@@ -105,6 +109,7 @@ int main(int argc, char** argv) {
       close(pipe_fd[0]);
       turf::InstallStopSignals();
       dds.name = "bench-client";
+      if (!security.empty()) dds.security = security + "/simproto-bridge";
       const Received got = RunClient(dds, drive);
       const ssize_t n = write(pipe_fd[1], &got, sizeof(got));
       _exit(n == sizeof(got) ? 0 : 1);
@@ -117,6 +122,7 @@ int main(int argc, char** argv) {
   options.prefix = dds.prefix;
   options.mode = turf::TimeMode::kFreeRunning;
   options.duration = seconds;
+  if (!security.empty()) options.security = security + "/sim";
   turf::SimNode node(std::move(*loaded.scene), options);
   if (subscribe) std::this_thread::sleep_for(std::chrono::seconds(2));  // discovery
   const auto t0 = std::chrono::steady_clock::now();
@@ -136,16 +142,17 @@ int main(int argc, char** argv) {
       usage.ru_utime.tv_sec + usage.ru_utime.tv_usec * 1e-6 + usage.ru_stime.tv_sec + usage.ru_stime.tv_usec * 1e-6;
   const auto stats = node.Stats();
   if (header) {
-    std::printf("| %-20s | %6s | %-22s | %6s | %7s | %6s | %8s | %9s |\n", "scene", "robots", "client process", "sim s",
+    std::printf("| %-34s | %6s | %-22s | %6s | %7s | %6s | %8s | %9s |\n", "scene", "robots", "client process", "sim s",
                 "wall s", "RTF", "sim CPU", "peak MiB");
-    std::printf("|%s|%s|%s|%s|%s|%s|%s|%s|\n", std::string(22, '-').c_str(), std::string(8, '-').c_str(),
+    std::printf("|%s|%s|%s|%s|%s|%s|%s|%s|\n", std::string(36, '-').c_str(), std::string(8, '-').c_str(),
                 std::string(24, '-').c_str(), std::string(8, '-').c_str(), std::string(9, '-').c_str(),
                 std::string(8, '-').c_str(), std::string(10, '-').c_str(), std::string(11, '-').c_str());
   }
-  const std::string name = scene_path.substr(scene_path.find_last_of('/') + 1);
+  std::string name = scene_path.substr(scene_path.find_last_of('/') + 1);
+  if (!security.empty()) name += ", " + security.substr(security.find_last_of('/') + 1);
   const std::string client =
       !subscribe ? "none" : fmt::format("{} {}/{}", drive ? "drive" : "listen", got.states, got.frames);
-  std::printf("| %-20s | %6d | %-22s | %6.1f | %7.2f | %5.1fx | %7.2fs | %9.1f |\n", name.c_str(), on_field,
+  std::printf("| %-34s | %6d | %-22s | %6.1f | %7.2f | %5.1fx | %7.2fs | %9.1f |\n", name.c_str(), on_field,
               client.c_str(), stats.sim_time_ns * 1e-9, wall, stats.sim_time_ns * 1e-9 / wall, cpu,
               usage.ru_maxrss / 1024.0);
   return 0;
