@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -188,6 +189,30 @@ TEST(LaunchPlan, OnlyAndBadOverrides) {
   bad.start_discovery_server = true;
   plan = BuildPlan(*r.profile, bad, kLauncherDir);
   EXPECT_EQ(plan.errors.size(), 6u);
+}
+
+// --security DIR: each process runs as its identity (programs.h), the viewer as the operator; not with a
+// discovery server (it would be an unauthenticated participant).
+TEST(LaunchPlan, SecurityGivesEachProcessItsIdentity) {
+  const ProfileLoadResult r = LoadLaunchProfile("ssl_div_a", DefaultProfileDir());
+  ASSERT_TRUE(r.profile.has_value());
+  LaunchOverrides o;
+  o.security = "/sec";
+  LaunchPlan plan = BuildPlan(*r.profile, o, kLauncherDir);
+  ASSERT_TRUE(plan.errors.empty()) << plan.errors[0];
+  std::map<std::string, std::string> expected = {{"sim", "sim"},
+                                                 {"grsim", "grsim-bridge"},
+                                                 {"vision", "vision-bridge"},
+                                                 {"simproto", "simproto-bridge"},
+                                                 {"viewer", "operator"}};
+  ASSERT_EQ(plan.commands.size(), expected.size());
+  for (const ProcessCommand& c : plan.commands)
+    EXPECT_NE(Args(c).find("--security /sec/" + expected.at(c.name) + " "), std::string::npos) << Args(c);
+
+  o.discovery_server = "10.1.2.3:11811";
+  plan = BuildPlan(*r.profile, o, kLauncherDir);
+  ASSERT_EQ(plan.errors.size(), 1u);
+  EXPECT_NE(plan.errors[0].find("--security with a discovery server"), std::string::npos) << plan.errors[0];
 }
 
 TEST(LaunchPlan, BinariesAreFoundInTheBuildTree) {
