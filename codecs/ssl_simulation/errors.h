@@ -52,6 +52,8 @@ inline constexpr char kNoReply[] = "TURF_NO_REPLY";
 inline constexpr char kSimNotAvailable[] = "TURF_SIM_NOT_AVAILABLE";
 // A sync request while synchronous mode is off: whoever starts the match enables it (it stops vision for all).
 inline constexpr char kSyncDisabled[] = "TURF_SYNC_DISABLED";
+// The sender's address is not on the port's source allowlist (--blue-allow, --yellow-allow, --operator-allow).
+inline constexpr char kNotAllowed[] = "TURF_NOT_ALLOWED";
 
 struct SimError {
   std::string code;

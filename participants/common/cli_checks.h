@@ -6,7 +6,11 @@
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
+
+#include "participants/common/address_allowlist.h"
 
 namespace turf {
 
@@ -32,6 +36,28 @@ inline CLI::Option* AddPortOption(CLI::App& app, const std::string& name, uint16
           name, [&port](int value) { port = static_cast<uint16_t>(value); }, help)
       ->default_str(std::to_string(port))
       ->check(CLI::Range(zero_allowed ? 0 : 1, 65535));
+}
+
+// An allowlist entry, "ADDR" or "ADDR/PREFIX" (address_allowlist.h); `ipv4_only` for ports that listen on IPv4
+// (an IPv6 entry there would never match, so it is refused rather than ignored).
+inline CLI::Validator AddressRangeCheck(bool ipv4_only) {
+  return CLI::Validator(
+      [ipv4_only](std::string& text) -> std::string {
+        std::string error;
+        const std::optional<AddressRange> range = ParseAddressRange(text, &error);
+        if (!range) return error;
+        if (ipv4_only && range->v6) return "'" + text + "': these ports listen on IPv4; give an IPv4 address[/prefix]";
+        return "";
+      },
+      "");
+}
+
+// A repeatable source allowlist flag of the SSL bridges' UDP ports (source_gate.h): IPv4 ranges, default anyone.
+inline CLI::Option* AddAllowOption(CLI::App& app, const std::string& name, std::vector<std::string>& entries,
+                                   const std::string& help) {
+  return app.add_option(name, entries, help + "; repeatable; default: anyone (no check)")
+      ->type_name("ADDR[/PREFIX]")
+      ->check(AddressRangeCheck(/*ipv4_only=*/true));
 }
 
 }  // namespace turf

@@ -33,12 +33,20 @@ constexpr const char* kTeamName[2] = {"blue", "yellow"};
 
 }  // namespace
 
+std::array<SourceGate*, 2> GatesFor(const grsim::GrsimRequests& requests, SourceGates& gates) {
+  std::array<SourceGate*, 2> out{};
+  if (requests.command_team) out[0] = &gates.team(static_cast<int>(*requests.command_team));
+  if (!requests.controls.empty()) out[1] = &gates.operators;
+  return out;
+}
+
 class GrsimBridge::Impl {
  public:
   explicit Impl(GrsimBridgeOptions options)
       : options_(CheckedOptions(std::move(options))),
         codec_(options_.codec),
         socket_(BindSocket(options_)),
+        gates_(options_.allow),
         participant_(DdsOptions(options_)),
         command_writers_{participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue),
                          participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow)},
@@ -78,6 +86,7 @@ class GrsimBridge::Impl {
     GrsimBridgeStats s;
     s.datagrams = datagrams_.load();
     s.refused = refused_.load();
+    s.not_allowed = gates_.refused();
     s.commands = commands_.load();
     s.controls = controls_.load();
     s.status_packets = status_packets_.load();
@@ -117,6 +126,10 @@ class GrsimBridge::Impl {
       Reject(grsim::GrsimErrorName(r.error), "from " + d.from.ToString() + ": " + r.detail);
       return;
     }
+    if (!Admitted(r.requests, d.from)) {
+      refused_.fetch_add(1);
+      return;
+    }
     if (r.requests.command_team) {
       const int team = static_cast<int>(*r.requests.command_team);
       SetStatusAddress(team, d.from);
@@ -126,6 +139,13 @@ class GrsimBridge::Impl {
     for (idl::SimControl& c : r.requests.controls)
       control_.Send(std::move(c), kReplyTimeout, [this](const dds::ControlOutcome& o) { OnReply(o); });
     controls_.fetch_add(r.requests.controls.size());
+  }
+
+  // The sender passes every list the packet needs (GatesFor); a refusal is counted and logged by its gate.
+  bool Admitted(const grsim::GrsimRequests& requests, const UdpEndpoint& from) {
+    for (SourceGate* gate : GatesFor(requests, gates_))
+      if (gate != nullptr && !gate->Admit(from, rejects_)) return false;
+    return true;
   }
 
   void SetStatusAddress(int team, const UdpEndpoint& from) {
@@ -211,7 +231,8 @@ class GrsimBridge::Impl {
                  codec_.max_datagram_size);
     spdlog::info("robot status to each team's last command sender, ports {} (blue) and {} (yellow)",
                  options_.blue_status_port, options_.yellow_status_port);
-    spdlog::info("DDS domain {}, QoS profiles {}", options_.domain, participant_.options().qos_file);
+    gates_.ReportStartup("replacement");
+    spdlog::info("{}", participant_.Describe());
     spdlog::info("publishing {}, {}, {}", name(dds::Topic::kSslCommandBlue), name(dds::Topic::kSslCommandYellow),
                  name(dds::Topic::kControl));
     spdlog::info("subscribing {}, {}, {} (latched), {}", name(dds::Topic::kSslFeedbackBlue),
@@ -236,13 +257,14 @@ class GrsimBridge::Impl {
     const GrsimBridgeStats s = Stats();
     if (s.datagrams == reported_datagrams_) return;
     reported_datagrams_ = s.datagrams;
-    spdlog::info("datagrams={} refused={} commands={} replacements={} status_packets={}", s.datagrams, s.refused,
-                 s.commands, s.controls, s.status_packets);
+    spdlog::info("datagrams={} refused={} not_allowed={} commands={} replacements={} status_packets={}", s.datagrams,
+                 s.refused, s.not_allowed, s.commands, s.controls, s.status_packets);
   }
 
   GrsimBridgeOptions options_;
   grsim::GrsimCodecConfig codec_;
   UdpSocket socket_;
+  SourceGates gates_;
   uint16_t port_ = 0;
   dds::Participant participant_;
   std::unique_ptr<dds::Writer<idl::SslRobotCommandPubSubType>> command_writers_[2];

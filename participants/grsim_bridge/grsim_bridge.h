@@ -21,12 +21,18 @@
 // control request per replacement; status on change. No watchdog here: teams
 // are independent, and turf-sim's watchdog is per robot.
 // Flags (main.cpp, --help): --listen, --port, --blue-status-port,
-// --yellow-status-port, --domain, --prefix, --qos, --robots-per-team,
-// --wheel-radius, --wheel-order, --dribbler-rpm, --max-datagram, --log-level.
+// --yellow-status-port, --blue-allow, --yellow-allow, --operator-allow, --domain,
+// --prefix, --qos, --robots-per-team, --wheel-radius, --wheel-order,
+// --dribbler-rpm, --max-datagram, --log-level.
 // A refused datagram (see GrsimError) is dropped whole, counted per kind and
-// logged at a limited rate; turf-sim never hears of it.
+// logged at a limited rate; turf-sim never hears of it. So is one whose sender
+// the source allowlists (participants/common/source_gate.h) do not allow: its
+// commands' team's list, and for a replacement the operator list ("blue.not_allowed",
+// "yellow.not_allowed", "operator.not_allowed"); nothing of it moves, and it does
+// not redirect that team's robot status.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -35,6 +41,7 @@
 #include "codecs/grsim/grsim_codec.h"
 #include "core/pinned.h"
 #include "participants/common/participant_options.h"
+#include "participants/common/source_gate.h"
 
 namespace turf {
 
@@ -46,11 +53,17 @@ struct GrsimBridgeOptions : ParticipantOptions {
   uint16_t blue_status_port = 30011;
   uint16_t yellow_status_port = 30012;
   grsim::GrsimCodecConfig codec;  // until ssl/field arrives
+  SourceAllowlists allow;         // who may command each team, who may replace (empty: anyone)
 };
+
+// The allowlists a decoded packet must pass (null: none): its commands' team's, then the operator's when it
+// replaces the ball or robots. A packet one of them refuses is refused whole. Pure.
+std::array<SourceGate*, 2> GatesFor(const grsim::GrsimRequests& requests, SourceGates& gates);
 
 struct GrsimBridgeStats {
   uint64_t datagrams = 0;       // received
   uint64_t refused = 0;         // datagrams refused, every kind
+  uint64_t not_allowed = 0;     // of those, refused for their source (the allowlists)
   uint64_t commands = 0;        // robot commands published
   uint64_t controls = 0;        // teleport requests published
   uint64_t status_packets = 0;  // Robots_Status sent
@@ -69,7 +82,7 @@ class GrsimBridge : Pinned {
   void Run(const std::function<bool()>& stop);
   uint16_t port() const;  // the UDP port it listens on
   GrsimBridgeStats Stats() const;
-  // Refusals of one kind: a GrsimErrorName, "control_rejected" (turf-sim refused a teleport) or
+  // Refusals of one kind: a GrsimErrorName, "<list>.not_allowed", "control_rejected" (turf-sim refused a teleport) or
   // "control_unanswered" (no turf-sim, or no reply within 10 s).
   uint64_t Rejected(const std::string& kind) const;
 

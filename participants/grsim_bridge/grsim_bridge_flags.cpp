@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <utility>
 
+#include "participants/common/cli_checks.h"
+
 namespace turf {
 
 void AddGrsimBridgeFlags(ParticipantMain& participant, GrsimBridgeOptions& options, std::vector<int>& wheel_order) {
@@ -17,6 +19,14 @@ void AddGrsimBridgeFlags(ParticipantMain& participant, GrsimBridgeOptions& optio
        {std::pair{"blue", &options.blue_status_port}, {"yellow", &options.yellow_status_port}})
     participant.AddPort(fmt::format("--{}-status-port", team), *port,
                         fmt::format("Robots_Status for {0} goes to the {0} command sender's IP on this port", team));
+  AddAllowOption(app, "--blue-allow", options.allow.blue,
+                 "a packet commanding blue robots is taken only from this IPv4 address or range (else refused whole, "
+                 "counted, logged)");
+  AddAllowOption(app, "--yellow-allow", options.allow.yellow,
+                 "a packet commanding yellow robots is taken only from this IPv4 address or range");
+  AddAllowOption(app, "--operator-allow", options.allow.operators,
+                 "a packet with a replacement (moves the ball and robots) is taken only from this IPv4 address or "
+                 "range");
   participant.AddCommonFlags(options, {"DDS domain id", "topic name prefix (the one turf-sim uses)"});
   app.add_option("--robots-per-team", codec.robots_per_team,
                  "ids 0..N-1 are accepted until turf-sim's ssl/field says otherwise")

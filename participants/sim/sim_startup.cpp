@@ -154,6 +154,7 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
                               ->expected(0, 1)
                               ->type_name("[ADDRESS]");
   AddSimprotoPortFlags(app, sp, "simproto-", "with --simproto: ");
+  AddSimprotoAllowFlags(app, sp, "simproto-", "with --simproto: ");
 
   // SimSpark agents and monitors in this process (sim_host.h): the same ports as turf-simspark-bridge.
   SimSparkBridgeOptions& ss = command_line.simspark_options;

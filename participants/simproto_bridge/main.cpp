@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   participant.AddCommonFlags(options);
   app.add_option("--listen", options.listen, "IPv4 address the UDP ports bind to")->capture_default_str();
   turf::AddSimprotoPortFlags(app, options);
+  turf::AddSimprotoAllowFlags(app, options);
   app.add_option("--reply-timeout-ms", reply_timeout_ms, "how long to wait for turf-sim's reply to a request")
       ->capture_default_str()
       ->check(CLI::Range(10, 60000));

@@ -56,7 +56,7 @@ const sp::SimError kSyncDisabled{sp::kSyncDisabled,
 class SimprotoBridge::Impl {
  public:
   Impl(SimprotoBridgeOptions options, dds::Bus* bus)
-      : options_(std::move(options)), link_(MakeLink(options_, bus)), rejects_("datagram") {
+      : options_(std::move(options)), link_(MakeLink(options_, bus)), gates_(options_.allow), rejects_("datagram") {
     if (!MakeEndpoint(options_.listen, 0))
       throw std::invalid_argument("--listen is not an IPv4 address: " + options_.listen);
     if (!MakeEndpoint(options_.sync_listen, 0))
@@ -68,7 +68,8 @@ class SimprotoBridge::Impl {
       const std::string& ip = static_cast<Kind>(k) == Kind::kSync ? options_.sync_listen : options_.listen;
       std::optional<UdpSocket> s = UdpSocket::Bind(ip, ports[k], false, &error);
       if (!s) throw std::runtime_error(std::string("cannot bind the ") + kKindNames[k] + " port: " + error);
-      sockets_.push_back({static_cast<Kind>(k), std::move(*s)});
+      const auto kind = static_cast<Kind>(k);
+      sockets_.push_back({kind, std::move(*s), &Gate(kind), fmt::format("{}.not_allowed", Name(kind))});
     }
   }
 
@@ -86,8 +87,8 @@ class SimprotoBridge::Impl {
         next_status += 10s;
         const SimprotoBridgeStats s = Stats();
         if (s.datagrams != last.datagrams)
-          spdlog::info("datagrams={} answered={} commands={} requests={} refused={}", s.datagrams, s.answered,
-                       s.commands, s.requests, s.rejected);
+          spdlog::info("datagrams={} answered={} commands={} requests={} refused={} not_allowed={}", s.datagrams,
+                       s.answered, s.commands, s.requests, s.rejected, s.not_allowed);
         last = s;
       }
     }
@@ -96,7 +97,9 @@ class SimprotoBridge::Impl {
   }
 
   SimprotoBridgeStats Stats() const {
-    return {datagrams_.load(), answered_.load(), commands_.load(), requests_.load(), rejects_.Total()};
+    SimprotoBridgeStats s{datagrams_.load(), answered_.load(), commands_.load(), requests_.load(), rejects_.Total()};
+    s.not_allowed = gates_.refused();
+    return s;
   }
 
   uint64_t Rejected(const std::string& kind) const { return rejects_.Count(kind); }
@@ -105,7 +108,16 @@ class SimprotoBridge::Impl {
   struct Socket {
     Kind kind;
     UdpSocket socket;
+    SourceGate* gate;         // who may send to it
+    std::string not_allowed;  // the refusal kind of a sender the gate does not allow
   };
+
+  // The team ports' own team's list; control and sync (teleports, speed, steps) the operators'.
+  SourceGate& Gate(Kind kind) {
+    if (kind == Kind::kBlue) return gates_.blue;
+    if (kind == Kind::kYellow) return gates_.yellow;
+    return gates_.operators;
+  }
 
   void Serve(Socket& s) {
     while (!stopping_.load()) {
@@ -113,26 +125,45 @@ class SimprotoBridge::Impl {
       if (!d) continue;
       ++datagrams_;
       std::vector<uint8_t> answer;
-      switch (s.kind) {
-        case Kind::kControl:
-          answer = HandleControl(*d);
-          break;
-        case Kind::kBlue:
-          answer = HandleTeam(sp::Port::kBlue, Kind::kBlue, *d);
-          break;
-        case Kind::kYellow:
-          answer = HandleTeam(sp::Port::kYellow, Kind::kYellow, *d);
-          break;
-        case Kind::kSync:
-          answer = HandleSync(*d);
-          break;
-      }
+      if (!s.gate->Admit(d->from, rejects_, s.not_allowed))
+        answer = NotAllowed(s.kind);
+      else
+        answer = Handle(s.kind, *d);
       std::string error;
       if (s.socket.SendTo(answer, d->from, &error))
         ++answered_;
       else
         Reject(fmt::format("{}.send_failed", Name(s.kind)), error);
     }
+  }
+
+  std::vector<uint8_t> Handle(Kind kind, const Datagram& d) {
+    switch (kind) {
+      case Kind::kControl:
+        return HandleControl(d);
+      case Kind::kBlue:
+        return HandleTeam(sp::Port::kBlue, Kind::kBlue, d);
+      case Kind::kYellow:
+        return HandleTeam(sp::Port::kYellow, Kind::kYellow, d);
+      case Kind::kSync:
+        return HandleSync(d);
+    }
+    return {};
+  }
+
+  // The answer to a sender the port's allowlist refuses: nothing decoded, nothing done.
+  static std::vector<uint8_t> NotAllowed(Kind kind) {
+    const sp::SimError error{sp::kNotAllowed, "this address is not on the port's allowlist"};
+    switch (kind) {
+      case Kind::kControl:
+        return sp::EncodeSimulatorResponse({error});
+      case Kind::kBlue:
+      case Kind::kYellow:
+        return sp::EncodeRobotControlResponse({}, {}, {error});
+      case Kind::kSync:
+        return sp::EncodeSyncResponse({}, idl::SslField(), {}, {}, {error});
+    }
+    return {};
   }
 
   // --- Ports ---
@@ -290,6 +321,7 @@ class SimprotoBridge::Impl {
   }
 
   void ReportStartup() const {
+    gates_.ReportStartup("control and sync");
     for (const Socket& s : sockets_)
       spdlog::info("{} port {}:{}: {}", Name(s.kind), options_.listen, s.socket.LocalPort(),
                    kKindMessages[static_cast<int>(s.kind)]);
@@ -339,6 +371,7 @@ class SimprotoBridge::Impl {
   std::atomic<uint64_t> answered_{0};
   std::atomic<uint64_t> commands_{0};
   std::atomic<uint64_t> requests_{0};
+  SourceGates gates_;
   RejectLog rejects_;
 };
 

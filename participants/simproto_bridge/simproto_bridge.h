@@ -34,6 +34,11 @@
 //   clock          Clock             physics step and time mode (sync mode)
 //   world_state    WorldState        current poses, for teleports with absent fields
 //   ssl/camera     CameraFrame       detections for sync responses
+// Source allowlists (participants/common/source_gate.h; none given: anyone): the
+// blue port takes datagrams only from `allow.blue`, the yellow port from
+// `allow.yellow`, the control and sync ports (teleports, speed, steps) from
+// `allow.operators`. Others are answered TURF_NOT_ALLOWED and change nothing,
+// counted ("<port>.not_allowed", Stats().not_allowed) and logged at a limited rate.
 // Until turf-sim's field and world state have arrived, every datagram is
 // answered with TURF_SIM_NOT_AVAILABLE. Bad datagrams are counted per kind
 // ("<port>.<error>", e.g. "blue.not_finite"), logged at a limited rate and
@@ -48,6 +53,7 @@
 
 #include "core/pinned.h"
 #include "participants/common/participant_options.h"
+#include "participants/common/source_gate.h"
 
 namespace turf::dds {
 class Bus;
@@ -67,19 +73,21 @@ struct SimprotoBridgeOptions : ParticipantOptions {
   bool sync = false;
   std::string sync_listen = "127.0.0.1";          // the sync port's address (localhost unless told)
   std::chrono::milliseconds reply_timeout{2000};  // for turf-sim's control replies
+  SourceAllowlists allow;                         // who may use the team ports, control and sync (empty: anyone)
 };
 
 struct SimprotoBridgeStats {
-  uint64_t datagrams = 0;  // received on every port
-  uint64_t answered = 0;   // responses sent
-  uint64_t commands = 0;   // robot commands published (team ports and sync steps)
-  uint64_t requests = 0;   // control requests sent to turf-sim
-  uint64_t rejected = 0;   // refusals of every kind
+  uint64_t datagrams = 0;    // received on every port
+  uint64_t answered = 0;     // responses sent
+  uint64_t commands = 0;     // robot commands published (team ports and sync steps)
+  uint64_t requests = 0;     // control requests sent to turf-sim
+  uint64_t rejected = 0;     // refusals of every kind
+  uint64_t not_allowed = 0;  // of those, datagrams refused for their source (the allowlists)
 };
 
 class SimprotoBridge : Pinned {
  public:
-  // Throws std::invalid_argument for a bad address, std::runtime_error if a
+  // Throws std::invalid_argument for a bad address or allowlist entry, std::runtime_error if a
   // port cannot be bound or the DDS participant cannot be created.
   explicit SimprotoBridge(SimprotoBridgeOptions options);
   // On `bus` instead of a participant of its own (the options' domain, prefix and QoS file are not used): a

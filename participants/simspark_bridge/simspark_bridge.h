@@ -34,14 +34,17 @@
 #include <vector>
 
 #include "core/pinned.h"
+#include "participants/common/address_allowlist.h"
 #include "participants/common/participant_options.h"
-#include "participants/simspark_bridge/operator_allowlist.h"
 
 namespace turf::dds {
 class Bus;
 }  // namespace turf::dds
 
 namespace turf {
+
+// The default operators: this machine only (the loopback ranges).
+inline const std::vector<std::string> kDefaultOperatorAllow = {"127.0.0.0/8", "::1"};
 
 struct SimSparkBridgeOptions : ParticipantOptions {
   SimSparkBridgeOptions() { name = "turf-simspark-bridge"; }
@@ -57,7 +60,7 @@ struct SimSparkBridgeOptions : ParticipantOptions {
   size_t max_clients = 64;
   size_t max_unsent = 1 << 20;  // bytes a client may leave unread before it is dropped
   double duration = 0.0;        // stop after this many simulated seconds (0: run until stopped)
-  // Operators' addresses, "ADDR" or "ADDR/PREFIX" (operator_allowlist.h); empty: nobody.
+  // Operators' addresses, "ADDR" or "ADDR/PREFIX" (participants/common/address_allowlist.h); empty: nobody.
   std::vector<std::string> operator_allow = kDefaultOperatorAllow;
 };
 

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "participants/simspark_bridge/operator_allowlist.h"
+#include "participants/common/cli_checks.h"
 #include "participants/simspark_bridge/simspark_bridge.h"
 
 namespace turf {
@@ -14,12 +14,6 @@ namespace turf {
 // `prefix` goes before the flag's name ("simspark-"), `help_prefix` before its help ("with --simspark: ").
 inline void AddSimSparkOperatorFlag(CLI::App& app, SimSparkBridgeOptions& o, const std::string& prefix = "",
                                     const std::string& help_prefix = "") {
-  const CLI::Validator range(
-      [](std::string& text) {
-        std::string error;
-        return ParseAddressRange(text, &error) ? std::string() : error;
-      },
-      "");
   app.add_option("--" + prefix + "operator-allow", o.operator_allow,
                  help_prefix +
                      "a monitor-port client from this IPv4/IPv6 address or range is an operator, who alone may send "
@@ -27,7 +21,7 @@ inline void AddSimSparkOperatorFlag(CLI::App& app, SimSparkBridgeOptions& o, con
                      "score, turfResetTeam, playMode BeforeKickOff/KickOff_*/GameOver); repeatable; given, it "
                      "replaces the default (this machine)")
       ->type_name("ADDR[/PREFIX]")
-      ->check(range)
+      ->check(AddressRangeCheck(/*ipv4_only=*/false))
       ->capture_default_str();
 }
 

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <functional>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <thread>
 
 #include "codecs/proto/grsim.pb.h"
@@ -38,30 +40,33 @@ constexpr double kBallRadius = 0.0215;  // m
 // turf-sim (scaled x2) and the bridge, each on its thread.
 class Stack {
  public:
-  Stack(Scene scene, const dds::ParticipantOptions& dds, uint16_t blue_status_port, uint16_t yellow_status_port)
+  Stack(Scene scene, const dds::ParticipantOptions& dds, uint16_t blue_status_port, uint16_t yellow_status_port,
+        const SourceAllowlists& allow)
       : sim_(std::move(scene), dds, TimeMode::kScaled, 2.0),
-        bridge_(MakeBridge(dds, blue_status_port, yellow_status_port)) {}
+        bridge_(MakeBridge(dds, blue_status_port, yellow_status_port, allow)) {}
   SimNode& sim() { return sim_.node(); }
   GrsimBridge& bridge() { return bridge_.node(); }
 
  private:
   static std::unique_ptr<GrsimBridge> MakeBridge(const dds::ParticipantOptions& dds, uint16_t blue_status_port,
-                                                 uint16_t yellow_status_port) {
+                                                 uint16_t yellow_status_port, const SourceAllowlists& allow) {
     auto b = test::OnDds<GrsimBridgeOptions>(dds);
     b.listen_ip = "127.0.0.1";
     b.port = 0;  // any free port
     b.blue_status_port = blue_status_port;
     b.yellow_status_port = yellow_status_port;
+    b.allow = allow;
     return std::make_unique<GrsimBridge>(b);
   }
   test::SimUnderTest sim_;
   test::OnThread<GrsimBridge> bridge_;
 };
 
-// A grSim client: sends packets to the bridge, receives robot status.
+// A grSim client: sends packets to the bridge (from `ip`, a loopback address), receives robot status.
 class Team {
  public:
-  Team() : out_(test::BindLoopback()), blue_status_(test::BindLoopback()), yellow_status_(test::BindLoopback()) {}
+  explicit Team(const std::string& ip = "127.0.0.1")
+      : out_(Bind(ip)), blue_status_(test::BindLoopback()), yellow_status_(test::BindLoopback()) {}
   uint16_t blue_status_port() const { return blue_status_.LocalPort(); }
   uint16_t yellow_status_port() const { return yellow_status_.LocalPort(); }
   void Connect(uint16_t bridge_port) { to_ = *MakeEndpoint("127.0.0.1", bridge_port); }
@@ -84,6 +89,12 @@ class Team {
   }
 
  private:
+  static UdpSocket Bind(const std::string& ip) {
+    std::string error;
+    std::optional<UdpSocket> s = UdpSocket::Bind(ip, 0, false, &error);
+    if (!s) throw std::runtime_error(error);
+    return std::move(*s);
+  }
   UdpSocket out_, blue_status_, yellow_status_;
   UdpEndpoint to_;
 };
@@ -126,9 +137,9 @@ class Observer {
 
 // Everything a test needs, started and matched.
 struct Fixture {
-  explicit Fixture(Scene scene)
+  explicit Fixture(Scene scene, const SourceAllowlists& allow = {})
       : dds(test::UniqueDds("observer")),
-        stack(std::move(scene), dds, team.blue_status_port(), team.yellow_status_port()),
+        stack(std::move(scene), dds, team.blue_status_port(), team.yellow_status_port(), allow),
         observer(dds) {
     team.Connect(stack.bridge().port());
   }
@@ -305,6 +316,66 @@ TEST(GrsimBridge, BadDatagramsChangeNothing) {
   ASSERT_TRUE(
       f.observer.Wait([](const idl::WorldState& s) { return FindRobot(s, idl::TEAM_BLUE, 0)->position().x() > 0.05; },
                       5s, [&] { f.team.Send(GrsimCommands(false, {GrsimRobot(0, 1.0f)})); }));
+}
+
+// Source allowlists (--blue-allow, --yellow-allow, --operator-allow): from 127.0.0.2, which none of them holds,
+// commands for either team and a replacement move nothing and are counted; the same packets from 127.0.0.1 move.
+TEST(GrsimBridge, ASenderNotOnTheAllowlistsMovesNothing) {
+  const SourceAllowlists allow{{"127.0.0.1/32"}, {"127.0.0.1/32"}, {"127.0.0.1/32"}};
+  Fixture f(test::Teams(1), allow);  // blue 0 at (-1, -3.5), yellow 0 at (1, -3.5)
+  ASSERT_TRUE(f.Ready());
+  ASSERT_TRUE(f.observer.Wait([](const idl::WorldState&) { return true; }));
+  const idl::WorldState before = f.observer.state();
+  Team stranger("127.0.0.2");
+  stranger.Connect(f.stack.bridge().port());
+  wire::grSim_Packet ball;
+  ball.mutable_replacement()->mutable_ball()->set_x(1.5);
+  ball.mutable_replacement()->mutable_ball()->set_y(1.5);
+  constexpr uint64_t kRounds = 5;
+  for (uint64_t i = 0; i < kRounds; ++i) {
+    stranger.Send(GrsimCommands(false, {GrsimRobot(0, 1.0f)}));
+    stranger.Send(GrsimCommands(true, {GrsimRobot(0, 0.0f, 1.0f)}));
+    stranger.Send(ball);
+  }
+  // Positive marker: every stranger's packet refused, then the allowed operator's replacement shows in the world
+  // (turf-sim takes requests in order).
+  GrsimBridge& bridge = f.stack.bridge();
+  ASSERT_TRUE(f.observer.Wait([&](const idl::WorldState&) {
+    return bridge.Rejected("blue.not_allowed") == kRounds && bridge.Rejected("yellow.not_allowed") == kRounds &&
+           bridge.Rejected("operator.not_allowed") == kRounds;
+  })) << "blue "
+      << bridge.Rejected("blue.not_allowed") << ", yellow " << bridge.Rejected("yellow.not_allowed") << ", operator "
+      << bridge.Rejected("operator.not_allowed");
+  wire::grSim_Packet marker;
+  marker.mutable_replacement()->mutable_ball()->set_x(-0.5);
+  marker.mutable_replacement()->mutable_ball()->set_y(0.25);
+  f.team.Send(marker);
+  ASSERT_TRUE(f.observer.Wait([](const idl::WorldState& s) {
+    return std::abs(s.ball().position().x() + 0.5) < 1e-3 && std::abs(s.ball().position().y() - 0.25) < 1e-3;
+  }));
+  // Half a simulated second more for any command that got through to show.
+  const int64_t t0 = f.observer.state().sim_time_ns();
+  ASSERT_TRUE(f.observer.Wait([&](const idl::WorldState& s) { return s.sim_time_ns() - t0 > 500'000'000; }));
+  for (const idl::Team team : {idl::TEAM_BLUE, idl::TEAM_YELLOW}) {
+    const idl::RobotState* now = FindRobot(f.observer.state(), team, 0);
+    const idl::RobotState* then = FindRobot(before, team, 0);
+    EXPECT_DOUBLE_EQ(now->position().x(), then->position().x()) << static_cast<int>(team);
+    EXPECT_DOUBLE_EQ(now->position().y(), then->position().y()) << static_cast<int>(team);
+  }
+  const GrsimBridgeStats s = bridge.Stats();
+  EXPECT_EQ(s.commands, 0u);
+  EXPECT_EQ(s.controls, 1u);  // the marker's
+  EXPECT_EQ(s.not_allowed, 3 * kRounds);
+  EXPECT_EQ(s.refused, 3 * kRounds);
+
+  // The allowed sender's commands move its robot.
+  ASSERT_TRUE(f.observer.Wait(
+      [&](const idl::WorldState& w) {
+        return FindRobot(w, idl::TEAM_BLUE, 0)->position().x() - FindRobot(before, idl::TEAM_BLUE, 0)->position().x() >
+               0.05;
+      },
+      5s, [&] { f.team.Send(GrsimCommands(false, {GrsimRobot(0, 1.0f)})); }));
+  EXPECT_EQ(bridge.Stats().not_allowed, 3 * kRounds);
 }
 
 }  // namespace

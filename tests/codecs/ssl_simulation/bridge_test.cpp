@@ -12,6 +12,8 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <stdexcept>
+#include <string>
 #include <thread>
 
 #include "codecs/proto/ssl_simulation.pb.h"
@@ -42,14 +44,16 @@ uint16_t FreePort() { return static_cast<uint16_t>(test::FreePort()); }
 // turf-sim's node and the bridge, each on a thread of its own.
 class Stack {
  public:
-  Stack(Scene scene, const dds::ParticipantOptions& dds, TimeMode mode, double speed = 1.0, bool allow_sync = true)
-      : sim_(std::move(scene), dds, mode, speed), bridge_(MakeBridge(dds, allow_sync)) {}
+  Stack(Scene scene, const dds::ParticipantOptions& dds, TimeMode mode, double speed = 1.0, bool allow_sync = true,
+        const SourceAllowlists& allow = {})
+      : sim_(std::move(scene), dds, mode, speed), bridge_(MakeBridge(dds, allow_sync, allow)) {}
   SimNode& sim() { return sim_.node(); }
   SimprotoBridge& bridge() { return bridge_.node(); }
   uint16_t control = 0, blue = 0, yellow = 0, sync = 0;
 
  private:
-  std::unique_ptr<SimprotoBridge> MakeBridge(const dds::ParticipantOptions& dds, bool allow_sync) {
+  std::unique_ptr<SimprotoBridge> MakeBridge(const dds::ParticipantOptions& dds, bool allow_sync,
+                                             const SourceAllowlists& allow) {
     auto bo = test::OnDds<SimprotoBridgeOptions>(dds);
     bo.listen = "127.0.0.1";
     bo.control_port = control = FreePort();
@@ -57,16 +61,17 @@ class Stack {
     bo.yellow_port = yellow = FreePort();
     bo.sync_port = sync = FreePort();
     bo.sync = allow_sync;  // most tests here drive the match synchronously
+    bo.allow = allow;
     return std::make_unique<SimprotoBridge>(bo);
   }
   test::SimUnderTest sim_;
   test::OnThread<SimprotoBridge> bridge_;
 };
 
-// A team (or training loop) on UDP: one socket, request and answer.
+// A team (or training loop) on UDP: one socket (on `ip`, a loopback address), request and answer.
 class Team {
  public:
-  Team() : socket_(test::BindLoopback()) {}
+  explicit Team(const std::string& ip = "127.0.0.1") : socket_(Bind(ip)) {}
   // nullopt (and a failure) if there is no answer within `timeout`.
   std::optional<std::vector<uint8_t>> Ask(uint16_t port, const std::vector<uint8_t>& bytes,
                                           std::chrono::milliseconds timeout = 3s) {
@@ -104,13 +109,20 @@ class Team {
   }
 
  private:
+  static UdpSocket Bind(const std::string& ip) {
+    std::string error;
+    std::optional<UdpSocket> s = UdpSocket::Bind(ip, 0, false, &error);
+    if (!s) throw std::runtime_error(error);
+    return std::move(*s);
+  }
   UdpSocket socket_;
 };
 
 // turf-sim and the bridge, a team on UDP and a DDS observer of the world, on
 // the test's own domain and prefix.
 struct Rig {
-  Rig(Scene scene, TimeMode mode, double speed = 1.0) : stack(std::move(scene), dds, mode, speed), world(dds) {}
+  Rig(Scene scene, TimeMode mode, double speed = 1.0, const SourceAllowlists& allow = {})
+      : stack(std::move(scene), dds, mode, speed, /*allow_sync=*/true, allow), world(dds) {}
   // The bridge answers for turf-sim.
   bool Ready() { return team.WaitReady(stack.control); }
 
@@ -534,6 +546,72 @@ TEST(SimprotoBridge, SyncStepsOfASixtiethOfASecondReachOneSecondInSixtyRequests)
   const double forward = (moved.position().x() - start.position().x()) * std::cos(start.yaw()) +
                          (moved.position().y() - start.position().y()) * std::sin(start.yaw());
   EXPECT_GT(forward, 0.1);
+}
+
+// Source allowlists (--blue-allow, --yellow-allow, --operator-allow): from 127.0.0.2, which none holds, each port
+// answers TURF_NOT_ALLOWED and nothing moves, teleports or steps; from 127.0.0.1 the same requests work.
+TEST(SimprotoBridge, ASenderNotOnThePortsAllowlistMovesNothing) {
+  const SourceAllowlists allow{{"127.0.0.1/32"}, {"127.0.0.1/32"}, {"127.0.0.1/32"}};
+  Rig rig(test::Teams(1), TimeMode::kScaled, 2.0, allow);
+  ASSERT_TRUE(rig.Ready());  // the allowed operator's control port works
+  ASSERT_TRUE(rig.world.Wait([](auto&, auto&) { return true; }));
+  const idl::WorldState before = rig.world.state();
+  Team stranger("127.0.0.2");
+
+  ws::RobotControl forward;
+  AddLocal(&forward, 0, 1.0f);
+  ws::SimulatorCommand teleport;
+  teleport.mutable_control()->mutable_teleport_ball()->set_x(1.5f);
+  teleport.mutable_control()->mutable_teleport_ball()->set_y(1.5f);
+  ws::SimulationSyncRequest step;
+  step.set_sim_step(0.1f);
+  AddLocal(step.mutable_robot_control(), 0, 1.0f);
+  // Each answer is the positive marker that the bridge has handled (and refused) that datagram.
+  for (const uint16_t port : {rig.stack.blue, rig.stack.yellow}) {
+    ws::RobotControlResponse r;
+    ASSERT_TRUE(stranger.Ask(port, forward, &r));
+    EXPECT_TRUE(HasError(r.errors(), "TURF_NOT_ALLOWED")) << r.DebugString();
+    EXPECT_EQ(r.feedback_size(), 0);
+  }
+  ws::SimulatorResponse sr;
+  ASSERT_TRUE(stranger.Ask(rig.stack.control, teleport, &sr));
+  EXPECT_TRUE(HasError(sr.errors(), "TURF_NOT_ALLOWED")) << sr.DebugString();
+  ws::SimulationSyncResponse sync;
+  const auto answer = stranger.Ask(rig.stack.sync, SyncBytes(step));
+  ASSERT_TRUE(answer.has_value());
+  ASSERT_TRUE(sync.ParseFromArray(answer->data(), static_cast<int>(answer->size())));
+  EXPECT_TRUE(HasError(sync.robot_control_response().errors(), "TURF_NOT_ALLOWED")) << sync.DebugString();
+
+  // A later teleport from the allowed operator shows; half a simulated second more for anything else to show.
+  ASSERT_TRUE(BallMarker(rig.team, rig.stack.control, rig.world, -0.5f, 0.25f));
+  const int64_t t0 = rig.world.state().sim_time_ns();
+  ASSERT_TRUE(rig.world.Wait([&](const idl::WorldState& s, const idl::Clock&) {
+    return s.sim_time_ns() - t0 > 500'000'000;
+  })) << "turf-sim's time stopped; time mode "
+      << static_cast<int>(rig.world.clock().mode());
+  for (const idl::Team team : {idl::TEAM_BLUE, idl::TEAM_YELLOW}) {
+    EXPECT_DOUBLE_EQ(FindRobot(rig.world.state(), team, 0).position().x(), FindRobot(before, team, 0).position().x());
+    EXPECT_DOUBLE_EQ(FindRobot(rig.world.state(), team, 0).position().y(), FindRobot(before, team, 0).position().y());
+  }
+  EXPECT_EQ(rig.world.clock().mode(), idl::TIME_SCALED);  // the stranger's sync request did not switch to lockstep
+  SimprotoBridge& bridge = rig.stack.bridge();
+  for (const char* kind : {"blue.not_allowed", "yellow.not_allowed", "control.not_allowed", "sync.not_allowed"})
+    EXPECT_EQ(bridge.Rejected(kind), 1u) << kind;
+  EXPECT_EQ(bridge.Stats().not_allowed, 4u);
+  EXPECT_EQ(bridge.Stats().commands, 0u);
+  EXPECT_EQ(rig.stack.sim().Stats().rejected, 0u);  // nothing reached turf-sim
+
+  // The allowed team's commands move its robot.
+  ASSERT_TRUE(rig.world.Wait(
+      [&](const idl::WorldState& s, const idl::Clock&) {
+        ws::RobotControlResponse r;
+        EXPECT_TRUE(rig.team.Ask(rig.stack.blue, forward, &r));
+        EXPECT_EQ(r.errors_size(), 0) << r.DebugString();
+        return FindRobot(s, idl::TEAM_BLUE, 0).position().x() - FindRobot(before, idl::TEAM_BLUE, 0).position().x() >
+               0.05;
+      },
+      10s));
+  EXPECT_EQ(bridge.Stats().not_allowed, 4u);
 }
 
 }  // namespace

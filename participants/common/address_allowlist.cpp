@@ -1,4 +1,4 @@
-#include "participants/simspark_bridge/operator_allowlist.h"
+#include "participants/common/address_allowlist.h"
 
 #include <arpa/inet.h>
 
@@ -75,7 +75,7 @@ AddressAllowlist::AddressAllowlist(const std::vector<std::string>& entries) : en
   for (const std::string& entry : entries) {
     std::string error;
     const std::optional<AddressRange> range = ParseAddressRange(entry, &error);
-    if (!range) throw std::invalid_argument("operator allowlist: " + error);
+    if (!range) throw std::invalid_argument("allowlist: " + error);
     ranges_.push_back(*range);
   }
 }
@@ -85,6 +85,15 @@ bool AddressAllowlist::Allows(std::string_view address) const {
   if (!peer) return false;
   for (const AddressRange& range : ranges_)
     if (Contains(range, *peer)) return true;
+  return false;
+}
+
+bool AddressAllowlist::AllowsIpv4(uint32_t ip) const {
+  AddressRange peer;
+  peer.prefix = 32;
+  for (int i = 0; i < 4; ++i) peer.bytes[i] = static_cast<uint8_t>(ip >> (24 - 8 * i));
+  for (const AddressRange& range : ranges_)
+    if (Contains(range, peer)) return true;
   return false;
 }
 

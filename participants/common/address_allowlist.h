@@ -1,8 +1,6 @@
-// Which trainers are operators: the source addresses (IPv4 or IPv6 ranges)
-// whose trainer commands may end, restart or rewrite the match
-// (simspark::IsMatchControl). The monitor port answers anyone who can reach it;
-// without such a list one (killsim) from any host would end a match. Pure: no
-// sockets.
+// Source-address allowlists (IPv4 or IPv6 ranges), one home for every bridge: the SimSpark monitor port's
+// operators (who may end, restart or rewrite a match), and the SSL bridges' per-team and operator lists
+// (source_gate.h). Pure: no sockets.
 #pragma once
 
 #include <array>
@@ -13,9 +11,6 @@
 #include <vector>
 
 namespace turf {
-
-// The default: this machine only (the loopback ranges).
-inline const std::vector<std::string> kDefaultOperatorAllow = {"127.0.0.0/8", "::1"};
 
 // One range: "ADDR" (that address alone) or "ADDR/PREFIX" (PREFIX 0..32 for IPv4, 0..128 for IPv6).
 struct AddressRange {
@@ -35,6 +30,9 @@ class AddressAllowlist {
   // `address`: a peer as turf's TCP reports it, "ip:port" ("[ip]:port" for IPv6), or a bare ip. An address that
   // does not parse is not allowed.
   bool Allows(std::string_view address) const;
+  // An IPv4 address in host byte order (UdpEndpoint::ip()), without text on the way: the UDP bridges ask this per
+  // datagram.
+  bool AllowsIpv4(uint32_t ip) const;
   std::string Describe() const;  // the entries, comma-separated
 
  private:
