@@ -7,10 +7,12 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "participants/common/cli_checks.h"
 #include "participants/common/source_gate.h"
+#include "tests/support/cli_parse.h"
 
 namespace turf {
 namespace {
@@ -107,15 +109,7 @@ TEST(AllowFlag, RepeatableIpv4AndBadEntriesAreRefused) {
   const auto parse = [](std::vector<std::string> args, std::vector<std::string>* entries) {
     CLI::App app;
     AddAllowOption(app, "--blue-allow", *entries, "blue");
-    args.insert(args.begin(), "bridge");
-    std::vector<const char*> argv;
-    for (const std::string& a : args) argv.push_back(a.c_str());
-    try {
-      app.parse(static_cast<int>(argv.size()), argv.data());
-      return true;
-    } catch (const CLI::ParseError&) {
-      return false;
-    }
+    return test::ParseArgs(app, std::move(args));
   };
   std::vector<std::string> entries;
   ASSERT_TRUE(parse({}, &entries));

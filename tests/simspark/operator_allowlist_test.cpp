@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "participants/common/address_allowlist.h"
 #include "participants/simspark_bridge/simspark_flags.h"
+#include "tests/support/cli_parse.h"
 
 namespace turf {
 namespace {
@@ -25,15 +27,7 @@ TEST(OperatorAllowFlag, GivenItReplacesTheDefaultAndBadEntriesAreRefused) {
   const auto parse = [](std::vector<std::string> args, SimSparkBridgeOptions* o) {
     CLI::App app;
     AddSimSparkOperatorFlag(app, *o, "simspark-");
-    args.insert(args.begin(), "turf-sim");
-    std::vector<const char*> argv;
-    for (const std::string& a : args) argv.push_back(a.c_str());
-    try {
-      app.parse(static_cast<int>(argv.size()), argv.data());
-      return true;
-    } catch (const CLI::ParseError&) {
-      return false;
-    }
+    return test::ParseArgs(app, std::move(args));
   };
   SimSparkBridgeOptions o;
   ASSERT_TRUE(parse({}, &o));

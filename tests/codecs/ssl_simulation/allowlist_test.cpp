@@ -5,11 +5,13 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dds/memory_bus.h"
 #include "participants/simproto_bridge/simproto_bridge.h"
 #include "participants/simproto_bridge/simproto_flags.h"
+#include "tests/support/cli_parse.h"
 
 namespace turf {
 namespace {
@@ -17,15 +19,7 @@ namespace {
 bool Parse(const std::string& prefix, std::vector<std::string> args, SimprotoBridgeOptions* o) {
   CLI::App app;
   AddSimprotoAllowFlags(app, *o, prefix);
-  args.insert(args.begin(), "program");
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  try {
-    app.parse(static_cast<int>(argv.size()), argv.data());
-    return true;
-  } catch (const CLI::ParseError&) {
-    return false;
-  }
+  return test::ParseArgs(app, std::move(args));
 }
 
 TEST(SimprotoAllowlist, BothHomesHaveTheFlagsAndTheirDefaultIsAnyone) {
