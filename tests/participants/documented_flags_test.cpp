@@ -16,7 +16,8 @@ namespace {
 
 using launch::LongFlags;
 
-// The flags `participants/<executable> --help` lists (for "launcher/turf launch": the launch subcommand's).
+// The flags `participants/<executable> --help` lists (for "launcher/turf launch": the launch subcommand's; for
+// "launcher/turf security init": that one's).
 std::set<std::string> Help(const std::string& executable) {
   std::vector<std::string> argv;
   std::string word;
@@ -53,9 +54,10 @@ TEST(DocumentedFlags, EachParticipantsReadmeNamesOnlyFlagsItsHelpLists) {
 
 TEST(DocumentedFlags, EveryFlagOfTheMainReadmeExists) {
   std::set<std::string> offered;
-  for (const char* executable : {"sim/turf-sim", "grsim_bridge/turf-grsim-bridge", "vision_bridge/turf-vision-bridge",
-                                 "simproto_bridge/turf-simproto-bridge", "simspark_bridge/turf-simspark-bridge",
-                                 "viewer/turf-viewer", "launcher/turf", "launcher/turf launch"}) {
+  for (const char* executable :
+       {"sim/turf-sim", "grsim_bridge/turf-grsim-bridge", "vision_bridge/turf-vision-bridge",
+        "simproto_bridge/turf-simproto-bridge", "simspark_bridge/turf-simspark-bridge", "viewer/turf-viewer",
+        "launcher/turf", "launcher/turf launch", "launcher/turf security init"}) {
     const std::set<std::string> flags = Help(executable);
     offered.insert(flags.begin(), flags.end());
   }
