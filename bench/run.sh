@@ -6,11 +6,14 @@
 #   bench/run.sh snapshot                kernel snapshots: size, Save and Restore next to a step
 #   bench/run.sh sync [requests]         SSL sync port round trip: separate bridge over DDS vs in turf-sim's process
 #   bench/run.sh security [sim seconds]  what DDS Security costs: the SSL bench and the DDS hop latency, off and on
+#   bench/run.sh ut-agents --ut-agent PATH --agent-dir DIR
+#                                        real 3D-league agents (UT Austin Villa's base agent, built outside turf)
+#                                        play on turf: upright share, falls, approach to the ball (issue 12)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
 WHAT=all
-if [[ "${1:-}" =~ ^(ssl|simspark|snapshot|sync|security)$ ]]; then
+if [[ "${1:-}" =~ ^(ssl|simspark|snapshot|sync|security|ut-agents)$ ]]; then
   WHAT=$1
   shift
 fi
@@ -101,12 +104,24 @@ security() {
   rm -rf "$dir"
 }
 
+# Optional: only with the agent's binary and source directory (bench/ut_agents/run_match.sh --help).
+ut_agents() {
+  echo "UT Austin Villa base agents (type 0) on turf (turf launch simspark), 60 s of sim time from the kick-off"
+  echo "| match | mean upright % | falls | best approach m | ball moved |"
+  echo "| --- | --- | --- | --- | --- |"
+  bench/ut_agents/run_match.sh "$@" --agents 4 --label "4 agents (2 v 2), sync mode"
+  bench/ut_agents/run_match.sh "$@" --agents 4 --realtime --label "4 agents (2 v 2), real time"
+  echo "Reference (issue 12, rcssserver3d, the same agent): upright 93 % of a 60 s match; it walks to the ball and"
+  echo "kicks it 11 m."
+}
+
 case "$WHAT" in
   ssl) ssl ;;
   simspark) simspark ;;
   snapshot) "$BUILD_DIR/bench/turf-bench-snapshot" ;;
   sync) "$BUILD_DIR/bench/turf-bench-sync" --requests "${1:-1000}" ;;
   security) security ;;
+  ut-agents) ut_agents "$@" ;;
   all)
     ssl
     echo
