@@ -14,6 +14,7 @@ PACKAGES=(
   iproute2 nftables  # multi-host tests: network namespaces, veth, multicast blocked (tests/multihost)
   clang libclang-rt-14-dev clang-format  # clang-format: scripts/check-format.sh (CI)
   libboost-dev nlohmann-json3-dev chromium chromium-driver  # turf-viewer (Boost.Beast, JSON) and its browser test
+  openssl  # turf security init: the CA, certificates and signed permissions of DDS Security
 )
 
 missing=()
