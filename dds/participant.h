@@ -33,9 +33,10 @@ struct ParticipantOptions {
   std::string name = "turf";
   std::string prefix = "turf";  // topic names: <prefix>/<suffix>
   std::string qos_file;         // Fast DDS XML profiles; empty: built-in defaults
-  // DDS Security: an identity's directory made by `turf security init` (its files: security_policy.h's
-  // kIdentityFiles); empty: security off. The participant then authenticates with that identity's certificate,
-  // may publish and subscribe only what its signed permissions allow, and meets only participants of the same CA.
+  // DDS Security: an identity's directory made by `turf security init` (ca.pem, cert.pem, key.pem, governance.p7s,
+  // permissions.p7s: participants/launcher/security_init.h); empty: security off. The participant then authenticates
+  // with that identity's certificate, may publish and subscribe only what its signed permissions allow, and meets only
+  // participants of the same CA.
   std::string security;
 };
 

@@ -41,10 +41,6 @@ struct IdentityGrant {
   std::vector<std::string> subscribe;  // likewise
 };
 
-// The files of an identity's directory that a participant's `--security DIR` reads (made by `turf security init`).
-inline const std::vector<std::string> kIdentityFiles = {"ca.pem", "cert.pem", "key.pem", "governance.p7s",
-                                                        "permissions.p7s"};
-
 // Every identity's name, in the table's order.
 std::vector<std::string> IdentityNames();
 // The grant of `name` under `profile`; throws std::invalid_argument for a name that is not an identity.

@@ -52,7 +52,10 @@ class Maker {
     args.insert(args.begin(), "openssl");
     const ProgramResult r = RunProgram(args);
     if (r.exit_status == 0) return true;
-    errors_.push_back(fmt::format("openssl {} failed (exit status {}): {}", args[1], r.exit_status, r.output));
+    if (r.exit_status < 0 && r.output.empty())
+      errors_.push_back("cannot run openssl (Debian package openssl; scripts/setup.sh installs it)");
+    else
+      errors_.push_back(fmt::format("openssl {} failed (exit status {}): {}", args[1], r.exit_status, r.output));
     return false;
   }
   bool Write(const fs::path& path, const std::string& text) {
