@@ -79,6 +79,30 @@ void ReadRobot(MapReader m, const std::string& base_dir, std::map<std::string, s
   m.Finish();
 }
 
+// A surface's ODE parameters; keys left out stay "not set".
+void ReadOdeSurface(MapReader m, OdeSurface* s) {
+  m.Number("erp", &s->erp);
+  m.Number("cfm", &s->cfm);
+  m.Number("slip", &s->slip);
+  m.Finish();
+}
+
+// `contacts: {law: ode, ...}`: rcssserver3d's contact law (core/legged/ode_contacts.h); `law: mujoco` or no block:
+// MuJoCo's own.
+void ReadContacts(MapReader m, OdeContactLaw* c) {
+  std::string law = "mujoco";
+  m.String("law", &law);
+  if (law != "ode" && law != "mujoco") m.Fail("law", "must be \"ode\" or \"mujoco\"");
+  c->enabled = law == "ode";
+  m.Number("reference_step", &c->reference_step);
+  m.Number("surface_layer", &c->surface_layer);
+  m.Number("world_erp", &c->world_erp);
+  m.Number("world_cfm", &c->world_cfm);
+  if (m.Has("robot")) ReadOdeSurface(m.Map("robot"), &c->robot);
+  if (m.Has("ground")) ReadOdeSurface(m.Map("ground"), &c->ground);
+  m.Finish();
+}
+
 void ReadScene(MapReader m, const std::string& base_dir, LeggedScene* s, Errors* errors) {
   std::string kind;
   if (!m.String("kind", &kind) || kind != "legged") m.Fail("kind", "must be \"legged\"");
@@ -92,6 +116,7 @@ void ReadScene(MapReader m, const std::string& base_dir, LeggedScene* s, Errors*
     r.Finish();
   }
   if (m.Has("field")) ReadField(m.Map("field"), &s->field);
+  if (m.Has("contacts")) ReadContacts(m.Map("contacts"), &s->contacts);
   ReadSceneRealism(m, &s->realism, errors);  // encoder and imu apply to legged robots
   const YAML::Node robots = m.Child("robots");
   if (robots && !robots.IsSequence()) {

@@ -122,8 +122,9 @@ std::string SceneXml(const LeggedScene& s) {
   std::string x;
   x += fmt::format("<mujoco model=\"turf_{}\">\n", s.name);
   x += "  <compiler autolimits=\"true\" angle=\"radian\"/>\n";
-  x += fmt::format("  <option timestep=\"{}\" iterations=\"{}\" gravity=\"0 0 -9.81\" integrator=\"Euler\"/>\n",
-                   s.physics.step, s.physics.solver_iterations);
+  // rcssserver3d's contact law rewrites the rows of an elliptic cone (ode_contacts.h).
+  x += fmt::format("  <option timestep=\"{}\" iterations=\"{}\" gravity=\"0 0 -9.81\" integrator=\"Euler\"{}/>\n",
+                   s.physics.step, s.physics.solver_iterations, s.contacts.enabled ? " cone=\"elliptic\"" : "");
   x += fmt::format("  <size nconmax=\"{}\" njmax=\"{}\"/>\n", nconmax, 6 * nconmax);
   x += "  <default/>\n  <asset/>\n  <worldbody>\n";
   const double half = s.field.enabled ? s.field.wall_distance : 50.0;

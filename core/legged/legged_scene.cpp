@@ -22,6 +22,18 @@ std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
   if (!Positive(s.rates.joint_state_hz) || s.rates.joint_state_hz * s.physics.step > 1.0)
     e.push_back("rates.joint_state_hz must be positive and at most 1/physics.step");
   if (!Positive(s.ground_friction)) e.push_back("ground_friction must be positive");
+  if (s.contacts.enabled) {
+    const OdeContactLaw& c = s.contacts;
+    if (!Positive(c.reference_step) || !NonNegative(c.surface_layer) || !Positive(c.world_erp) || c.world_erp > 1 ||
+        !Positive(c.world_cfm))
+      e.push_back("contacts: reference_step and world_cfm positive, surface_layer >= 0, world_erp in (0, 1]");
+    for (const OdeSurface* surface : {&c.robot, &c.ground}) {
+      // Negative = not set; a set ERP is in (0, 1], a set CFM positive.
+      if (!std::isfinite(surface->erp) || !std::isfinite(surface->cfm) || !std::isfinite(surface->slip) ||
+          surface->erp == 0 || surface->erp > 1 || surface->cfm == 0)
+        e.push_back("contacts: a surface's erp must be in (0, 1], cfm positive, slip >= 0 (or left out)");
+    }
+  }
   if (s.field.enabled) {
     const Field3d& f = s.field;
     for (double v : {f.length, f.width, f.goal_width, f.goal_depth, f.goal_height, f.goal_wall, f.ball_radius,

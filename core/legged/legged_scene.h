@@ -66,6 +66,24 @@ struct Field3d {
   double wall_distance = 25.0;  // |x|, |y| of the outer walls' centres
 };
 
+// One surface's contact parameters in ODE's terms (core/legged/ode_contacts.h); negative = not set.
+struct OdeSurface {
+  double erp = -1.0;   // soft ERP
+  double cfm = -1.0;   // soft CFM
+  double slip = -1.0;  // force-dependent slip, m/(s N)
+};
+
+// rcssserver3d's contact law for robots on the ground (ode_contacts.h). Off: MuJoCo's own contacts.
+struct OdeContactLaw {
+  bool enabled = false;
+  double reference_step = 0.02;  // s: the step ERP and CFM were given for
+  double surface_layer = 0.001;  // m of penetration left alone
+  double world_erp = 0.2;        // where no surface sets ERP / CFM
+  double world_cfm = 1e-5;
+  OdeSurface robot;   // every robot geom
+  OdeSurface ground;  // the floor
+};
+
 struct LeggedScene {
   std::string name = "legged";
   uint64_t seed = 1;
@@ -73,6 +91,7 @@ struct LeggedScene {
   LeggedRates rates;
   Field3d field;
   double ground_friction = 1.0;
+  OdeContactLaw contacts;
   // Encoders and IMU (realism.encoder, realism.imu); the camera and radio
   // parts are the SSL world's and unused here. Ideal by default.
   SensorRealism realism;

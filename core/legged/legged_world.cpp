@@ -159,6 +159,11 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
     for (size_t j = 0; j < robots_[r].joints.size(); ++j)
       motor_of_dof_[robots_[r].joints[j].dof] = {static_cast<int>(r), static_cast<int>(j)};
   }
+  if (scene_.contacts.enabled) {
+    std::vector<int> roots;
+    for (const RobotSlot& r : robots_) roots.push_back(r.base_body);
+    ode_contacts_ = std::make_unique<OdeContacts>(m, scene_.contacts, roots, mj_name2id(m, mjOBJ_GEOM, kLeggedFloor));
+  }
   Reset();
 }
 
@@ -451,6 +456,7 @@ bool LeggedWorld::StagePhysics() {
 
 void LeggedWorld::Step() {
   mj_step1(model_.get(), data_.get());
+  if (ode_contacts_) ode_contacts_->Apply(model_.get(), data_.get());
   StageServos();
   if (StagePhysics()) {
     AcceptState();

@@ -5,6 +5,7 @@
 // A step runs in named stages; inputs enter only between steps:
 //   inputs   SetJointCommand / Reset (validated; a refused input changes nothing)
 //   Step():  mj_step1 (positions, velocities, constraint rows)
+//            0 contacts (the scene's contact law on the contact rows: ode_contacts.h)
 //            1 servos (commands -> each joint's motor row: target velocity and
 //              force bound, as ODE's hinge motor)
 //            2 physics (mj_step2: one constraint solve, integration)
@@ -23,6 +24,7 @@
 
 #include "core/errors.h"
 #include "core/legged/legged_scene.h"
+#include "core/legged/ode_contacts.h"
 #include "core/mj_state.h"
 #include "core/pinned.h"
 
@@ -173,6 +175,7 @@ class LeggedWorld : Pinned {
   MjDataPtr data_;
   std::vector<RobotSlot> robots_;
   std::vector<std::pair<int, int>> motor_of_dof_;  // dof -> (robot, joint), -1 for none
+  std::unique_ptr<OdeContacts> ode_contacts_;      // the scene's contact law, when it asks for rcssserver3d's
   int ball_body_ = -1;
   int ball_qvel_ = -1;
   int64_t step_ns_ = 0;

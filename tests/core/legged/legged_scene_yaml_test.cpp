@@ -48,6 +48,31 @@ TEST(LeggedSceneYamlTest, SimSparkMatchSceneParks22NaosOffTheField) {
   }
 }
 
+// The match scene carries rcssserver3d's contact parameters (off); `law: ode` turns them on and a Nao stands on them.
+TEST(LeggedSceneYamlTest, ContactLawBlockLoadsAndIsChecked) {
+  LeggedSceneLoadResult r = LoadLeggedSceneFile(kScenes + "simspark_match.yaml");
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  const OdeContactLaw& c = r.scene->contacts;
+  EXPECT_FALSE(c.enabled);
+  EXPECT_EQ(c.robot.erp, 0.6);
+  EXPECT_EQ(c.robot.cfm, 1e-4);
+  EXPECT_EQ(c.ground.cfm, -1.0);  // not set
+  const std::string dir = std::string(TURF_SOURCE_DIR) + "/configs/scenes";
+  const std::string nao = "robots:\n  - {name: a, model: ../robots/nao.xml}\n";
+  r = ParseLeggedSceneYaml("kind: legged\ncontacts: {law: ode, robot: {erp: 0.6, cfm: 1.0e-4, slip: 5.0e-3}}\n" + nao,
+                           dir);
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_TRUE(r.scene->contacts.enabled);
+  LeggedWorld w(std::move(*r.scene));
+  for (int i = 0; w.time_ns() < 2'000'000'000; ++i) w.Step();
+  EXPECT_NEAR(w.State().robots[0].base_position[2], 0.385, 0.005);  // standing
+  EXPECT_TRUE(HasError(ParseLeggedSceneYaml("kind: legged\ncontacts: {law: bullet}\n" + nao, dir), "law"));
+  EXPECT_TRUE(
+      HasError(ParseLeggedSceneYaml("kind: legged\ncontacts: {law: ode, robot: {erp: 2}}\n" + nao, dir), "contacts"));
+  EXPECT_TRUE(HasError(ParseLeggedSceneYaml("kind: legged\ncontacts: {law: ode, robot: {cfm: .nan}}\n" + nao, dir),
+                       "contacts"));
+}
+
 TEST(LeggedSceneYamlTest, RealismPresetOrMapSetsEncodersAndImu) {
   const std::string dir = std::string(TURF_SOURCE_DIR) + "/configs/scenes";
   LeggedSceneLoadResult r =
