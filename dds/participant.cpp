@@ -131,10 +131,10 @@ class DdsReader final : public ReaderEndpoint, private fdds::DataReaderListener 
   fdds::DataReader* reader_ = nullptr;
 };
 
-constexpr const char* kParticipantProfile = "turf.participant";
+}  // namespace
 
 // Fast DDS keeps loaded profiles process-wide; load each file once.
-void LoadProfiles(const std::string& file) {
+void LoadQosProfiles(const std::string& file) {
   static std::mutex mutex;
   static std::set<std::string> loaded;
   std::lock_guard<std::mutex> lock(mutex);
@@ -144,6 +144,8 @@ void LoadProfiles(const std::string& file) {
     throw std::runtime_error("QoS profiles file is not valid Fast DDS XML: " + file);
   loaded.insert(file);
 }
+
+namespace {
 
 // Properties a turf participant announces (propagated with its discovery data), so a peer can name the process.
 constexpr const char* kHostProperty = "turf.host";
@@ -343,7 +345,7 @@ std::string DefaultQosFile() {
 Participant::Participant(const ParticipantOptions& options)
     : Bus(options.prefix), options_(options), discovery_(std::make_unique<Discovery>(options.prefix)) {
   if (options_.qos_file.empty()) options_.qos_file = DefaultQosFile();
-  LoadProfiles(options_.qos_file);
+  LoadQosProfiles(options_.qos_file);
   auto* factory = fdds::DomainParticipantFactory::get_instance();
   fdds::DomainParticipantQos qos = factory->get_default_participant_qos();
   if (factory->get_participant_qos_from_profile(kParticipantProfile, qos) != ReturnCode::RETCODE_OK)

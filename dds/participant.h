@@ -68,6 +68,12 @@ struct RemoteWriter {
 enum class WriterEvent { kAppeared, kGone };
 using WriterListener = std::function<void(WriterEvent event, const RemoteWriter& writer)>;
 
+// Loads a Fast DDS QoS profiles file (once per process; Fast DDS keeps profiles process-wide). Throws
+// std::runtime_error if it is missing or not valid.
+void LoadQosProfiles(const std::string& file);
+// The participant profile every turf participant takes from it (transports: UDP only).
+inline constexpr const char* kParticipantProfile = "turf.participant";
+
 // The QoS profiles file shipped with turf, found next to the executable's
 // install or source tree; empty if none is found.
 std::string DefaultQosFile();

@@ -1,0 +1,172 @@
+#include "dds/vendor_participant.h"
+
+#include <spdlog/spdlog.h>
+
+#include <fastdds/dds/domain/DomainParticipant.hpp>
+#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/publisher/DataWriter.hpp>
+#include <fastdds/dds/publisher/Publisher.hpp>
+#include <fastdds/dds/subscriber/DataReader.hpp>
+#include <fastdds/dds/subscriber/DataReaderListener.hpp>
+#include <fastdds/dds/subscriber/SampleInfo.hpp>
+#include <fastdds/dds/subscriber/Subscriber.hpp>
+#include <fastdds/dds/topic/Topic.hpp>
+#include <fastdds/dds/topic/TypeSupport.hpp>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+
+#include "dds/participant.h"
+
+namespace turf::dds {
+
+namespace fdds = eprosima::fastdds::dds;
+using ReturnCode = eprosima::fastrtps::types::ReturnCode_t;
+
+struct VendorParticipant::Impl {
+  fdds::DomainParticipant* participant = nullptr;
+  fdds::Publisher* publisher = nullptr;
+  fdds::Subscriber* subscriber = nullptr;
+  std::mutex mutex;
+  std::map<std::string, fdds::Topic*> topics;
+
+  // One topic per name, registering its type on first use; a second type for one name is refused.
+  fdds::Topic* TopicOf(const std::string& name, fdds::TypeSupport type) {
+    std::lock_guard<std::mutex> lock(mutex);
+    auto it = topics.find(name);
+    if (it != topics.end()) {
+      if (it->second->get_type_name() != type.get_type_name())
+        throw std::runtime_error("topic " + name + " is already of type " + it->second->get_type_name());
+      return it->second;
+    }
+    if (type.register_type(participant) != ReturnCode::RETCODE_OK)
+      throw std::runtime_error("cannot register DDS type " + type.get_type_name());
+    fdds::Topic* topic = participant->create_topic(name, type.get_type_name(), fdds::TOPIC_QOS_DEFAULT);
+    if (topic == nullptr) throw std::runtime_error("cannot create DDS topic " + name);
+    topics.emplace(name, topic);
+    return topic;
+  }
+};
+
+namespace {
+
+// The vendor SDKs' default: best effort, volatile, keep last (a few samples for commands arriving together).
+fdds::DataWriterQos WriterQos(fdds::Publisher* publisher) {
+  fdds::DataWriterQos qos = publisher->get_default_datawriter_qos();
+  qos.reliability().kind = fdds::BEST_EFFORT_RELIABILITY_QOS;
+  qos.durability().kind = fdds::VOLATILE_DURABILITY_QOS;
+  qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
+  qos.history().depth = 1;
+  return qos;
+}
+
+// A best-effort reader matches best-effort and reliable writers alike.
+fdds::DataReaderQos ReaderQos(fdds::Subscriber* subscriber) {
+  fdds::DataReaderQos qos = subscriber->get_default_datareader_qos();
+  qos.reliability().kind = fdds::BEST_EFFORT_RELIABILITY_QOS;
+  qos.durability().kind = fdds::VOLATILE_DURABILITY_QOS;
+  qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
+  qos.history().depth = 8;
+  return qos;
+}
+
+class DdsVendorWriter final : public VendorParticipant::RawWriter {
+ public:
+  DdsVendorWriter(fdds::Publisher* publisher, fdds::DataWriter* writer) : publisher_(publisher), writer_(writer) {}
+  ~DdsVendorWriter() override { publisher_->delete_datawriter(writer_); }
+  bool Write(const void* sample) override { return writer_->write(const_cast<void*>(sample)); }
+  int Matched() const override {
+    fdds::PublicationMatchedStatus status;
+    writer_->get_publication_matched_status(status);
+    return status.current_count;
+  }
+
+ private:
+  fdds::Publisher* publisher_;
+  fdds::DataWriter* writer_;
+};
+
+class DdsVendorReader final : public VendorParticipant::RawReader, public fdds::DataReaderListener {
+ public:
+  DdsVendorReader(fdds::Subscriber* subscriber, fdds::TypeSupport type,
+                  std::function<void(const void*, int64_t)> on_sample)
+      : subscriber_(subscriber), type_(std::move(type)), on_sample_(std::move(on_sample)) {}
+  ~DdsVendorReader() override {
+    if (reader_ != nullptr) subscriber_->delete_datareader(reader_);
+  }
+  void Attach(fdds::DataReader* reader) { reader_ = reader; }
+  int Matched() const override {
+    fdds::SubscriptionMatchedStatus status;
+    reader_->get_subscription_matched_status(status);
+    return status.current_count;
+  }
+
+ private:
+  void on_data_available(fdds::DataReader* reader) override {
+    void* sample = type_.create_data();
+    fdds::SampleInfo info;
+    while (reader->take_next_sample(sample, &info) == ReturnCode::RETCODE_OK) {
+      if (!info.valid_data) continue;
+      const auto& t = info.source_timestamp;
+      on_sample_(sample, static_cast<int64_t>(t.seconds()) * 1'000'000'000 + t.nanosec());
+    }
+    type_.delete_data(sample);
+  }
+
+  fdds::Subscriber* subscriber_;
+  fdds::TypeSupport type_;
+  std::function<void(const void*, int64_t)> on_sample_;
+  fdds::DataReader* reader_ = nullptr;
+};
+
+}  // namespace
+
+VendorParticipant::VendorParticipant(int domain, const std::string& name)
+    : domain_(domain), impl_(std::make_unique<Impl>()) {
+  auto* factory = fdds::DomainParticipantFactory::get_instance();
+  fdds::DomainParticipantQos qos = factory->get_default_participant_qos();
+  const std::string profiles = DefaultQosFile();
+  if (!profiles.empty()) {
+    LoadQosProfiles(profiles);
+    if (factory->get_participant_qos_from_profile(kParticipantProfile, qos) != ReturnCode::RETCODE_OK)
+      spdlog::warn("QoS file {} has no participant profile '{}'; using Fast DDS defaults", profiles,
+                   kParticipantProfile);
+  }
+  qos.name(name);
+  impl_->participant = factory->create_participant(domain, qos);
+  if (impl_->participant == nullptr)
+    throw std::runtime_error("cannot create a DDS participant on domain " + std::to_string(domain));
+  impl_->publisher = impl_->participant->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
+  impl_->subscriber = impl_->participant->create_subscriber(fdds::SUBSCRIBER_QOS_DEFAULT);
+  if (impl_->publisher == nullptr || impl_->subscriber == nullptr)
+    throw std::runtime_error("cannot create a DDS publisher/subscriber");
+}
+
+VendorParticipant::~VendorParticipant() {
+  if (impl_->participant == nullptr) return;
+  impl_->participant->delete_contained_entities();
+  fdds::DomainParticipantFactory::get_instance()->delete_participant(impl_->participant);
+}
+
+std::unique_ptr<VendorParticipant::RawWriter> VendorParticipant::OpenWriter(const std::string& topic,
+                                                                            fdds::TopicDataType* type) {
+  fdds::TypeSupport support(type);
+  fdds::Topic* t = impl_->TopicOf(topic, support);
+  fdds::DataWriter* w = impl_->publisher->create_datawriter(t, WriterQos(impl_->publisher));
+  if (w == nullptr) throw std::runtime_error("cannot create a DDS writer for " + topic);
+  return std::make_unique<DdsVendorWriter>(impl_->publisher, w);
+}
+
+std::unique_ptr<VendorParticipant::RawReader> VendorParticipant::OpenReader(
+    const std::string& topic, fdds::TopicDataType* type, std::function<void(const void*, int64_t)> on_sample) {
+  fdds::TypeSupport support(type);
+  fdds::Topic* t = impl_->TopicOf(topic, support);
+  auto reader = std::make_unique<DdsVendorReader>(impl_->subscriber, support, std::move(on_sample));
+  fdds::DataReader* r = impl_->subscriber->create_datareader(t, ReaderQos(impl_->subscriber), reader.get(),
+                                                             fdds::StatusMask::data_available());
+  if (r == nullptr) throw std::runtime_error("cannot create a DDS reader for " + topic);
+  reader->Attach(r);
+  return reader;
+}
+
+}  // namespace turf::dds

@@ -1,0 +1,93 @@
+// A DDS participant for another vendor's topics (the Booster SDK's rt/low_state, rt/joint_ctrl): exact topic names
+// (no turf prefix), the types' own registered names, and the QoS such SDKs use on the robot: best effort, volatile,
+// keep last. turf's own topics go through dds::Participant (participant.h); this one exists so that robot programs
+// written for a vendor SDK find the topics they expect. Transports as every turf participant (the profiles file's
+// participant profile: UDP only). Fast DDS stays in vendor_participant.cpp; the typed front-ends below only need the
+// generated PubSubType.
+//
+// RAII: writers and readers delete their entities; the participant must outlive them. A reader's callback runs on a
+// Fast DDS thread, one sample at a time, until the reader is destroyed.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace eprosima::fastdds::dds {
+class TopicDataType;
+}
+
+namespace turf::dds {
+
+class VendorParticipant {
+ public:
+  // Throws std::runtime_error if the participant cannot be created.
+  VendorParticipant(int domain, const std::string& name);
+  ~VendorParticipant();
+  VendorParticipant(const VendorParticipant&) = delete;
+  VendorParticipant& operator=(const VendorParticipant&) = delete;
+
+  int domain() const { return domain_; }
+
+  class RawWriter;
+  class RawReader;
+  // Untyped: `type` is a new PubSubType (ownership passes); samples are of its type.
+  std::unique_ptr<RawWriter> OpenWriter(const std::string& topic, eprosima::fastdds::dds::TopicDataType* type);
+  // on_sample(sample, source timestamp in ns since the Unix epoch).
+  std::unique_ptr<RawReader> OpenReader(const std::string& topic, eprosima::fastdds::dds::TopicDataType* type,
+                                        std::function<void(const void*, int64_t)> on_sample);
+
+  template <class PubSub>
+  class Writer {
+   public:
+    explicit Writer(std::unique_ptr<RawWriter> raw) : raw_(std::move(raw)) {}
+    bool Write(const typename PubSub::type& sample);
+    int Matched() const;
+
+   private:
+    std::unique_ptr<RawWriter> raw_;
+  };
+
+  template <class PubSub>
+  std::unique_ptr<Writer<PubSub>> MakeWriter(const std::string& topic) {
+    return std::make_unique<Writer<PubSub>>(OpenWriter(topic, new PubSub()));
+  }
+  // The reader stays open as long as the returned handle lives.
+  template <class PubSub>
+  std::unique_ptr<RawReader> MakeReader(const std::string& topic,
+                                        std::function<void(const typename PubSub::type&, int64_t)> on_sample) {
+    return OpenReader(topic, new PubSub(), [f = std::move(on_sample)](const void* s, int64_t t) {
+      f(*static_cast<const typename PubSub::type*>(s), t);
+    });
+  }
+
+ private:
+  struct Impl;
+  int domain_;
+  std::unique_ptr<Impl> impl_;
+};
+
+// The untyped endpoints (defined in vendor_participant.cpp).
+class VendorParticipant::RawWriter {
+ public:
+  virtual ~RawWriter() = default;
+  virtual bool Write(const void* sample) = 0;
+  virtual int Matched() const = 0;
+};
+class VendorParticipant::RawReader {
+ public:
+  virtual ~RawReader() = default;
+  virtual int Matched() const = 0;
+};
+
+template <class PubSub>
+bool VendorParticipant::Writer<PubSub>::Write(const typename PubSub::type& sample) {
+  return raw_->Write(&sample);
+}
+template <class PubSub>
+int VendorParticipant::Writer<PubSub>::Matched() const {
+  return raw_->Matched();
+}
+
+}  // namespace turf::dds
