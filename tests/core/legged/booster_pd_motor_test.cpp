@@ -111,8 +111,9 @@ TEST(BoosterPdMotorTest, RestoreContinuesBitForBit) {
   auto drive = [](LeggedWorld& w, int steps) {
     for (int i = 0; i < steps; ++i) {
       const double t = static_cast<double>(w.frame()) * 0.005;
-      w.SetJointCommand(
-          0, Pd("Left_Hip_Pitch", -0.2 + 0.1 * std::sin(3 * t), 0.3 * std::cos(3 * t), 350, 7.5, 2 * std::sin(t)));
+      if (w.frame() % 7 == 0)  // held between: the snapshot must carry the command
+        w.SetJointCommand(
+            0, Pd("Left_Hip_Pitch", -0.2 + 0.1 * std::sin(3 * t), 0.3 * std::cos(3 * t), 350, 7.5, 2 * std::sin(t)));
       if (w.frame() % 50 == 0) w.SetJointCommand(0, Pd("AAHead_yaw", 0.5 * std::sin(t), 0, 5, 0.1, 0.2));
       w.Step();
     }
