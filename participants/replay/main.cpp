@@ -27,6 +27,11 @@ int main(int argc, char** argv) {
         }
       })
       ->capture_default_str();
+  app.add_option("--start", options.start_s,
+                 "begin this many seconds (of recorded time) after the first message; latched topics (the field) "
+                 "are still published first")
+      ->check(CLI::Range(0.0, 1e9))
+      ->capture_default_str();
   app.add_flag("--wait-for-reader", options.wait_for_reader,
                "before the first message, wait (up to 30 s) until a reader of a replayed topic is matched");
   participant.AddCommonFlags(options, {"DDS domain id to replay onto", "topic name prefix to replay under"});

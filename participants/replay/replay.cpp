@@ -96,8 +96,12 @@ class Replayer {
     if (damage.error == mcap::ReadError::kBadMagic || damage.error == mcap::ReadError::kNewerVersion)
       throw std::runtime_error(options_.file + ": " + damage.Describe());
     if (!damage.ok()) spdlog::warn("{}: played up to the damage: {}", options_.file, damage.Describe());
-    spdlog::info("replayed {} messages ({} inputs or unknown channels skipped, {} refused)", totals_.published,
-                 totals_.skipped, totals_.refused);
+    // The writers stay a moment so reliable readers get the last samples (the Bus has no wait for
+    // acknowledgements).
+    const auto linger_end = SteadyClock::now() + std::chrono::milliseconds(500);
+    while (SteadyClock::now() < linger_end && !stop_()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    spdlog::info("replayed {} messages ({} inputs or unknown channels skipped, {} refused, {} before --start)",
+                 totals_.published, totals_.skipped, totals_.refused, totals_.before_start);
     return totals_;
   }
 
@@ -147,6 +151,16 @@ class Replayer {
       ++totals_.skipped;
       return;
     }
+
+    if (!have_first_) {
+      have_first_ = true;
+      start_ns_ = m.log_time + static_cast<uint64_t>(options_.start_s * 1e9);
+      clock_->SetOrigin(start_ns_);
+    }
+    if (m.log_time < start_ns_ && player->info().direction != dds::Direction::kLatched) {
+      ++totals_.before_start;
+      return;
+    }
     const auto due = clock_->Due(m.log_time);
     while (SteadyClock::now() < due) {  // real-time pacing: sleep, in slices that notice a stop
       if (stop_()) throw Stopped{};
@@ -174,6 +188,8 @@ class Replayer {
   std::map<uint16_t, Player*> players_of_channel_;
   std::unique_ptr<ReplayClock> clock_;
   SteadyClock::time_point last_progress_;
+  bool have_first_ = false;
+  uint64_t start_ns_ = 0;
   ReplayTotals totals_;
 };
 

@@ -7,7 +7,9 @@
 // generated PubSubType and written with the topic's QoS profile. Inputs (commands, control) are never published.
 // Paced by the recorded receive times at --speed (1: real time; N; max). A message whose CDR does not
 // deserialize is refused and counted; a damaged file is played up to the damage, which is logged.
-// Not yet: pause and seek, --resimulate (issue 17).
+// --start S begins S seconds (of recorded receive time) after the first message: earlier messages are skipped,
+// except those of latched topics (the field), which are published at once so a viewer has them.
+// Not yet: pause, seeking while playing, --resimulate (issue 17).
 #pragma once
 
 #include <cstdint>
@@ -22,6 +24,7 @@ struct ReplayOptions : ParticipantOptions {
   ReplayOptions() { name = "turf-replay"; }
   std::string file;
   double speed = 1.0;  // 0: as fast as possible
+  double start_s = 0;  // skip this much recorded time from the first message
   // Before the first message: wait (up to 30 s) until a reader of some replayed topic is matched.
   bool wait_for_reader = false;
   double progress_interval_s = 10.0;
@@ -29,8 +32,9 @@ struct ReplayOptions : ParticipantOptions {
 
 struct ReplayTotals {
   uint64_t published = 0;
-  uint64_t skipped = 0;  // inputs and channels of no known topic
-  uint64_t refused = 0;  // CDR that did not deserialize
+  uint64_t skipped = 0;       // inputs and channels of no known topic
+  uint64_t refused = 0;       // CDR that did not deserialize
+  uint64_t before_start = 0;  // skipped by --start
 };
 
 // Plays the file until its end or `stop()`; throws std::runtime_error if it cannot be opened or is no MCAP file

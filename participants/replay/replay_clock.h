@@ -11,7 +11,12 @@ class ReplayClock {
  public:
   // `speed`: a multiple of real time (> 0); 0: as fast as possible (every message is due at once).
   ReplayClock(double speed, std::chrono::steady_clock::time_point start) : speed_(speed), start_(start) {}
-  // The moment the message logged at `log_time_ns` is due; the first message given fixes the origin.
+  // The log time that is due at the start; without it, the first message given to Due() fixes it.
+  void SetOrigin(uint64_t log_time_ns) {
+    have_origin_ = true;
+    origin_ns_ = log_time_ns;
+  }
+  // The moment the message logged at `log_time_ns` is due (at once for one before the origin).
   std::chrono::steady_clock::time_point Due(uint64_t log_time_ns);
 
  private:

@@ -20,5 +20,13 @@ TEST(ReplayClock, RealTimeScaledAndMax) {
   EXPECT_EQ(max.Due(9'000'000'000), start);
 }
 
+TEST(ReplayClock, AnOriginAfterTheFirstMessage) {
+  const auto start = std::chrono::steady_clock::time_point(100s);
+  ReplayClock clock(2.0, start);
+  clock.SetOrigin(10'000'000'000);
+  EXPECT_EQ(clock.Due(9'000'000'000), start);
+  EXPECT_EQ(clock.Due(12'000'000'000), start + 1s);
+}
+
 }  // namespace
 }  // namespace turf
