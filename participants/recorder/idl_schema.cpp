@@ -20,7 +20,9 @@ void Resolve(const IdlFile& file, std::set<std::string>* done, std::string* out)
   for (std::string line; std::getline(lines, line);) {
     const size_t open = line.find("#include \"");
     if (open != 0) {
-      body += line + "\n";
+      // Other preprocessor lines (include guards) are dropped: the schema is one text, each file in it once.
+      if (line.find_first_not_of(" \t") == std::string::npos || line[line.find_first_not_of(" \t")] != '#')
+        body += line + "\n";
       continue;
     }
     const size_t start = open + 10;

@@ -1,6 +1,7 @@
 // The IDL text of turf's DDS types (idl/*.idl, compiled in), as the schema of an MCAP channel: Foxglove and other
 // tools decode CDR messages with it (schema encoding "omgidl"). A schema must be self-contained, so IdlSchema puts
-// each included file in place of its #include line, once, before the file that uses it.
+// each included file in place of its #include line, once, before the file that uses it, and drops the other
+// preprocessor lines (include guards), which IDL readers outside a C preprocessor do not take.
 #pragma once
 
 #include <string>

@@ -19,6 +19,8 @@ TEST(IdlSchema, EveryTopicTypeHasASelfContainedSchema) {
     const std::string schema = IdlSchema(t.type);
     ASSERT_FALSE(schema.empty()) << t.type;
     EXPECT_EQ(Count(schema, "#include"), 0u) << t.type;
+    EXPECT_EQ(Count(schema, "\n#"), 0u) << t.type << ": a preprocessor line is left\n" << schema;
+    EXPECT_NE(schema[0], '#') << t.type;
     EXPECT_EQ(Count(schema, std::string("struct ") + t.type + " "), 1u) << t.type << "\n" << schema;
   }
 }
