@@ -62,8 +62,8 @@ std::string FormatLogInfo(const LogInfo& info) {
     const uint64_t n = s.channel_message_counts.count(id) ? s.channel_message_counts.at(id) : 0;
     const uint64_t bytes = f.channel_bytes.count(id) ? f.channel_bytes.at(id) : 0;
     const auto schema = f.schemas.find(c.schema_id);
-    out += fmt::format("  ({}) {:<28} {:>9} msgs ({:.1f} Hz) {:>11}  {} [{}] {}\n", id, c.topic, n,
-                       duration > 0 ? static_cast<double>(n) / duration : 0.0, Bytes(bytes),
+    out += fmt::format("  {:>5} {:<28} {:>9} msgs ({:.1f} Hz) {:>11}  {} [{}] {}\n", fmt::format("({})", id), c.topic,
+                       n, duration > 0 ? static_cast<double>(n) / duration : 0.0, Bytes(bytes),
                        schema == f.schemas.end() ? "no schema" : schema->second.name,
                        schema == f.schemas.end() ? "" : schema->second.encoding, c.message_encoding);
   }
