@@ -35,6 +35,9 @@ TEST(TurfRecordReplay, SubcommandsRunTheParticipantsWithTheirFlags) {
   const Ran bad = Turf("turf_record_bad", {"record", "x.mcap", "--compression", "lzma"});
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.output.find("--compression"), std::string::npos) << bad.output;
+  const Ran unknown = Turf("turf_record_unknown_topic", {"record", "x.mcap", "--topics", "world_state,nope"});
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.output.find("no topic 'nope' (known: clock, world_state,"), std::string::npos) << unknown.output;
 }
 
 }  // namespace

@@ -147,9 +147,9 @@ TEST(RecorderE2e, AKilledRecorderLeavesAFileReadableUpToItsLastChunk) {
   const std::string prefix = "reckill" + std::to_string(getpid());
   const std::string file = LogDir() + "/" + prefix + ".mcap";
   Process recorder(prefix + "_record", Args({Built("participants/recorder/turf-record"), file, "--chunk-interval",
-                                             "0.1", "--compression", "none"},
+                                             "0.1", "--compression", "none", "--topics", "world_state,clock"},
                                             domain, prefix));
-  ASSERT_TRUE(WaitFor([&] { return recorder.Log().find("reads " + prefix + "/robots/state") != std::string::npos; }))
+  ASSERT_TRUE(WaitFor([&] { return recorder.Log().find("reads " + prefix + "/clock") != std::string::npos; }))
       << recorder.Log();
   Process sim(prefix + "_sim", Args({Built("participants/sim/turf-sim"), "--realism", "ideal"}, domain, prefix));
   uint64_t chunks_before = 0;
@@ -163,6 +163,7 @@ TEST(RecorderE2e, AKilledRecorderLeavesAFileReadableUpToItsLastChunk) {
   EXPECT_EQ(r.damage.error, mcap::ReadError::kTruncated) << r.damage.Describe();
   EXPECT_GE(r.info.statistics.chunk_count, chunks_before);
   EXPECT_EQ(r.damage.offset, r.info.read_up_to);
+  EXPECT_EQ(r.info.channels.size(), 2u);  // --topics world_state,clock
   const std::vector<mcap::Message>& world = r.by_topic.at(prefix + "/world_state");
   ASSERT_FALSE(world.empty());
   for (size_t i = 1; i < world.size(); ++i) EXPECT_GT(world[i].publish_time, world[i - 1].publish_time);
