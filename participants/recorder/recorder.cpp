@@ -124,7 +124,7 @@ class Recorder::Impl {
  public:
   explicit Impl(const RecorderOptions& o)
       : options_(o), sink_(o.file), writer_(&sink_, WriterOptionsOf(o)), participant_(DdsOptions(o)) {
-    if (!sink_.ok()) throw std::runtime_error("cannot write " + o.file + ": " + sink_.error());
+    if (!sink_.ok()) throw std::invalid_argument("cannot write " + o.file + ": " + sink_.error());
     std::apply([this](const auto&... topic) { (Add(topic), ...); }, dds::kTypedTopics);
     sink_.Flush();
     spdlog::info(

@@ -49,7 +49,7 @@ struct RecorderTotals {
 
 class Recorder : Pinned {
  public:
-  // Opens the file and subscribes; throws std::runtime_error if the file cannot be made.
+  // Opens the file and subscribes; throws std::invalid_argument (exit status 2) if the file cannot be made.
   explicit Recorder(const RecorderOptions& options);
   ~Recorder();
   // Records until `stop()`, then closes the file (a valid MCAP file with its summary).

@@ -81,7 +81,7 @@ class Replayer {
 
   ReplayTotals Run() {
     McapFileSource source(options_.file);
-    if (!source.ok()) throw std::runtime_error("cannot read " + options_.file + ": " + source.error());
+    if (!source.ok()) throw std::invalid_argument("cannot read " + options_.file + ": " + source.error());
     if (options_.wait_for_reader) WaitForReader();
     clock_ = std::make_unique<ReplayClock>(options_.speed, SteadyClock::now());
     last_progress_ = SteadyClock::now();
@@ -94,7 +94,7 @@ class Replayer {
       return totals_;
     }
     if (damage.error == mcap::ReadError::kBadMagic || damage.error == mcap::ReadError::kNewerVersion)
-      throw std::runtime_error(options_.file + ": " + damage.Describe());
+      throw std::invalid_argument(options_.file + ": " + damage.Describe());
     if (!damage.ok()) spdlog::warn("{}: played up to the damage: {}", options_.file, damage.Describe());
     // The writers stay a moment so reliable readers get the last samples (the Bus has no wait for
     // acknowledgements).

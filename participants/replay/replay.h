@@ -37,8 +37,8 @@ struct ReplayTotals {
   uint64_t before_start = 0;  // skipped by --start
 };
 
-// Plays the file until its end or `stop()`; throws std::runtime_error if it cannot be opened or is no MCAP file
-// this build reads.
+// Plays the file until its end or `stop()`; throws std::invalid_argument (exit status 2) if it cannot be opened or
+// is no MCAP file this build reads.
 ReplayTotals Replay(const ReplayOptions& options, const std::function<bool()>& stop);
 
 }  // namespace turf

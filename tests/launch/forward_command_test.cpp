@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 
 #include <chrono>
+#include <fstream>
 #include <string>
 
 #include "tests/support/process.h"
@@ -38,6 +39,15 @@ TEST(TurfRecordReplay, SubcommandsRunTheParticipantsWithTheirFlags) {
   const Ran unknown = Turf("turf_record_unknown_topic", {"record", "x.mcap", "--topics", "world_state,nope"});
   EXPECT_EQ(unknown.status, 2);
   EXPECT_NE(unknown.output.find("no topic 'nope' (known: clock, world_state,"), std::string::npos) << unknown.output;
+  // A file that cannot be made, or read as MCAP: exit status 2 with the reason.
+  const Ran nowhere = Turf("turf_record_nowhere", {"record", "/nonexistent-dir/x.mcap", "--domain", "97"});
+  EXPECT_EQ(nowhere.status, 2);
+  EXPECT_NE(nowhere.output.find("cannot write /nonexistent-dir/x.mcap"), std::string::npos) << nowhere.output;
+  const std::string not_mcap = LogDir() + "/turf_replay_not_mcap.txt";
+  { std::ofstream(not_mcap) << "hello"; }
+  const Ran garbage = Turf("turf_replay_not_mcap", {"replay", not_mcap, "--domain", "97"});
+  EXPECT_EQ(garbage.status, 2);
+  EXPECT_NE(garbage.output.find("bad_magic at offset 0"), std::string::npos) << garbage.output;
 }
 
 }  // namespace
