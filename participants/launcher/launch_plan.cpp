@@ -20,8 +20,8 @@ namespace {
 
 bool Executable(const fs::path& p) { return fs::is_regular_file(p) && access(p.c_str(), X_OK) == 0; }
 
-// Looks in --bin-dir, then next to `turf` and its sibling build directories,
-// then on PATH. Empty if not found.
+}  // namespace
+
 std::string FindBinary(const Program& program, const std::string& bin_dir, const std::string& self_dir) {
   std::vector<fs::path> candidates;
   const std::string binary(program.binary);
@@ -45,6 +45,8 @@ std::string FindBinary(const Program& program, const std::string& bin_dir, const
   }
   return "";
 }
+
+namespace {
 
 void SetFlag(std::vector<Flag>* flags, Flag flag) {
   auto it = std::find_if(flags->begin(), flags->end(), [&flag](const Flag& f) { return f.name == flag.name; });

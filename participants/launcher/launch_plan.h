@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "participants/launcher/launch_profile.h"
+#include "participants/launcher/programs.h"
 
 namespace turf::launch {
 
@@ -53,5 +54,9 @@ std::string ShellLine(const ProcessCommand& command);
 
 // The directory of the running executable.
 std::string SelfDir();
+
+// Where `program` is: in `bin_dir` (if given), next to `turf` (`self_dir`) and its sibling build directories,
+// then on PATH. Empty if not found.
+std::string FindBinary(const Program& program, const std::string& bin_dir, const std::string& self_dir);
 
 }  // namespace turf::launch

@@ -57,7 +57,8 @@ TEST(DocumentedFlags, EveryFlagOfTheMainReadmeExists) {
   for (const char* executable :
        {"sim/turf-sim", "grsim_bridge/turf-grsim-bridge", "vision_bridge/turf-vision-bridge",
         "simproto_bridge/turf-simproto-bridge", "simspark_bridge/turf-simspark-bridge", "viewer/turf-viewer",
-        "launcher/turf", "launcher/turf launch", "launcher/turf security init"}) {
+        "launcher/turf", "launcher/turf launch", "launcher/turf security init", "launcher/turf log info",
+        "launcher/turf log diff", "recorder/turf-record", "replay/turf-replay"}) {
     const std::set<std::string> flags = Help(executable);
     offered.insert(flags.begin(), flags.end());
   }

@@ -1,0 +1,44 @@
+// turf-replay: plays a recording's outputs (turf-record's MCAP file) back onto a DDS domain, so the viewer and
+// team software see the match again.
+//
+// Publishes the messages of the channels whose topic is one of the table's published topics (world_state, clock,
+// cameras, feedback, stats, the legged streams; dds/topics.h) and whose schema names the table's DDS type, under
+// this participant's --prefix (the recording's own prefix is dropped): each message's CDR is deserialized with the
+// generated PubSubType and written with the topic's QoS profile. Inputs (commands, control) are never published.
+// Paced by the recorded receive times at --speed (1: real time; N; max). A message whose CDR does not
+// deserialize is refused and counted; a damaged file is played up to the damage, which is logged.
+// --start S begins S seconds (of recorded receive time) after the first message: earlier messages are skipped,
+// except those of latched topics (the field), which are published at once so a viewer has them.
+// Not yet: pause, seeking while playing, --resimulate (issue 17).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "participants/common/participant_options.h"
+
+namespace turf {
+
+struct ReplayOptions : ParticipantOptions {
+  ReplayOptions() { name = "turf-replay"; }
+  std::string file;
+  double speed = 1.0;  // 0: as fast as possible
+  double start_s = 0;  // skip this much recorded time from the first message
+  // Before the first message: wait (up to 30 s) until a reader of some replayed topic is matched.
+  bool wait_for_reader = false;
+  double progress_interval_s = 10.0;
+};
+
+struct ReplayTotals {
+  uint64_t published = 0;
+  uint64_t skipped = 0;       // inputs and channels of no known topic
+  uint64_t refused = 0;       // CDR that did not deserialize
+  uint64_t before_start = 0;  // skipped by --start
+};
+
+// Plays the file until its end or `stop()`; throws std::invalid_argument (exit status 2) if it cannot be opened or
+// is no MCAP file this build reads.
+ReplayTotals Replay(const ReplayOptions& options, const std::function<bool()>& stop);
+
+}  // namespace turf

@@ -1,0 +1,16 @@
+#include "participants/replay/replay_clock.h"
+
+namespace turf {
+
+std::chrono::steady_clock::time_point ReplayClock::Due(uint64_t log_time_ns) {
+  if (!have_origin_) {
+    have_origin_ = true;
+    origin_ns_ = log_time_ns;
+  }
+  if (speed_ <= 0 || log_time_ns <= origin_ns_) return start_;
+  const double wall_ns = static_cast<double>(log_time_ns - origin_ns_) / speed_;
+  return start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                      std::chrono::duration<double, std::nano>(wall_ns));
+}
+
+}  // namespace turf

@@ -1,0 +1,29 @@
+// When a replayed message is due: the recording's receive times (log_time) replayed at a speed, from a start on
+// the local monotonic clock. Pure: the caller reads its clock and sleeps.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+
+namespace turf {
+
+class ReplayClock {
+ public:
+  // `speed`: a multiple of real time (> 0); 0: as fast as possible (every message is due at once).
+  ReplayClock(double speed, std::chrono::steady_clock::time_point start) : speed_(speed), start_(start) {}
+  // The log time that is due at the start; without it, the first message given to Due() fixes it.
+  void SetOrigin(uint64_t log_time_ns) {
+    have_origin_ = true;
+    origin_ns_ = log_time_ns;
+  }
+  // The moment the message logged at `log_time_ns` is due (at once for one before the origin).
+  std::chrono::steady_clock::time_point Due(uint64_t log_time_ns);
+
+ private:
+  double speed_;
+  std::chrono::steady_clock::time_point start_;
+  bool have_origin_ = false;
+  uint64_t origin_ns_ = 0;
+};
+
+}  // namespace turf

@@ -1,0 +1,32 @@
+// Replay pacing: the recorded receive times at a speed, from the first message on.
+#include <gtest/gtest.h>
+
+#include "participants/replay/replay_clock.h"
+
+namespace turf {
+namespace {
+
+using namespace std::chrono_literals;
+
+TEST(ReplayClock, RealTimeScaledAndMax) {
+  const auto start = std::chrono::steady_clock::time_point(100s);
+  ReplayClock real(1.0, start), fast(4.0, start), max(0.0, start);
+  EXPECT_EQ(real.Due(5'000'000'000), start);  // the first message fixes the origin
+  EXPECT_EQ(real.Due(6'000'000'000), start + 1s);
+  EXPECT_EQ(real.Due(4'000'000'000), start);  // out of order: due at once
+  EXPECT_EQ(fast.Due(5'000'000'000), start);
+  EXPECT_EQ(fast.Due(7'000'000'000), start + 500ms);
+  EXPECT_EQ(max.Due(5'000'000'000), start);
+  EXPECT_EQ(max.Due(9'000'000'000), start);
+}
+
+TEST(ReplayClock, AnOriginAfterTheFirstMessage) {
+  const auto start = std::chrono::steady_clock::time_point(100s);
+  ReplayClock clock(2.0, start);
+  clock.SetOrigin(10'000'000'000);
+  EXPECT_EQ(clock.Due(9'000'000'000), start);
+  EXPECT_EQ(clock.Due(12'000'000'000), start + 1s);
+}
+
+}  // namespace
+}  // namespace turf

@@ -1,0 +1,161 @@
+// turf-replay as a real process on a private domain: a recording (made here with the MCAP writer from serialized
+// samples) is played back; every world state arrives in order and serializes to the recorded bytes, a recorded
+// input (a blue command) is not played, and a message that is no CDR sample is refused and counted.
+#include <fastdds/rtps/common/SerializedPayload.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <turf/idl/ClockPubSubTypes.h>
+#include <turf/idl/SslRobotPubSubTypes.h>
+#include <turf/idl/WorldStatePubSubTypes.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "codecs/mcap/writer.h"
+#include "dds/participant.h"
+#include "participants/common/mcap_file.h"
+#include "participants/recorder/idl_schema.h"
+#include "tests/support/process.h"
+#include "tests/test_domain.h"
+
+namespace turf::test {
+namespace {
+
+using namespace std::chrono_literals;
+
+template <class PubSub, class Sample>
+std::string Cdr(const Sample& sample) {
+  PubSub type;
+  eprosima::fastrtps::rtps::SerializedPayload_t payload(type.getSerializedSizeProvider(const_cast<Sample*>(&sample))());
+  EXPECT_TRUE(type.serialize(const_cast<Sample*>(&sample), &payload));
+  return std::string(reinterpret_cast<const char*>(payload.data), payload.length);
+}
+
+// 100 world states (sim time 10 ms apart), blue commands between them, and one clock message that is no CDR.
+std::vector<std::string> WriteRecording(const std::string& path) {
+  McapFileSink sink(path);
+  mcap::Writer w(&sink, {});
+  const uint16_t ws_schema = w.AddSchema("turf::idl::WorldState", "omgidl", record::IdlSchema("WorldState"));
+  const uint16_t cmd_schema = w.AddSchema("turf::idl::SslRobotCommand", "omgidl", record::IdlSchema("SslRobotCommand"));
+  const uint16_t clock_schema = w.AddSchema("turf::idl::Clock", "omgidl", record::IdlSchema("Clock"));
+  const uint16_t world = w.AddChannel(ws_schema, "old/world_state", "cdr");
+  const uint16_t blue = w.AddChannel(cmd_schema, "old/ssl/command/blue", "cdr");
+  const uint16_t clock = w.AddChannel(clock_schema, "old/clock", "cdr");
+  std::vector<std::string> recorded;
+  for (int i = 0; i < 100; ++i) {
+    idl::WorldState s;
+    s.sim_time_ns(10'000'000ll * (i + 1));
+    s.frame(static_cast<uint64_t>(i + 1));
+    s.robots().resize(2);
+    s.robots()[1].position().x(0.01 * i);
+    recorded.push_back(Cdr<idl::WorldStatePubSubType>(s));
+    const uint64_t t = 1'700'000'000'000'000'000ull + 10'000'000ull * static_cast<uint64_t>(i);
+    w.Write(world, static_cast<uint32_t>(i), t, static_cast<uint64_t>(s.sim_time_ns()), recorded.back());
+    idl::SslRobotCommand c;
+    c.id(static_cast<uint32_t>(i % 11));
+    w.Write(blue, static_cast<uint32_t>(i), t + 1, 0, Cdr<idl::SslRobotCommandPubSubType>(c));
+  }
+  w.Write(clock, 0, 1'700'000'000'000'000'000ull, 0, std::string("\x00\x01\x00\x00\xff", 5));
+  w.Close();
+  sink.Flush();
+  return recorded;
+}
+
+// Takes world states from `reader` until one has sim time `last_ns` or the deadline passes.
+std::vector<idl::WorldState> Collect(dds::Reader<idl::WorldStatePubSubType>& reader, std::mutex& mutex,
+                                     std::condition_variable& cv, int64_t last_ns) {
+  std::vector<idl::WorldState> got, batch;
+  std::unique_lock<std::mutex> lock(mutex);
+  cv.wait_for(lock, 20s, [&] {
+    if (reader.Take(&batch)) got.insert(got.end(), batch.begin(), batch.end());
+    return !got.empty() && got.back().sim_time_ns() == last_ns;
+  });
+  return got;
+}
+
+// Every sample received is the recorded one of its sim time, byte for byte, in order.
+void ExpectRecordedInOrder(const std::vector<idl::WorldState>& got, const std::vector<std::string>& recorded) {
+  int64_t previous = 0;
+  for (const idl::WorldState& s : got) {
+    const int64_t index = s.sim_time_ns() / 10'000'000 - 1;
+    ASSERT_TRUE(index >= 0 && index < static_cast<int64_t>(recorded.size())) << s.sim_time_ns();
+    EXPECT_GT(s.sim_time_ns(), previous);
+    EXPECT_EQ(Cdr<idl::WorldStatePubSubType>(s), recorded[static_cast<size_t>(index)]) << index;
+    previous = s.sim_time_ns();
+  }
+}
+
+std::string Missing(const std::vector<idl::WorldState>& got, size_t first, size_t count) {
+  std::vector<bool> seen(count, false);
+  for (const idl::WorldState& s : got) {
+    const size_t i = static_cast<size_t>(s.sim_time_ns() / 10'000'000 - 1);
+    if (i >= first && i - first < count) seen[i - first] = true;
+  }
+  std::string out;
+  for (size_t i = 0; i < count; ++i)
+    if (!seen[i]) out += std::to_string(first + i) + " ";
+  return out.empty() ? "none" : out;
+}
+
+TEST(ReplayE2e, PlaysOutputsByteForByteAndNoInputs) {
+  const int domain = TestDomain(43);
+  const std::string prefix = "replay" + std::to_string(getpid());
+  const std::string file = LogDir() + "/" + prefix + ".mcap";
+  const std::vector<std::string> recorded = WriteRecording(file);
+
+  dds::Participant participant({domain, "replay-test", prefix, TURF_SOURCE_DIR "/configs/qos/turf_qos.xml"});
+  std::mutex mutex;
+  std::condition_variable cv;
+  auto world = participant.MakeReader(dds::Topic::kWorldState, [&] { cv.notify_all(); });
+  auto blue = participant.MakeReader(dds::Topic::kSslCommandBlue);
+
+  Process replay(prefix, {Built("participants/replay/turf-replay"), file, "--speed", "1", "--wait-for-reader",
+                          "--domain", std::to_string(domain), "--prefix", prefix});
+  const std::vector<idl::WorldState> got = Collect(*world, mutex, cv, 1'000'000'000);
+  const std::optional<int> status = replay.Wait(30s);
+  ASSERT_TRUE(status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << replay.Log();
+  EXPECT_NE(replay.Log().find("replayed 100 messages (100 inputs or unknown channels skipped, 1 refused, 0 before"),
+            std::string::npos)
+      << replay.Log();
+  // DDS may drop a sample under load (KEEP_LAST 8, dds notes); what arrives is exactly what was recorded.
+  EXPECT_GE(got.size(), 95u) << "missing: " << Missing(got, 0, 100);
+  ASSERT_FALSE(got.empty());
+  EXPECT_EQ(got.back().sim_time_ns(), 1'000'000'000);
+  ExpectRecordedInOrder(got, recorded);
+  std::vector<idl::SslRobotCommand> commands;
+  EXPECT_FALSE(blue->Take(&commands));  // inputs are never played
+  EXPECT_EQ(blue->Matched(), 0);
+}
+
+TEST(ReplayE2e, StartSkipsTheRecordedTimeBeforeIt) {
+  const int domain = TestDomain(44);
+  const std::string prefix = "replaystart" + std::to_string(getpid());
+  const std::string file = LogDir() + "/" + prefix + ".mcap";
+  const std::vector<std::string> recorded = WriteRecording(file);
+
+  dds::Participant participant({domain, "replay-test", prefix, TURF_SOURCE_DIR "/configs/qos/turf_qos.xml"});
+  std::mutex mutex;
+  std::condition_variable cv;
+  auto world = participant.MakeReader(dds::Topic::kWorldState, [&] { cv.notify_all(); });
+  Process replay(prefix, {Built("participants/replay/turf-replay"), file, "--start", "0.5", "--wait-for-reader",
+                          "--domain", std::to_string(domain), "--prefix", prefix});
+  const std::vector<idl::WorldState> got = Collect(*world, mutex, cv, 1'000'000'000);
+  const std::optional<int> status = replay.Wait(30s);
+  ASSERT_TRUE(status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << replay.Log();
+  // The recording's world states are 10 ms apart from the first message: 50 lie before 0.5 s (and the clock
+  // message), 50 after.
+  EXPECT_NE(replay.Log().find("replayed 50 messages"), std::string::npos) << replay.Log();
+  EXPECT_NE(replay.Log().find("51 before --start"), std::string::npos) << replay.Log();
+  ASSERT_FALSE(got.empty());
+  EXPECT_GE(got.size(), 45u) << "missing: " << Missing(got, 50, 50);
+  EXPECT_GE(got.front().sim_time_ns(), 510'000'000);  // none before the start
+  EXPECT_EQ(got.back().sim_time_ns(), 1'000'000'000);
+  ExpectRecordedInOrder(got, recorded);
+}
+
+}  // namespace
+}  // namespace turf::test
