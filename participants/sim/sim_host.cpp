@@ -30,6 +30,10 @@ class SimHost::Impl {
       if (!kLegged) throw std::invalid_argument("the SimSpark front-end needs a legged scene, not an SSL one");
       simspark_ = std::make_unique<SimSparkBridge>(std::move(*front_ends.simspark), local_);
     }
+    if (front_ends.booster) {
+      if (!kLegged) throw std::invalid_argument("the Booster SDK's topics need a legged scene, not an SSL one");
+      booster_ = std::make_unique<BoosterSdkBridge>(*front_ends.booster, local_);
+    }
   }
 
   // The front-ends' threads are stopped and joined before Run returns, and the front-ends are destroyed before the
@@ -53,6 +57,10 @@ class SimHost::Impl {
         front_end_ended.store(true);
       });
     }
+    if (booster_) {
+      spdlog::info("serving the Booster SDK's topics for every T1 and K1 in this process:");
+      threads.emplace_back([&] { booster_->Run(front_end_stop); });
+    }
     node_.Run([&] { return stop() || front_end_ended.load(); });
     done.store(true);
     for (std::thread& t : threads) t.join();
@@ -62,6 +70,7 @@ class SimHost::Impl {
   dds::Participant& participant() { return dds_; }
   SimprotoBridge* simproto() { return simproto_.get(); }
   SimSparkBridge* simspark() { return simspark_.get(); }
+  BoosterSdkBridge* booster() { return booster_.get(); }
 
  private:
   dds::Participant dds_;
@@ -70,6 +79,7 @@ class SimHost::Impl {
   SimNode node_;
   std::unique_ptr<SimprotoBridge> simproto_;
   std::unique_ptr<SimSparkBridge> simspark_;
+  std::unique_ptr<BoosterSdkBridge> booster_;
 };
 
 SimHost::SimHost(Scene scene, SimNodeOptions options, InProcessFrontEnds front_ends)
@@ -82,5 +92,6 @@ SimNode& SimHost::node() { return impl_->node(); }
 dds::Participant& SimHost::participant() { return impl_->participant(); }
 SimprotoBridge* SimHost::simproto() { return impl_->simproto(); }
 SimSparkBridge* SimHost::simspark() { return impl_->simspark(); }
+BoosterSdkBridge* SimHost::booster() { return impl_->booster(); }
 
 }  // namespace turf

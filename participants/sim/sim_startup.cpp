@@ -76,17 +76,17 @@ int RunScene(SceneKind scene, const SimCommandLine& command_line, bool legged) {
     if (!r) return kExitBadConfig;
     scene.realism = *r;  // legged scenes: the encoders, IMU and touch streams
   }
-  if (legged ? command_line.simproto : command_line.simspark) {
+  if (legged ? command_line.simproto : (command_line.simspark || command_line.booster)) {
     spdlog::error(legged ? "--simproto serves the SSL simulation protocol: it needs an SSL scene, not a legged one"
-                         : "--simspark serves SimSpark agents: it needs a legged scene (kind: legged), not an SSL one");
+                         : "--simspark and --booster-sdk serve legged robots: they need a legged scene (kind: legged), "
+                           "not an SSL one");
     return kExitBadConfig;
   }
-  if (legged ? command_line.simspark : command_line.simproto) {
+  if (legged ? (command_line.simspark || command_line.booster) : command_line.simproto) {
     InProcessFrontEnds front_ends;
-    if (legged)
-      front_ends.simspark = command_line.simspark_options;
-    else
-      front_ends.simproto = command_line.simproto_options;
+    if (legged && command_line.simspark) front_ends.simspark = command_line.simspark_options;
+    if (legged && command_line.booster) front_ends.booster = command_line.booster_options;
+    if (!legged) front_ends.simproto = command_line.simproto_options;
     SimHost host(std::move(scene), command_line.node, std::move(front_ends));
     return RunAlone(host.participant(), [&] { host.Run(StopRequested); });
   }
@@ -173,8 +173,23 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
                "with --simspark: agent sync mode (a cycle runs when every agent has sent (syn))");
   AddSimSparkOperatorFlag(app, ss, "simspark-", "with --simspark: ");
 
+  // The Booster SDK's DDS topics in this process (participants/booster_bridge/booster_sdk_bridge.h).
+  BoosterSdkOptions& bo = command_line.booster_options;
+  CLI::Option* booster = app.add_option("--booster-sdk", bo.domain,
+                                        "legged scenes: serve the Booster SDK's low-level DDS topics (rt/low_state, "
+                                        "rt/joint_ctrl, rt/odometer_state, rt/fall_down) for every T1 and K1, the "
+                                        "first robot on DDS domain DOMAIN (default 0, as the SDK's examples), the "
+                                        "next on DOMAIN+1, ...")
+                             ->expected(0, 1)
+                             ->type_name("[DOMAIN]")
+                             ->check(CLI::Range(0, 232));
+  app.add_option("--booster-command-timeout", bo.command_timeout,
+                 "with --booster-sdk: a joint_ctrl sample older than this (ms, by its source timestamp) is refused")
+      ->capture_default_str();
+
   // An empty --simproto or --simspark (no ADDRESS) leaves the default; count() tells whether it was given at all.
-  app.parse_complete_callback([&command_line, simproto, simspark] {
+  app.parse_complete_callback([&command_line, simproto, simspark, booster] {
+    command_line.booster = booster->count() > 0;
     command_line.simproto = simproto->count() > 0;
     if (command_line.simproto_options.listen.empty()) command_line.simproto_options.listen = "127.0.0.1";
     command_line.simspark = simspark->count() > 0;

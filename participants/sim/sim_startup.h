@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "participants/booster_bridge/booster_sdk_bridge.h"
 #include "participants/common/participant_main.h"
 #include "participants/sim/node_options.h"
 #include "participants/simproto_bridge/simproto_bridge.h"
@@ -28,6 +29,10 @@ struct SimCommandLine {
   // an address is given; --simspark-agent-port, --simspark-monitor-port, --simspark-sync as turf-simspark-bridge's.
   bool simspark = false;
   SimSparkBridgeOptions simspark_options;
+  // --booster-sdk [DOMAIN]: the Booster SDK's low-level topics for every T1 and K1 (legged scenes), the first robot
+  // on DOMAIN (default 0); --booster-command-timeout.
+  bool booster = false;
+  BoosterSdkOptions booster_options;
 };
 
 // Declares turf-sim's flags on `participant`, in the order --help lists them.
