@@ -30,6 +30,10 @@ class SimHost::Impl {
       if (!kLegged) throw std::invalid_argument("the SimSpark front-end needs a legged scene, not an SSL one");
       simspark_ = std::make_unique<SimSparkBridge>(std::move(*front_ends.simspark), local_);
     }
+    if (front_ends.rcssservermj) {
+      if (!kLegged) throw std::invalid_argument("the RCSSServerMJ front-end needs a legged scene, not an SSL one");
+      rcssservermj_ = std::make_unique<RcssServerMjBridge>(std::move(*front_ends.rcssservermj), local_);
+    }
   }
 
   // The front-ends' threads are stopped and joined before Run returns, and the front-ends are destroyed before the
@@ -53,6 +57,15 @@ class SimHost::Impl {
         front_end_ended.store(true);
       });
     }
+    if (rcssservermj_) {
+      spdlog::info(
+          "serving RCSSServerMJ agents and monitor commands in this process (on an in-memory bus, no DDS "
+          "hop):");
+      threads.emplace_back([&] {
+        rcssservermj_->Run(front_end_stop);
+        front_end_ended.store(true);
+      });
+    }
     node_.Run([&] { return stop() || front_end_ended.load(); });
     done.store(true);
     for (std::thread& t : threads) t.join();
@@ -62,6 +75,7 @@ class SimHost::Impl {
   dds::Participant& participant() { return dds_; }
   SimprotoBridge* simproto() { return simproto_.get(); }
   SimSparkBridge* simspark() { return simspark_.get(); }
+  RcssServerMjBridge* rcssservermj() { return rcssservermj_.get(); }
 
  private:
   dds::Participant dds_;
@@ -70,6 +84,7 @@ class SimHost::Impl {
   SimNode node_;
   std::unique_ptr<SimprotoBridge> simproto_;
   std::unique_ptr<SimSparkBridge> simspark_;
+  std::unique_ptr<RcssServerMjBridge> rcssservermj_;
 };
 
 SimHost::SimHost(Scene scene, SimNodeOptions options, InProcessFrontEnds front_ends)
@@ -82,5 +97,6 @@ SimNode& SimHost::node() { return impl_->node(); }
 dds::Participant& SimHost::participant() { return impl_->participant(); }
 SimprotoBridge* SimHost::simproto() { return impl_->simproto(); }
 SimSparkBridge* SimHost::simspark() { return impl_->simspark(); }
+RcssServerMjBridge* SimHost::rcssservermj() { return impl_->rcssservermj(); }
 
 }  // namespace turf

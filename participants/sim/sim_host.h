@@ -6,7 +6,8 @@
 // to the MemoryBus, remote participants only to DDS (fanout_bus.h).
 //
 // Front-ends: the SSL simulation protocol (participants/simproto_bridge/: control, team and sync ports) for SSL
-// scenes, the SimSpark agent and monitor ports (participants/simspark_bridge/) for legged scenes. The
+// scenes, the SimSpark agent and monitor ports (participants/simspark_bridge/) or the RCSSServerMJ ones
+// (participants/rcssservermj_bridge/) for legged scenes. The
 // separate-process bridges stay available and work against the same turf-sim. When a front-end's loop ends by
 // itself (a SimSpark trainer's killsim, or an error), the node stops too.
 #pragma once
@@ -18,6 +19,7 @@
 #include "core/legged/legged_scene.h"
 #include "core/pinned.h"
 #include "core/scene.h"
+#include "participants/rcssservermj_bridge/rcssservermj_bridge.h"
 #include "participants/sim/node_options.h"
 #include "participants/simproto_bridge/simproto_bridge.h"
 #include "participants/simspark_bridge/simspark_bridge.h"
@@ -30,8 +32,9 @@ class Participant;
 }  // namespace dds
 
 struct InProcessFrontEnds {
-  std::optional<SimprotoBridgeOptions> simproto;  // --simproto: its listen address and ports (SSL scenes)
-  std::optional<SimSparkBridgeOptions> simspark;  // --simspark: its listen address, ports, sync mode (legged scenes)
+  std::optional<SimprotoBridgeOptions> simproto;    // --simproto: its listen address and ports (SSL scenes)
+  std::optional<SimSparkBridgeOptions> simspark;    // --simspark: its listen address, ports, sync mode (legged scenes)
+  std::optional<RcssServerMjOptions> rcssservermj;  // --rcssservermj: address, ports, modes (legged scenes, T1/K1)
 };
 
 class SimHost : Pinned {
@@ -52,6 +55,7 @@ class SimHost : Pinned {
   // The in-process front-ends, if any.
   SimprotoBridge* simproto();
   SimSparkBridge* simspark();
+  RcssServerMjBridge* rcssservermj();
 
  private:
   class Impl;

@@ -17,6 +17,7 @@
 #include "participants/common/cli_checks.h"
 #include "participants/common/process.h"
 #include "participants/common/writer_watch.h"
+#include "participants/rcssservermj_bridge/rcssservermj_flags.h"
 #include "participants/sim/sim_host.h"
 #include "participants/sim/sim_node.h"
 #include "participants/simproto_bridge/simproto_flags.h"
@@ -76,17 +77,21 @@ int RunScene(SceneKind scene, const SimCommandLine& command_line, bool legged) {
     if (!r) return kExitBadConfig;
     scene.realism = *r;  // legged scenes: the encoders, IMU and touch streams
   }
-  if (legged ? command_line.simproto : command_line.simspark) {
+  if (legged ? command_line.simproto : (command_line.simspark || command_line.rcssservermj)) {
     spdlog::error(legged ? "--simproto serves the SSL simulation protocol: it needs an SSL scene, not a legged one"
-                         : "--simspark serves SimSpark agents: it needs a legged scene (kind: legged), not an SSL one");
+                         : "--simspark and --rcssservermj serve 3D-league agents: they need a legged scene (kind: "
+                           "legged), not an SSL one");
     return kExitBadConfig;
   }
-  if (legged ? command_line.simspark : command_line.simproto) {
+  if (legged && command_line.simspark && command_line.rcssservermj) {
+    spdlog::error("--simspark and --rcssservermj both drive the match's clock: choose one");
+    return kExitBadConfig;
+  }
+  if (legged ? (command_line.simspark || command_line.rcssservermj) : command_line.simproto) {
     InProcessFrontEnds front_ends;
-    if (legged)
-      front_ends.simspark = command_line.simspark_options;
-    else
-      front_ends.simproto = command_line.simproto_options;
+    if (legged && command_line.simspark) front_ends.simspark = command_line.simspark_options;
+    if (legged && command_line.rcssservermj) front_ends.rcssservermj = command_line.rcssservermj_options;
+    if (!legged) front_ends.simproto = command_line.simproto_options;
     SimHost host(std::move(scene), command_line.node, std::move(front_ends));
     return RunAlone(host.participant(), [&] { host.Run(StopRequested); });
   }
@@ -173,12 +178,28 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
                "with --simspark: agent sync mode (a cycle runs when every agent has sent (syn))");
   AddSimSparkOperatorFlag(app, ss, "simspark-", "with --simspark: ");
 
-  // An empty --simproto or --simspark (no ADDRESS) leaves the default; count() tells whether it was given at all.
-  app.parse_complete_callback([&command_line, simproto, simspark] {
+  // RCSSServerMJ agents and monitor commands in this process (sim_host.h): the same flags as
+  // turf-rcssservermj-bridge's, prefixed.
+  RcssServerMjOptions& mj = command_line.rcssservermj_options;
+  mj.name = "turf-sim/rcssservermj";
+  CLI::Option* rcssservermj =
+      app.add_option("--rcssservermj", mj.listen,
+                     "legged scenes of T1/K1 robots: serve RCSSServerMJ (2026 3D league) agents and monitor commands "
+                     "(TCP) in this process; binds ADDRESS (default 127.0.0.1). turf-rcssservermj-bridge still works "
+                     "as a separate process")
+          ->expected(0, 1)
+          ->type_name("[ADDRESS]");
+  AddRcssServerMjFlags(app, mj, "rcssservermj-", "with --rcssservermj: ");
+
+  // An empty --simproto, --simspark or --rcssservermj (no ADDRESS) leaves the default; count() tells whether it was
+  // given at all.
+  app.parse_complete_callback([&command_line, simproto, simspark, rcssservermj] {
     command_line.simproto = simproto->count() > 0;
     if (command_line.simproto_options.listen.empty()) command_line.simproto_options.listen = "127.0.0.1";
     command_line.simspark = simspark->count() > 0;
     if (command_line.simspark_options.listen.empty()) command_line.simspark_options.listen = "127.0.0.1";
+    command_line.rcssservermj = rcssservermj->count() > 0;
+    if (command_line.rcssservermj_options.listen.empty()) command_line.rcssservermj_options.listen = "127.0.0.1";
   });
 }
 

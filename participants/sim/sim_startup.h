@@ -7,6 +7,7 @@
 #include <string>
 
 #include "participants/common/participant_main.h"
+#include "participants/rcssservermj_bridge/rcssservermj_bridge.h"
 #include "participants/sim/node_options.h"
 #include "participants/simproto_bridge/simproto_bridge.h"
 #include "participants/simspark_bridge/simspark_bridge.h"
@@ -28,6 +29,10 @@ struct SimCommandLine {
   // an address is given; --simspark-agent-port, --simspark-monitor-port, --simspark-sync as turf-simspark-bridge's.
   bool simspark = false;
   SimSparkBridgeOptions simspark_options;
+  // --rcssservermj [ADDRESS]: serve RCSSServerMJ agents and monitor commands in this process (legged scenes of
+  // T1/K1 robots), on 127.0.0.1 unless an address is given; --rcssservermj-* as turf-rcssservermj-bridge's flags.
+  bool rcssservermj = false;
+  RcssServerMjOptions rcssservermj_options;
 };
 
 // Declares turf-sim's flags on `participant`, in the order --help lists them.
