@@ -36,18 +36,30 @@ namespace turf::rcssservermj {
 
 enum class Side : uint8_t { kLeft, kRight };
 
-#define TURF_MJ_PLAY_MODES(X)                                                                                          \
-  X(kBeforeKickOff, "BeforeKickOff")                                                                                   \
-  X(kKickOffLeft, "KickOff_Left")                                                                                      \
-  X(kKickOffRight, "KickOff_Right") X(kPlayOn, "PlayOn") X(kKickInLeft, "KickIn_Left") X(kKickInRight, "KickIn_Right") \
-      X(kCornerKickLeft, "corner_kick_left") X(kCornerKickRight, "corner_kick_right")                                  \
-          X(kGoalKickLeft, "goal_kick_left") X(kGoalKickRight, "goal_kick_right") X(kOffsideLeft, "offside_left")      \
-              X(kOffsideRight, "offside_right") X(kGameOver, "GameOver") X(kGoalLeft, "Goal_Left")                     \
-                  X(kGoalRight, "Goal_Right") X(kFreeKickLeft, "free_kick_left") X(kFreeKickRight, "free_kick_right")  \
-                      X(kDirectFreeKickLeft, "direct_free_kick_left")                                                  \
-                          X(kDirectFreeKickRight, "direct_free_kick_right") X(kPenaltyKickLeft, "penalty_kick_left")   \
-                              X(kPenaltyKickRight, "penalty_kick_right") X(kPenaltyShootLeft, "penalty_shoot_left")    \
-                                  X(kPenaltyShootRight, "penalty_shoot_right")
+#define TURF_MJ_PLAY_MODES(X)                       \
+  X(kBeforeKickOff, "BeforeKickOff")                \
+  X(kKickOffLeft, "KickOff_Left")                   \
+  X(kKickOffRight, "KickOff_Right")                 \
+  X(kPlayOn, "PlayOn")                              \
+  X(kKickInLeft, "KickIn_Left")                     \
+  X(kKickInRight, "KickIn_Right")                   \
+  X(kCornerKickLeft, "corner_kick_left")            \
+  X(kCornerKickRight, "corner_kick_right")          \
+  X(kGoalKickLeft, "goal_kick_left")                \
+  X(kGoalKickRight, "goal_kick_right")              \
+  X(kOffsideLeft, "offside_left")                   \
+  X(kOffsideRight, "offside_right")                 \
+  X(kGameOver, "GameOver")                          \
+  X(kGoalLeft, "Goal_Left")                         \
+  X(kGoalRight, "Goal_Right")                       \
+  X(kFreeKickLeft, "free_kick_left")                \
+  X(kFreeKickRight, "free_kick_right")              \
+  X(kDirectFreeKickLeft, "direct_free_kick_left")   \
+  X(kDirectFreeKickRight, "direct_free_kick_right") \
+  X(kPenaltyKickLeft, "penalty_kick_left")          \
+  X(kPenaltyKickRight, "penalty_kick_right")        \
+  X(kPenaltyShootLeft, "penalty_shoot_left")        \
+  X(kPenaltyShootRight, "penalty_shoot_right")
 
 enum class PlayMode : uint8_t {
 #define TURF_MJ_ENUM(id, name) id,
