@@ -54,10 +54,10 @@ TEST(DocumentedFlags, EachParticipantsReadmeNamesOnlyFlagsItsHelpLists) {
 
 TEST(DocumentedFlags, EveryFlagOfTheMainReadmeExists) {
   std::set<std::string> offered;
-  for (const char* executable :
-       {"sim/turf-sim", "grsim_bridge/turf-grsim-bridge", "vision_bridge/turf-vision-bridge",
-        "simproto_bridge/turf-simproto-bridge", "simspark_bridge/turf-simspark-bridge", "viewer/turf-viewer",
-        "launcher/turf", "launcher/turf launch", "launcher/turf security init"}) {
+  for (const char* executable : {"sim/turf-sim", "grsim_bridge/turf-grsim-bridge", "vision_bridge/turf-vision-bridge",
+                                 "simproto_bridge/turf-simproto-bridge", "simspark_bridge/turf-simspark-bridge",
+                                 "rcssservermj_bridge/turf-rcssservermj-bridge", "viewer/turf-viewer", "launcher/turf",
+                                 "launcher/turf launch", "launcher/turf security init"}) {
     const std::set<std::string> flags = Help(executable);
     offered.insert(flags.begin(), flags.end());
   }
