@@ -357,6 +357,7 @@ std::string Session::Perceive(const Agent& a, const MjWorldSnapshot& world, bool
     const auto it = std::find(r->joint_names.begin(), r->joint_names.end(), j.joint);
     if (it == r->joint_names.end()) continue;
     const auto i = static_cast<size_t>(it - r->joint_names.begin());
+    if (i >= r->positions.size()) continue;  // a sample with fewer positions than names
     p.joints.push_back({j.perceptor, r->positions[i], i < r->velocities.size() ? r->velocities[i] : 0.0});
   }
   if (vision) {
