@@ -52,6 +52,27 @@ void ReadField(MapReader m, Field3d* f) {
   m.Finish();
 }
 
+// robots[].joints: a list of {name, q, kp, kd}; whether each names a joint of
+// the model and q lies in its range, the world checks when it compiles.
+void ReadStartJoints(MapReader& m, LeggedRobot* r) {
+  const YAML::Node joints = m.Child("joints");
+  if (joints && !joints.IsSequence()) {
+    m.Fail("joints", "expected a list of {name, q, kp, kd}");
+    return;
+  }
+  if (!joints) return;
+  for (size_t i = 0; i < joints.size(); ++i) {
+    MapReader j(joints[i], fmt::format("{}.joints[{}]", m.path(), i), m.errors());
+    JointStart start;
+    if (!j.String("name", &start.joint)) j.Fail("name", "required");
+    j.Number("q", &start.position);
+    j.Number("kp", &start.kp);
+    j.Number("kd", &start.kd);
+    j.Finish();
+    r->start_joints.push_back(std::move(start));
+  }
+}
+
 // Model files are read once per path, however many robots use them.
 void ReadRobot(MapReader m, const std::string& base_dir, std::map<std::string, std::string>* models, LeggedRobot* r) {
   if (!m.String("name", &r->name)) m.Fail("name", "required");
@@ -74,8 +95,11 @@ void ReadRobot(MapReader m, const std::string& base_dir, std::map<std::string, s
   }
   m.Number("x", &r->x);
   m.Number("y", &r->y);
+  double z = 0.0;
+  if (m.Number("z", &z)) r->z = z;
   m.Degrees("yaw_deg", &r->yaw);
   ReadMotors(m.Map("motors"), &r->motors);
+  ReadStartJoints(m, r);
   m.Finish();
 }
 

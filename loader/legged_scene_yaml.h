@@ -16,8 +16,15 @@
 //       id: 1
 //       model: ../robots/nao.xml       MJCF file, relative to the scene file
 //       x: -2.0   y: 0.0   yaw_deg: -90
+//       z: 0.665                       optional: the root body's start height, m
+//                                      (default: the robot file's)
 //       motors: {max_torque, max_speed, velocity_kp, velocity_kd, position_kp,
 //                position_kd, max_reference_lead}
+//       joints:                        optional: start angles (rad) held by the
+//         - {name: Left_Knee_Pitch, q: 0.4, kp: 350, kd: 5.5}    PD motor mode
+//                                      with these gains until commanded; the
+//                                      world refuses unknown joints and q
+//                                      outside the joint's range
 #pragma once
 
 #include <string>

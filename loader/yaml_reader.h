@@ -57,6 +57,7 @@ class MapReader {
   YAML::Node Child(const std::string& key);
 
   const std::string& path() const { return path_; }
+  Errors* errors() const { return errors_; }
   std::string PathOf(const std::string& key) const;
   // An error at `key` (at this map when the key is absent).
   void Fail(const std::string& key, const std::string& what);

@@ -39,8 +39,8 @@ bool ReadVector(const char* text, double* out, int n) {
   return true;
 }
 
-// Moves a robot's top-level body to its placement: rotated by yaw about z and
-// shifted to (x, y) on the ground.
+// Moves a robot's top-level body to its placement: rotated by yaw about z,
+// shifted to (x, y) on the ground, and raised to the placement's z if given.
 bool PlaceBody(XMLElement* body, const LeggedRobot& r, std::vector<std::string>* errors) {
   for (const char* attr : {"euler", "axisangle", "xyaxes", "zaxis"}) {
     if (body->Attribute(attr) != nullptr) {
@@ -69,7 +69,8 @@ bool PlaceBody(XMLElement* body, const LeggedRobot& r, std::vector<std::string>*
   const double qx = w * q[1] - z * q[2];
   const double qy = w * q[2] + z * q[1];
   const double qz = w * q[3] + z * q[0];
-  body->SetAttribute("pos", fmt::format("{:.9g} {:.9g} {:.9g}", px, py, p[2]).c_str());
+  const double pz = r.z ? *r.z : p[2];
+  body->SetAttribute("pos", fmt::format("{:.9g} {:.9g} {:.9g}", px, py, pz).c_str());
   body->SetAttribute("quat", fmt::format("{:.9g} {:.9g} {:.9g} {:.9g}", qw, qx, qy, qz).c_str());
   return true;
 }

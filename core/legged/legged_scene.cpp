@@ -40,6 +40,15 @@ std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
     if (r.model_xml.empty()) e.push_back(fmt::format("{}: no model", where));
     if (!(std::isfinite(r.x) && std::isfinite(r.y) && std::isfinite(r.yaw)))
       e.push_back(fmt::format("{}: pose must be finite", where));
+    if (r.z && !(std::isfinite(*r.z) && *r.z >= 0.0 && *r.z <= 10.0))
+      e.push_back(fmt::format("{}: z must be in [0, 10] m", where));
+    std::set<std::string> joints;
+    for (const JointStart& j : r.start_joints) {
+      if (!joints.insert(j.joint).second) e.push_back(fmt::format("{}.joints.{}: duplicate joint", where, j.joint));
+      if (!std::isfinite(j.position)) e.push_back(fmt::format("{}.joints.{}: q must be finite", where, j.joint));
+      if (!NonNegative(j.kp) || !NonNegative(j.kd))
+        e.push_back(fmt::format("{}.joints.{}: kp and kd must be finite and non-negative", where, j.joint));
+    }
     const MotorParams& m = r.motors;
     if (!Positive(m.max_torque) || !Positive(m.max_speed) || !NonNegative(m.velocity_kp) ||
         !NonNegative(m.velocity_kd) || !NonNegative(m.position_kp) || !NonNegative(m.position_kd) ||

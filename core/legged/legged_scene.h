@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,17 @@ struct MotorParams {
   double max_reference_lead = 0.05;
 };
 
+// A joint's start: its angle at the scene's start (and after a reset), and the
+// PD motor (JointMode::kPd) that holds it there with these gains until the
+// first command for that joint. Joints not listed start at the model's zero
+// pose in velocity mode (target 0).
+struct JointStart {
+  std::string joint;      // the robot file's joint name
+  double position = 0.0;  // rad (m for slide joints)
+  double kp = 0.0;        // N m / rad
+  double kd = 0.0;        // N m s / rad
+};
+
 // One placement of a robot model.
 struct LeggedRobot {
   std::string name;       // unique; prefixes every named element ("nao_1/lj4")
@@ -47,7 +59,11 @@ struct LeggedRobot {
   double x = 0.0;         // ground point under the robot's model origin, m
   double y = 0.0;
   double yaw = 0.0;  // rad about z
+  // Height of the root body's origin above the ground; none = the robot
+  // file's (its top-level body's pos z).
+  std::optional<double> z;
   MotorParams motors;
+  std::vector<JointStart> start_joints;
 };
 
 // The RoboCup 3D soccer field (SimSpark), see shared/protocols/simspark.md.

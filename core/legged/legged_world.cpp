@@ -54,10 +54,14 @@ struct LeggedWorld::JointSlot {
   bool limited = false;
   double lo = 0.0;
   double hi = 0.0;
-  JointCommand command;    // the holding command (joint name unused)
-  double reference = 0.0;  // velocity mode: integrated target angle
-  double effort = 0.0;     // the motor row's force in the last step
-  int row = -1;            // its motor's constraint row in this step, -1 if none
+  double effort_limit = 0.0;    // N m: PD mode's torque bound
+  double frictionloss = 0.0;    // the robot file's passive friction (PD mode keeps it)
+  double start_position = 0.0;  // the scene's start angle (the model's qpos0 if none)
+  JointCommand start;           // the command it holds at the start and after a reset
+  JointCommand command;         // the holding command (joint name unused)
+  double reference = 0.0;       // velocity mode: integrated target angle
+  double effort = 0.0;          // the motor row's force in the last step
+  int row = -1;                 // its motor's constraint row in this step, -1 if none
 };
 
 struct LeggedWorld::SensorRef {
@@ -123,8 +127,13 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
       js.limited = m->jnt_limited[j] != 0;
       js.lo = m->jnt_range[2 * j];
       js.hi = m->jnt_range[2 * j + 1];
+      const double user = m->nuser_jnt > 0 ? m->jnt_user[j * m->nuser_jnt] : 0.0;
+      js.effort_limit = user > 0.0 ? user : spec.motors.max_torque;
+      js.frictionloss = m->dof_frictionloss[js.dof];
+      js.start_position = m->qpos0[js.qpos];
       slot.joints.push_back(js);
     }
+    ApplyStartJoints(spec, &slot.joints);
     // Each joint's motor is a constraint row bounded by max_torque: MuJoCo's
     // dof friction row, whose target velocity and bound the servo stage sets.
     for (const JointSlot& js : slot.joints) model_->dof_frictionloss[js.dof] = spec.motors.max_torque;
@@ -164,15 +173,35 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
 
 LeggedWorld::~LeggedWorld() = default;
 
+// The scene's start angles and PD gains: every joint named must exist and the
+// angle must lie in its range (the scene is refused otherwise).
+void LeggedWorld::ApplyStartJoints(const LeggedRobot& spec, std::vector<JointSlot>* joints) {
+  for (const JointStart& start : spec.start_joints) {
+    auto it = std::find_if(joints->begin(), joints->end(), [&](const JointSlot& j) { return j.name == start.joint; });
+    if (it == joints->end())
+      throw std::invalid_argument(
+          fmt::format("robots.{}.joints.{}: no such joint in {}", spec.name, start.joint, spec.model));
+    if (it->limited && (start.position < it->lo || start.position > it->hi))
+      throw std::invalid_argument(fmt::format("robots.{}.joints.{}: q {} is outside the joint's range [{}, {}]",
+                                              spec.name, start.joint, start.position, it->lo, it->hi));
+    it->start_position = start.position;
+    it->start.mode = JointMode::kPd;
+    it->start.value = start.position;
+    it->start.kp = start.kp;
+    it->start.kd = start.kd;
+  }
+}
+
 void LeggedWorld::ResetCommands() {
   for (RobotSlot& r : robots_) ResetCommands(&r);
 }
 
 void LeggedWorld::ResetCommands(RobotSlot* r) {
   for (JointSlot& j : r->joints) {
-    j.command = JointCommand{};
+    j.command = j.start;
     j.reference = data_->qpos[j.qpos];
     j.effort = 0.0;
+    j.row = -1;
   }
 }
 
@@ -195,7 +224,7 @@ PlacementError LeggedWorld::PlaceRobot(int robot, const RobotPlacement& p) {
   for (int k = 0; k < 4; ++k) d->qpos[r.root_qpos + 3 + k] = p.orientation[k] / std::sqrt(norm);
   for (int k = 0; k < 6; ++k) d->qvel[r.root_dof + k] = 0.0;
   for (JointSlot& j : r.joints) {
-    if (p.reset_joints) d->qpos[j.qpos] = m->qpos0[j.qpos];
+    if (p.reset_joints) d->qpos[j.qpos] = j.start_position;
     d->qvel[j.dof] = 0.0;
     j.reference = d->qpos[j.qpos];
   }
@@ -273,6 +302,8 @@ void LeggedWorld::Save(StateWriter& out) const {
       out.Put(j.command.value);
       out.Put(j.command.kp);
       out.Put(j.command.kd);
+      out.Put(j.command.dq);
+      out.Put(j.command.tau);
       out.Put(j.reference);
       out.Put(j.effort);
       out.Put(j.row);
@@ -292,10 +323,12 @@ void LeggedWorld::Restore(StateReader& in) {
   health_.instability_recoveries = in.Get<uint64_t>();
   for (RobotSlot& r : robots_) {
     for (JointSlot& j : r.joints) {
-      j.command.mode = in.Enum(static_cast<JointMode>(3));
+      j.command.mode = in.Enum(static_cast<JointMode>(kJointModeCount));
       j.command.value = in.Get<double>();
       j.command.kp = in.Get<double>();
       j.command.kd = in.Get<double>();
+      j.command.dq = in.Get<double>();
+      j.command.tau = in.Get<double>();
       j.reference = in.Get<double>();
       j.effort = in.Get<double>();
       j.row = in.Get<int>();
@@ -306,6 +339,9 @@ void LeggedWorld::Restore(StateReader& in) {
 
 void LeggedWorld::Reset() {
   mj_resetData(model_.get(), data_.get());
+  for (const RobotSlot& r : robots_) {
+    for (const JointSlot& j : r.joints) data_->qpos[j.qpos] = j.start_position;
+  }
   frame_ = 0;
   mj_forward(model_.get(), data_.get());
   ResetCommands();
@@ -321,6 +357,34 @@ int LeggedWorld::RobotIndex(const std::string& name) const {
   return -1;
 }
 
+LeggedJointInfo LeggedWorld::JointInfo(int robot, int joint) const {
+  LeggedJointInfo info;
+  if (robot < 0 || robot >= RobotCount() || joint < 0 || joint >= static_cast<int>(robots_[robot].joints.size()))
+    return info;
+  const JointSlot& j = robots_[robot].joints[joint];
+  info.limited = j.limited;
+  info.lo = j.lo;
+  info.hi = j.hi;
+  info.effort_limit = j.effort_limit;
+  info.frictionloss = j.frictionloss;
+  info.armature = model_->dof_armature[j.dof];
+  return info;
+}
+
+double LeggedWorld::RobotMass(int robot) const {
+  if (robot < 0 || robot >= RobotCount()) return 0.0;
+  double mass = 0.0;
+  for (int b : robots_[robot].bodies) mass += model_->body_mass[b];
+  return mass;
+}
+
+std::array<double, 3> LeggedWorld::RobotCenterOfMass(int robot) const {
+  std::array<double, 3> com{};
+  if (robot < 0 || robot >= RobotCount()) return com;
+  for (int k = 0; k < 3; ++k) com[k] = data_->subtree_com[3 * robots_[robot].base_body + k];
+  return com;
+}
+
 int LeggedWorld::JointIndex(int robot, const std::string& joint) const {
   if (robot < 0 || robot >= RobotCount()) return -1;
   const std::vector<JointSlot>& joints = robots_[robot].joints;
@@ -334,7 +398,8 @@ JointCommandError LeggedWorld::CheckJointCommand(int robot, const JointCommand& 
   if (robot < 0 || robot >= RobotCount()) return JointCommandError::kUnknownRobot;
   const int index = JointIndex(robot, c.joint);
   if (index < 0) return JointCommandError::kUnknownJoint;
-  if (!std::isfinite(c.value) || !std::isfinite(c.kp) || !std::isfinite(c.kd)) return JointCommandError::kNotFinite;
+  for (double v : {c.value, c.kp, c.kd, c.dq, c.tau})
+    if (!std::isfinite(v)) return JointCommandError::kNotFinite;
   const JointSlot& j = robots_[robot].joints[index];
   const MotorParams& motors = robots_[robot].spec->motors;
   switch (c.mode) {
@@ -344,6 +409,11 @@ JointCommandError LeggedWorld::CheckJointCommand(int robot, const JointCommand& 
       return j.limited && (c.value < j.lo || c.value > j.hi) ? JointCommandError::kOutOfRange : JointCommandError::kOk;
     case JointMode::kTorque:
       return std::abs(c.value) > motors.max_torque ? JointCommandError::kOutOfRange : JointCommandError::kOk;
+    case JointMode::kPd: {
+      const bool bad = (j.limited && (c.value < j.lo || c.value > j.hi)) || std::abs(c.dq) > motors.max_speed ||
+                       std::abs(c.tau) > j.effort_limit || c.kp < 0 || c.kp > kMaxPdKp || c.kd < 0 || c.kd > kMaxPdKd;
+      return bad ? JointCommandError::kOutOfRange : JointCommandError::kOk;
+    }
   }
   return JointCommandError::kOutOfRange;
 }
@@ -393,6 +463,10 @@ void LeggedWorld::StageServos() {
   for (RobotSlot& r : robots_) {
     const MotorParams& motors = r.spec->motors;
     for (JointSlot& j : r.joints) {
+      if (j.command.mode == JointMode::kPd) {
+        ServoPd(&j);
+        continue;
+      }
       double target = 0.0;  // velocity at the end of the step
       double bound = motors.max_torque;
       double gain = 0.0;  // N m s / rad; 0 = stiff (ODE's joint CFM 1e-8)
@@ -416,6 +490,8 @@ void LeggedWorld::StageServos() {
           }
           break;
         }
+        case JointMode::kPd:
+          break;  // ServoPd above
         case JointMode::kTorque:
           // A motor with a speed limit (ODE's way of torque control): the
           // torque drives the joint up to max_speed, and no faster.
@@ -437,13 +513,27 @@ void LeggedWorld::StageServos() {
   }
 }
 
+// PD mode (RCSSServerMJ's and the Booster SDK's motor): an explicit torque
+// from this step's angle and velocity, clamped to the joint's effort limit.
+// The joint's constraint row keeps what MuJoCo made of it (its reference
+// acceleration and impedance from the joint's solref/solimp) with the robot
+// file's frictionloss as its bound: the passive friction, nothing else.
+void LeggedWorld::ServoPd(JointSlot* j) {
+  mjData* d = data_.get();
+  const JointCommand& c = j->command;
+  const double torque = c.kp * (c.value - d->qpos[j->qpos]) + c.kd * (c.dq - d->qvel[j->dof]) + c.tau;
+  j->effort = std::clamp(torque, -j->effort_limit, j->effort_limit);
+  d->qfrc_applied[j->dof] = j->effort;
+  if (j->row >= 0) d->efc_frictionloss[j->row] = j->frictionloss;
+}
+
 // Stage 2: the rest of the MuJoCo step (mj_step2: constraint solver and
 // integration); false if it produced a non-finite state.
 bool LeggedWorld::StagePhysics() {
   mj_step2(model_.get(), data_.get());
   for (RobotSlot& r : robots_) {
     for (JointSlot& j : r.joints) {
-      j.effort = j.row >= 0 ? data_->efc_force[j.row] : 0.0;
+      if (j.command.mode != JointMode::kPd) j.effort = j.row >= 0 ? data_->efc_force[j.row] : 0.0;
     }
   }
   return StateFinite(model_.get(), data_.get(), INFINITY);

@@ -6,7 +6,8 @@
 //   inputs   SetJointCommand / Reset (validated; a refused input changes nothing)
 //   Step():  mj_step1 (positions, velocities, constraint rows)
 //            1 servos (commands -> each joint's motor row: target velocity and
-//              force bound, as ODE's hinge motor)
+//              force bound, as ODE's hinge motor; or, in PD mode, an explicit
+//              torque on the joint, as RCSSServerMJ and the Booster SDK)
 //            2 physics (mj_step2: one constraint solve, integration)
 //            3 health (a non-finite state is undone)
 //   outputs  State() and the accessors (read-only)
@@ -28,28 +29,46 @@
 
 namespace turf {
 
-enum class JointMode : uint8_t { kVelocity, kPosition, kTorque };
+// kPd is RCSSServerMJ's and the Booster SDK's motor (MotorCmd): every physics
+// step the joint gets the torque kp (value - q) + kd (dq - q') + tau, clamped
+// to the joint's effort limit, applied explicitly (no constraint row). The
+// effort limit is the joint's first `user` value in the robot file (N m; the
+// reference's actuatorfrcrange), else the robot's motors.max_torque. In PD
+// mode a joint keeps its passive friction (the file's frictionloss), which the
+// other modes' motor row replaces.
+enum class JointMode : uint8_t { kVelocity, kPosition, kTorque, kPd };
+inline constexpr int kJointModeCount = 4;
+
+// Upper bounds of PD gains a command may carry (a guard against garbage, far
+// above any real servo's: the T1's largest SDK gain is 550 N m/rad).
+inline constexpr double kMaxPdKp = 1e4;  // N m / rad
+inline constexpr double kMaxPdKd = 1e3;  // N m s / rad
 
 // A command for one joint; it holds until the next command for that joint
 // (SimSpark's hinge effectors behave so). At start every joint is in velocity
-// mode with target 0: it holds its angle.
+// mode with target 0 (it holds its angle), or in PD mode at the scene's start
+// angle and gains (LeggedRobot::start_joints).
 struct JointCommand {
   std::string joint;  // the model's name, without the robot prefix ("rlj4")
   JointMode mode = JointMode::kVelocity;
-  double value = 0.0;  // rad/s, rad, or N m (m/s, m, N for slide joints)
-  double kp = -1.0;    // position mode: gains; negative = the robot's defaults
+  double value = 0.0;  // rad/s, rad, or N m (m/s, m, N for slide joints); kPd: target q, rad
+  double kp = -1.0;    // position mode: gains; negative = the robot's defaults. kPd: >= 0
   double kd = -1.0;
+  double dq = 0.0;   // kPd: target velocity, rad/s
+  double tau = 0.0;  // kPd: feed-forward torque, N m
 };
 
 // Joint commands answer kOk, kUnknownRobot, kUnknownJoint, kNotFinite or
 // kOutOfRange (beyond max speed, max torque or the joint's range; negative
-// gains): core/errors.h.
+// gains; kPd: q outside the joint's range, |dq| above max speed, |tau| above
+// the joint's effort limit, kp or kd negative or above kMaxPdKp / kMaxPdKd):
+// core/errors.h.
 
 // Where a robot's root body goes (a SimSpark beam, a trainer's move, parking).
 struct RobotPlacement {
   std::array<double, 3> position{};               // root body origin, world frame
   std::array<double, 4> orientation{1, 0, 0, 0};  // w, x, y, z (normalised by the world)
-  bool reset_joints = false;                      // joints back to the model's zero pose, each holding there
+  bool reset_joints = false;  // joints back to their start (the scene's start_joints, else zero), holding there
 };
 
 // Placements answer kOk, kUnknownRobot, kNotFinite or kNoBall (core/errors.h).
@@ -63,6 +82,16 @@ struct ForceReading {
   bool contact = false;
   std::array<double, 3> force{};
   std::array<double, 3> point{};
+};
+
+// A joint as the model has it (static).
+struct LeggedJointInfo {
+  bool limited = false;
+  double lo = 0.0;  // rad (m)
+  double hi = 0.0;
+  double effort_limit = 0.0;  // N m: the file's first `user` value, else motors.max_torque
+  double frictionloss = 0.0;  // N m, the file's
+  double armature = 0.0;      // kg m^2, the file's
 };
 
 // A body's pose in the world frame (for vision models and viewers).
@@ -147,7 +176,12 @@ class LeggedWorld : Pinned {
   int RobotIndex(const std::string& name) const;  // -1 if unknown
   int RobotCount() const;
   int JointIndex(int robot, const std::string& joint) const;  // -1 if unknown
-  std::vector<LeggedGeom> RobotGeoms(int robot) const;        // empty if unknown
+  // A joint's range and effort limit (N m, PD mode's clamp); all zero if unknown.
+  LeggedJointInfo JointInfo(int robot, int joint) const;
+  double RobotMass(int robot) const;  // kg, every body of the robot; 0 if unknown
+  // The robot's centre of mass, world frame (as of the last step); zeros if unknown.
+  std::array<double, 3> RobotCenterOfMass(int robot) const;
+  std::vector<LeggedGeom> RobotGeoms(int robot) const;  // empty if unknown
   int64_t time_ns() const { return static_cast<int64_t>(frame_) * step_ns_; }
   uint64_t frame() const { return frame_; }
   int64_t step_ns() const { return step_ns_; }
@@ -161,6 +195,8 @@ class LeggedWorld : Pinned {
   struct RobotSlot;
 
   void StageServos();
+  void ServoPd(JointSlot* joint);
+  static void ApplyStartJoints(const LeggedRobot& spec, std::vector<JointSlot>* joints);
   bool StagePhysics();
   void ResetCommands();
   void ResetCommands(RobotSlot* robot);

@@ -100,12 +100,17 @@ bool FromIdl(const idl::JointTarget& in, JointCommand* out) {
     case idl::JOINT_TORQUE:
       out->mode = JointMode::kTorque;
       break;
+    case idl::JOINT_PD:
+      out->mode = JointMode::kPd;
+      break;
     default:
       return false;
   }
   out->value = in.value();
   out->kp = in.kp();
   out->kd = in.kd();
+  out->dq = in.dq();
+  out->tau = in.tau();
   return true;
 }
 

@@ -205,5 +205,50 @@ TEST(MemoryBusNode, ALeggedSceneStepsAndPublishesJointStates) {
   EXPECT_EQ(scene.samples()[0].robots().size(), 2u);
 }
 
+// The generic joint-command topic carries the PD motor mode (JOINT_PD: q, dq, kp, kd, tau); a sample with a
+// non-finite dq or a tau beyond the joint's effort limit is refused whole and counted, and moves nothing.
+TEST(MemoryBusNode, JointPdCommandsOnTheTopicDriveABoosterT1) {
+  LeggedSceneLoadResult r = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/t1_stand.yaml");
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  r.scene->realism = {};
+  dds::MemoryBus bus("mem");
+  Inbox<idl::JointStatePubSubType> joints(bus, dds::Topic::kRobotJointState);
+  test::SimUnderTest sim(std::move(*r.scene), bus, TimeMode::kLockstep);
+  dds::ControlClient client(bus, "test");
+  auto writer = bus.MakeWriter(dds::Topic::kRobotJointCommand);
+  auto target = [](double q, double dq, double tau) {
+    idl::JointTarget t;
+    t.name("AAHead_yaw");
+    t.mode(idl::JOINT_PD);
+    t.value(q);
+    t.kp(5);
+    t.kd(0.1);
+    t.dq(dq);
+    t.tau(tau);
+    return t;
+  };
+  idl::JointCommand bad;
+  bad.robot("t1");
+  bad.joints().push_back(target(-0.5, NAN, 0));
+  writer->Write(bad);
+  bad.joints()[0] = target(-0.5, 0, 7.5);  // the head's effort limit is 7 N m
+  writer->Write(bad);
+  idl::JointCommand good;
+  good.robot("t1");
+  good.joints().push_back(target(0.5, 0, 0.2));
+  writer->Write(good);
+  const dds::ControlOutcome outcome = client.Call(test::StepRequest(400), kDeadline);  // 2 s
+  ASSERT_TRUE(outcome.ok()) << outcome.Describe();
+  EXPECT_EQ(sim.node().Rejected("joint_command.not_finite"), 1u);
+  EXPECT_EQ(sim.node().Rejected("joint_command.out_of_range"), 1u);
+  const int64_t reached_ns = outcome.reply->sim_time_ns();
+  ASSERT_TRUE(joints.WaitFor([&](const auto& all) { return !all.empty() && all.back().sim_time_ns() == reached_ns; }));
+  const idl::JointState& last = joints.samples().back();
+  ASSERT_EQ(last.name().size(), 23u);
+  EXPECT_EQ(last.name()[0], "AAHead_yaw");
+  // kp 5 with 0.2 N m feed-forward (and the joint's 0.1 N m friction): close to 0.5 + 0.2 / 5 rad.
+  EXPECT_NEAR(last.position()[0], 0.54, 0.03);
+}
+
 }  // namespace
 }  // namespace turf

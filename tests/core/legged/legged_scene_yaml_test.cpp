@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "core/legged/legged_world.h"
@@ -87,6 +88,52 @@ TEST(LeggedSceneYamlTest, RefusesBadInput) {
                        "robots[0].x"));
   EXPECT_FALSE(ParseLeggedSceneYaml("kind: legged\n", dir).errors.empty());  // no robots
   EXPECT_FALSE(ParseLeggedSceneYaml("[", dir).errors.empty());
+}
+
+TEST(LeggedSceneYamlTest, BoosterStandScenesLoadWithStartHeightPoseAndGains) {
+  for (const char* name : {"t1_stand.yaml", "k1_stand.yaml"}) {
+    LeggedSceneLoadResult r = LoadLeggedSceneFile(kScenes + name);
+    ASSERT_TRUE(r.scene) << r.errors.front();
+    const LeggedRobot& robot = r.scene->robots[0];
+    ASSERT_TRUE(robot.z.has_value()) << name;
+    EXPECT_EQ(robot.start_joints.size(), robot.model.find("t1") != std::string::npos ? 23u : 22u) << name;
+    const double z = *robot.z;
+    LeggedWorld w(std::move(*r.scene));
+    EXPECT_NEAR(w.State().robots[0].base_position[2], z, 1e-9) << name;
+  }
+}
+
+// Start joints: a list of {name, q, kp, kd}; bad values are named by the
+// loader, names and ranges the model must check are named by the world.
+TEST(LeggedSceneYamlTest, RefusesBadStartJoints) {
+  const std::string dir = std::string(TURF_SOURCE_DIR) + "/configs/scenes";
+  const std::string head = "kind: legged\nrobots:\n  - name: a\n    model: ../robots/t1.xml\n";
+  EXPECT_TRUE(HasError(ParseLeggedSceneYaml(head + "    joints: {Waist: 0}\n", dir), "robots[0].joints"));
+  EXPECT_TRUE(HasError(ParseLeggedSceneYaml(head + "    joints:\n      - {name: Waist, q: 0, kq: 1}\n", dir),
+                       "robots[0].joints[0].kq"));
+  EXPECT_TRUE(HasError(ParseLeggedSceneYaml(head + "    joints:\n      - {q: 0}\n", dir), "robots[0].joints[0].name"));
+  EXPECT_TRUE(HasError(ParseLeggedSceneYaml(head + "    joints:\n      - {name: Waist, kp: -1}\n", dir),
+                       "robots.a.joints.Waist: kp and kd"));
+  EXPECT_TRUE(HasError(ParseLeggedSceneYaml(head + "    joints:\n      - {name: Waist}\n      - {name: Waist}\n", dir),
+                       "duplicate"));
+  EXPECT_TRUE(HasError(ParseLeggedSceneYaml(head + "    z: -1\n", dir), "z must be"));
+  LeggedSceneLoadResult unknown = ParseLeggedSceneYaml(head + "    joints:\n      - {name: Knee, q: 0.4}\n", dir);
+  ASSERT_TRUE(unknown.scene);
+  try {
+    LeggedWorld w(std::move(*unknown.scene));
+    ADD_FAILURE() << "an unknown start joint was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("robots.a.joints.Knee: no such joint"), std::string::npos) << e.what();
+  }
+  LeggedSceneLoadResult outside =
+      ParseLeggedSceneYaml(head + "    joints:\n      - {name: Left_Knee_Pitch, q: -0.5}\n", dir);
+  ASSERT_TRUE(outside.scene);
+  try {
+    LeggedWorld w(std::move(*outside.scene));
+    ADD_FAILURE() << "a start angle outside the range was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("outside the joint's range"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
