@@ -56,11 +56,11 @@ void ReadField(MapReader m, Field3d* f) {
 // the model and q lies in its range, the world checks when it compiles.
 void ReadStartJoints(MapReader& m, LeggedRobot* r) {
   const YAML::Node joints = m.Child("joints");
-  if (joints && !joints.IsSequence()) {
+  if (!joints.IsDefined() || joints.IsNull()) return;  // absent
+  if (!joints.IsSequence()) {
     m.Fail("joints", "expected a list of {name, q, kp, kd}");
     return;
   }
-  if (!joints) return;
   for (size_t i = 0; i < joints.size(); ++i) {
     MapReader j(joints[i], fmt::format("{}.joints[{}]", m.path(), i), m.errors());
     JointStart start;
