@@ -215,17 +215,24 @@ TEST(RcssServerMjFrontEnd, SyncModeAdvancesOneCyclePerRoundOfActions) {
   AgentClient a = match.Connect(), b = match.Connect();
   ASSERT_TRUE(a.Send("(init T1 blue 1)"));
   ASSERT_TRUE(b.Send("(init T1 red 1)"));
-  ASSERT_TRUE(a.Receive(60s));
-  ASSERT_TRUE(b.Receive(20s));
-  const uint64_t start = match.bridge().Stats().cycles;
+  std::optional<std::string> first_a = a.Receive(60s), first_b = b.Receive(20s);
+  ASSERT_TRUE(first_a && first_b);
+  const std::optional<Perception> pa = Parse(*first_a), pb = Parse(*first_b);
+  ASSERT_TRUE(pa && pb);
+  EXPECT_EQ(pa->now, pb->now);  // both activated in the same cycle
+  double now = pa->now;
   for (int round = 1; round <= 5; ++round) {
     ASSERT_TRUE(a.Send("(syn)"));
     // One agent answered: no cycle until the other does.
     EXPECT_FALSE(a.Receive(100ms).has_value());
     ASSERT_TRUE(b.Send("(syn)"));
-    ASSERT_TRUE(a.Receive(20s));
-    ASSERT_TRUE(b.Receive(20s));
-    EXPECT_EQ(match.bridge().Stats().cycles, start + round);
+    const std::optional<std::string> ma = a.Receive(20s), mb = b.Receive(20s);
+    ASSERT_TRUE(ma && mb);
+    const std::optional<Perception> qa = Parse(*ma), qb = Parse(*mb);
+    ASSERT_TRUE(qa && qb);
+    EXPECT_NEAR(qa->now - now, 0.02, 1e-9) << "round " << round;  // exactly one cycle
+    EXPECT_EQ(qa->now, qb->now);
+    now = qa->now;
   }
 }
 
