@@ -183,6 +183,34 @@ TEST(RcssServerMjFrontEnd, AT1AgentInitsBeamsMovesAJointAndSeesEveryOtherCycle) 
   EXPECT_LT(p->pos[2], 0.6);
 }
 
+// The Booster SDK example's standing pose and gains (configs/scenes/t1_stand.yaml), sent as motor commands every
+// cycle after a beam: the T1 stands on the PD motors for 5 s of simulated time.
+TEST(RcssServerMjFrontEnd, AT1HoldingTheStandingPoseStaysUpright) {
+  Match match(Fast(/*sequential=*/true));
+  AgentClient agent = match.Connect();
+  ASSERT_TRUE(agent.Send("(init T1 a 1)"));
+  ASSERT_TRUE(agent.Receive(60s));
+  const std::string stand =
+      "(he1 0 0 5 0.1 0)(he2 0 0 5 0.1 0)(lae1 0 0 40 0.5 0)(lae2 -80.21 0 50 1.5 0)(lae3 0 0 20 0.2 0)"
+      "(lae4 -22.92 0 10 0.2 0)(rae1 0 0 40 0.5 0)(rae2 80.21 0 50 1.5 0)(rae3 0 0 20 0.2 0)(rae4 22.92 0 10 0.2 0)"
+      "(te1 0 0 100 5 0)(lle1 -11.46 0 350 7.5 0)(lle2 0 0 350 7.5 0)(lle3 0 0 180 3 0)(lle4 22.92 0 350 5.5 0)"
+      "(lle5 -11.46 0 550 1.5 0)(lle6 0 0 550 1.5 0)(rle1 -11.46 0 350 7.5 0)(rle2 0 0 350 7.5 0)"
+      "(rle3 0 0 180 3 0)(rle4 22.92 0 350 5.5 0)(rle5 -11.46 0 550 1.5 0)(rle6 0 0 550 1.5 0)";
+  std::optional<Perception> p = Round(&agent, stand + "(beam 5 0 0)");
+  ASSERT_TRUE(p);
+  double lowest = 10;
+  for (int i = 0; i < 250; ++i) {  // 5 s
+    p = Round(&agent, stand);
+    ASSERT_TRUE(p);
+    lowest = std::min(lowest, p->pos[2]);
+  }
+  EXPECT_GT(lowest, 0.55) << "the torso sank: it fell";
+  EXPECT_NEAR(p->pos[0], -5.0, 0.3);
+  EXPECT_NEAR(p->pos[1], 0.0, 0.3);
+  EXPECT_GT(p->quat[0] * p->quat[0] + p->quat[3] * p->quat[3], 0.95) << "tilted";  // |tilt| about x, y small
+  EXPECT_NEAR(Joint(*p, "q_llj4"), 22.92, 3.0);                                    // the knee at its target (degrees)
+}
+
 TEST(RcssServerMjFrontEnd, SeeHasTheFactsGrammar) {
   Match match(Fast(true));
   AgentClient agent = match.Connect();
