@@ -4,6 +4,9 @@
 #   bench/run.sh ssl [sim seconds]       turf-sim alone, SSL scenes
 #   bench/run.sh simspark [sim seconds]  SimSpark agents through turf-simspark-bridge
 #   bench/run.sh rcssservermj [sim seconds]  RCSSServerMJ agents (T1) served by turf-sim --rcssservermj
+#   bench/run.sh rcssservermj-nn --client-dir DIR
+#                                        RCSSServerMJ's example T1 walking policy (example/nn_client, kept outside
+#                                        turf) on turf: distance walked, falls (issue 14's acceptance run)
 #   bench/run.sh snapshot                kernel snapshots: size, Save and Restore next to a step
 #   bench/run.sh sync [requests]         SSL sync port round trip: separate bridge over DDS vs in turf-sim's process
 #   bench/run.sh security [sim seconds]  what DDS Security costs: the SSL bench and the DDS hop latency, off and on
@@ -14,7 +17,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
 WHAT=all
-if [[ "${1:-}" =~ ^(ssl|simspark|rcssservermj|snapshot|sync|security|ut-agents)$ ]]; then
+if [[ "${1:-}" =~ ^(ssl|simspark|rcssservermj|rcssservermj-nn|snapshot|sync|security|ut-agents)$ ]]; then
   WHAT=$1
   shift
 fi
@@ -149,6 +152,7 @@ case "$WHAT" in
   ssl) ssl ;;
   simspark) simspark ;;
   rcssservermj) rcssservermj ;;
+  rcssservermj-nn) bench/rcssservermj_nn/run.sh "$@" ;;
   snapshot) "$BUILD_DIR/bench/turf-bench-snapshot" ;;
   sync) "$BUILD_DIR/bench/turf-bench-sync" --requests "${1:-1000}" ;;
   security) security ;;
