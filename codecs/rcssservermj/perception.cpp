@@ -86,7 +86,12 @@ std::string PythonFloat(double v) {
 
 double Truncate(double v, int decimals) {
   const double scale = std::pow(10.0, decimals);
-  return std::trunc(v * scale) / scale;
+  const double x = v * scale;
+  // A decimal value whose binary form lies a hair below it (0.58 * 100 = 57.99999999999999) keeps its last digit:
+  // so the time of cycle k reads exactly k * 0.02, never the same hundredth twice.
+  const double nearest = std::round(x);
+  const double whole = std::abs(x - nearest) < 1e-6 ? nearest : std::trunc(x);
+  return std::copysign(whole / scale, v);
 }
 
 void AppendNumber(std::string* out, double v, int decimals) { out->append(PythonFloat(Truncate(v, decimals))); }

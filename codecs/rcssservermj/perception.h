@@ -20,7 +20,8 @@ namespace turf::rcssservermj {
 // Python's repr() of a double (shortest digits that read back the same).
 // A non-finite value is written `0.0` (the wire has no nan).
 std::string PythonFloat(double v);
-// The reference's number: trunc(v * 10^decimals) / 10^decimals, sign kept.
+// The reference's number: trunc(v * 10^decimals) / 10^decimals, sign kept; a product within 1e-6 of an integer
+// counts as that integer (binary representation error, e.g. 0.58 * 100).
 double Truncate(double v, int decimals);
 // PythonFloat(Truncate(v, decimals)), appended.
 void AppendNumber(std::string* out, double v, int decimals);

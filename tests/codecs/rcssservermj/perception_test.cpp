@@ -47,6 +47,20 @@ TEST(MjNumbers, TruncatedTowardZeroNotRounded) {
   EXPECT_EQ(out, "9.81");
 }
 
+// Every cycle's time reads k * 0.02 exactly, although 0.58 * 100 is 57.99999999999999 in binary.
+TEST(MjNumbers, CycleTimesKeepTheirLastDigit) {
+  for (int64_t k = 0; k <= 500000; ++k) {
+    const double decimal = static_cast<double>(2 * k) / 100.0;  // the double nearest to k * 0.02
+    const double from_ns =
+        static_cast<double>(k * 20000000) * 1e-9;  // the world's nanoseconds, as the front-end reads them
+    for (const double t : {decimal, from_ns}) {
+      std::string out;
+      AppendNumber(&out, t, 2);
+      ASSERT_EQ(out, PythonFloat(decimal)) << k;
+    }
+  }
+}
+
 // The facts' example (T1, shortened to two joints), written from the values it shows.
 TEST(MjPerception, TheFactsExampleByteForByte) {
   MjPerception p;
