@@ -28,7 +28,7 @@ struct LeggedRates {
 // max_torque. Position mode is an implicit PD with the command's gains, or
 // these defaults, bounded by max_torque too.
 struct MotorParams {
-  double max_torque = 10.0;   // N m, SimSpark's motor FMax
+  double max_torque = 10.0;   // N m, SimSpark's motor FMax (for joints without an effort limit in the file)
   double max_speed = 6.1395;  // rad/s, |target velocity| is clamped to it
   double position_kp = 50.0;  // default gains of position mode
   double position_kd = 1.0;

@@ -408,7 +408,7 @@ JointCommandError LeggedWorld::CheckJointCommand(int robot, const JointCommand& 
     case JointMode::kPosition:
       return j.limited && (c.value < j.lo || c.value > j.hi) ? JointCommandError::kOutOfRange : JointCommandError::kOk;
     case JointMode::kTorque:
-      return std::abs(c.value) > motors.max_torque ? JointCommandError::kOutOfRange : JointCommandError::kOk;
+      return std::abs(c.value) > j.effort_limit ? JointCommandError::kOutOfRange : JointCommandError::kOk;
     case JointMode::kPd: {
       const bool bad = (j.limited && (c.value < j.lo || c.value > j.hi)) || std::abs(c.dq) > motors.max_speed ||
                        std::abs(c.tau) > j.effort_limit || c.kp < 0 || c.kp > kMaxPdKp || c.kd < 0 || c.kd > kMaxPdKd;
@@ -468,7 +468,7 @@ void LeggedWorld::StageServos() {
         continue;
       }
       double target = 0.0;  // velocity at the end of the step
-      double bound = motors.max_torque;
+      double bound = j.effort_limit;
       double gain = 0.0;  // N m s / rad; 0 = stiff (ODE's joint CFM 1e-8)
       switch (j.command.mode) {
         case JointMode::kVelocity: {

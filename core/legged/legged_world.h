@@ -33,9 +33,9 @@ namespace turf {
 // step the joint gets the torque kp (value - q) + kd (dq - q') + tau, clamped
 // to the joint's effort limit, applied explicitly (no constraint row). The
 // effort limit is the joint's first `user` value in the robot file (N m; the
-// reference's actuatorfrcrange), else the robot's motors.max_torque. In PD
-// mode a joint keeps its passive friction (the file's frictionloss), which the
-// other modes' motor row replaces.
+// reference's actuatorfrcrange), else the robot's motors.max_torque; it bounds
+// the other modes' motor too. In PD mode a joint keeps its passive friction
+// (the file's frictionloss), which the other modes' motor row replaces.
 enum class JointMode : uint8_t { kVelocity, kPosition, kTorque, kPd };
 inline constexpr int kJointModeCount = 4;
 

@@ -63,6 +63,10 @@ TEST(BoosterPdMotorTest, BadCommandsAreRefusedWithTheirNames) {
   EXPECT_EQ(w.SetJointCommand(1, Pd("Left_Knee_Pitch", 0.4, 0, 10, 1, 0)), JointCommandError::kUnknownRobot);
   // At the limits: accepted.
   EXPECT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", 2.34, -20, kMaxPdKp, kMaxPdKd, -60)), JointCommandError::kOk);
+  // The other modes' motors are bounded by the joint's effort limit too (the Nao's: the robot's max_torque).
+  EXPECT_EQ(w.SetJointCommand(0, {"Left_Knee_Pitch", JointMode::kTorque, 59.0}), JointCommandError::kOk);
+  EXPECT_EQ(w.SetJointCommand(0, {"Left_Knee_Pitch", JointMode::kTorque, 61.0}), JointCommandError::kOutOfRange);
+  EXPECT_EQ(w.SetJointCommand(0, {"AAHead_yaw", JointMode::kTorque, 7.5}), JointCommandError::kOutOfRange);
   // All or none: one bad command refuses the batch.
   const std::vector<JointCommand> batch = {Pd("AAHead_yaw", 0.1, 0, 5, 0.1, 0), Pd("Head_pitch", 5.0, 0, 5, 0.1, 0)};
   EXPECT_EQ(w.CheckJointCommands(0, batch), JointCommandError::kOutOfRange);
@@ -111,8 +115,9 @@ TEST(BoosterPdMotorTest, RestoreContinuesBitForBit) {
   auto drive = [](LeggedWorld& w, int steps) {
     for (int i = 0; i < steps; ++i) {
       const double t = static_cast<double>(w.frame()) * 0.005;
-      w.SetJointCommand(
-          0, Pd("Left_Hip_Pitch", -0.2 + 0.1 * std::sin(3 * t), 0.3 * std::cos(3 * t), 350, 7.5, 2 * std::sin(t)));
+      if (w.frame() % 7 == 0)  // held between: the snapshot must carry the command
+        w.SetJointCommand(
+            0, Pd("Left_Hip_Pitch", -0.2 + 0.1 * std::sin(3 * t), 0.3 * std::cos(3 * t), 350, 7.5, 2 * std::sin(t)));
       if (w.frame() % 50 == 0) w.SetJointCommand(0, Pd("AAHead_yaw", 0.5 * std::sin(t), 0, 5, 0.1, 0.2));
       w.Step();
     }

@@ -55,6 +55,17 @@ TEST_P(BoosterStandTest, StandsSixtySecondsInTheStartPose) {
       "max tilt %.4f rad, end tilt %.4f rad, feet %.1f + %.1f N, weight %.1f N, recoveries %llu\n",
       GetParam(), start[2], settled_z, min_z, max_z, max_dxy, max_tilt, Tilt(s.base_orientation), s.forces[0].values[0],
       s.forces[1].values[0], w.RobotMass(0) * 9.81, static_cast<unsigned long long>(w.health().instability_recoveries));
+  // Where the sinking comes from: the stance joints' deflection under load and the feet's origins' heights.
+  const int knee = w.JointIndex(0, "Left_Knee_Pitch");
+  const int hip = w.JointIndex(0, "Left_Hip_Pitch");
+  const int ankle = w.JointIndex(0, "Left_Ankle_Pitch");
+  std::printf("%s after 60 s: left hip %+.4f knee %+.4f ankle %+.4f rad from the start pose;", GetParam(),
+              s.joint_positions[hip] + 0.2, s.joint_positions[knee] - 0.4, s.joint_positions[ankle] + 0.2);
+  for (const LinkPose& link : s.links) {
+    if (link.name == "left_foot_link" || link.name == "right_foot_link")
+      std::printf(" %s z %.4f m", link.name.c_str(), link.position[2]);
+  }
+  std::printf("\n");
   EXPECT_LT(max_z - settled_z, 0.02);
   EXPECT_LT(settled_z - min_z, 0.02);
   EXPECT_LT(max_dxy, 0.05);
