@@ -36,6 +36,8 @@ const struct {
     // Also served in turf-sim's process: turf-sim --simproto ...
     {"participants/simproto_bridge/README.md", "simproto_bridge/turf-simproto-bridge", "sim/turf-sim"},
     {"participants/viewer/README.md", "viewer/turf-viewer"},
+    // Also served in turf-sim's process: turf-sim --rcssservermj ...
+    {"participants/rcssservermj_bridge/README.md", "rcssservermj_bridge/turf-rcssservermj-bridge", "sim/turf-sim"},
 };
 
 TEST(DocumentedFlags, EachParticipantsReadmeNamesOnlyFlagsItsHelpLists) {
