@@ -13,6 +13,7 @@
 
 #include "codecs/rcssservermj/session.h"
 #include "codecs/simspark/framing.h"
+#include "participants/common/address_allowlist.h"
 #include "participants/common/process.h"
 #include "participants/common/tcp.h"
 #include "participants/rcssservermj_bridge/legged_link.h"
@@ -46,6 +47,7 @@ class RcssServerMjBridge::Impl {
   Impl(RcssServerMjOptions options, dds::Bus* bus)
       : options_(std::move(options)),
         link_(MakeLink(options_, bus)),
+        monitor_allow_(options_.monitor_allow),
         rejects_("RCSSServerMJ input"),
         connections_("RCSSServerMJ client", kConnectionLogInterval, LogLine::kEvent) {
     if (options_.sequential || !options_.realtime) options_.sync_mode = true;
@@ -70,6 +72,7 @@ class RcssServerMjBridge::Impl {
     spdlog::info("RCSSServerMJ agents: TCP {}:{}; monitor commands: TCP {}:{}; {}{}{}", options_.listen, agent_port(),
                  options_.listen, monitor_port(), options_.realtime ? "real time" : "as fast as possible",
                  options_.sync_mode ? ", sync mode" : "", options_.sequential ? ", sequential loop" : "");
+    spdlog::info("monitor-port clients allowed from: {}", monitor_allow_.Describe());
     auto next_cycle = Clock::now();
     auto waiting_since = Clock::now();
     auto next_status = Clock::now() + std::chrono::seconds(10);
@@ -228,6 +231,11 @@ class RcssServerMjBridge::Impl {
         rejects_.Reject("too_many_clients", fmt::format("{} refused: {} clients connected", address, clients_.size()));
         continue;
       }
+      if (monitor && !monitor_allow_.Allows(address)) {
+        rejects_.Reject("monitor_not_allowed", fmt::format("{} refused: not in the monitor allowlist ({})", address,
+                                                           monitor_allow_.Describe()));
+        continue;  // the peer's destructor closes it
+      }
       Client c{std::move(peer), simspark::FrameDecoder(), monitor, -1};
       if (!monitor) c.agent = session_->Connect();
       connections_.Reject(monitor ? "monitor_connected" : "agent_connected",
@@ -319,6 +327,7 @@ class RcssServerMjBridge::Impl {
   MjLeggedLink link_;
   TcpListener agent_listener_;
   TcpListener monitor_listener_;
+  AddressAllowlist monitor_allow_;
   std::unique_ptr<rcssservermj::Session> session_;
   std::map<int, Client> clients_;
   std::vector<std::pair<int, std::string>> drops_;

@@ -14,7 +14,8 @@
 // front-end idles. Robots: the scene's parked robots, one per agent, of the model the agent asked for; an agent's
 // robot is parked again when it leaves.
 //
-// Untrusted input: a frame longer than 64 KiB, a first message that is not a valid init, a refused init, more than
+// Monitor-port clients from addresses outside monitor_allow are refused (closed, counted). Untrusted input: a frame
+// longer than 64 KiB, a first message that is not a valid init, a refused init, more than
 // 16 messages waiting, or a client that stops reading drops that client only; malformed actions are logged,
 // counted and ignored.
 #pragma once
@@ -25,6 +26,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/pinned.h"
 #include "participants/common/participant_options.h"
@@ -49,6 +51,9 @@ struct RcssServerMjOptions : ParticipantOptions {
   std::chrono::milliseconds attach_timeout{30000};
   std::chrono::milliseconds step_timeout{5000};
   std::chrono::milliseconds agent_timeout{5000};  // sync: an agent that sends nothing this long is dropped
+  // Who may connect to the monitor port ("ADDR" or "ADDR/PREFIX"; participants/common/address_allowlist.h): its
+  // commands move players and the ball, set play modes and stop the server. Default: this machine only.
+  std::vector<std::string> monitor_allow = {"127.0.0.0/8", "::1"};
   size_t max_clients = 64;
   size_t max_unsent = 1 << 20;
   double duration = 0.0;  // simulated seconds, then Run returns (0: until stopped)

@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "participants/common/cli_checks.h"
 #include "participants/rcssservermj_bridge/rcssservermj_bridge.h"
 
 namespace turf {
@@ -18,6 +19,14 @@ inline void AddRcssServerMjFlags(CLI::App& app, RcssServerMjOptions& o, const st
       ->capture_default_str();
   app.add_option("--" + prefix + "monitor-port", o.monitor_port,
                  help_prefix + "TCP port for monitor commands (0: any free port)")
+      ->capture_default_str();
+  app.add_option("--" + prefix + "monitor-allow", o.monitor_allow,
+                 help_prefix +
+                     "a monitor-port client from this IPv4/IPv6 address or range may connect (its commands move "
+                     "players and the ball, set play modes, stop the server); repeatable; given, it replaces the "
+                     "default (this machine)")
+      ->type_name("ADDR[/PREFIX]")
+      ->check(AddressRangeCheck(/*ipv4_only=*/false))
       ->capture_default_str();
   app.add_flag("--" + prefix + "sync", o.sync_mode,
                help_prefix + "sync mode: a cycle needs exactly one message from every agent (RCSSServerMJ's -s)");

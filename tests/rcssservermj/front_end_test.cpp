@@ -282,6 +282,31 @@ TEST(RcssServerMjFrontEnd, TwentyTwoAgentsAtOnceAllGetPerceptions) {
   EXPECT_EQ(match.bridge().Stats().active_agents, 22);
 }
 
+// The monitor port: commands from an allowed address act (kick-off: the agents see the play mode), a client from
+// elsewhere is refused and closed.
+TEST(RcssServerMjFrontEnd, MonitorCommandsFromAllowedAddressesOnly) {
+  RcssServerMjOptions o = Fast(false);
+  o.monitor_allow = {"127.0.0.1"};
+  Match match(o);
+  AgentClient agent = match.Connect();
+  ASSERT_TRUE(agent.Send("(init T1 a 1)"));
+  ASSERT_TRUE(agent.Receive(60s));
+  AgentClient stranger, monitor;
+  ASSERT_TRUE(stranger.Connect(match.bridge().monitor_port(), "127.0.0.2"));
+  ASSERT_TRUE(monitor.Connect(match.bridge().monitor_port(), "127.0.0.1"));
+  ASSERT_TRUE(monitor.Send("(kickOff Right)"));
+  const RcssServerMjStats stats = match.bridge().WaitForStats(
+      [](const RcssServerMjStats& s) { return s.refused_by_kind.count("monitor_not_allowed") > 0; }, 20s);
+  EXPECT_EQ(stats.refused_by_kind.count("monitor_not_allowed"), 1u);
+  bool kicked_off = false;
+  for (int i = 0; i < 10 && !kicked_off; ++i) {
+    const std::optional<Perception> p = Round(&agent, "(syn)");
+    ASSERT_TRUE(p);
+    kicked_off = p->game.rfind("KickOff_Right", 0) == 0;
+  }
+  EXPECT_TRUE(kicked_off);
+}
+
 TEST(RcssServerMjFrontEnd, MalformedInputDropsOnlyThatClient) {
   Match match(RcssServerMjOptions{});  // real time: cycles run whoever answers
   AgentClient good = match.Connect(), other = match.Connect();
