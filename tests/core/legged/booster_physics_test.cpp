@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/legged/legged_world.h"
@@ -21,14 +22,23 @@ using testing::BoosterStandScene;
 using testing::Finite;
 using testing::Tilt;
 
-class BoosterStandTest : public ::testing::TestWithParam<const char*> {};
+// (robot, physics step): the scenes' 5 ms (RCSSServerMJ's) and turf's default 2 ms.
+class BoosterStandTest : public ::testing::TestWithParam<std::tuple<const char*, double>> {
+ protected:
+  const char* robot() const { return std::get<0>(GetParam()); }
+  LeggedScene Scene() const {
+    LeggedScene s = BoosterStandScene(robot());
+    s.physics.step = std::get<1>(GetParam());
+    return s;
+  }
+};
 
 // 60 s of simulated time holding the start pose with the scene's PD gains:
 // the torso stays within 2 cm of its settled height (measured after 1 s, once
 // the robot has sunk into its PD and contact compliance) and 5 cm of its start
 // in x/y, and tilts less than 0.05 rad.
 TEST_P(BoosterStandTest, StandsSixtySecondsInTheStartPose) {
-  LeggedWorld w(BoosterStandScene(GetParam()));
+  LeggedWorld w(Scene());
   const int steps_per_second = static_cast<int>(std::lround(1e9 / static_cast<double>(w.step_ns())));
   const auto start = w.State().robots[0].base_position;
   double settled_z = 0.0;
@@ -53,13 +63,13 @@ TEST_P(BoosterStandTest, StandsSixtySecondsInTheStartPose) {
   std::printf(
       "%s stand 60 s: start z %.4f, settled z %.4f, z in [%.4f, %.4f] m, max |dxy| %.4f m, "
       "max tilt %.4f rad, end tilt %.4f rad, feet %.1f + %.1f N, weight %.1f N, recoveries %llu\n",
-      GetParam(), start[2], settled_z, min_z, max_z, max_dxy, max_tilt, Tilt(s.base_orientation), s.forces[0].values[0],
+      robot(), start[2], settled_z, min_z, max_z, max_dxy, max_tilt, Tilt(s.base_orientation), s.forces[0].values[0],
       s.forces[1].values[0], w.RobotMass(0) * 9.81, static_cast<unsigned long long>(w.health().instability_recoveries));
   // Where the sinking comes from: the stance joints' deflection under load and the feet's origins' heights.
   const int knee = w.JointIndex(0, "Left_Knee_Pitch");
   const int hip = w.JointIndex(0, "Left_Hip_Pitch");
   const int ankle = w.JointIndex(0, "Left_Ankle_Pitch");
-  std::printf("%s after 60 s: left hip %+.4f knee %+.4f ankle %+.4f rad from the start pose;", GetParam(),
+  std::printf("%s after 60 s: left hip %+.4f knee %+.4f ankle %+.4f rad from the start pose;", robot(),
               s.joint_positions[hip] + 0.2, s.joint_positions[knee] - 0.4, s.joint_positions[ankle] + 0.2);
   for (const LinkPose& link : s.links) {
     if (link.name == "left_foot_link" || link.name == "right_foot_link")
@@ -77,7 +87,8 @@ TEST_P(BoosterStandTest, StandsSixtySecondsInTheStartPose) {
   EXPECT_NEAR(s.accelerometer[2], 9.81, 0.2);
 }
 
-INSTANTIATE_TEST_SUITE_P(Robots, BoosterStandTest, ::testing::Values("t1", "k1"));
+INSTANTIATE_TEST_SUITE_P(Robots, BoosterStandTest,
+                         ::testing::Combine(::testing::Values("t1", "k1"), ::testing::Values(0.005, 0.002)));
 
 // Gains per joint in SDK index order: head 2, arm 4 (each side), waist (T1
 // only), leg 6 (each side).
