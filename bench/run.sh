@@ -3,6 +3,10 @@
 #   bench/run.sh [sim seconds]           all of them
 #   bench/run.sh ssl [sim seconds]       turf-sim alone, SSL scenes
 #   bench/run.sh simspark [sim seconds]  SimSpark agents through turf-simspark-bridge
+#   bench/run.sh rcssservermj [sim seconds]  RCSSServerMJ agents (T1) served by turf-sim --rcssservermj
+#   bench/run.sh rcssservermj-nn --client-dir DIR
+#                                        RCSSServerMJ's example T1 walking policy (example/nn_client, kept outside
+#                                        turf) on turf: distance walked, falls (issue 14's acceptance run)
 #   bench/run.sh snapshot                kernel snapshots: size, Save and Restore next to a step
 #   bench/run.sh sync [requests]         SSL sync port round trip: separate bridge over DDS vs in turf-sim's process
 #   bench/run.sh security [sim seconds]  what DDS Security costs: the SSL bench and the DDS hop latency, off and on
@@ -13,7 +17,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
 WHAT=all
-if [[ "${1:-}" =~ ^(ssl|simspark|snapshot|sync|security|ut-agents)$ ]]; then
+if [[ "${1:-}" =~ ^(ssl|simspark|rcssservermj|rcssservermj-nn|snapshot|sync|security|ut-agents)$ ]]; then
   WHAT=$1
   shift
 fi
@@ -82,6 +86,35 @@ simspark() {
   echo "answer). Reference rcssserver3d 0.7.3 on this machine: 0.72x with 22 agents, 1.9x with 11."
 }
 
+# One run: turf-sim serving RCSSServerMJ agents (rcssservermj_fifa scene, 22 T1) on a private domain and port, then
+# the scripted agents.
+rcssservermj_run() {
+  local agents=$1 mode=$2 motion=$3 header=${4:-}
+  local domain=$((90 + RANDOM % 9)) port=$((24100 + RANDOM % 500))
+  local flags=(--rcssservermj-no-realtime)
+  [[ "$mode" == sync ]] || flags=(--rcssservermj-realtime)
+  "$BUILD_DIR/participants/sim/turf-sim" --scene configs/scenes/rcssservermj_fifa.yaml -d "$domain" -p "bench$$" \
+    --lockstep --rcssservermj --rcssservermj-agent-port "$port" --rcssservermj-monitor-port $((port + 1)) \
+    "${flags[@]}" --log-level warn &
+  local sim=$!
+  "$BUILD_DIR/bench/turf-bench-rcssservermj" --port "$port" --agents "$agents" --seconds "$SECONDS_SIM" \
+    --motion "$motion" --label "$agents agents, $mode, $motion" $header || true
+  kill -INT "$sim" 2>/dev/null || true
+  wait "$sim" 2>/dev/null || true
+}
+
+rcssservermj() {
+  echo "RCSSServerMJ agents -> turf-sim --rcssservermj (22 T1 in the scene, 4 steps of 5 ms per 20 ms cycle); each"
+  echo "agent answers every perception with PD commands for its 23 joints: 'upper' sways head, arms and waist with"
+  echo "the legs held, 'all' sways every joint; $(nproc) cores"
+  rcssservermj_run 22 sync upper --header
+  rcssservermj_run 2 sync upper
+  rcssservermj_run 22 sync all
+  rcssservermj_run 22 real-time upper
+  echo "RTF: simulated seconds per wall second over the measured stretch (sync: as fast as the agents answer)."
+  echo "The parked robots of the scene are simulated too. Target (issue 14): >= 5x with 22 agents."
+}
+
 # DDS Security off, on without encryption (authentication and access control), on with encryption: the SSL bench
 # with a driving client, then the DDS hop latency, each variant in this one run.
 security() {
@@ -118,6 +151,8 @@ ut_agents() {
 case "$WHAT" in
   ssl) ssl ;;
   simspark) simspark ;;
+  rcssservermj) rcssservermj ;;
+  rcssservermj-nn) bench/rcssservermj_nn/run.sh "$@" ;;
   snapshot) "$BUILD_DIR/bench/turf-bench-snapshot" ;;
   sync) "$BUILD_DIR/bench/turf-bench-sync" --requests "${1:-1000}" ;;
   security) security ;;

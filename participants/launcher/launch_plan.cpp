@@ -226,6 +226,10 @@ std::vector<std::string> WhereToLook(const LaunchPlan& plan) {
       lines.push_back(fmt::format("SSL simulation protocol: UDP {}: control {}, blue {}, yellow {}, sync {}",
                                   v("--listen", "0.0.0.0"), v("--control-port", "10300"), v("--blue-port", "10301"),
                                   v("--yellow-port", "10302"), v("--sync-port", "10303")));
+    } else if (c.name == "sim" && std::find(c.argv.begin(), c.argv.end(), "--rcssservermj") != c.argv.end()) {
+      lines.push_back(fmt::format("RCSSServerMJ (in turf-sim): TCP {}: agents {}, monitor commands {}",
+                                  v("--rcssservermj", "127.0.0.1"), v("--rcssservermj-agent-port", "60000"),
+                                  v("--rcssservermj-monitor-port", "60001")));
     } else if (c.name == "simspark") {
       lines.push_back(fmt::format("SimSpark: TCP {}: agents {}, monitors and trainers {}", v("--listen", "0.0.0.0"),
                                   v("--agent-port", "3100"), v("--monitor-port", "3200")));

@@ -30,6 +30,10 @@ class SimHost::Impl {
       if (!kLegged) throw std::invalid_argument("the SimSpark front-end needs a legged scene, not an SSL one");
       simspark_ = std::make_unique<SimSparkBridge>(std::move(*front_ends.simspark), local_);
     }
+    if (front_ends.rcssservermj) {
+      if (!kLegged) throw std::invalid_argument("the RCSSServerMJ front-end needs a legged scene, not an SSL one");
+      rcssservermj_ = std::make_unique<RcssServerMjBridge>(std::move(*front_ends.rcssservermj), local_);
+    }
     if (front_ends.booster) {
       if (!kLegged) throw std::invalid_argument("the Booster SDK's topics need a legged scene, not an SSL one");
       booster_ = std::make_unique<BoosterSdkBridge>(*front_ends.booster, local_);
@@ -57,6 +61,15 @@ class SimHost::Impl {
         front_end_ended.store(true);
       });
     }
+    if (rcssservermj_) {
+      spdlog::info(
+          "serving RCSSServerMJ agents and monitor commands in this process (on an in-memory bus, no DDS "
+          "hop):");
+      threads.emplace_back([&] {
+        rcssservermj_->Run(front_end_stop);
+        front_end_ended.store(true);
+      });
+    }
     if (booster_) {
       spdlog::info("serving the Booster SDK's topics for every T1 and K1 in this process:");
       threads.emplace_back([&] { booster_->Run(front_end_stop); });
@@ -70,6 +83,7 @@ class SimHost::Impl {
   dds::Participant& participant() { return dds_; }
   SimprotoBridge* simproto() { return simproto_.get(); }
   SimSparkBridge* simspark() { return simspark_.get(); }
+  RcssServerMjBridge* rcssservermj() { return rcssservermj_.get(); }
   BoosterSdkBridge* booster() { return booster_.get(); }
 
  private:
@@ -79,6 +93,7 @@ class SimHost::Impl {
   SimNode node_;
   std::unique_ptr<SimprotoBridge> simproto_;
   std::unique_ptr<SimSparkBridge> simspark_;
+  std::unique_ptr<RcssServerMjBridge> rcssservermj_;
   std::unique_ptr<BoosterSdkBridge> booster_;
 };
 
@@ -92,6 +107,7 @@ SimNode& SimHost::node() { return impl_->node(); }
 dds::Participant& SimHost::participant() { return impl_->participant(); }
 SimprotoBridge* SimHost::simproto() { return impl_->simproto(); }
 SimSparkBridge* SimHost::simspark() { return impl_->simspark(); }
+RcssServerMjBridge* SimHost::rcssservermj() { return impl_->rcssservermj(); }
 BoosterSdkBridge* SimHost::booster() { return impl_->booster(); }
 
 }  // namespace turf

@@ -6,10 +6,10 @@
 // to the MemoryBus, remote participants only to DDS (fanout_bus.h).
 //
 // Front-ends: the SSL simulation protocol (participants/simproto_bridge/: control, team and sync ports) for SSL
-// scenes, the SimSpark agent and monitor ports (participants/simspark_bridge/) and the Booster SDK's DDS topics
-// (participants/booster_bridge/) for legged scenes. The
-// separate-process bridges stay available and work against the same turf-sim. When a front-end's loop ends by
-// itself (a SimSpark trainer's killsim, or an error), the node stops too.
+// scenes, the SimSpark agent and monitor ports (participants/simspark_bridge/) or the RCSSServerMJ ones
+// (participants/rcssservermj_bridge/) for legged scenes, and for legged scenes also the Booster SDK's DDS topics
+// (participants/booster_bridge/). The separate-process bridges stay available and work against the same turf-sim. When
+// a front-end's loop ends by itself (a SimSpark trainer's killsim, or an error), the node stops too.
 #pragma once
 
 #include <functional>
@@ -20,6 +20,7 @@
 #include "core/pinned.h"
 #include "core/scene.h"
 #include "participants/booster_bridge/booster_sdk_bridge.h"
+#include "participants/rcssservermj_bridge/rcssservermj_bridge.h"
 #include "participants/sim/node_options.h"
 #include "participants/simproto_bridge/simproto_bridge.h"
 #include "participants/simspark_bridge/simspark_bridge.h"
@@ -32,9 +33,10 @@ class Participant;
 }  // namespace dds
 
 struct InProcessFrontEnds {
-  std::optional<SimprotoBridgeOptions> simproto;  // --simproto: its listen address and ports (SSL scenes)
-  std::optional<SimSparkBridgeOptions> simspark;  // --simspark: its listen address, ports, sync mode (legged scenes)
-  std::optional<BoosterSdkOptions> booster;       // --booster-sdk: the Booster SDK's topics (legged scenes)
+  std::optional<SimprotoBridgeOptions> simproto;    // --simproto: its listen address and ports (SSL scenes)
+  std::optional<SimSparkBridgeOptions> simspark;    // --simspark: its listen address, ports, sync mode (legged scenes)
+  std::optional<RcssServerMjOptions> rcssservermj;  // --rcssservermj: address, ports, modes (legged scenes, T1/K1)
+  std::optional<BoosterSdkOptions> booster;         // --booster-sdk: the Booster SDK's topics (legged scenes)
 };
 
 class SimHost : Pinned {
@@ -55,6 +57,7 @@ class SimHost : Pinned {
   // The in-process front-ends, if any.
   SimprotoBridge* simproto();
   SimSparkBridge* simspark();
+  RcssServerMjBridge* rcssservermj();
   BoosterSdkBridge* booster();
 
  private:

@@ -17,6 +17,7 @@
 #include "participants/common/cli_checks.h"
 #include "participants/common/process.h"
 #include "participants/common/writer_watch.h"
+#include "participants/rcssservermj_bridge/rcssservermj_flags.h"
 #include "participants/sim/sim_host.h"
 #include "participants/sim/sim_node.h"
 #include "participants/simproto_bridge/simproto_flags.h"
@@ -76,15 +77,20 @@ int RunScene(SceneKind scene, const SimCommandLine& command_line, bool legged) {
     if (!r) return kExitBadConfig;
     scene.realism = *r;  // legged scenes: the encoders, IMU and touch streams
   }
-  if (legged ? command_line.simproto : (command_line.simspark || command_line.booster)) {
+  if (legged ? command_line.simproto : (command_line.simspark || command_line.rcssservermj || command_line.booster)) {
     spdlog::error(legged ? "--simproto serves the SSL simulation protocol: it needs an SSL scene, not a legged one"
-                         : "--simspark and --booster-sdk serve legged robots: they need a legged scene (kind: legged), "
-                           "not an SSL one");
+                         : "--simspark, --rcssservermj and --booster-sdk serve legged robots: they need a legged scene "
+                           "(kind: legged), not an SSL one");
     return kExitBadConfig;
   }
-  if (legged ? (command_line.simspark || command_line.booster) : command_line.simproto) {
+  if (legged && command_line.simspark && command_line.rcssservermj) {
+    spdlog::error("--simspark and --rcssservermj both drive the match's clock: choose one");
+    return kExitBadConfig;
+  }
+  if (legged ? (command_line.simspark || command_line.rcssservermj || command_line.booster) : command_line.simproto) {
     InProcessFrontEnds front_ends;
     if (legged && command_line.simspark) front_ends.simspark = command_line.simspark_options;
+    if (legged && command_line.rcssservermj) front_ends.rcssservermj = command_line.rcssservermj_options;
     if (legged && command_line.booster) front_ends.booster = command_line.booster_options;
     if (!legged) front_ends.simproto = command_line.simproto_options;
     SimHost host(std::move(scene), command_line.node, std::move(front_ends));
@@ -173,6 +179,21 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
                "with --simspark: agent sync mode (a cycle runs when every agent has sent (syn))");
   AddSimSparkOperatorFlag(app, ss, "simspark-", "with --simspark: ");
 
+  // RCSSServerMJ agents and monitor commands in this process (sim_host.h): the same flags as
+  // turf-rcssservermj-bridge's, prefixed.
+  RcssServerMjOptions& mj = command_line.rcssservermj_options;
+  mj.name = "turf-sim/rcssservermj";
+  CLI::Option* rcssservermj =
+      app.add_option("--rcssservermj", mj.listen,
+                     "legged scenes of T1/K1 robots: serve RCSSServerMJ (2026 3D league) agents and monitor commands "
+                     "(TCP) in this process; binds ADDRESS (default 127.0.0.1). turf-rcssservermj-bridge still works "
+                     "as a separate process")
+          ->expected(0, 1)
+          ->type_name("[ADDRESS]");
+  AddRcssServerMjFlags(app, mj, "rcssservermj-", "with --rcssservermj: ");
+
+  // An empty --simproto, --simspark or --rcssservermj (no ADDRESS) leaves the default; count() tells whether it was
+  // given at all.
   // The Booster SDK's DDS topics in this process (participants/booster_bridge/booster_sdk_bridge.h).
   BoosterSdkOptions& bo = command_line.booster_options;
   CLI::Option* booster = app.add_option("--booster-sdk", bo.domain,
@@ -187,13 +208,14 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
                  "with --booster-sdk: a joint_ctrl sample older than this (ms, by its source timestamp) is refused")
       ->capture_default_str();
 
-  // An empty --simproto or --simspark (no ADDRESS) leaves the default; count() tells whether it was given at all.
-  app.parse_complete_callback([&command_line, simproto, simspark, booster] {
+  app.parse_complete_callback([&command_line, simproto, simspark, rcssservermj, booster] {
     command_line.booster = booster->count() > 0;
     command_line.simproto = simproto->count() > 0;
     if (command_line.simproto_options.listen.empty()) command_line.simproto_options.listen = "127.0.0.1";
     command_line.simspark = simspark->count() > 0;
     if (command_line.simspark_options.listen.empty()) command_line.simspark_options.listen = "127.0.0.1";
+    command_line.rcssservermj = rcssservermj->count() > 0;
+    if (command_line.rcssservermj_options.listen.empty()) command_line.rcssservermj_options.listen = "127.0.0.1";
   });
 }
 

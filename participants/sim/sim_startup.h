@@ -8,6 +8,7 @@
 
 #include "participants/booster_bridge/booster_sdk_bridge.h"
 #include "participants/common/participant_main.h"
+#include "participants/rcssservermj_bridge/rcssservermj_bridge.h"
 #include "participants/sim/node_options.h"
 #include "participants/simproto_bridge/simproto_bridge.h"
 #include "participants/simspark_bridge/simspark_bridge.h"
@@ -29,6 +30,10 @@ struct SimCommandLine {
   // an address is given; --simspark-agent-port, --simspark-monitor-port, --simspark-sync as turf-simspark-bridge's.
   bool simspark = false;
   SimSparkBridgeOptions simspark_options;
+  // --rcssservermj [ADDRESS]: serve RCSSServerMJ agents and monitor commands in this process (legged scenes of
+  // T1/K1 robots), on 127.0.0.1 unless an address is given; --rcssservermj-* as turf-rcssservermj-bridge's flags.
+  bool rcssservermj = false;
+  RcssServerMjOptions rcssservermj_options;
   // --booster-sdk [DOMAIN]: the Booster SDK's low-level topics for every T1 and K1 (legged scenes), the first robot
   // on DOMAIN (default 0); --booster-command-timeout.
   bool booster = false;

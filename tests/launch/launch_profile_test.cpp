@@ -306,5 +306,25 @@ TEST(LaunchPlan, WhereToLookNamesTheViewerAndThePorts) {
   EXPECT_EQ(all[0], "SimSpark: TCP 0.0.0.0: agents 3100, monitors and trainers 3200");
 }
 
+// RCSSServerMJ: served by turf-sim itself (--rcssservermj), no bridge process; sync mode and other ports by --set.
+TEST(LaunchPlan, RcssServerMjPlanServedInTurfSim) {
+  const ProfileLoadResult r = LoadLaunchProfile("rcssservermj", DefaultProfileDir());
+  ASSERT_TRUE(r.profile.has_value()) << r.errors[0];
+  LaunchOverrides o;
+  o.sets = {"sim.rcssservermj-sync=true", "sim.rcssservermj-agent-port=60100"};
+  const LaunchPlan plan = BuildPlan(*r.profile, o, kLauncherDir);
+  ASSERT_TRUE(plan.errors.empty()) << plan.errors[0];
+  ASSERT_EQ(plan.commands.size(), 2u);  // turf-sim, the viewer
+  EXPECT_EQ(plan.commands[0].name, "sim");
+  const std::string args = Args(plan.commands[0]);
+  EXPECT_EQ(args.rfind("--scene " + kScenes + "/rcssservermj_fifa.yaml --domain 0 --prefix turf ", 0), 0u) << args;
+  EXPECT_NE(args.find("--rcssservermj 127.0.0.1 "), std::string::npos) << args;
+  EXPECT_NE(args.find("--rcssservermj-agent-port 60100 "), std::string::npos) << args;
+  EXPECT_NE(args.find("--rcssservermj-sync "), std::string::npos) << args;
+  const std::vector<std::string> lines = WhereToLook(plan);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0], "RCSSServerMJ (in turf-sim): TCP 127.0.0.1: agents 60100, monitor commands 60001");
+}
+
 }  // namespace
 }  // namespace turf::launch

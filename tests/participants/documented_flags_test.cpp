@@ -36,6 +36,8 @@ const struct {
     // Also served in turf-sim's process: turf-sim --simproto ...
     {"participants/simproto_bridge/README.md", "simproto_bridge/turf-simproto-bridge", "sim/turf-sim"},
     {"participants/viewer/README.md", "viewer/turf-viewer"},
+    // Also served in turf-sim's process: turf-sim --rcssservermj ...
+    {"participants/rcssservermj_bridge/README.md", "rcssservermj_bridge/turf-rcssservermj-bridge", "sim/turf-sim"},
 };
 
 TEST(DocumentedFlags, EachParticipantsReadmeNamesOnlyFlagsItsHelpLists) {
@@ -56,9 +58,10 @@ TEST(DocumentedFlags, EveryFlagOfTheMainReadmeExists) {
   std::set<std::string> offered;
   for (const char* executable :
        {"sim/turf-sim", "grsim_bridge/turf-grsim-bridge", "vision_bridge/turf-vision-bridge",
-        "simproto_bridge/turf-simproto-bridge", "simspark_bridge/turf-simspark-bridge", "viewer/turf-viewer",
-        "launcher/turf", "launcher/turf launch", "launcher/turf security init", "launcher/turf log info",
-        "launcher/turf log diff", "recorder/turf-record", "replay/turf-replay"}) {
+        "simproto_bridge/turf-simproto-bridge", "simspark_bridge/turf-simspark-bridge",
+        "rcssservermj_bridge/turf-rcssservermj-bridge", "viewer/turf-viewer", "launcher/turf", "launcher/turf launch",
+        "launcher/turf security init", "launcher/turf log info", "launcher/turf log diff", "recorder/turf-record",
+        "replay/turf-replay"}) {
     const std::set<std::string> flags = Help(executable);
     offered.insert(flags.begin(), flags.end());
   }

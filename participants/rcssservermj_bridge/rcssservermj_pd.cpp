@@ -1,0 +1,22 @@
+// The adapter seam between the RCSSServerMJ session's per-joint PD commands and turf's joint-command type: the
+// legged world's PD mode (JOINT_PD, core/legged/legged_world.h JointMode::kPd), evaluated every physics step,
+// torque = kp (q - θ) + kd (dq - θ') + tau clamped to the joint's effort limit, as RCSSServerMJ's actuators.
+#include <turf/idl/JointsPubSubTypes.h>
+
+#include "participants/rcssservermj_bridge/legged_link.h"
+
+namespace turf {
+
+idl::JointTarget ToJointTarget(const rcssservermj::PdCommand& c) {
+  idl::JointTarget t;
+  t.name(c.joint);
+  t.mode(idl::JOINT_PD);
+  t.value(c.q);
+  t.dq(c.dq);
+  t.kp(c.kp);
+  t.kd(c.kd);
+  t.tau(c.tau);
+  return t;
+}
+
+}  // namespace turf

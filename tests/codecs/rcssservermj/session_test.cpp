@@ -1,0 +1,344 @@
+// The session (shared/protocols/rcssservermj.md): activation at the next cycle and its refusals, placement, beams
+// per side and play mode, motor defaults and persistence, one cycle of latency in the parallel loop and none in
+// the sequential one, sync mode's one message per cycle, vision every second cycle, monitor commands.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "codecs/rcssservermj/session.h"
+
+namespace turf::rcssservermj {
+namespace {
+
+// A world of parked robots that only moves where the session asks (no physics).
+class FakeWorld {
+ public:
+  explicit FakeWorld(const std::vector<SceneRobot>& robots) {
+    for (const SceneRobot& r : robots) {
+      MjRobotSnapshot s;
+      s.name = r.name;
+      for (const MjJoint& j : FindModel(r.model)->joints) s.joint_names.push_back(j.joint);
+      s.positions.assign(s.joint_names.size(), 0.0);
+      s.velocities.assign(s.joint_names.size(), 0.0);
+      s.acc = {0, 0, 9.81};
+      const MjRobotModel& m = *FindModel(r.model);
+      for (const char* body : {"torso", m.camera.body, m.lfoot.body, m.rfoot.body}) s.links.push_back({body, {}, {}});
+      world_.robots.push_back(s);
+      Place(r.park);
+    }
+  }
+  void Place(const RobotMove& move) {
+    for (MjRobotSnapshot& r : world_.robots) {
+      if (r.name != move.robot) continue;
+      for (MjLink& l : r.links) {
+        l.orientation = move.orientation;
+        l.position = move.position + move.orientation * Offset(l.name);
+      }
+    }
+  }
+  static Eigen::Vector3d Offset(const std::string& body) {
+    if (body == "H2" || body == "Head_2") return {0.06, 0, 0.3};
+    if (body == "left_foot_link") return {0, 0.1, -0.6};
+    if (body == "right_foot_link") return {0, -0.1, -0.6};
+    return Eigen::Vector3d::Zero();
+  }
+  // One cycle: the session's requests, then the world after the step.
+  WorldRequests Cycle(Session* s) {
+    WorldRequests r = s->TakeRequests();
+    for (const RobotMove& m : r.moves) Place(m);
+    if (r.ball) world_.ball = *r.ball;
+    world_.time += kCycleSeconds;
+    s->Advance(world_);
+    return r;
+  }
+  MjWorldSnapshot world_;
+};
+
+std::vector<SceneRobot> Robots(int t1, int k1) {
+  std::vector<SceneRobot> out;
+  for (int i = 0; i < t1 + k1; ++i) {
+    const bool is_t1 = i < t1;
+    RobotMove park{std::string(is_t1 ? "t1_" : "k1_") + std::to_string(i + 1), {i * 1.0, -40, 0.7}, {}, false};
+    out.push_back({park.robot, is_t1 ? "T1" : "K1", park});
+  }
+  return out;
+}
+
+struct Fixture {
+  explicit Fixture(SessionOptions o = {}, int t1 = 24, int k1 = 1)
+      : robots(Robots(t1, k1)), session(o, robots), world(robots) {}
+  int Join(const std::string& init) {
+    const int id = session.Connect();
+    session.Receive(id, init);
+    return id;
+  }
+  std::map<int, std::string> Outputs() {
+    std::map<int, std::string> out;
+    for (auto& [id, text] : session.TakeOutputs()) out[id] = text;
+    return out;
+  }
+  std::vector<SceneRobot> robots;
+  Session session;
+  FakeWorld world;
+};
+
+const PdCommand* Command(const WorldRequests& r, const std::string& robot, const std::string& joint) {
+  auto it = r.joints.find(robot);
+  if (it == r.joints.end()) return nullptr;
+  for (const PdCommand& c : it->second)
+    if (c.joint == joint) return &c;
+  return nullptr;
+}
+
+double Yaw(const Eigen::Quaterniond& q) {
+  return std::atan2(2 * (q.w() * q.z() + q.x() * q.y()), 1 - 2 * (q.y() * q.y() + q.z() * q.z())) * 180 / M_PI;
+}
+
+TEST(MjSession, ActivatesAtTheNextCycleAndPlacesBySide) {
+  Fixture f;
+  const int a = f.Join("(init T1 teamBlue 2)");
+  const int b = f.Join("(init T1 teamRed 3)");
+  EXPECT_TRUE(f.session.TakeOutputs().empty());
+  EXPECT_EQ(f.session.active_agents(), 0);
+  const WorldRequests r = f.world.Cycle(&f.session);
+  EXPECT_EQ(f.session.active_agents(), 2);
+  ASSERT_EQ(r.moves.size(), 2u);
+  EXPECT_EQ(r.moves[0].position, Eigen::Vector3d(-5, 37, 0.6735));  // -(2n+1), half width + border
+  EXPECT_EQ(r.moves[1].position, Eigen::Vector3d(7, 37, 0.6735));
+  EXPECT_NEAR(Yaw(r.moves[0].orientation), -90, 1e-9);
+  EXPECT_TRUE(r.moves[0].reset_joints);
+  const auto out = f.Outputs();  // perceptions start in the activation cycle (-0.0: the sign of an exact zero)
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out.at(a).rfind("(time (now 0.02))(GS (t 0.0)(pm BeforeKickOff)(tl teamBlue)(tr teamRed)(sl 0)(sr 0))"
+                            "(quat (n torso_quat) (q 0.707 -0.0 -0.0 -0.707))(pos (n torso_pos) (p -5.0 37.0 0.673))",
+                            0),
+            0u)
+      << out.at(a);
+  EXPECT_NE(out.at(b).find("(pos (n torso_pos) (p 7.0 37.0 0.673))"), std::string::npos);
+}
+
+TEST(MjSession, RefusalsCloseTheConnection) {
+  Fixture f({}, 14, 0);
+  const int not_init = f.Join("(syn)");
+  const int model = f.Join("(init Nao teamBlue 1)");
+  const int ok1 = f.Join("(init T1 teamBlue 1)");
+  const int twice = f.Join("(init T1 teamBlue 101)");  // |101| mod 100 = 1: taken
+  const int right = f.Join("(init T1 teamRed 1)");
+  const int third = f.Join("(init T1 teamGreen 1)");
+  std::vector<int> kicked = f.session.TakeKicked();
+  EXPECT_EQ(kicked, std::vector<int>{not_init});  // at once: the first message is not an init
+  f.world.Cycle(&f.session);
+  kicked = f.session.TakeKicked();
+  std::sort(kicked.begin(), kicked.end());
+  EXPECT_EQ(kicked, (std::vector<int>{model, twice, third}));
+  EXPECT_EQ(f.session.active_agents(), 2);
+  for (int id : kicked) f.session.Disconnect(id);
+  f.session.Disconnect(not_init);
+  (void)ok1;
+  (void)right;
+  // At most 11 a team; the 12th is refused (the scene has robots to spare).
+  for (int n = 2; n <= 12; ++n) f.Join("(init T1 teamBlue " + std::to_string(n) + ")");
+  f.world.Cycle(&f.session);
+  EXPECT_EQ(f.session.TakeKicked().size(), 1u);
+  EXPECT_EQ(f.session.active_agents(), 12);  // 11 blue and 1 red
+}
+
+TEST(MjSession, NoFreeRobotOfTheModelIsARefusal) {
+  Fixture f({}, 1, 0);
+  f.Join("(init T1 a 1)");
+  const int k1 = f.Join("(init K1 a 2)");
+  f.world.Cycle(&f.session);
+  EXPECT_EQ(f.session.TakeKicked(), std::vector<int>{k1});
+}
+
+TEST(MjSession, BeamPerSideOnlyBeforeKickOff) {
+  SessionOptions o;
+  o.sequential = true;  // no latency: the beam acts in the next cycle
+  Fixture f(o);
+  const int l = f.Join("(init T1 L 1)");
+  const int r = f.Join("(init T1 R 1)");
+  f.world.Cycle(&f.session);
+  f.session.Receive(l, "(beam 3 1 30)");
+  f.session.Receive(r, "(beam -3 1 30)");
+  WorldRequests req = f.world.Cycle(&f.session);
+  ASSERT_EQ(req.moves.size(), 2u);
+  EXPECT_EQ(req.moves[0].position, Eigen::Vector3d(-3, 1, 0.6745));
+  EXPECT_NEAR(Yaw(req.moves[0].orientation), 30, 1e-9);
+  EXPECT_EQ(req.moves[1].position, Eigen::Vector3d(3, 1, 0.6745));
+  EXPECT_NEAR(Yaw(req.moves[1].orientation), -150, 1e-9);  // 30 + 180
+  EXPECT_TRUE(req.moves[1].reset_joints);
+  f.session.Monitor("(kickOff Left)");
+  f.session.Receive(l, "(syn)");
+  f.session.Receive(r, "(syn)");
+  f.world.Cycle(&f.session);
+  EXPECT_EQ(f.session.referee().play_mode(), PlayMode::kKickOffLeft);
+  f.session.Receive(l, "(beam 3 1 30)");
+  f.session.Receive(r, "(syn)");
+  EXPECT_TRUE(f.world.Cycle(&f.session).moves.empty());
+}
+
+TEST(MjSession, MotorDefaultsPersistenceAndClamping) {
+  SessionOptions o;
+  o.sequential = true;
+  Fixture f(o);
+  const int a = f.Join("(init T1 a 1)");
+  WorldRequests r = f.world.Cycle(&f.session);
+  ASSERT_EQ(r.joints.at("t1_1").size(), 23u);
+  const PdCommand* knee = Command(r, "t1_1", "Left_Knee_Pitch");
+  ASSERT_NE(knee, nullptr);
+  EXPECT_EQ(knee->q, 0);
+  EXPECT_EQ(knee->kp, 1);
+  EXPECT_EQ(knee->kd, 1);
+  f.session.Receive(a, "(lle4 30 10 50 2 100)(lle4 45 0 60 3 1)(he1 200 0 5 0 0)");
+  r = f.world.Cycle(&f.session);
+  knee = Command(r, "t1_1", "Left_Knee_Pitch");
+  EXPECT_NEAR(knee->q, M_PI / 4, 1e-12);  // the last one wins
+  EXPECT_EQ(knee->kp, 60);
+  EXPECT_EQ(knee->tau, 1);
+  EXPECT_NEAR(Command(r, "t1_1", "AAHead_yaw")->q, 1.57, 1e-12);  // 200 deg into the range (90 deg, to 0.01 rad in)
+  f.session.Receive(a, "(syn)");
+  r = f.world.Cycle(&f.session);
+  EXPECT_NEAR(Command(r, "t1_1", "Left_Knee_Pitch")->q, M_PI / 4, 1e-12);  // persists
+  f.session.Receive(a, "(lle4 0 0 1 1 500)");
+  r = f.world.Cycle(&f.session);
+  EXPECT_EQ(Command(r, "t1_1", "Left_Knee_Pitch")->tau, 60);  // the knee's effort limit
+}
+
+// Cycles after the one where the agent's command arrived until the world gets it.
+int Latency(bool sequential) {
+  SessionOptions o;
+  o.sequential = sequential;
+  Fixture f(o);
+  const int a = f.Join("(init T1 a 1)");
+  f.world.Cycle(&f.session);  // activation; first perception
+  f.session.TakeOutputs();
+  f.session.Receive(a, "(lle4 30 0 50 1 0)");  // the answer to the state after that step
+  for (int cycle = 1; cycle <= 3; ++cycle) {
+    const WorldRequests r = f.world.Cycle(&f.session);
+    if (Command(r, "t1_1", "Left_Knee_Pitch")->kp == 50) return cycle;
+    f.session.Receive(a, "(syn)");
+  }
+  return -1;
+}
+
+TEST(MjSession, ParallelLoopHasOneCycleOfLatencySequentialNone) {
+  EXPECT_EQ(Latency(false), 2);  // the answer to step k acts in step k+2
+  EXPECT_EQ(Latency(true), 1);   // in step k+1
+}
+
+TEST(MjSession, SyncModeTakesExactlyOneMessagePerAgentPerCycle) {
+  SessionOptions o;
+  o.sync_mode = true;
+  Fixture f(o);
+  const int a = f.Join("(init T1 a 1)");
+  const int b = f.Join("(init T1 b 1)");
+  EXPECT_TRUE(f.session.ReadyToStep());  // nobody active yet
+  f.world.Cycle(&f.session);
+  EXPECT_FALSE(f.session.ReadyToStep());
+  f.session.Receive(a, "(syn)");
+  EXPECT_FALSE(f.session.ReadyToStep());
+  EXPECT_EQ(f.session.Waiting(), std::vector<int>{b});
+  f.session.Receive(b, "(lle4 30 0 50 1 0)");
+  f.session.Receive(b, "(lle4 60 0 70 1 0)");  // two: the second is next cycle's message
+  EXPECT_TRUE(f.session.ReadyToStep());
+  f.world.Cycle(&f.session);
+  EXPECT_FALSE(f.session.ReadyToStep());  // a has nothing queued
+  f.session.Receive(a, "(syn)");
+  EXPECT_TRUE(f.session.ReadyToStep());
+  WorldRequests r = f.world.Cycle(&f.session);
+  EXPECT_EQ(Command(r, "t1_2", "Left_Knee_Pitch")->kp, 50);  // parallel: last cycle's message now
+  f.session.Receive(a, "(syn)");
+  f.session.Receive(b, "(syn)");
+  r = f.world.Cycle(&f.session);
+  EXPECT_EQ(Command(r, "t1_2", "Left_Knee_Pitch")->kp, 70);
+}
+
+TEST(MjSession, VisionEverySecondCycle) {
+  Fixture f;
+  const int a = f.Join("(init T1 a 1)");
+  int seen = 0;
+  for (uint64_t i = 1; i <= 6; ++i) {
+    f.world.Cycle(&f.session);
+    const auto out = f.Outputs();
+    const bool see = out.at(a).find("(See ") != std::string::npos;
+    EXPECT_EQ(see, f.session.cycle() % 2 == 0) << f.session.cycle();
+    seen += see;
+  }
+  EXPECT_EQ(seen, 3);
+}
+
+TEST(MjSession, SeesItselfAndTheOthersParts) {
+  SessionOptions o;
+  o.sequential = true;
+  Fixture f(o);
+  const int a = f.Join("(init T1 blue 1)");
+  const int b = f.Join("(init T1 red 1)");
+  f.world.Cycle(&f.session);
+  // Face to face on the x axis, 4 m apart, heads 0.9 m high.
+  f.session.Receive(a, "(beam 2 0 0)");
+  f.session.Receive(b, "(beam 2 0 0)");
+  f.world.Cycle(&f.session);
+  std::string text = f.Outputs().at(a);
+  if (text.find("(See ") == std::string::npos) {
+    f.session.Receive(a, "(syn)");
+    f.session.Receive(b, "(syn)");
+    f.world.Cycle(&f.session);
+    text = f.Outputs().at(a);
+  }
+  EXPECT_NE(text.find("(P (team red)(id 1)(head (pol "), std::string::npos) << text;
+  EXPECT_NE(text.find(")(lfoot (pol "), std::string::npos) << text;
+  EXPECT_EQ(text.find("(P (team blue)"), std::string::npos) << text;  // its own parts are behind its camera
+  EXPECT_NE(text.find("(B (pol "), std::string::npos) << text;
+  EXPECT_NE(text.find("(g_rup (pol "), std::string::npos) << text;
+}
+
+TEST(MjSession, MonitorKickOffAndAgentMove) {
+  Fixture f;
+  f.Join("(init T1 blue 4)");
+  f.world.Cycle(&f.session);
+  f.session.Monitor("(kickOff Right)(agent (unum 4) (team blue) (move -3 1 0.7 90))(bogus)");
+  f.world.Cycle(&f.session);
+  EXPECT_EQ(f.session.referee().play_mode(), PlayMode::kKickOffRight);
+  const WorldRequests r = f.world.Cycle(&f.session);
+  ASSERT_EQ(r.moves.size(), 1u);
+  EXPECT_EQ(r.moves[0].position, Eigen::Vector3d(-3, 1, 0.7));
+  EXPECT_NEAR(Yaw(r.moves[0].orientation), 90, 1e-9);
+  ASSERT_TRUE(r.ball);
+  EXPECT_EQ(*r.ball, Eigen::Vector3d(0, 0, 0.11));
+  bool unknown = false;
+  for (const SessionIssue& i : f.session.TakeIssues()) unknown = unknown || i.kind == "unknown_op";
+  EXPECT_TRUE(unknown);
+  f.session.Monitor("(killsim)");
+  f.world.Cycle(&f.session);
+  EXPECT_TRUE(f.session.quit_requested());
+}
+
+TEST(MjSession, UnknownEffectorIsCountedNotApplied) {
+  SessionOptions o;
+  o.sequential = true;
+  Fixture f(o);
+  const int a = f.Join("(init K1 a 1)");
+  f.world.Cycle(&f.session);
+  f.session.TakeIssues();
+  f.session.Receive(a, "(te1 30 0 50 1 0)(lle4 nan 0 1 1 0)");
+  const WorldRequests r = f.world.Cycle(&f.session);
+  EXPECT_EQ(r.joints.at("k1_25").size(), 22u);
+  EXPECT_EQ(Command(r, "k1_25", "Left_Knee_Pitch")->kp, 1);
+  std::vector<std::string> kinds;
+  for (const SessionIssue& i : f.session.TakeIssues()) kinds.push_back(i.kind);
+  EXPECT_EQ(kinds, (std::vector<std::string>{"unknown_effector", "not_finite"}));
+}
+
+TEST(MjSession, FloodingDropsTheAgent) {
+  SessionOptions o;
+  o.sync_mode = true;
+  Fixture f(o);
+  const int a = f.Join("(init T1 a 1)");
+  f.world.Cycle(&f.session);
+  for (int i = 0; i < 17; ++i) f.session.Receive(a, "(syn)");
+  EXPECT_EQ(f.session.TakeKicked(), std::vector<int>{a});
+}
+
+}  // namespace
+}  // namespace turf::rcssservermj
