@@ -75,6 +75,11 @@ class DdsVendorWriter final : public VendorParticipant::RawWriter {
   DdsVendorWriter(fdds::Publisher* publisher, fdds::DataWriter* writer) : publisher_(publisher), writer_(writer) {}
   ~DdsVendorWriter() override { publisher_->delete_datawriter(writer_); }
   bool Write(const void* sample) override { return writer_->write(const_cast<void*>(sample)); }
+  bool Write(const void* sample, int64_t source_ns) override {
+    const eprosima::fastrtps::Time_t t(static_cast<int32_t>(source_ns / 1'000'000'000),
+                                       static_cast<uint32_t>(source_ns % 1'000'000'000));
+    return writer_->write_w_timestamp(const_cast<void*>(sample), fdds::HANDLE_NIL, t) == ReturnCode::RETCODE_OK;
+  }
   int Matched() const override {
     fdds::PublicationMatchedStatus status;
     writer_->get_publication_matched_status(status);

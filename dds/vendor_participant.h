@@ -43,6 +43,8 @@ class VendorParticipant {
    public:
     explicit Writer(std::unique_ptr<RawWriter> raw) : raw_(std::move(raw)) {}
     bool Write(const typename PubSub::type& sample);
+    // With an explicit source timestamp (ns since the Unix epoch), e.g. to test a receiver's staleness check.
+    bool Write(const typename PubSub::type& sample, int64_t source_ns);
     int Matched() const;
 
    private:
@@ -73,6 +75,7 @@ class VendorParticipant::RawWriter {
  public:
   virtual ~RawWriter() = default;
   virtual bool Write(const void* sample) = 0;
+  virtual bool Write(const void* sample, int64_t source_ns) = 0;
   virtual int Matched() const = 0;
 };
 class VendorParticipant::RawReader {
@@ -84,6 +87,10 @@ class VendorParticipant::RawReader {
 template <class PubSub>
 bool VendorParticipant::Writer<PubSub>::Write(const typename PubSub::type& sample) {
   return raw_->Write(&sample);
+}
+template <class PubSub>
+bool VendorParticipant::Writer<PubSub>::Write(const typename PubSub::type& sample, int64_t source_ns) {
+  return raw_->Write(&sample, source_ns);
 }
 template <class PubSub>
 int VendorParticipant::Writer<PubSub>::Matched() const {

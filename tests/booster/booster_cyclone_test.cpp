@@ -41,7 +41,7 @@ TEST(BoosterCyclone, ACycloneDdsReaderReceivesTurfsLowState) {
   std::optional<int> status;
   const auto deadline = std::chrono::steady_clock::now() + 40s;
   while (!status && std::chrono::steady_clock::now() < deadline) {
-    ASSERT_TRUE(client.Call(test::StepRequest(4), 20s).ok());  // one sensor frame (50 Hz at 5 ms)
+    ASSERT_TRUE(client.Call(test::StepRequest(4), 20s).ok());  // 20 ms: a few sensor frames
     status = reader.Wait(1ms);
   }
   stop = true;

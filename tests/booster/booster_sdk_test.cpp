@@ -93,11 +93,15 @@ class BoosterSdkTest : public ::testing::Test {
 
   // Writes `cmd` until the bridge has passed on (or refused) one more command, stepping meanwhile (best effort: the
   // first samples may go out before discovery has matched the reader).
-  bool Send(const bi::LowCmd_& cmd) {
+  // `age`: the command's source timestamp that much in the past.
+  bool Send(const bi::LowCmd_& cmd, std::chrono::seconds age = 0s) {
     const BoosterSdkStats before = bridge_->Stats();
     const auto deadline = Clock::now() + 20s;
     while (Clock::now() < deadline) {
-      joint_ctrl_->Write(cmd);
+      const int64_t now_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                 std::chrono::system_clock::now().time_since_epoch() - age)
+                                 .count();
+      joint_ctrl_->Write(cmd, now_ns);
       Step(1);
       const BoosterSdkStats now = bridge_->Stats();
       if (now.commands > before.commands || now.refused > before.refused) return true;
@@ -172,6 +176,8 @@ TEST_F(BoosterSdkTest, BadCommandsAreRefusedAndTheRobotHoldsItsLastCommand) {
   nan.motor_cmd()[1].q(std::nanf(""));
   ASSERT_TRUE(Send(nan));
   EXPECT_EQ(bridge_->Stats().refused_by_kind["joint_ctrl.not_finite"], 1u);
+  ASSERT_TRUE(Send(StandWithHeadDown(), 10s));  // a command 10 s old
+  EXPECT_EQ(bridge_->Stats().refused_by_kind["joint_ctrl.stale"], 1u);
   bi::LowCmd_ beyond = StandWithHeadDown();
   beyond.motor_cmd()[1].q(3.0f);  // past head pitch's range: turf-sim's validator refuses the whole message
   ASSERT_TRUE(Send(beyond));
@@ -179,6 +185,32 @@ TEST_F(BoosterSdkTest, BadCommandsAreRefusedAndTheRobotHoldsItsLastCommand) {
   EXPECT_TRUE(
       StepUntil([&](const bi::LowState_&) { return sim_->node().Rejected("joint_command.out_of_range") >= 1; }, 200));
   EXPECT_NEAR(Q(1), held, 0.02);  // still the last accepted command
+}
+
+// Every T1 and K1 of a scene on a DDS domain of its own, in scene order.
+TEST(BoosterSdkRobots, EachRobotGetsTheNextDomain) {
+  LeggedSceneLoadResult r = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/t1_stand.yaml");
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  LeggedRobot second = r.scene->robots[0];
+  second.name = "t1_b";
+  second.x = 2.0;
+  r.scene->robots.push_back(second);
+  dds::MemoryBus bus("mem");
+  test::SimUnderTest sim(std::move(*r.scene), bus, TimeMode::kLockstep);
+  dds::ControlClient client(bus, "test");
+  BoosterSdkOptions o;
+  o.domain = test::TestDomain(41);
+  BoosterSdkBridge bridge(o, bus);
+  std::atomic<bool> stop{false};
+  std::thread thread([&] { bridge.Run([&] { return stop.load(); }); });
+  const auto deadline = Clock::now() + 20s;
+  while (bridge.Robots().size() < 2 && Clock::now() < deadline)
+    ASSERT_TRUE(client.Call(test::StepRequest(4), 20s).ok());
+  stop = true;
+  thread.join();
+  ASSERT_EQ(bridge.Robots().size(), 2u);
+  EXPECT_EQ(bridge.Robots()[0], "t1 (T1) on domain " + std::to_string(o.domain));
+  EXPECT_EQ(bridge.Robots()[1], "t1_b (T1) on domain " + std::to_string(o.domain + 1));
 }
 
 }  // namespace
