@@ -1,8 +1,6 @@
 #include "participants/rcssservermj_bridge/rcssservermj_bridge.h"
 
-#include <poll.h>
 #include <spdlog/spdlog.h>
-#include <sys/socket.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,8 +12,8 @@
 #include "codecs/rcssservermj/session.h"
 #include "codecs/simspark/framing.h"
 #include "participants/common/address_allowlist.h"
+#include "participants/common/front_end_server.h"
 #include "participants/common/process.h"
-#include "participants/common/tcp.h"
 #include "participants/rcssservermj_bridge/legged_link.h"
 
 namespace turf {
@@ -24,16 +22,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr auto kCycle = std::chrono::milliseconds(20);
-constexpr int kSendBuffer = 128 * 1024;
-constexpr size_t kMaxReadPerPoll = 1 << 18;
-constexpr auto kConnectionLogInterval = std::chrono::seconds(1);
 
-struct Client {
-  std::unique_ptr<TcpPeer> peer;
-  simspark::FrameDecoder decoder;  // RCSSServerMJ frames exactly as SimSpark does
-  bool monitor = false;
-  int agent = -1;
-};
+// RCSSServerMJ frames exactly as SimSpark does (FrontEndServer's framing).
+FrontEndServer::Options ServerOptions(const RcssServerMjOptions& o) {
+  return {o.listen, o.agent_port, o.monitor_port, o.max_clients, o.max_unsent};
+}
 
 MjLeggedLink MakeLink(const RcssServerMjOptions& o, dds::Bus* bus) {
   if (bus != nullptr) return MjLeggedLink(*bus);
@@ -48,24 +41,17 @@ class RcssServerMjBridge::Impl {
       : options_(std::move(options)),
         link_(MakeLink(options_, bus)),
         monitor_allow_(options_.monitor_allow),
-        rejects_("RCSSServerMJ input"),
-        connections_("RCSSServerMJ client", kConnectionLogInterval, LogLine::kEvent) {
+        rejects_("RCSSServerMJ input") {
     if (options_.sequential || !options_.realtime) options_.sync_mode = true;
     rcssservermj::SessionOptions check;
     check.rules = options_.rules;
     check.field = options_.field;
     rcssservermj::Session probe(check, {});  // throws std::invalid_argument for a bad rule book or field
-    std::string error;
-    auto agents = TcpListener::Listen(options_.listen, options_.agent_port, &error);
-    if (!agents) throw std::runtime_error("agent port: " + error);
-    auto monitors = TcpListener::Listen(options_.listen, options_.monitor_port, &error);
-    if (!monitors) throw std::runtime_error("monitor port: " + error);
-    agent_listener_ = std::move(*agents);
-    monitor_listener_ = std::move(*monitors);
+    server_ = std::make_unique<FrontEndServer>(ServerOptions(options_), "RCSSServerMJ client", &rejects_, MakeHooks());
   }
 
-  uint16_t agent_port() const { return agent_listener_.LocalPort(); }
-  uint16_t monitor_port() const { return monitor_listener_.LocalPort(); }
+  uint16_t agent_port() const { return server_->agent_port(); }
+  uint16_t monitor_port() const { return server_->monitor_port(); }
 
   bool Run(const std::function<bool()>& stop) {
     if (!Attach(stop)) return stop();
@@ -126,9 +112,9 @@ class RcssServerMjBridge::Impl {
  private:
   bool Attach(const std::function<bool()>& stop) {
     if (session_) {
-      for (auto& [fd, c] : clients_)
-        if (!c.monitor) MarkDrop(fd, "turf-sim stopped answering; reconnect when it is back");
-      FlushDrops();
+      for (auto& [fd, c] : server_->clients())
+        if (!c.monitor) server_->MarkDrop(fd, "turf-sim stopped answering; reconnect when it is back");
+      server_->FlushDrops();
     }
     spdlog::info("waiting for turf-sim's legged scene on {} ({})", link_.DescribeBus(),
                  link_.TopicName(dds::Topic::kLeggedScene));
@@ -175,8 +161,8 @@ class RcssServerMjBridge::Impl {
     }
     const double sim_time = world->time;
     session_->Advance(std::move(*world));
-    for (auto& [agent, message] : session_->TakeOutputs()) SendToAgent(agent, simspark::Frame(message));
-    FlushDrops();
+    for (auto& [agent, message] : session_->TakeOutputs()) server_->SendToAgent(agent, simspark::Frame(message));
+    server_->FlushDrops();
     ReportIssues();
     std::lock_guard<std::mutex> lock(stats_mutex_);
     stats_.cycles = session_->cycle();
@@ -198,121 +184,43 @@ class RcssServerMjBridge::Impl {
     stats_changed_.notify_all();
   }
 
-  void PollSockets(std::chrono::milliseconds timeout) {
-    std::vector<pollfd> fds;
-    fds.push_back({agent_listener_.fd(), POLLIN, 0});
-    fds.push_back({monitor_listener_.fd(), POLLIN, 0});
-    for (const auto& [fd, c] : clients_)
-      fds.push_back({fd, static_cast<short>(POLLIN | (c.peer->pending() > 0 ? POLLOUT : 0)), 0});
-    const int n = poll(fds.data(), fds.size(), static_cast<int>(std::max<int64_t>(0, timeout.count())));
-    if (n <= 0) return;
-    if (fds[0].revents & POLLIN) AcceptAll(&agent_listener_, false);
-    if (fds[1].revents & POLLIN) AcceptAll(&monitor_listener_, true);
-    for (size_t i = 2; i < fds.size(); ++i) {
-      if (fds[i].revents == 0) continue;
-      auto it = clients_.find(fds[i].fd);
-      if (it == clients_.end()) continue;
-      std::string error;
-      if ((fds[i].revents & POLLOUT) && !it->second.peer->Flush(&error)) {
-        MarkDrop(fds[i].fd, error);
-        continue;
-      }
-      if (fds[i].revents & (POLLIN | POLLHUP | POLLERR)) ReadClient(fds[i].fd);
-    }
-    FlushDrops();
-  }
+  void PollSockets(std::chrono::milliseconds timeout) { server_->Poll(timeout); }
 
-  void AcceptAll(TcpListener* listener, bool monitor) {
-    std::string address;
-    for (int fd = listener->Accept(&address); fd >= 0; fd = listener->Accept(&address)) {
-      setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &kSendBuffer, sizeof(kSendBuffer));
-      auto peer = std::make_unique<TcpPeer>(fd, address, options_.max_unsent);
-      if (clients_.size() >= options_.max_clients) {
-        rejects_.Reject("too_many_clients", fmt::format("{} refused: {} clients connected", address, clients_.size()));
-        continue;
-      }
-      if (monitor && !monitor_allow_.Allows(address)) {
+  FrontEndServer::Hooks MakeHooks() {
+    FrontEndServer::Hooks h;
+    h.admit = [this](FrontEndClient& c, const std::string& address, std::string*) {
+      if (c.monitor && !monitor_allow_.Allows(address)) {
         rejects_.Reject("monitor_not_allowed", fmt::format("{} refused: not in the monitor allowlist ({})", address,
                                                            monitor_allow_.Describe()));
-        continue;  // the peer's destructor closes it
+        return false;  // the peer's destructor closes it
       }
-      Client c{std::move(peer), simspark::FrameDecoder(), monitor, -1};
-      if (!monitor) c.agent = session_->Connect();
-      connections_.Reject(monitor ? "monitor_connected" : "agent_connected",
-                          monitor ? address : fmt::format("agent {} from {}", c.agent, address));
-      clients_.emplace(fd, std::move(c));
+      if (!c.monitor) c.agent = session_->Connect();
+      server_->connections().Reject(c.monitor ? "monitor_connected" : "agent_connected",
+                                    c.monitor ? address : fmt::format("agent {} from {}", c.agent, address));
       std::lock_guard<std::mutex> lock(stats_mutex_);
       stats_.agents = session_->agents();
       stats_changed_.notify_all();
-    }
-  }
-
-  void ReadClient(int fd) {
-    Client& c = clients_.at(fd);
-    std::string bytes;
-    std::string error;
-    const bool open = c.peer->Read(&bytes, kMaxReadPerPoll, &error);
-    c.decoder.Feed(bytes.data(), bytes.size());
-    while (auto payload = c.decoder.Next()) {
+      return true;
+    };
+    h.message = [this](FrontEndClient& c, const std::string& payload) {
       if (c.monitor) {
-        session_->Monitor(*payload);
+        session_->Monitor(payload);
       } else {
-        session_->Receive(c.agent, *payload);
+        session_->Receive(c.agent, payload);
       }
-    }
-    if (c.decoder.error() != simspark::FrameError::kOk) {
-      rejects_.Reject("frame_too_large",
-                      fmt::format("{}: a length prefix above {} bytes", c.peer->address(), simspark::kMaxAgentPayload));
-      MarkDrop(fd, "sent an oversized frame");
-    } else if (!open) {
-      MarkDrop(fd, error);
-    }
-  }
-
-  void Send(int fd, const std::string& framed) {
-    auto it = clients_.find(fd);
-    if (it == clients_.end()) return;
-    std::string error;
-    if (!it->second.peer->Write(framed, &error)) MarkDrop(fd, error);
-  }
-
-  void SendToAgent(int agent, const std::string& framed) {
-    for (auto& [fd, c] : clients_) {
-      if (c.agent == agent) {
-        Send(fd, framed);
-        return;
-      }
-    }
-  }
-
-  void DropAgent(int agent, const std::string& why) {
-    for (auto& [fd, c] : clients_)
-      if (c.agent == agent) MarkDrop(fd, why);
-    FlushDrops();
-  }
-
-  void MarkDrop(int fd, const std::string& why) { drops_.emplace_back(fd, why); }
-
-  void FlushDrops() {
-    for (const auto& [fd, why] : drops_) {
-      auto it = clients_.find(fd);
-      if (it == clients_.end()) continue;
-      if (it->second.monitor) {
-        connections_.Reject("monitor_left", fmt::format("{}: {}", it->second.peer->address(), why));
-      } else {
-        connections_.Reject("agent_left",
-                            fmt::format("agent {} ({}): {}", it->second.agent, it->second.peer->address(), why));
-        session_->Disconnect(it->second.agent);
-      }
-      clients_.erase(it);
+    };
+    h.left = [this](const FrontEndClient& c) {
+      if (!c.monitor) session_->Disconnect(c.agent);
       std::lock_guard<std::mutex> lock(stats_mutex_);
       ++stats_.dropped_clients;
       stats_.agents = session_->agents();
       stats_.active_agents = session_->active_agents();
       stats_changed_.notify_all();
-    }
-    drops_.clear();
+    };
+    return h;
   }
+
+  void DropAgent(int agent, const std::string& why) { server_->DropAgent(agent, why); }
 
   void ReportStatus() {
     if (!session_) return;
@@ -325,15 +233,11 @@ class RcssServerMjBridge::Impl {
 
   RcssServerMjOptions options_;
   MjLeggedLink link_;
-  TcpListener agent_listener_;
-  TcpListener monitor_listener_;
   AddressAllowlist monitor_allow_;
   std::unique_ptr<rcssservermj::Session> session_;
-  std::map<int, Client> clients_;
-  std::vector<std::pair<int, std::string>> drops_;
   uint32_t steps_ = 4;
   RejectLog rejects_;
-  RejectLog connections_;
+  std::unique_ptr<FrontEndServer> server_;
   mutable std::mutex stats_mutex_;
   mutable std::condition_variable stats_changed_;
   RcssServerMjStats stats_;

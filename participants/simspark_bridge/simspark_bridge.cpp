@@ -1,8 +1,6 @@
 #include "participants/simspark_bridge/simspark_bridge.h"
 
-#include <poll.h>
 #include <spdlog/spdlog.h>
-#include <sys/socket.h>
 
 #include <algorithm>
 #include <atomic>
@@ -14,8 +12,8 @@
 
 #include "codecs/simspark/framing.h"
 #include "codecs/simspark/session.h"
+#include "participants/common/front_end_server.h"
 #include "participants/common/process.h"
-#include "participants/common/tcp.h"
 #include "participants/simspark_bridge/world_link.h"
 
 namespace turf {
@@ -25,18 +23,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr auto kCycle = std::chrono::milliseconds(20);
 constexpr double kCycleSeconds = 0.02;
-constexpr int kSendBuffer = 128 * 1024;  // kernel buffer per client (bounds what a stalled client holds)
-constexpr size_t kMaxReadPerPoll = 1 << 18;
 
-constexpr auto kConnectionLogInterval = std::chrono::seconds(1);  // per kind of connection line
-
-struct Client {
-  std::unique_ptr<TcpPeer> peer;
-  simspark::FrameDecoder decoder;
-  bool monitor = false;
-  int agent = -1;                                                // session id (agents only)
-  simspark::TrainerRole role = simspark::TrainerRole::kTrainer;  // monitors only: from an operator's address?
-};
+// A monitor's FrontEndClient::role: from an operator's address?
+simspark::TrainerRole RoleOf(const FrontEndClient& c) { return static_cast<simspark::TrainerRole>(c.role); }
 
 const char* RoleName(simspark::TrainerRole role) {
   return role == simspark::TrainerRole::kOperator ? "operator" : "not an operator";
@@ -61,18 +50,12 @@ class SimSparkBridge::Impl {
         link_(MakeLink(options_, bus)),
         operators_(options_.operator_allow),
         rejects_("SimSpark input"),
-        connections_("SimSpark client", kConnectionLogInterval, LogLine::kEvent) {
-    std::string error;
-    auto agents = TcpListener::Listen(options_.listen, options_.agent_port, &error);
-    if (!agents) throw std::runtime_error("agent port: " + error);
-    auto monitors = TcpListener::Listen(options_.listen, options_.monitor_port, &error);
-    if (!monitors) throw std::runtime_error("monitor port: " + error);
-    agent_listener_ = std::move(*agents);
-    monitor_listener_ = std::move(*monitors);
-  }
+        server_(
+            {options_.listen, options_.agent_port, options_.monitor_port, options_.max_clients, options_.max_unsent},
+            "SimSpark client", &rejects_, MakeHooks()) {}
 
-  uint16_t agent_port() const { return agent_listener_.LocalPort(); }
-  uint16_t monitor_port() const { return monitor_listener_.LocalPort(); }
+  uint16_t agent_port() const { return server_.agent_port(); }
+  uint16_t monitor_port() const { return server_.monitor_port(); }
 
   bool Run(const std::function<bool()>& stop) {
     if (!Attach(stop)) return stop();
@@ -132,9 +115,9 @@ class SimSparkBridge::Impl {
     if (session_) {
       // turf-sim went away (or restarted): its world starts over, so do the
       // agents, as with a restarted rcssserver3d.
-      for (auto& [fd, c] : clients_)
-        if (!c.monitor) MarkDrop(fd, "turf-sim stopped answering; reconnect when it is back");
-      FlushDrops();
+      for (auto& [fd, c] : server_.clients())
+        if (!c.monitor) server_.MarkDrop(fd, "turf-sim stopped answering; reconnect when it is back");
+      server_.FlushDrops();
     }
     spdlog::info("waiting for turf-sim's legged scene on {} ({})", link_.DescribeBus(),
                  link_.TopicName(dds::Topic::kLeggedScene));
@@ -174,14 +157,14 @@ class SimSparkBridge::Impl {
     }
     const double sim_time = world->time;
     session_->Advance(std::move(*world));
-    for (auto& [agent, message] : session_->TakeOutputs()) SendToAgent(agent, simspark::Frame(message));
+    for (auto& [agent, message] : session_->TakeOutputs()) server_.SendToAgent(agent, simspark::Frame(message));
     const std::string monitor = session_->TakeMonitorOutput();
     if (!monitor.empty()) {
       const std::string framed = simspark::Frame(monitor);
-      for (auto& [fd, c] : clients_)
-        if (c.monitor) Send(fd, framed);
+      for (auto& [fd, c] : server_.clients())
+        if (c.monitor) server_.Send(fd, framed);
     }
-    FlushDrops();
+    server_.FlushDrops();
     split_.bridge += Clock::now() - stepped;
     ReportIssues();
     std::lock_guard<std::mutex> lock(stats_mutex_);
@@ -208,122 +191,43 @@ class SimSparkBridge::Impl {
   }
 
   void PollSockets(std::chrono::milliseconds timeout) {
-    std::vector<pollfd> fds;
-    fds.push_back({agent_listener_.fd(), POLLIN, 0});
-    fds.push_back({monitor_listener_.fd(), POLLIN, 0});
-    for (const auto& [fd, c] : clients_)
-      fds.push_back({fd, static_cast<short>(POLLIN | (c.peer->pending() > 0 ? POLLOUT : 0)), 0});
-    const int n = poll(fds.data(), fds.size(), static_cast<int>(std::max<int64_t>(0, timeout.count())));
-    if (n <= 0) return;
-    if (fds[0].revents & POLLIN) AcceptAll(&agent_listener_, false);
-    if (fds[1].revents & POLLIN) AcceptAll(&monitor_listener_, true);
-    for (size_t i = 2; i < fds.size(); ++i) {
-      if (fds[i].revents == 0) continue;
-      auto it = clients_.find(fds[i].fd);
-      if (it == clients_.end()) continue;
-      std::string error;
-      if ((fds[i].revents & POLLOUT) && !it->second.peer->Flush(&error)) {
-        MarkDrop(fds[i].fd, error);
-        continue;
-      }
-      if (fds[i].revents & (POLLIN | POLLHUP | POLLERR)) ReadClient(fds[i].fd);
-    }
-    FlushDrops();
-    ReportIssues();
+    if (server_.Poll(timeout)) ReportIssues();
   }
 
-  void AcceptAll(TcpListener* listener, bool monitor) {
-    std::string address;
-    for (int fd = listener->Accept(&address); fd >= 0; fd = listener->Accept(&address)) {
-      setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &kSendBuffer, sizeof(kSendBuffer));
-      auto peer = std::make_unique<TcpPeer>(fd, address, options_.max_unsent);
-      if (clients_.size() >= options_.max_clients) {
-        rejects_.Reject("too_many_clients", fmt::format("{} refused: {} clients connected", address, clients_.size()));
-        continue;  // the peer's destructor closes it
-      }
-      Client c{std::move(peer), simspark::FrameDecoder(), monitor, -1};
-      if (monitor) {
-        if (operators_.Allows(address)) c.role = simspark::TrainerRole::kOperator;
-        connections_.Reject("monitor_connected", fmt::format("{} ({})", address, RoleName(c.role)));
-        const std::string greeting = simspark::Frame(session_->MonitorGreeting());
-        clients_.emplace(fd, std::move(c));
-        Send(fd, greeting);
-      } else {
-        c.agent = session_->Connect();
-        connections_.Reject("agent_connected", fmt::format("agent {} from {}", c.agent, address));
-        clients_.emplace(fd, std::move(c));
-        std::lock_guard<std::mutex> lock(stats_mutex_);
-        stats_.agents = session_->agents();
-        stats_changed_.notify_all();
-      }
-    }
-  }
-
-  void ReadClient(int fd) {
-    Client& c = clients_.at(fd);
-    std::string bytes;
-    std::string error;
-    const bool open = c.peer->Read(&bytes, kMaxReadPerPoll, &error);
-    c.decoder.Feed(bytes.data(), bytes.size());
-    while (auto payload = c.decoder.Next()) {
+  FrontEndServer::Hooks MakeHooks() {
+    FrontEndServer::Hooks h;
+    h.admit = [this](FrontEndClient& c, const std::string& address, std::string* greeting) {
       if (c.monitor) {
-        session_->Trainer(*payload, c.role);
+        if (operators_.Allows(address)) c.role = static_cast<int>(simspark::TrainerRole::kOperator);
+        server_.connections().Reject("monitor_connected", fmt::format("{} ({})", address, RoleName(RoleOf(c))));
+        *greeting = simspark::Frame(session_->MonitorGreeting());
+        return true;
+      }
+      c.agent = session_->Connect();
+      server_.connections().Reject("agent_connected", fmt::format("agent {} from {}", c.agent, address));
+      std::lock_guard<std::mutex> lock(stats_mutex_);
+      stats_.agents = session_->agents();
+      stats_changed_.notify_all();
+      return true;
+    };
+    h.message = [this](FrontEndClient& c, const std::string& payload) {
+      if (c.monitor) {
+        session_->Trainer(payload, RoleOf(c));
       } else {
-        session_->Receive(c.agent, *payload);
+        session_->Receive(c.agent, payload);
       }
-    }
-    if (c.decoder.error() != simspark::FrameError::kOk) {
-      rejects_.Reject("frame_too_large",
-                      fmt::format("{}: a length prefix above {} bytes", c.peer->address(), simspark::kMaxAgentPayload));
-      MarkDrop(fd, "sent an oversized frame");
-    } else if (!open) {
-      MarkDrop(fd, error);
-    }
-  }
-
-  void Send(int fd, const std::string& framed) {
-    auto it = clients_.find(fd);
-    if (it == clients_.end()) return;
-    std::string error;
-    if (!it->second.peer->Write(framed, &error)) MarkDrop(fd, error);
-  }
-
-  void SendToAgent(int agent, const std::string& framed) {
-    for (auto& [fd, c] : clients_) {
-      if (c.agent == agent) {
-        Send(fd, framed);
-        return;
-      }
-    }
-  }
-
-  void DropAgent(int agent, const std::string& why) {
-    for (auto& [fd, c] : clients_)
-      if (c.agent == agent) MarkDrop(fd, why);
-    FlushDrops();
-  }
-
-  void MarkDrop(int fd, const std::string& why) { drops_.emplace_back(fd, why); }
-
-  void FlushDrops() {
-    for (const auto& [fd, why] : drops_) {
-      auto it = clients_.find(fd);
-      if (it == clients_.end()) continue;
-      if (it->second.monitor) {
-        connections_.Reject("monitor_left", fmt::format("{}: {}", it->second.peer->address(), why));
-      } else {
-        connections_.Reject("agent_left",
-                            fmt::format("agent {} ({}): {}", it->second.agent, it->second.peer->address(), why));
-        session_->Disconnect(it->second.agent);
-      }
-      clients_.erase(it);
+    };
+    h.left = [this](const FrontEndClient& c) {
+      if (!c.monitor) session_->Disconnect(c.agent);
       std::lock_guard<std::mutex> lock(stats_mutex_);
       ++stats_.dropped_clients;
       stats_.agents = session_->agents();
       stats_changed_.notify_all();
-    }
-    drops_.clear();
+    };
+    return h;
   }
+
+  void DropAgent(int agent, const std::string& why) { server_.DropAgent(agent, why); }
 
   void ReportStatus() {
     if (!session_) return;
@@ -345,19 +249,15 @@ class SimSparkBridge::Impl {
 
   SimSparkBridgeOptions options_;
   WorldLink link_;
-  TcpListener agent_listener_;
-  TcpListener monitor_listener_;
   AddressAllowlist operators_;
   std::unique_ptr<simspark::Session> session_;
-  std::map<int, Client> clients_;
-  std::vector<std::pair<int, std::string>> drops_;
   uint32_t steps_ = 4;
   struct {
     Clock::duration world{}, bridge{}, waiting{};
     uint64_t cycles = 0;
   } split_;
   RejectLog rejects_;
-  RejectLog connections_;  // clients connecting and leaving (LogLine::kEvent)
+  FrontEndServer server_;
   mutable std::mutex stats_mutex_;
   mutable std::condition_variable stats_changed_;
   SimSparkBridgeStats stats_;

@@ -1,0 +1,131 @@
+#include "participants/common/front_end_server.h"
+
+#include <poll.h>
+#include <spdlog/spdlog.h>
+#include <sys/socket.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace turf {
+
+namespace {
+
+constexpr int kSendBuffer = 128 * 1024;  // kernel buffer per client (bounds what a stalled client holds)
+constexpr size_t kMaxReadPerPoll = 1 << 18;
+constexpr auto kConnectionLogInterval = std::chrono::seconds(1);  // per kind of connection line
+
+}  // namespace
+
+FrontEndServer::FrontEndServer(const Options& options, const std::string& connection_log, RejectLog* rejects,
+                               Hooks hooks)
+    : options_(options),
+      rejects_(rejects),
+      hooks_(std::move(hooks)),
+      connections_(connection_log, kConnectionLogInterval, LogLine::kEvent) {
+  std::string error;
+  auto agents = TcpListener::Listen(options_.listen, options_.agent_port, &error);
+  if (!agents) throw std::runtime_error("agent port: " + error);
+  auto monitors = TcpListener::Listen(options_.listen, options_.monitor_port, &error);
+  if (!monitors) throw std::runtime_error("monitor port: " + error);
+  agent_listener_ = std::move(*agents);
+  monitor_listener_ = std::move(*monitors);
+}
+
+bool FrontEndServer::Poll(std::chrono::milliseconds timeout) {
+  std::vector<pollfd> fds;
+  fds.push_back({agent_listener_.fd(), POLLIN, 0});
+  fds.push_back({monitor_listener_.fd(), POLLIN, 0});
+  for (const auto& [fd, c] : clients_)
+    fds.push_back({fd, static_cast<short>(POLLIN | (c.peer->pending() > 0 ? POLLOUT : 0)), 0});
+  const int n = poll(fds.data(), fds.size(), static_cast<int>(std::max<int64_t>(0, timeout.count())));
+  if (n <= 0) return false;
+  if (fds[0].revents & POLLIN) AcceptAll(&agent_listener_, false);
+  if (fds[1].revents & POLLIN) AcceptAll(&monitor_listener_, true);
+  for (size_t i = 2; i < fds.size(); ++i) {
+    if (fds[i].revents == 0) continue;
+    auto it = clients_.find(fds[i].fd);
+    if (it == clients_.end()) continue;
+    std::string error;
+    if ((fds[i].revents & POLLOUT) && !it->second.peer->Flush(&error)) {
+      MarkDrop(fds[i].fd, error);
+      continue;
+    }
+    if (fds[i].revents & (POLLIN | POLLHUP | POLLERR)) ReadClient(fds[i].fd);
+  }
+  FlushDrops();
+  return true;
+}
+
+void FrontEndServer::AcceptAll(TcpListener* listener, bool monitor) {
+  std::string address;
+  for (int fd = listener->Accept(&address); fd >= 0; fd = listener->Accept(&address)) {
+    setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &kSendBuffer, sizeof(kSendBuffer));
+    auto peer = std::make_unique<TcpPeer>(fd, address, options_.max_unsent);
+    if (clients_.size() >= options_.max_clients) {
+      rejects_->Reject("too_many_clients", fmt::format("{} refused: {} clients connected", address, clients_.size()));
+      continue;  // the peer's destructor closes it
+    }
+    FrontEndClient c{std::move(peer), simspark::FrameDecoder(), monitor, -1, 0};
+    std::string greeting;
+    if (!hooks_.admit(c, address, &greeting)) continue;
+    clients_.emplace(fd, std::move(c));
+    if (!greeting.empty()) Send(fd, greeting);
+  }
+}
+
+void FrontEndServer::ReadClient(int fd) {
+  FrontEndClient& c = clients_.at(fd);
+  std::string bytes;
+  std::string error;
+  const bool open = c.peer->Read(&bytes, kMaxReadPerPoll, &error);
+  c.decoder.Feed(bytes.data(), bytes.size());
+  while (auto payload = c.decoder.Next()) hooks_.message(c, *payload);
+  if (c.decoder.error() != simspark::FrameError::kOk) {
+    rejects_->Reject("frame_too_large",
+                     fmt::format("{}: a length prefix above {} bytes", c.peer->address(), simspark::kMaxAgentPayload));
+    MarkDrop(fd, "sent an oversized frame");
+  } else if (!open) {
+    MarkDrop(fd, error);
+  }
+}
+
+void FrontEndServer::Send(int fd, const std::string& framed) {
+  auto it = clients_.find(fd);
+  if (it == clients_.end()) return;
+  std::string error;
+  if (!it->second.peer->Write(framed, &error)) MarkDrop(fd, error);
+}
+
+void FrontEndServer::SendToAgent(int agent, const std::string& framed) {
+  for (auto& [fd, c] : clients_) {
+    if (c.agent == agent) {
+      Send(fd, framed);
+      return;
+    }
+  }
+}
+
+void FrontEndServer::DropAgent(int agent, const std::string& why) {
+  for (auto& [fd, c] : clients_)
+    if (c.agent == agent) MarkDrop(fd, why);
+  FlushDrops();
+}
+
+void FrontEndServer::FlushDrops() {
+  for (const auto& [fd, why] : drops_) {
+    auto it = clients_.find(fd);
+    if (it == clients_.end()) continue;
+    const FrontEndClient& c = it->second;
+    if (c.monitor) {
+      connections_.Reject("monitor_left", fmt::format("{}: {}", c.peer->address(), why));
+    } else {
+      connections_.Reject("agent_left", fmt::format("agent {} ({}): {}", c.agent, c.peer->address(), why));
+    }
+    hooks_.left(c);
+    clients_.erase(it);
+  }
+  drops_.clear();
+}
+
+}  // namespace turf

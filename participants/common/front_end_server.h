@@ -1,0 +1,80 @@
+// The TCP side shared by the 3D-league front-ends (SimSpark and RCSSServerMJ bridges): an agent port and a monitor
+// port, length-prefixed frames (codecs/simspark/framing.h), and the untrusted-client rules: at most max_clients,
+// a frame above the payload limit or a client that stops reading (max_unsent) drops that client only. Clients
+// connecting and leaving are logged at most once a second per kind. What a client means (agents, monitors, the
+// session) is the owner's, through the hooks.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "codecs/simspark/framing.h"
+#include "core/pinned.h"
+#include "participants/common/process.h"
+#include "participants/common/tcp.h"
+
+namespace turf {
+
+struct FrontEndClient {
+  std::unique_ptr<TcpPeer> peer;
+  simspark::FrameDecoder decoder;
+  bool monitor = false;
+  int agent = -1;  // the owner's session id (agents only)
+  int role = 0;    // the owner's (monitors only)
+};
+
+class FrontEndServer : Pinned {
+ public:
+  struct Hooks {
+    // A new client (within max_clients), not yet served: sets its agent or role and logs it on connections();
+    // false: refused (closed). A non-empty *greeting is sent to it once it is served.
+    std::function<bool(FrontEndClient& client, const std::string& address, std::string* greeting)> admit;
+    std::function<void(FrontEndClient& client, const std::string& payload)> message;
+    // A client is dropped (after its line on connections()).
+    std::function<void(const FrontEndClient& client)> left;
+  };
+  struct Options {
+    std::string listen;
+    uint16_t agent_port = 0;
+    uint16_t monitor_port = 0;
+    size_t max_clients = 64;
+    size_t max_unsent = 1 << 20;
+  };
+  // Binds both ports; throws std::runtime_error if it cannot. `rejects` (refused input) outlives the server.
+  FrontEndServer(const Options& options, const std::string& connection_log, RejectLog* rejects, Hooks hooks);
+
+  uint16_t agent_port() const { return agent_listener_.LocalPort(); }
+  uint16_t monitor_port() const { return monitor_listener_.LocalPort(); }
+  RejectLog& connections() { return connections_; }
+  std::map<int, FrontEndClient>& clients() { return clients_; }
+
+  // Accepts, writes what is waiting and reads (hooks.message per frame) for up to `timeout`; then drops. False when
+  // nothing happened within the timeout.
+  bool Poll(std::chrono::milliseconds timeout);
+  void Send(int fd, const std::string& framed);
+  void SendToAgent(int agent, const std::string& framed);
+  void DropAgent(int agent, const std::string& why);
+  void MarkDrop(int fd, const std::string& why) { drops_.emplace_back(fd, why); }
+  void FlushDrops();
+
+ private:
+  void AcceptAll(TcpListener* listener, bool monitor);
+  void ReadClient(int fd);
+
+  Options options_;
+  RejectLog* rejects_;
+  Hooks hooks_;
+  RejectLog connections_;  // clients connecting and leaving (LogLine::kEvent)
+  TcpListener agent_listener_;
+  TcpListener monitor_listener_;
+  std::map<int, FrontEndClient> clients_;
+  std::vector<std::pair<int, std::string>> drops_;
+};
+
+}  // namespace turf
