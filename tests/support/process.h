@@ -30,8 +30,10 @@ class Process {
   // Waits for the exit; the status as waitpid reports it (decode with
   // WIFEXITED etc.), nullopt on timeout.
   std::optional<int> Wait(std::chrono::milliseconds timeout);
-  // SIGTERM, up to `grace`, then SIGKILL; the exit status (-1 if never started).
-  int Stop(std::chrono::milliseconds grace = std::chrono::milliseconds(3000));
+  // SIGTERM, up to `grace`, then SIGKILL; the exit status (-1 if never started). The default leaves room for a
+  // loaded machine: a soak run saw turf-sim's Fast DDS teardown take more than 3 s after its loop had ended; a
+  // process that hangs on SIGTERM still ends as killed, not exited.
+  int Stop(std::chrono::milliseconds grace = std::chrono::milliseconds(10000));
   void Kill();  // SIGKILL at once: a crash, as far as peers can tell
   const std::string& log_path() const { return log_path_; }
   std::string Log() const;  // the output so far
