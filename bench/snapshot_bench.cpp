@@ -1,6 +1,6 @@
 // What a kernel snapshot costs (kernel/): its size, Save() and Restore()
 // time, next to one physics step of the same kernel measured in the same run,
-// for the SSL match and the 22-Nao SimSpark scene at realistic realism.
+// for the SSL match, the 22-Nao SimSpark scene at realistic realism and the 22-T1 RCSSServerMJ scene.
 // Prints a table; run on demand (bench/run.sh snapshot).
 #include <chrono>
 #include <cstdio>
@@ -51,13 +51,16 @@ int main() {
   std::printf("|------------------------------|-----------|-----------|-------------|------------|\n");
   turf::SceneLoadResult ssl = turf::LoadSceneFile(TURF_SOURCE_DIR "/configs/scenes/ssl_div_a.yaml");
   turf::LeggedSceneLoadResult legged = turf::LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/simspark_match.yaml");
-  if (!ssl.scene || !legged.scene) throw std::runtime_error("cannot load the scenes");
+  turf::LeggedSceneLoadResult t1 = turf::LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/rcssservermj_fifa.yaml");
+  if (!ssl.scene || !legged.scene || !t1.scene) throw std::runtime_error("cannot load the scenes");
   ssl.scene->realism = Realistic();
   legged.scene->realism = Realistic();
   turf::SslKernel ssl_kernel(std::move(*ssl.scene));
   turf::LeggedKernel legged_kernel(std::move(*legged.scene));
   Row("SSL division A, 2x11", ssl_kernel, 500);
   Row("SimSpark match, 22 Naos", legged_kernel, 300);
+  turf::LeggedKernel t1_kernel(std::move(*t1.scene));
+  Row("RCSSServerMJ match, 22 T1", t1_kernel, 300);
   std::printf("step: one physics step with every stage; Save/Restore: a whole snapshot, in memory\n");
   return 0;
 }

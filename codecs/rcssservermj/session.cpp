@@ -141,17 +141,18 @@ void Session::Receive(int id, const std::string& payload) {
 
 void Session::Monitor(const std::string& payload) { monitor_queue_.push_back(payload); }
 
+bool Session::Owes(const Agent& a) const { return sync() && a.active && !a.kicked && a.answers < a.perceptions; }
+
 bool Session::ReadyToStep() const {
-  if (!sync()) return true;
   for (const auto& [id, a] : agents_)
-    if (a.active && !a.kicked && a.queue.empty()) return false;
+    if (Owes(a) && a.queue.empty()) return false;
   return true;
 }
 
 std::vector<int> Session::Waiting() const {
   std::vector<int> out;
   for (const auto& [id, a] : agents_)
-    if (a.active && !a.kicked && a.queue.empty()) out.push_back(id);
+    if (Owes(a) && a.queue.empty()) out.push_back(id);
   return out;
 }
 
@@ -226,23 +227,18 @@ PdCommand Session::Clamped(const MjRobotModel& model, size_t joint, const PdComm
 WorldRequests Session::TakeRequests() {
   for (auto& [id, a] : agents_)
     if (!a.active && a.init && !a.kicked) Activate(&a);
-  std::vector<Held> now;
   for (auto& [id, a] : agents_) {
     if (!a.active || a.kicked) continue;
-    const size_t take = sync() ? std::min<size_t>(1, a.queue.size()) : a.queue.size();
+    const size_t take = sync() ? (Owes(a) ? std::min<size_t>(1, a.queue.size()) : 0) : a.queue.size();
+    a.answers += sync() ? take : 0;
     for (size_t i = 0; i < take; ++i) {
-      ActionMessage m = ParseActions(a.queue.front(), *a.model);
+      const ActionMessage m = ParseActions(a.queue.front(), *a.model);
       a.queue.pop_front();
       for (const ActionIssue& issue : m.issues) Issue(id, turf::ErrorName(issue.error), issue.detail);
-      now.push_back({id, std::move(m)});
+      Apply(&a, m);
     }
   }
-  // Parallel loop: this cycle's actions act in the next step (one cycle of latency); sequential: in this one.
-  std::vector<Held> apply = options_.sequential ? std::move(now) : std::exchange(held_, std::move(now));
-  for (const Held& h : apply) {
-    Agent* a = FindAgent(h.agent);
-    if (a != nullptr && a->active && !a->kicked) Apply(a, h.message);
-  }
+  Release();  // the parallel loop's perceptions of the state before this step: after the actions, as the reference
   for (const auto& [id, a] : agents_) {
     if (!a.active) continue;
     std::vector<PdCommand>& joints = requests_.joints[robots_[a.robot].name];
@@ -312,8 +308,19 @@ void Session::Advance(MjWorldSnapshot world) {
   const std::optional<Eigen::Vector3d> place = referee_.Update(kCycleSeconds, last_->ball, Toucher(*last_));
   if (place) requests_.ball = *place;
   const bool vision = cycle_ % 2 == 0;
+  const std::vector<VisiblePlayer> players = vision ? Players(*last_) : std::vector<VisiblePlayer>{};
   for (const auto& [id, a] : agents_)
-    if (a.active && !a.kicked) outputs_.emplace_back(id, Perceive(a, *last_, vision));
+    if (a.active && !a.kicked) pending_.emplace_back(id, Perceive(a, *last_, vision ? &players : nullptr));
+  if (options_.sequential) Release();
+}
+
+void Session::Release() {
+  for (auto& [id, perception] : std::exchange(pending_, {})) {
+    Agent* a = FindAgent(id);
+    if (a == nullptr || !a->active || a->kicked) continue;  // left since
+    ++a->perceptions;
+    outputs_.emplace_back(id, std::move(perception));
+  }
 }
 
 std::vector<VisiblePlayer> Session::Players(const MjWorldSnapshot& world) const {
@@ -335,7 +342,8 @@ std::vector<VisiblePlayer> Session::Players(const MjWorldSnapshot& world) const 
   return out;
 }
 
-std::string Session::Perceive(const Agent& a, const MjWorldSnapshot& world, bool vision) {
+MjPerception Session::Perceive(const Agent& a, const MjWorldSnapshot& world,
+                               const std::vector<VisiblePlayer>* players) {
   MjPerception p;
   p.time = world.time;
   p.game.play_time = referee_.play_time();
@@ -346,7 +354,7 @@ std::string Session::Perceive(const Agent& a, const MjWorldSnapshot& world, bool
   p.game.score_right = referee_.score(Side::kRight);
   const MjRobotSnapshot* r = world.Find(robots_[a.robot].name);
   const MjLink* torso = r != nullptr ? r->FindLink("torso") : nullptr;
-  if (torso == nullptr) return FormatPerception(p);
+  if (torso == nullptr) return p;
   p.has_robot = true;
   const Eigen::Quaterniond& q = torso->orientation;
   p.quat = {q.w(), q.x(), q.y(), q.z()};
@@ -360,7 +368,7 @@ std::string Session::Perceive(const Agent& a, const MjWorldSnapshot& world, bool
     if (i >= r->positions.size()) continue;  // a sample with fewer positions than names
     p.joints.push_back({j.perceptor, r->positions[i], i < r->velocities.size() ? r->velocities[i] : 0.0});
   }
-  if (vision) {
+  if (players != nullptr) {
     bool found = false;
     VisionInput in;
     in.camera = PointOf(*r, a.model->camera, &found);
@@ -369,15 +377,20 @@ std::string Session::Perceive(const Agent& a, const MjWorldSnapshot& world, bool
       in.orientation = head->orientation;
       in.ball = world.ball;
       in.markers = &markers_;
-      const std::vector<VisiblePlayer> players = Players(world);
-      in.players = &players;
+      in.players = players;
       p.see = ComputeSee(in);
     }
   }
-  return FormatPerception(p);
+  return p;
 }
 
-std::vector<std::pair<int, std::string>> Session::TakeOutputs() { return std::exchange(outputs_, {}); }
+std::vector<std::pair<int, MjPerception>> Session::TakePerceptions() { return std::exchange(outputs_, {}); }
+
+std::vector<std::pair<int, std::string>> Session::TakeOutputs() {
+  std::vector<std::pair<int, std::string>> out;
+  for (const auto& [id, perception] : TakePerceptions()) out.emplace_back(id, FormatPerception(perception));
+  return out;
+}
 std::vector<SessionIssue> Session::TakeIssues() { return std::exchange(issues_, {}); }
 std::vector<int> Session::TakeKicked() { return std::exchange(kicked_, {}); }
 

@@ -4,21 +4,27 @@
 // participant feeds it bytes and world snapshots and carries out the world
 // requests it returns. Same shape as codecs/simspark/session.h.
 //
-// One cycle (0.02 s = 4 physics steps of 5 ms):
+// One cycle (0.02 s = 4 physics steps of 5 ms), in the reference's order:
 //   Receive()/Monitor()   queue an agent's messages / apply nothing yet
-//   ReadyToStep()         sync mode: every active agent has a message queued
+//   ReadyToStep()         sync mode: every active agent has answered every
+//                         perception it was sent
 //   TakeRequests()        cycle start: activate the agents that sent init,
-//                         take their messages (sync: exactly one each), and
+//                         take their messages (sync: exactly one each) and
+//                         apply them; then, in the parallel loop, release the
+//                         perceptions of the state before this step (sent while
+//                         the world steps, so the agents think meanwhile); and
 //                         return the moves, ball placement and per-joint PD
 //                         commands for this cycle's step
 //   -- the participant steps the world one cycle --
 //   Advance(snapshot)     monitor commands and the referee, then one
-//                         perception per active agent (See every 2nd cycle)
-//   TakeOutputs()         the perception messages (payloads, unframed)
+//                         perception per active agent (See every 2nd cycle),
+//                         released at once in the sequential loop
+//   TakePerceptions()     the released perceptions (FormatPerception() them)
 //
 // Latency: parallel loop (default), an action answering the state after step
-// k acts in step k+2, as in the reference (its perceptions are one step old
-// when sent); sequential loop, in step k+1. Motor targets and gains persist
+// k acts in step k+2, as in the reference (it sends the perceptions of the
+// state after step k at the start of cycle k+1, after collecting actions);
+// sequential loop, in step k+1. Motor targets and gains persist
 // until replaced; before the first command every joint has targets 0 and
 // kp = kd = 1. Every cycle the whole set of each active robot is requested,
 // with q clamped into the joint's range (truncated inward to 0.01 rad),
@@ -38,6 +44,7 @@
 #include <vector>
 
 #include "codecs/rcssservermj/actions.h"
+#include "codecs/rcssservermj/perception.h"
 #include "codecs/rcssservermj/robots.h"
 #include "core/rng.h"
 #include "kernel/rcssservermj/referee.h"
@@ -129,7 +136,8 @@ class Session {
   bool ReadyToStep() const;
   WorldRequests TakeRequests();
   void Advance(MjWorldSnapshot world);
-  std::vector<std::pair<int, std::string>> TakeOutputs();
+  std::vector<std::pair<int, MjPerception>> TakePerceptions();
+  std::vector<std::pair<int, std::string>> TakeOutputs();  // TakePerceptions(), formatted
   std::vector<SessionIssue> TakeIssues();
   std::vector<int> TakeKicked();  // agents to disconnect (refused init, flooding)
   bool quit_requested() const { return quit_; }
@@ -140,7 +148,7 @@ class Session {
   uint64_t cycle() const { return cycle_; }
   const Referee& referee() const { return referee_; }
   bool sync() const { return options_.sync_mode || options_.sequential; }
-  std::vector<int> Waiting() const;  // sync mode: active agents without a queued message
+  std::vector<int> Waiting() const;  // sync mode: active agents the next step waits for
 
  private:
   struct Agent {
@@ -154,13 +162,13 @@ class Session {
     int number = 0;
     std::deque<std::string> queue;
     std::vector<PdCommand> motors;  // the persisting commands, model order
-  };
-  struct Held {  // actions taken this cycle, applied in the next (parallel loop)
-    int agent;
-    ActionMessage message;
+    uint64_t perceptions = 0;       // released since activation
+    uint64_t answers = 0;           // sync mode: messages taken
   };
 
   Agent* FindAgent(int id);
+  bool Owes(const Agent& agent) const;  // sync mode: the next step waits for one of its messages
+  void Release();                       // the pending perceptions become outputs
   Agent* FindPlayer(Side side, int number);
   void Issue(int agent, const std::string& kind, const std::string& detail);
   void Kick(Agent* agent, const std::string& why);
@@ -169,7 +177,7 @@ class Session {
   void Beam(Agent* agent, const BeamAction& beam);
   void ApplyMonitor();
   std::optional<Side> Toucher(const MjWorldSnapshot& world) const;
-  std::string Perceive(const Agent& agent, const MjWorldSnapshot& world, bool vision);
+  MjPerception Perceive(const Agent& agent, const MjWorldSnapshot& world, const std::vector<VisiblePlayer>* players);
   std::vector<VisiblePlayer> Players(const MjWorldSnapshot& world) const;
   PdCommand Clamped(const MjRobotModel& model, size_t joint, const PdCommand& c) const;
 
@@ -183,10 +191,10 @@ class Session {
   std::map<int, Agent> agents_;
   int next_agent_ = 1;
   uint64_t cycle_ = 0;
-  std::vector<Held> held_;
   std::vector<std::string> monitor_queue_;
   WorldRequests requests_;
-  std::vector<std::pair<int, std::string>> outputs_;
+  std::vector<std::pair<int, MjPerception>> pending_;  // the parallel loop's perceptions, until the next cycle
+  std::vector<std::pair<int, MjPerception>> outputs_;
   std::vector<SessionIssue> issues_;
   std::vector<int> kicked_;
   bool quit_ = false;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <condition_variable>
+#include <future>
 #include <mutex>
 #include <stdexcept>
 #include <vector>
@@ -147,12 +148,19 @@ class RcssServerMjBridge::Impl {
     return true;
   }
 
+  // The reference's order: the actions, then the perceptions of the state before this step go out while the world
+  // steps (the world in another thread, so the agents think meanwhile), then the referee; the sequential loop's
+  // perceptions of the state after it.
   bool RunCycle(const std::function<bool()>& stop) {
     std::string error;
     std::vector<std::string> warnings;
     const rcssservermj::WorldRequests requests = session_->TakeRequests();
     for (int agent : session_->TakeKicked()) DropAgent(agent, "closed by the server");
-    auto world = link_.Cycle(requests, steps_, options_.step_timeout, stop, &error, &warnings);
+    auto stepped = std::async(std::launch::async, [&] {
+      return link_.Cycle(requests, steps_, options_.step_timeout, stop, &error, &warnings);
+    });
+    SendPerceptions();
+    auto world = stepped.get();
     for (const std::string& w : warnings) spdlog::warn("turf-sim refused {}", w);
     if (!world) {
       if (stop()) return true;
@@ -161,8 +169,7 @@ class RcssServerMjBridge::Impl {
     }
     const double sim_time = world->time;
     session_->Advance(std::move(*world));
-    for (auto& [agent, message] : session_->TakeOutputs()) server_->SendToAgent(agent, simspark::Frame(message));
-    server_->FlushDrops();
+    SendPerceptions();
     ReportIssues();
     std::lock_guard<std::mutex> lock(stats_mutex_);
     stats_.cycles = session_->cycle();
@@ -171,6 +178,12 @@ class RcssServerMjBridge::Impl {
     stats_.active_agents = session_->active_agents();
     stats_changed_.notify_all();
     return true;
+  }
+
+  void SendPerceptions() {
+    for (const auto& [agent, perception] : session_->TakePerceptions())
+      server_->SendToAgent(agent, simspark::Frame(rcssservermj::FormatPerception(perception)));
+    server_->FlushDrops();
   }
 
   void ReportIssues() {

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <optional>
 
 #include "codecs/rcssservermj/session.h"
 
@@ -108,7 +110,11 @@ TEST(MjSession, ActivatesAtTheNextCycleAndPlacesBySide) {
   EXPECT_EQ(r.moves[1].position, Eigen::Vector3d(7, 37, 0.6735));
   EXPECT_NEAR(Yaw(r.moves[0].orientation), -90, 1e-9);
   EXPECT_TRUE(r.moves[0].reset_joints);
-  const auto out = f.Outputs();  // perceptions start in the activation cycle (-0.0: the sign of an exact zero)
+  // Perceptions start in the activation cycle; the parallel loop sends them at the next cycle's start, after
+  // collecting actions (-0.0: the sign of an exact zero).
+  EXPECT_TRUE(f.session.TakeOutputs().empty());
+  f.world.Cycle(&f.session);
+  const auto out = f.Outputs();
   ASSERT_EQ(out.size(), 2u);
   EXPECT_EQ(out.at(a).rfind("(time (now 0.02))(GS (t 0.0)(pm BeforeKickOff)(tl teamBlue)(tr teamRed)(sl 0)(sr 0))"
                             "(quat (n torso_quat) (q 0.707 -0.0 -0.0 -0.707))(pos (n torso_pos) (p -5.0 37.0 0.673))",
@@ -205,26 +211,37 @@ TEST(MjSession, MotorDefaultsPersistenceAndClamping) {
   EXPECT_EQ(Command(r, "t1_1", "Left_Knee_Pitch")->tau, 60);  // the knee's effort limit
 }
 
-// Cycles after the one where the agent's command arrived until the world gets it.
-int Latency(bool sequential) {
+// The agent answers its first perception as soon as it has it; the result is the number of steps after the one
+// whose state that perception shows until the step that applies the answer.
+int Latency(bool sequential, bool sync_mode = false) {
   SessionOptions o;
   o.sequential = sequential;
+  o.sync_mode = sync_mode;
   Fixture f(o);
   const int a = f.Join("(init T1 a 1)");
-  f.world.Cycle(&f.session);  // activation; first perception
-  f.session.TakeOutputs();
-  f.session.Receive(a, "(lle4 30 0 50 1 0)");  // the answer to the state after that step
-  for (int cycle = 1; cycle <= 3; ++cycle) {
+  std::optional<int> shown;  // the cycle whose state the answered perception shows
+  for (int cycle = 1; cycle <= 6; ++cycle) {
     const WorldRequests r = f.world.Cycle(&f.session);
-    if (Command(r, "t1_1", "Left_Knee_Pitch")->kp == 50) return cycle;
-    f.session.Receive(a, "(syn)");
+    if (shown && Command(r, "t1_1", "Left_Knee_Pitch")->kp == 50) return cycle - *shown;
+    for (const auto& [agent, text] : f.Outputs()) {
+      if (agent != a) continue;
+      if (shown) {
+        f.session.Receive(a, "(syn)");
+        continue;
+      }
+      double now = 0;
+      EXPECT_EQ(std::sscanf(text.c_str(), "(time (now %lf", &now), 1) << text;
+      shown = static_cast<int>(std::lround(now / kCycleSeconds));
+      f.session.Receive(a, "(lle4 30 0 50 1 0)");
+    }
   }
   return -1;
 }
 
 TEST(MjSession, ParallelLoopHasOneCycleOfLatencySequentialNone) {
-  EXPECT_EQ(Latency(false), 2);  // the answer to step k acts in step k+2
-  EXPECT_EQ(Latency(true), 1);   // in step k+1
+  EXPECT_EQ(Latency(false), 2);        // the answer to step k acts in step k+2
+  EXPECT_EQ(Latency(false, true), 2);  // also in sync mode
+  EXPECT_EQ(Latency(true), 1);         // in step k+1
 }
 
 TEST(MjSession, SyncModeTakesExactlyOneMessagePerAgentPerCycle) {
@@ -234,6 +251,10 @@ TEST(MjSession, SyncModeTakesExactlyOneMessagePerAgentPerCycle) {
   const int a = f.Join("(init T1 a 1)");
   const int b = f.Join("(init T1 b 1)");
   EXPECT_TRUE(f.session.ReadyToStep());  // nobody active yet
+  f.world.Cycle(&f.session);             // activation, first perceptions
+  // Parallel loop: the perceptions go out at the next cycle's start, while the world steps (the agents think
+  // meanwhile); the cycle after waits for their answers.
+  EXPECT_TRUE(f.session.ReadyToStep());
   f.world.Cycle(&f.session);
   EXPECT_FALSE(f.session.ReadyToStep());
   f.session.Receive(a, "(syn)");
@@ -242,29 +263,48 @@ TEST(MjSession, SyncModeTakesExactlyOneMessagePerAgentPerCycle) {
   f.session.Receive(b, "(lle4 30 0 50 1 0)");
   f.session.Receive(b, "(lle4 60 0 70 1 0)");  // two: the second is next cycle's message
   EXPECT_TRUE(f.session.ReadyToStep());
-  f.world.Cycle(&f.session);
-  EXPECT_FALSE(f.session.ReadyToStep());  // a has nothing queued
+  WorldRequests r = f.world.Cycle(&f.session);
+  EXPECT_EQ(Command(r, "t1_2", "Left_Knee_Pitch")->kp, 50);  // the answer to the first perception
+  EXPECT_FALSE(f.session.ReadyToStep());                     // a has nothing queued
+  EXPECT_EQ(f.session.Waiting(), std::vector<int>{a});
   f.session.Receive(a, "(syn)");
   EXPECT_TRUE(f.session.ReadyToStep());
-  WorldRequests r = f.world.Cycle(&f.session);
-  EXPECT_EQ(Command(r, "t1_2", "Left_Knee_Pitch")->kp, 50);  // parallel: last cycle's message now
-  f.session.Receive(a, "(syn)");
-  f.session.Receive(b, "(syn)");
   r = f.world.Cycle(&f.session);
   EXPECT_EQ(Command(r, "t1_2", "Left_Knee_Pitch")->kp, 70);
+}
+
+TEST(MjSession, SequentialSyncWaitsForTheAnswerToTheLatestPerception) {
+  SessionOptions o;
+  o.sequential = true;
+  Fixture f(o);
+  const int a = f.Join("(init T1 a 1)");
+  f.world.Cycle(&f.session);
+  EXPECT_FALSE(f.session.ReadyToStep());
+  f.session.Receive(a, "(lle4 30 0 50 1 0)");
+  EXPECT_TRUE(f.session.ReadyToStep());
+  const WorldRequests r = f.world.Cycle(&f.session);
+  EXPECT_EQ(Command(r, "t1_1", "Left_Knee_Pitch")->kp, 50);
+  EXPECT_FALSE(f.session.ReadyToStep());
 }
 
 TEST(MjSession, VisionEverySecondCycle) {
   Fixture f;
   const int a = f.Join("(init T1 a 1)");
-  int seen = 0;
-  for (uint64_t i = 1; i <= 6; ++i) {
+  int seen = 0, perceptions = 0;
+  for (uint64_t i = 1; i <= 7; ++i) {
     f.world.Cycle(&f.session);
-    const auto out = f.Outputs();
-    const bool see = out.at(a).find("(See ") != std::string::npos;
-    EXPECT_EQ(see, f.session.cycle() % 2 == 0) << f.session.cycle();
-    seen += see;
+    for (const auto& [agent, text] : f.Outputs()) {
+      ASSERT_EQ(agent, a);
+      double now = 0;
+      ASSERT_EQ(std::sscanf(text.c_str(), "(time (now %lf", &now), 1) << text;
+      const long cycle = std::lround(now / kCycleSeconds);  // the cycle whose state it shows
+      const bool see = text.find("(See ") != std::string::npos;
+      EXPECT_EQ(see, cycle % 2 == 0) << cycle;
+      seen += see;
+      ++perceptions;
+    }
   }
+  EXPECT_EQ(perceptions, 6);  // the last cycle's goes out at the next cycle's start
   EXPECT_EQ(seen, 3);
 }
 
