@@ -13,6 +13,7 @@
 #include "codecs/rcssservermj/session.h"
 #include "codecs/simspark/framing.h"
 #include "participants/common/address_allowlist.h"
+#include "participants/common/cycle_loop.h"
 #include "participants/common/front_end_server.h"
 #include "participants/common/process.h"
 #include "participants/rcssservermj_bridge/legged_link.h"
@@ -22,7 +23,6 @@ namespace turf {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr auto kCycle = std::chrono::milliseconds(20);
 
 // RCSSServerMJ frames exactly as SimSpark does (FrontEndServer's framing).
 FrontEndServer::Options ServerOptions(const RcssServerMjOptions& o) {
@@ -60,39 +60,27 @@ class RcssServerMjBridge::Impl {
                  options_.listen, monitor_port(), options_.realtime ? "real time" : "as fast as possible",
                  options_.sync_mode ? ", sync mode" : "", options_.sequential ? ", sequential loop" : "");
     spdlog::info("monitor-port clients allowed from: {}", monitor_allow_.Describe());
-    auto next_cycle = Clock::now();
-    auto waiting_since = Clock::now();
-    auto next_status = Clock::now() + std::chrono::seconds(10);
-    const int64_t end_cycles =
-        options_.duration > 0 ? std::llround(options_.duration / rcssservermj::kCycleSeconds) : -1;
-    while (!stop() && !session_->quit_requested()) {
-      const bool idle = options_.sync_mode && session_->active_agents() == 0 && !session_->HasPendingInit();
-      const auto now = Clock::now();
-      Clock::duration wait = kCycle;
-      if (options_.realtime) wait = std::max(next_cycle - now, Clock::duration::zero());
-      if (options_.sync_mode && !idle && session_->ReadyToStep() && !options_.realtime) wait = Clock::duration::zero();
-      PollSockets(std::chrono::duration_cast<std::chrono::milliseconds>(wait));
+    CycleLoopOptions loop;
+    loop.paced = options_.realtime;
+    loop.sync = options_.sync_mode;
+    loop.agent_timeout = options_.agent_timeout;
+    loop.end_cycles = options_.duration > 0 ? std::llround(options_.duration / rcssservermj::kCycleSeconds) : -1;
+    CycleLoopHooks hooks;
+    hooks.poll = [&](std::chrono::milliseconds timeout) {
+      PollSockets(timeout);
       for (int agent : session_->TakeKicked()) DropAgent(agent, "closed by the server");
       ReportIssues();
-      const auto after = Clock::now();
-      if (after >= next_status) {
-        ReportStatus();
-        next_status = after + std::chrono::seconds(10);
-      }
-      const bool time_ok = !options_.realtime || after >= next_cycle;
-      const bool agents_ok = !options_.sync_mode || (!idle && session_->ReadyToStep());
-      if (!(time_ok && agents_ok)) {
-        if (options_.sync_mode && !idle && after - waiting_since > options_.agent_timeout) {
-          for (int agent : session_->Waiting()) DropAgent(agent, "sent no message within the agent timeout");
-          waiting_since = after;
-        }
-        continue;
-      }
-      if (!RunCycle(stop)) return false;
-      next_cycle = std::max(next_cycle + kCycle, Clock::now());  // late: no catching up
-      waiting_since = Clock::now();
-      if (end_cycles >= 0 && static_cast<int64_t>(session_->cycle()) >= end_cycles) break;
-    }
+    };
+    hooks.idle = [&] { return session_->active_agents() == 0 && !session_->HasPendingInit(); };
+    hooks.ready = [&] { return session_->ReadyToStep(); };
+    hooks.drop_waiting = [&] {
+      for (int agent : session_->Waiting()) DropAgent(agent, "sent no message within the agent timeout");
+    };
+    hooks.cycle = [&] { return RunCycle(stop); };
+    hooks.cycles = [&] { return session_->cycle(); };
+    hooks.quit = [&] { return session_->quit_requested(); };
+    hooks.status = [&] { ReportStatus(); };
+    if (!RunCycleLoop(loop, hooks, stop)) return false;
     if (session_->quit_requested()) spdlog::info("a monitor sent (killsim): stopping");
     ReportStatus();
     return true;

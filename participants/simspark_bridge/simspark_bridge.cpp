@@ -12,6 +12,7 @@
 
 #include "codecs/simspark/framing.h"
 #include "codecs/simspark/session.h"
+#include "participants/common/cycle_loop.h"
 #include "participants/common/front_end_server.h"
 #include "participants/common/process.h"
 #include "participants/simspark_bridge/world_link.h"
@@ -21,7 +22,6 @@ namespace turf {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr auto kCycle = std::chrono::milliseconds(20);
 constexpr double kCycleSeconds = 0.02;
 
 // A monitor's FrontEndClient::role: from an operator's address?
@@ -62,37 +62,28 @@ class SimSparkBridge::Impl {
     spdlog::info("agents: TCP {}:{}; monitors and trainers: TCP {}:{}; {} mode", options_.listen, agent_port(),
                  options_.listen, monitor_port(), options_.sync_mode ? "sync" : "real-time");
     spdlog::info("operators (may end, restart or rewrite the match from the monitor port): {}", operators_.Describe());
-    auto next_cycle = Clock::now();
-    auto waiting_since = Clock::now();
-    auto next_status = Clock::now() + std::chrono::seconds(10);
-    const int64_t end_cycles = options_.duration > 0 ? std::llround(options_.duration / kCycleSeconds) : -1;
-    while (!stop() && !session_->quit_requested()) {
-      // Sync mode without agents: the world waits (a run is the agents' stream alone).
-      const bool idle = options_.sync_mode && session_->agents_with_robot() == 0;
-      const bool paced = !options_.sync_mode;
-      const auto now = Clock::now();
-      const auto wait = paced ? std::max(next_cycle - now, Clock::duration::zero()) : Clock::duration(kCycle);
-      PollSockets(std::chrono::duration_cast<std::chrono::milliseconds>(wait));
+    CycleLoopOptions loop;
+    loop.paced = !options_.sync_mode;
+    loop.sync = options_.sync_mode;
+    loop.agent_timeout = options_.sync_timeout;
+    loop.end_cycles = options_.duration > 0 ? std::llround(options_.duration / kCycleSeconds) : -1;
+    CycleLoopHooks hooks;
+    hooks.poll = [&](std::chrono::milliseconds timeout) {
+      PollSockets(timeout);
       for (int agent : session_->TakeKicked()) DropAgent(agent, "killed by the trainer");
-      const auto after = Clock::now();
-      if (after >= next_status) {
-        ReportStatus();
-        next_status = after + std::chrono::seconds(10);
-      }
-      const bool due = paced ? after >= next_cycle : !idle && session_->ReadyToStep();
-      if (!due) {
-        if (!paced && !idle && options_.sync_timeout.count() > 0 && after - waiting_since > options_.sync_timeout) {
-          for (int agent : session_->Waiting()) DropAgent(agent, "sent no (syn) within the sync timeout");
-          waiting_since = after;
-        }
-        continue;
-      }
-      split_.waiting += Clock::now() - waiting_since;
-      if (!RunCycle(stop)) return false;
-      next_cycle = std::max(next_cycle + kCycle, Clock::now());  // late: no catching up
-      waiting_since = Clock::now();
-      if (end_cycles >= 0 && static_cast<int64_t>(session_->cycle()) >= end_cycles) break;
-    }
+    };
+    // Sync mode without agents: the world waits (a run is the agents' stream alone).
+    hooks.idle = [&] { return session_->agents_with_robot() == 0; };
+    hooks.ready = [&] { return session_->ReadyToStep(); };
+    hooks.drop_waiting = [&] {
+      for (int agent : session_->Waiting()) DropAgent(agent, "sent no (syn) within the sync timeout");
+    };
+    hooks.cycle = [&] { return RunCycle(stop); };
+    hooks.cycles = [&] { return session_->cycle(); };
+    hooks.quit = [&] { return session_->quit_requested(); };
+    hooks.status = [&] { ReportStatus(); };
+    hooks.waited = [&](Clock::duration d) { split_.waiting += d; };
+    if (!RunCycleLoop(loop, hooks, stop)) return false;
     if (session_->quit_requested()) spdlog::info("a trainer sent (killsim): stopping");
     ReportStatus();
     return true;
