@@ -22,7 +22,6 @@ namespace turf {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 // RCSSServerMJ frames exactly as SimSpark does (FrontEndServer's framing).
 FrontEndServer::Options ServerOptions(const RcssServerMjOptions& o) {
