@@ -64,6 +64,30 @@ dds::ControlOutcome LeggedLockstep::SwitchToLockstep(Clock::time_point deadline,
   return answer;
 }
 
+bool LeggedLockstep::Attach(std::chrono::milliseconds timeout, const StopFn& stop, std::string* error) {
+  const auto deadline = Clock::now() + timeout;
+  if (!WaitForScene(deadline, stop)) {
+    *error = "no legged scene from turf-sim (is it running a `kind: legged` scene on this domain and prefix?)";
+    return false;
+  }
+  const dds::ControlOutcome answer = SwitchToLockstep(deadline, stop);
+  if (!answer.reply) {
+    *error = "turf-sim did not answer the switch to lockstep (" + answer.Describe() + ")";
+    return false;
+  }
+  if (!answer.ok()) {
+    *error = "turf-sim refused lockstep: " + answer.reply->reason();
+    return false;
+  }
+  std::vector<std::string> robots;
+  for (const idl::RobotDescription& r : scene_info().robots()) robots.push_back(r.robot());
+  if (!WaitForFrame(robots, deadline, stop)) {
+    *error = fmt::format("turf-sim did not publish the state of its {} robots at frame {}", robots.size(), frame());
+    return false;
+  }
+  return true;
+}
+
 bool LeggedLockstep::WaitForFrame(const std::vector<std::string>& robots, Clock::time_point deadline,
                                   const StopFn& stop) {
   robots_ = robots;

@@ -46,6 +46,9 @@ class LeggedLockstep : Pinned {
   dds::ControlOutcome SwitchToLockstep(Clock::time_point deadline, const StopFn& stop);
   // Waits for the clock and the whole state of `robots` at the current frame; `robots` are the frame's robots.
   bool WaitForFrame(const std::vector<std::string>& robots, Clock::time_point deadline, const StopFn& stop);
+  // The three above: turf-sim's scene, lockstep, and the state of every robot of the scene (in scene order);
+  // false with `error` set.
+  bool Attach(std::chrono::milliseconds timeout, const StopFn& stop, std::string* error);
   // Moves, answered before the step; their refusals are reported by the next Step (late ones a step later).
   void SendMove(const std::string& robot, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
                 bool reset_joints, std::chrono::milliseconds timeout);

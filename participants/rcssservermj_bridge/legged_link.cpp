@@ -12,7 +12,6 @@ namespace turf {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 Eigen::Vector3d E3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 std::array<double, 3> A3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
@@ -35,16 +34,7 @@ class MjLeggedLink::Impl {
 
   std::optional<Scene> Attach(std::chrono::milliseconds timeout, const std::function<bool()>& stop,
                               std::string* error) {
-    const auto deadline = Clock::now() + timeout;
-    if (!link_.WaitForScene(deadline, stop)) {
-      *error = "no legged scene from turf-sim (is it running a `kind: legged` scene on this domain and prefix?)";
-      return std::nullopt;
-    }
-    const dds::ControlOutcome answer = link_.SwitchToLockstep(deadline, stop);
-    if (!answer.reply || !answer.ok()) {
-      *error = "turf-sim did not switch to lockstep (" + answer.Describe() + ")";
-      return std::nullopt;
-    }
+    if (!link_.Attach(timeout, stop, error)) return std::nullopt;
     const idl::LeggedSceneInfo& info = link_.scene_info();
     Scene scene;
     scene.name = info.name();
@@ -53,11 +43,6 @@ class MjLeggedLink::Impl {
     scene.field_width = info.field_width();
     std::vector<std::string> robots;
     for (const idl::RobotDescription& r : info.robots()) robots.push_back(r.robot());
-    if (!link_.WaitForFrame(robots, deadline, stop)) {
-      *error =
-          fmt::format("turf-sim did not publish the state of its {} robots at frame {}", robots.size(), link_.frame());
-      return std::nullopt;
-    }
     for (size_t i = 0; i < robots.size(); ++i) {
       const idl::LinkPose& torso = link_.state().links()[i].links().at(0);
       rcssservermj::RobotMove park{robots[i], E3(torso.position()), EQ(torso.orientation()), true};

@@ -8,7 +8,6 @@ namespace turf {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 Eigen::Vector3d E3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 std::array<double, 3> A3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
@@ -25,29 +24,10 @@ class WorldLink::Impl {
 
   std::optional<Scene> Attach(std::chrono::milliseconds timeout, const std::function<bool()>& stop,
                               std::string* error) {
-    const auto deadline = Clock::now() + timeout;
-    if (!link_.WaitForScene(deadline, stop)) {
-      *error = "no legged scene from turf-sim (is it running a `kind: legged` scene on this domain and prefix?)";
-      return std::nullopt;
-    }
-    const dds::ControlOutcome answer = link_.SwitchToLockstep(deadline, stop);
-    if (!answer.reply) {
-      *error = "turf-sim did not answer the switch to lockstep (" + answer.Describe() + ")";
-      return std::nullopt;
-    }
-    if (!answer.ok()) {
-      *error = "turf-sim refused lockstep: " + answer.reply->reason();
-      return std::nullopt;
-    }
+    if (!link_.Attach(timeout, stop, error)) return std::nullopt;
     Scene scene;
     scene.name = link_.scene_info().name();
     for (const idl::RobotDescription& r : link_.scene_info().robots()) scene.robots.push_back(r.robot());
-    // Where every robot stands now.
-    if (!link_.WaitForFrame(scene.robots, deadline, stop)) {
-      *error = fmt::format("turf-sim did not publish the state of its {} robots at frame {}", scene.robots.size(),
-                           link_.frame());
-      return std::nullopt;
-    }
     for (const idl::LinkState& links : link_.state().links()) {
       const idl::LinkPose& torso = links.links().at(0);
       simspark::RobotMove park;
