@@ -12,7 +12,6 @@ namespace turf {
 
 namespace {
 
-
 Eigen::Vector3d E3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 std::array<double, 3> A3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 Eigen::Quaterniond EQ(const idl::Quat& q) { return Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z()); }

@@ -22,7 +22,6 @@ namespace turf {
 
 namespace {
 
-
 // RCSSServerMJ frames exactly as SimSpark does (FrontEndServer's framing).
 FrontEndServer::Options ServerOptions(const RcssServerMjOptions& o) {
   return {o.listen, o.agent_port, o.monitor_port, o.max_clients, o.max_unsent};

@@ -8,7 +8,6 @@ namespace turf {
 
 namespace {
 
-
 Eigen::Vector3d E3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 std::array<double, 3> A3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
