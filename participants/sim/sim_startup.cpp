@@ -101,27 +101,25 @@ int RunScene(SceneKind scene, const SimCommandLine& command_line, bool legged) {
   return RunAlone(dds, [&] { node.Run(StopRequested); });
 }
 
-// Scenes with `kind: legged`: any MJCF robots on joint topics (sim_node.h).
-int RunLegged(const SimCommandLine& command_line) {
-  LeggedSceneLoadResult loaded = LoadLeggedSceneFile(command_line.scene_path);
+// A scene file read by `load` (its errors named), then run.
+template <class Loaded>
+int RunLoaded(Loaded loaded, const SimCommandLine& command_line, const char* what, bool legged) {
   if (!loaded.scene) {
-    spdlog::error("cannot load legged scene {}:", command_line.scene_path);
+    spdlog::error("cannot load {} {}:", what, command_line.scene_path);
     for (const std::string& e : loaded.errors) spdlog::error("  {}", e);
     return kExitBadConfig;
   }
-  spdlog::info("legged scene file {}", command_line.scene_path);
-  return RunScene(std::move(*loaded.scene), command_line, /*legged=*/true);
+  spdlog::info("{} file {}", what, command_line.scene_path);
+  return RunScene(std::move(*loaded.scene), command_line, legged);
+}
+
+// Scenes with `kind: legged`: any MJCF robots on joint topics (sim_node.h).
+int RunLegged(const SimCommandLine& command_line) {
+  return RunLoaded(LoadLeggedSceneFile(command_line.scene_path), command_line, "legged scene", /*legged=*/true);
 }
 
 int RunSsl(const SimCommandLine& command_line) {
-  SceneLoadResult loaded = LoadSceneFile(command_line.scene_path);
-  if (!loaded.scene) {
-    spdlog::error("cannot load scene {}:", command_line.scene_path);
-    for (const std::string& e : loaded.errors) spdlog::error("  {}", e);
-    return kExitBadConfig;
-  }
-  spdlog::info("scene file {}", command_line.scene_path);
-  return RunScene(std::move(*loaded.scene), command_line, /*legged=*/false);
+  return RunLoaded(LoadSceneFile(command_line.scene_path), command_line, "scene", /*legged=*/false);
 }
 
 }  // namespace
