@@ -79,8 +79,8 @@ void Session::Apply(const ActuatorRequests& r, uint32_t now_ms) {
 
 Session::Device Session::Classify(const std::string& name) const {
   const RobotModel& model = *options_.model;
-  if (name == kAccelerometer) return Device::kAccelerometer;
-  if (name == kGyro) return Device::kGyro;
+  if (name == kAccelerometer) return Device::kAccel;
+  if (name == kGyro) return Device::kGyroscope;
   for (const MotorEntry& m : model.motors) {
     if (name == m.motor) return Device::kMotor;
     if (name == PositionSensorName(m)) return Device::kPosition;

@@ -101,7 +101,7 @@ class Session {
     uint32_t next = 0;    // ms of the next report
     double exposure = 0;  // cameras
   };
-  enum class Device { kNone, kMotor, kPosition, kAccelerometer, kGyro, kTouch, kCamera };
+  enum class Device { kNone, kMotor, kPosition, kAccel, kGyroscope, kTouch, kCamera };
 
   void Warn(std::string text);
   Motor* FindMotor(const std::string& name, const char* what);

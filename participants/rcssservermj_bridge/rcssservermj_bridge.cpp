@@ -25,7 +25,7 @@ constexpr auto kCycle = std::chrono::milliseconds(20);
 
 // RCSSServerMJ frames exactly as SimSpark does (FrontEndServer's framing).
 FrontEndServer::Options ServerOptions(const RcssServerMjOptions& o) {
-  return {o.listen, o.agent_port, o.monitor_port, o.max_clients, o.max_unsent};
+  return {o.listen, o.agent_port, o.monitor_port, o.max_clients, o.max_unsent, {}, true};
 }
 
 MjLeggedLink MakeLink(const RcssServerMjOptions& o, dds::Bus* bus) {

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <set>
+#include <sstream>
 
 #include "codecs/hlvs/session.h"
 
@@ -43,6 +45,27 @@ TEST(HlvsRobots, EveryMotorNameIsUniqueAndTheSampleNamesExist) {
   EXPECT_EQ(FindModel("K1")->motors.size(), 22u);
   EXPECT_EQ(FindModel("T1")->motors.size(), 23u);
   EXPECT_EQ(FindModel("NAO"), nullptr);
+}
+
+// The README's motor table is this table: one row per motor, K1 and T1 joints side by side.
+TEST(HlvsRobots, TheReadmeTableIsTheCodeTable) {
+  std::ifstream in(TURF_SOURCE_DIR "/README.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const RobotModel& k1 = *FindModel("K1");
+  const RobotModel& t1 = *FindModel("T1");
+  for (const MotorEntry& t : t1.motors) {
+    std::string k1_joint = "—";
+    for (const MotorEntry& k : k1.motors)
+      if (std::string(k.motor) == t.motor) k1_joint = "`" + std::string(k.joint) + "`";
+    const std::string row = "| `" + std::string(t.motor) + "` | " + k1_joint + " | `" + t.joint + "` |";
+    EXPECT_NE(text.str().find(row), std::string::npos) << "README lacks: " << row;
+  }
+  for (const MotorEntry& k : k1.motors) {
+    bool in_t1 = false;
+    for (const MotorEntry& t : t1.motors) in_t1 = in_t1 || std::string(k.motor) == t.motor;
+    EXPECT_TRUE(in_t1) << k.motor << ": the README table lists the T1's motors";
+  }
 }
 
 TEST_F(HlvsSessionTest, SensorsComeOnlyAtTheirPeriodFirstOnePeriodAfterEnabling) {
