@@ -1,10 +1,12 @@
 #include "participants/hlvs_bridge/hlvs_bridge.h"
 
 #include <spdlog/spdlog.h>
+#include <sys/socket.h>
 #include <turf/idl/JointsPubSubTypes.h>
 #include <turf/idl/SimControlPubSubTypes.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <condition_variable>
 #include <mutex>
@@ -65,6 +67,14 @@ uint64_t UnixMs() {
   return static_cast<uint64_t>(
       std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch())
           .count());
+}
+
+// The client on `fd` has closed its side (its FIN is there, nothing unread before it): the reference would have
+// accepted the next client by now, so a reconnecting client is not refused as "busy" for the old one.
+bool PeerHasClosed(int fd) {
+  char byte;
+  const ssize_t n = recv(fd, &byte, 1, MSG_PEEK | MSG_DONTWAIT);
+  return n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR);
 }
 
 // "k1" for a robot file label "../robots/k1.xml", upper case.
@@ -311,6 +321,11 @@ class HlvsBridge::Impl {
                       fmt::format("{} on {} player {}: not in {}", address, s.team, s.player, s.allow->Describe()));
       if (s.model == nullptr)
         return Refuse(c, "no_robot", fmt::format("{}: no robot {}_{} (yet)", address, s.team, s.player));
+      if (s.fd >= 0 && PeerHasClosed(s.fd)) {
+        server_->MarkDrop(s.fd, "closed by the peer");
+        s.fd = -1;
+        s.queued.clear();
+      }
       if (s.fd >= 0) return Refuse(c, "port_busy", fmt::format("{}: {} already has a client", address, s.robot));
       s.fd = c.peer->fd();
       s.queued.clear();
@@ -339,8 +354,10 @@ class HlvsBridge::Impl {
     h.left = [this](const FrontEndClient& c) {
       if (c.agent < 0) return;
       Slot& s = slots_[c.agent];
-      if (s.fd == c.peer->fd()) s.fd = -1;
-      s.queued.clear();
+      if (s.fd == c.peer->fd()) {
+        s.fd = -1;
+        s.queued.clear();
+      }
       std::lock_guard<std::mutex> lock(stats_mutex_);
       ++stats_.dropped_clients;
       --stats_.clients;

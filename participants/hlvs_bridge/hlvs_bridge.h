@@ -6,8 +6,9 @@
 // time; its address must be in its team's allowlist (default: 127.0.0.1 and the facts' 192.168.123.21-24 /
 // .41-44), else it gets `Refused\0` and is closed. An accepted client gets `Welcome\0`, then framed
 // ActuatorRequests in and one SensorMeasurements per 8 ms step out (codecs/hlvs/session.h: motors, sensor time
-// steps, warnings; quotas for team_players robots per team). A second client on a busy port is refused the same way
-// (the reference leaves it waiting in the listen backlog). Robot tables: codecs/hlvs/robots.cpp.
+// steps, warnings; quotas for team_players robots per team). A second client while the first is connected is refused
+// the same way (the reference leaves it waiting in the listen backlog); one whose predecessor has closed is welcome.
+// Robot tables: codecs/hlvs/robots.cpp.
 //
 // Time: the bridge is the clock. It holds turf-sim in lockstep and steps it 8 ms of simulated time per step (the
 // scene's physics step must divide 8 ms), a step every 8 ms / realtime_factor of wall time (<= 0: as fast as
