@@ -237,7 +237,17 @@ class HlvsBridge::Impl {
   bool RunStep(const std::function<bool()>& stop) {
     std::string error;
     std::vector<std::string> warnings;
-    if (!link_->Step(std::move(pending_), steps_, options_.step_timeout, stop, &error, &warnings)) {
+    const bool commands = !pending_.joint_commands().empty();
+    idl::SimControl bare = pending_;
+    bare.joint_commands().clear();
+    bool stepped = link_->Step(std::move(pending_), steps_, options_.step_timeout, stop, &error, &warnings);
+    if (!stepped && commands && !stop() && error.rfind("turf-sim refused the step", 0) == 0) {
+      // Joint commands this scene refuses (a motors.max_speed below the HLVS table's max_velocity): the match goes
+      // on without them, counted.
+      rejects_.Reject("step_refused", error);
+      stepped = link_->Step(std::move(bare), steps_, options_.step_timeout, stop, &error, &warnings);
+    }
+    if (!stepped) {
       if (!stop()) spdlog::error("{}", error);
       return false;
     }

@@ -30,9 +30,12 @@ const std::string kRefused("Refused\0", 8);
 
 class Match {
  public:
-  Match() : bus_("hlvs" + std::to_string(getpid())) {
+  // `max_speed` > 0: every robot's motors.max_speed instead of the scene's.
+  explicit Match(double max_speed = 0) : bus_("hlvs" + std::to_string(getpid())) {
     LeggedSceneLoadResult scene = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/hlvs.yaml");
     if (!scene.scene) throw std::runtime_error(scene.errors.front());
+    for (auto& robot : scene.scene->robots)
+      if (max_speed > 0) robot.motors.max_speed = max_speed;
     SimNodeOptions sim;
     sim.mode = TimeMode::kLockstep;
     sim_ = std::make_unique<SimNode>(std::move(*scene.scene), sim, bus_);
@@ -219,6 +222,26 @@ TEST(HlvsBridge, BadInputDropsOnlyThatClientAndDoesNotMoveTheRobot) {
   // The blue client was served throughout and still is.
   for (int i = 0; i < 10; ++i) ASSERT_TRUE(blue.Receive()) << "blue was dropped";
   EXPECT_FALSE(blue.bad());
+}
+
+// A scene whose motors are slower than the HLVS table's 20 rad/s: turf-sim refuses the fast velocity target; the
+// bridge counts it and steps on without the commands instead of stopping the match.
+TEST(HlvsBridge, ARefusedStepIsCountedAndTheMatchGoesOn) {
+  Match match(/*max_speed=*/1.0);
+  HlvsClient c;
+  Welcome(&c, match.bridge().port("red", 1));
+  ASSERT_TRUE(c.Send(Position("Neck", 0.5)));  // P 10 x 0.5 rad = 5 rad/s > 1
+  const HlvsBridgeStats stats = match.bridge().WaitForStats(
+      [](const HlvsBridgeStats& s) { return s.refused_by_kind.count("step_refused") > 0; }, 20s);
+  EXPECT_GT(stats.refused_by_kind.count("step_refused"), 0u);
+  auto m = c.Receive();
+  ASSERT_TRUE(m);
+  for (int i = 0; i < 5; ++i) {
+    auto next = c.Receive();
+    ASSERT_TRUE(next) << "the bridge stopped";
+    EXPECT_EQ(next->time(), m->time() + 8);
+    m = next;
+  }
 }
 
 }  // namespace
