@@ -2,6 +2,7 @@
 // motor semantics as turf joint commands, the rendering and network quotas, and cameras without an image source.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -47,11 +48,34 @@ TEST(HlvsRobots, EveryMotorNameIsUniqueAndTheSampleNamesExist) {
   EXPECT_EQ(FindModel("NAO"), nullptr);
 }
 
-// The README's motor table is this table: one row per motor, K1 and T1 joints side by side.
-TEST(HlvsRobots, TheReadmeTableIsTheCodeTable) {
-  std::ifstream in(TURF_SOURCE_DIR "/README.md");
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path);
   std::stringstream text;
   text << in.rdbuf();
+  return text.str();
+}
+
+// Every joint, touch sensor and camera the tables name is in the robot file.
+TEST(HlvsRobots, EveryDeviceExistsInTheRobotFile) {
+  for (const RobotModel& m : Models()) {
+    std::string lower = m.name;
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string xml = ReadFile(std::string(TURF_SOURCE_DIR) + "/configs/robots/" + lower + ".xml");
+    ASSERT_FALSE(xml.empty()) << lower;
+    for (const MotorEntry& e : m.motors)
+      EXPECT_NE(xml.find("<joint name=\"" + std::string(e.joint) + "\""), std::string::npos)
+          << m.name << " " << e.joint;
+    for (const TouchEntry& t : m.touch)
+      EXPECT_NE(xml.find("<touch name=\"" + std::string(t.sensor) + "\""), std::string::npos)
+          << m.name << " " << t.sensor;
+    for (const CameraEntry& c : m.cameras)
+      EXPECT_NE(xml.find("<camera name=\"" + std::string(c.mjcf) + "\""), std::string::npos) << m.name << " " << c.mjcf;
+  }
+}
+
+// The README's motor table is this table: one row per motor, K1 and T1 joints side by side.
+TEST(HlvsRobots, TheReadmeTableIsTheCodeTable) {
+  const std::string readme = ReadFile(TURF_SOURCE_DIR "/README.md");
   const RobotModel& k1 = *FindModel("K1");
   const RobotModel& t1 = *FindModel("T1");
   for (const MotorEntry& t : t1.motors) {
@@ -59,7 +83,7 @@ TEST(HlvsRobots, TheReadmeTableIsTheCodeTable) {
     for (const MotorEntry& k : k1.motors)
       if (std::string(k.motor) == t.motor) k1_joint = "`" + std::string(k.joint) + "`";
     const std::string row = "| `" + std::string(t.motor) + "` | " + k1_joint + " | `" + t.joint + "` |";
-    EXPECT_NE(text.str().find(row), std::string::npos) << "README lacks: " << row;
+    EXPECT_NE(readme.find(row), std::string::npos) << "README lacks: " << row;
   }
   for (const MotorEntry& k : k1.motors) {
     bool in_t1 = false;
