@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace turf::hlvs {
 
@@ -35,7 +36,10 @@ Session::Motor* Session::FindMotor(const std::string& name, const char* what) {
 void Session::Apply(const ActuatorRequests& r, uint32_t now_ms) {
   for (const NamedValue& p : r.positions) {
     if (Motor* m = FindMotor(p.name, "position")) {
-      if (m->torque_control || !m->commanded || m->target != p.value) m->integral = 0, m->has_last_error = false;
+      if (m->torque_control || !m->commanded || m->target != p.value) {
+        m->integral = 0;
+        m->has_last_error = false;
+      }
       m->commanded = true;
       m->torque_control = false;
       m->target = p.value;
@@ -44,7 +48,8 @@ void Session::Apply(const ActuatorRequests& r, uint32_t now_ms) {
   for (const NamedValue& v : r.velocities) {
     if (Motor* m = FindMotor(v.name, "velocity")) {
       m->velocity = std::abs(v.value);
-      if (!m->commanded) m->target = 0;  // a velocity alone: position control towards the zero pose, as Webots
+      // A velocity alone: position control holding where the joint is (Webots' target starts there).
+      if (!m->commanded) m->target = std::numeric_limits<double>::quiet_NaN();
       m->commanded = true;
     }
   }
@@ -200,6 +205,9 @@ JointOutput Session::MotorCommand(size_t i, double position) {
   if (m.torque_control) {
     o.mode = JointOutput::Mode::kTorque;
     o.value = Clamp(m.torque, -limits.effort, limits.effort);
+  } else if (std::isnan(m.target)) {
+    m.target = position;  // the first step after a velocity-only command: hold here
+    o.value = 0;
   } else if (std::isinf(m.target)) {
     o.value = std::copysign(limit, m.target);  // Webots' velocity control
   } else {

@@ -88,7 +88,7 @@ class Session {
   struct Motor {
     bool commanded = false;
     bool torque_control = false;
-    double target = 0;     // rad, may be +-infinity
+    double target = 0;     // rad, may be +-infinity; NaN: where the joint is at the next Commands
     double velocity = -1;  // the velocity command's magnitude, rad/s (< 0: never set: the default limit)
     double torque = 0;     // N.m
     Vec3 pid{10, 0, 0};    // Webots' default

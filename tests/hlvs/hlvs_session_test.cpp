@@ -209,6 +209,21 @@ TEST_F(HlvsSessionTest, PositionControlIsWebotsPOnAVelocityMotor) {
   EXPECT_DOUBLE_EQ(out2[1].value, 2.0);   // velocity control
 }
 
+TEST_F(HlvsSessionTest, AVelocityAloneHoldsWhereTheJointIs) {
+  options_.limits.assign(options_.model->motors.size(), JointLimits{-1.0, 1.0, 6.0});
+  Session s(options_);
+  ActuatorRequests r;
+  r.velocities.push_back({"Neck", 3.0});
+  s.Apply(r, 8);
+  reading_.position[0] = 0.3;
+  auto out = s.Commands(reading_);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].value, 0.0);
+  reading_.position[0] = 0.2;  // pushed away: back towards 0.3, at most 3 rad/s
+  out = s.Commands(reading_);
+  EXPECT_NEAR(out[0].value, 1.0, 1e-12);
+}
+
 TEST(HlvsQuota, KeepsTheLastSecondWithinTheQuota) {
   NetworkQuota q(4);  // 87.5 MiB/s
   const size_t mib = 1024 * 1024;
