@@ -18,6 +18,8 @@
 // Untrusted input: a frame above 64 KiB, bytes that are no ActuatorRequests, a NaN, an infinity other than a
 // position, a value out of range, too many entries: that request is refused whole, counted by kind, and its client
 // dropped; the robot keeps its last accepted commands. A client that stops reading (1 MiB unsent) is dropped too.
+// A step turf-sim refuses for its joint commands (a scene whose motors.max_speed is below the HLVS table's) is
+// counted (step_refused) and stepped again without them. Counters: README.md beside this file.
 //
 // Writes: control (SimControl: OP_SET_TIME_MODE, OP_STEP with joint commands). Reads: legged/scene, robots/state,
 // clock, control_reply (participants/common/legged_lockstep.h).
