@@ -23,26 +23,41 @@ FrontEndServer::FrontEndServer(const Options& options, const std::string& connec
       rejects_(rejects),
       hooks_(std::move(hooks)),
       connections_(connection_log, kConnectionLogInterval, LogLine::kEvent) {
+  std::vector<uint16_t> agents{options_.agent_port};
+  agents.insert(agents.end(), options_.more_agent_ports.begin(), options_.more_agent_ports.end());
   std::string error;
-  auto agents = TcpListener::Listen(options_.listen, options_.agent_port, &error);
-  if (!agents) throw std::runtime_error("agent port: " + error);
+  for (uint16_t port : agents) {
+    auto listener = TcpListener::Listen(options_.listen, port, &error);
+    if (!listener) throw std::runtime_error("agent port: " + error);
+    listeners_.push_back({std::move(*listener), false});
+  }
+  if (!options_.monitor) return;
   auto monitors = TcpListener::Listen(options_.listen, options_.monitor_port, &error);
   if (!monitors) throw std::runtime_error("monitor port: " + error);
-  agent_listener_ = std::move(*agents);
-  monitor_listener_ = std::move(*monitors);
+  listeners_.push_back({std::move(*monitors), true});
+}
+
+uint16_t FrontEndServer::monitor_port() const {
+  return listeners_.back().monitor ? listeners_.back().socket.LocalPort() : 0;
+}
+
+std::vector<uint16_t> FrontEndServer::agent_ports() const {
+  std::vector<uint16_t> ports;
+  for (const Listener& l : listeners_)
+    if (!l.monitor) ports.push_back(l.socket.LocalPort());
+  return ports;
 }
 
 bool FrontEndServer::Poll(std::chrono::milliseconds timeout) {
   std::vector<pollfd> fds;
-  fds.push_back({agent_listener_.fd(), POLLIN, 0});
-  fds.push_back({monitor_listener_.fd(), POLLIN, 0});
+  for (const Listener& l : listeners_) fds.push_back({l.socket.fd(), POLLIN, 0});
   for (const auto& [fd, c] : clients_)
     fds.push_back({fd, static_cast<short>(POLLIN | (c.peer->pending() > 0 ? POLLOUT : 0)), 0});
   const int n = poll(fds.data(), fds.size(), static_cast<int>(std::max<int64_t>(0, timeout.count())));
   if (n <= 0) return false;
-  if (fds[0].revents & POLLIN) AcceptAll(&agent_listener_, false);
-  if (fds[1].revents & POLLIN) AcceptAll(&monitor_listener_, true);
-  for (size_t i = 2; i < fds.size(); ++i) {
+  for (size_t i = 0; i < listeners_.size(); ++i)
+    if (fds[i].revents & POLLIN) AcceptAll(&listeners_[i]);
+  for (size_t i = listeners_.size(); i < fds.size(); ++i) {
     if (fds[i].revents == 0) continue;
     auto it = clients_.find(fds[i].fd);
     if (it == clients_.end()) continue;
@@ -57,16 +72,17 @@ bool FrontEndServer::Poll(std::chrono::milliseconds timeout) {
   return true;
 }
 
-void FrontEndServer::AcceptAll(TcpListener* listener, bool monitor) {
+void FrontEndServer::AcceptAll(Listener* listener) {
   std::string address;
-  for (int fd = listener->Accept(&address); fd >= 0; fd = listener->Accept(&address)) {
+  const bool monitor = listener->monitor;
+  for (int fd = listener->socket.Accept(&address); fd >= 0; fd = listener->socket.Accept(&address)) {
     setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &kSendBuffer, sizeof(kSendBuffer));
     auto peer = std::make_unique<TcpPeer>(fd, address, options_.max_unsent);
     if (clients_.size() >= options_.max_clients) {
       rejects_->Reject("too_many_clients", fmt::format("{} refused: {} clients connected", address, clients_.size()));
       continue;  // the peer's destructor closes it
     }
-    FrontEndClient c{std::move(peer), simspark::FrameDecoder(), monitor, -1, 0};
+    FrontEndClient c{std::move(peer), simspark::FrameDecoder(), monitor, -1, 0, listener->socket.LocalPort()};
     std::string greeting;
     if (!hooks_.admit(c, address, &greeting)) continue;
     clients_.emplace(fd, std::move(c));

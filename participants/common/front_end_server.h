@@ -1,8 +1,8 @@
-// The TCP side shared by the 3D-league front-ends (SimSpark and RCSSServerMJ bridges): an agent port and a monitor
-// port, length-prefixed frames (codecs/simspark/framing.h), and the untrusted-client rules: at most max_clients,
-// a frame above the payload limit or a client that stops reading (max_unsent) drops that client only. Clients
-// connecting and leaving are logged at most once a second per kind. What a client means (agents, monitors, the
-// session) is the owner's, through the hooks.
+// The TCP side shared by the front-ends (SimSpark, RCSSServerMJ and HLVS bridges): an agent port (more for HLVS: one
+// per robot) and a monitor port (none for HLVS), length-prefixed frames (codecs/simspark/framing.h), and the
+// untrusted-client rules: at most max_clients, a frame above the payload limit or a client that stops reading
+// (max_unsent) drops that client only. Clients connecting and leaving are logged at most once a second per kind. What a
+// client means (agents, monitors, the session) is the owner's, through the hooks.
 #pragma once
 
 #include <chrono>
@@ -25,8 +25,9 @@ struct FrontEndClient {
   std::unique_ptr<TcpPeer> peer;
   simspark::FrameDecoder decoder;
   bool monitor = false;
-  int agent = -1;  // the owner's session id (agents only)
-  int role = 0;    // the owner's (monitors only)
+  int agent = -1;     // the owner's session id (agents only)
+  int role = 0;       // the owner's (monitors only)
+  uint16_t port = 0;  // the local port it came in on
 };
 
 class FrontEndServer : Pinned {
@@ -45,12 +46,15 @@ class FrontEndServer : Pinned {
     uint16_t monitor_port = 0;
     size_t max_clients = 64;
     size_t max_unsent = 1 << 20;
+    std::vector<uint16_t> more_agent_ports;  // bound after agent_port, same rules (0: any free port)
+    bool monitor = true;                     // false: no monitor port (monitor_port ignored)
   };
-  // Binds both ports; throws std::runtime_error if it cannot. `rejects` (refused input) outlives the server.
+  // Binds every port; throws std::runtime_error if it cannot. `rejects` (refused input) outlives the server.
   FrontEndServer(const Options& options, const std::string& connection_log, RejectLog* rejects, Hooks hooks);
 
-  uint16_t agent_port() const { return agent_listener_.LocalPort(); }
-  uint16_t monitor_port() const { return monitor_listener_.LocalPort(); }
+  uint16_t agent_port() const { return listeners_.front().socket.LocalPort(); }
+  uint16_t monitor_port() const;              // 0 without one
+  std::vector<uint16_t> agent_ports() const;  // as bound: agent_port, then more_agent_ports
   RejectLog& connections() { return connections_; }
   std::map<int, FrontEndClient>& clients() { return clients_; }
 
@@ -64,15 +68,18 @@ class FrontEndServer : Pinned {
   void FlushDrops();
 
  private:
-  void AcceptAll(TcpListener* listener, bool monitor);
+  struct Listener {
+    TcpListener socket;
+    bool monitor = false;
+  };
+  void AcceptAll(Listener* listener);
   void ReadClient(int fd);
 
   Options options_;
   RejectLog* rejects_;
   Hooks hooks_;
-  RejectLog connections_;  // clients connecting and leaving (LogLine::kEvent)
-  TcpListener agent_listener_;
-  TcpListener monitor_listener_;
+  RejectLog connections_;            // clients connecting and leaving (LogLine::kEvent)
+  std::vector<Listener> listeners_;  // agent ports in order, then the monitor port
   std::map<int, FrontEndClient> clients_;
   std::vector<std::pair<int, std::string>> drops_;
 };

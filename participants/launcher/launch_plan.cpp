@@ -230,6 +230,9 @@ std::vector<std::string> WhereToLook(const LaunchPlan& plan) {
       lines.push_back(fmt::format("RCSSServerMJ (in turf-sim): TCP {}: agents {}, monitor commands {}",
                                   v("--rcssservermj", "127.0.0.1"), v("--rcssservermj-agent-port", "60000"),
                                   v("--rcssservermj-monitor-port", "60001")));
+    } else if (c.name == "hlvs") {
+      lines.push_back(fmt::format("HLVS robot API: TCP {}: red players {}, blue players {}", v("--listen", "0.0.0.0"),
+                                  v("--red-ports", "10001-10004"), v("--blue-ports", "10021-10024")));
     } else if (c.name == "simspark") {
       lines.push_back(fmt::format("SimSpark: TCP {}: agents {}, monitors and trainers {}", v("--listen", "0.0.0.0"),
                                   v("--agent-port", "3100"), v("--monitor-port", "3200")));

@@ -26,6 +26,9 @@ inline constexpr Program kPrograms[] = {
     {"simproto", "turf-simproto-bridge", "simproto_bridge", Scenes::kSsl, "simproto-bridge"},
     // Steps turf-sim itself (switches it to lockstep).
     {"simspark", "turf-simspark-bridge", "simspark_bridge", Scenes::kLegged, "simspark-bridge"},
+    // Steps turf-sim itself, as the SimSpark bridge: under DDS Security it runs with that bridge's identity (the
+    // same rights: lockstep control and the legged topics).
+    {"hlvs", "turf-hlvs-bridge", "hlvs_bridge", Scenes::kLegged, "simspark-bridge"},
     // The web view (not a bridge, but started like one: listed under a profile's `bridges:`); it pauses and
     // teleports, as the operator.
     {"viewer", "turf-viewer", "viewer", Scenes::kAny, "operator"},

@@ -24,7 +24,7 @@ namespace {
 
 // RCSSServerMJ frames exactly as SimSpark does (FrontEndServer's framing).
 FrontEndServer::Options ServerOptions(const RcssServerMjOptions& o) {
-  return {o.listen, o.agent_port, o.monitor_port, o.max_clients, o.max_unsent};
+  return {o.listen, o.agent_port, o.monitor_port, o.max_clients, o.max_unsent, {}, true};
 }
 
 MjLeggedLink MakeLink(const RcssServerMjOptions& o, dds::Bus* bus) {

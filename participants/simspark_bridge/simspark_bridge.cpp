@@ -50,9 +50,14 @@ class SimSparkBridge::Impl {
         link_(MakeLink(options_, bus)),
         operators_(options_.operator_allow),
         rejects_("SimSpark input"),
-        server_(
-            {options_.listen, options_.agent_port, options_.monitor_port, options_.max_clients, options_.max_unsent},
-            "SimSpark client", &rejects_, MakeHooks()) {}
+        server_({options_.listen,
+                 options_.agent_port,
+                 options_.monitor_port,
+                 options_.max_clients,
+                 options_.max_unsent,
+                 {},
+                 true},
+                "SimSpark client", &rejects_, MakeHooks()) {}
 
   uint16_t agent_port() const { return server_.agent_port(); }
   uint16_t monitor_port() const { return server_.monitor_port(); }

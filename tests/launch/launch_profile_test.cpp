@@ -232,6 +232,19 @@ TEST(LaunchPlan, BinariesAreFoundInTheBuildTree) {
   EXPECT_EQ(BuildPlan(*r.profile, o, kLauncherDir).errors.size(), 5u);  // turf-sim, three bridges, the viewer
 }
 
+TEST(LaunchPlan, HlvsPlan) {
+  const ProfileLoadResult r = LoadLaunchProfile("hlvs", DefaultProfileDir());
+  ASSERT_TRUE(r.profile.has_value()) << r.errors[0];
+  const LaunchPlan plan = BuildPlan(*r.profile, {}, kLauncherDir);
+  ASSERT_TRUE(plan.errors.empty()) << plan.errors[0];
+  ASSERT_EQ(plan.commands.size(), 3u);  // turf-sim, the bridge, the viewer
+  const std::string build = std::string(TURF_BINARY_DIR) + "/participants/";
+  EXPECT_EQ(Args(plan.commands[0]), "--scene " + kScenes + "/hlvs.yaml --domain 0 --prefix turf ");
+  EXPECT_EQ(plan.commands[1].name, "hlvs");
+  EXPECT_EQ(plan.commands[1].argv[0], build + "hlvs_bridge/turf-hlvs-bridge");
+  EXPECT_EQ(Args(plan.commands[1]), "--domain 0 --prefix turf --listen 0.0.0.0 --realtime-factor 1 --team-players 4 ");
+}
+
 TEST(LaunchPlan, SimSparkPlanAndSyncMode) {
   const ProfileLoadResult r = LoadLaunchProfile("simspark", DefaultProfileDir());
   ASSERT_TRUE(r.profile.has_value()) << r.errors[0];

@@ -1,0 +1,422 @@
+#include "participants/hlvs_bridge/hlvs_bridge.h"
+
+#include <spdlog/spdlog.h>
+#include <sys/socket.h>
+#include <turf/idl/JointsPubSubTypes.h>
+#include <turf/idl/SimControlPubSubTypes.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <condition_variable>
+#include <mutex>
+#include <stdexcept>
+
+#include "codecs/hlvs/session.h"
+#include "codecs/hlvs/wire.h"
+#include "participants/common/address_allowlist.h"
+#include "participants/common/front_end_server.h"
+#include "participants/common/legged_lockstep.h"
+#include "participants/common/process.h"
+#include "participants/hlvs_bridge/robot_binding.h"
+
+namespace turf {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr const char* kClient = "turf-hlvs-bridge";
+
+// One robot port: its team and number, and once attached its robot, session and client.
+struct Slot {
+  std::string team;
+  int player = 0;
+  const AddressAllowlist* allow = nullptr;
+  const hlvs::RobotModel* model = nullptr;  // null: no robot of this name in the scene
+  std::string robot;
+  std::optional<RobotBinding> binding;
+  std::unique_ptr<hlvs::Session> session;
+  std::unique_ptr<hlvs::NetworkQuota> quota;
+  int fd = -1;  // the client's, -1: none
+  std::vector<hlvs::ActuatorRequests> queued;
+  bool camera_logged = false;
+};
+
+FrontEndServer::Options ServerOptions(const HlvsBridgeOptions& o) {
+  FrontEndServer::Options s;
+  s.listen = o.listen;
+  std::vector<uint16_t> ports = o.red_ports;
+  ports.insert(ports.end(), o.blue_ports.begin(), o.blue_ports.end());
+  if (ports.empty()) throw std::invalid_argument("no HLVS ports");
+  s.agent_port = ports.front();
+  s.more_agent_ports.assign(ports.begin() + 1, ports.end());
+  s.monitor = false;
+  s.max_clients = ports.size() * 4;
+  s.max_unsent = o.max_unsent;
+  return s;
+}
+
+std::unique_ptr<LeggedLockstep> MakeLink(const HlvsBridgeOptions& o, dds::Bus* bus) {
+  if (bus != nullptr) return std::make_unique<LeggedLockstep>(nullptr, *bus, kClient, false);
+  auto own = std::make_unique<dds::Participant>(DdsOptions(o, kClient));
+  dds::Bus& b = *own;
+  return std::make_unique<LeggedLockstep>(std::move(own), b, kClient, false);
+}
+
+uint64_t UnixMs() {
+  return static_cast<uint64_t>(
+      std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch())
+          .count());
+}
+
+// The client on `fd` has closed its side (its FIN is there, nothing unread before it): the reference would have
+// accepted the next client by now, so a reconnecting client is not refused as "busy" for the old one.
+bool PeerHasClosed(int fd) {
+  char byte;
+  const ssize_t n = recv(fd, &byte, 1, MSG_PEEK | MSG_DONTWAIT);
+  return n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR);
+}
+
+// "k1" for a robot file label "../robots/k1.xml", upper case.
+std::string ModelOf(const std::string& label) {
+  std::string stem = label.substr(label.find_last_of('/') + 1);
+  stem = stem.substr(0, stem.find('.'));
+  std::transform(stem.begin(), stem.end(), stem.begin(), [](unsigned char c) { return std::toupper(c); });
+  return stem;
+}
+
+}  // namespace
+
+class HlvsBridge::Impl {
+ public:
+  Impl(HlvsBridgeOptions options, dds::Bus* bus)
+      : options_(std::move(options)),
+        red_allow_(options_.red_allow),
+        blue_allow_(options_.blue_allow),
+        rejects_("HLVS input"),
+        link_(MakeLink(options_, bus)) {
+    for (size_t i = 0; i < options_.red_ports.size(); ++i) slots_.push_back(MakeSlot("red", i + 1, &red_allow_));
+    for (size_t i = 0; i < options_.blue_ports.size(); ++i) slots_.push_back(MakeSlot("blue", i + 1, &blue_allow_));
+    server_ = std::make_unique<FrontEndServer>(ServerOptions(options_), "HLVS client", &rejects_, MakeHooks());
+    ports_ = server_->agent_ports();
+  }
+
+  void SetCameraSource(hlvs::CameraSource* source) { cameras_ = source; }
+
+  uint16_t port(const std::string& team, int player) const {
+    for (size_t i = 0; i < slots_.size(); ++i)
+      if (slots_[i].team == team && slots_[i].player == player) return ports_[i];
+    return 0;
+  }
+
+  bool Run(const std::function<bool()>& stop) {
+    if (!Attach(stop)) return stop();
+    const auto period = options_.realtime_factor > 0
+                            ? std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double, std::milli>(
+                                  hlvs::kBasicStepMs / options_.realtime_factor))
+                            : Clock::duration::zero();
+    const int64_t end_steps =
+        options_.duration > 0 ? std::llround(options_.duration * 1000.0 / hlvs::kBasicStepMs) : -1;
+    auto next = Clock::now();
+    auto next_status = Clock::now() + std::chrono::seconds(10);
+    while (!stop()) {
+      PollUntil(next, stop);
+      if (stop()) break;
+      if (!RunStep(stop)) return stop();
+      next = std::max(next + period, Clock::now());  // late: no catching up
+      if (Clock::now() >= next_status) {
+        ReportStatus();
+        next_status = Clock::now() + std::chrono::seconds(10);
+      }
+      if (end_steps >= 0 && static_cast<int64_t>(steps_done_) >= end_steps) break;
+    }
+    ReportStatus();
+    return true;
+  }
+
+  HlvsBridgeStats Stats() const {
+    std::lock_guard<std::mutex> lock(stats_mutex_);
+    return stats_;
+  }
+
+  HlvsBridgeStats WaitForStats(const std::function<bool(const HlvsBridgeStats&)>& done,
+                               std::chrono::milliseconds timeout) const {
+    std::unique_lock<std::mutex> lock(stats_mutex_);
+    stats_changed_.wait_for(lock, timeout, [&] { return done(stats_); });
+    return stats_;
+  }
+
+ private:
+  static Slot MakeSlot(const char* team, size_t player, const AddressAllowlist* allow) {
+    Slot s;
+    s.team = team;
+    s.player = static_cast<int>(player);
+    s.allow = allow;
+    return s;
+  }
+
+  bool Attach(const std::function<bool()>& stop) {
+    spdlog::info("waiting for turf-sim's legged scene on {} ({})", link_->DescribeBus(),
+                 link_->TopicName(dds::Topic::kLeggedScene));
+    const auto deadline = Clock::now() + options_.attach_timeout;
+    if (!link_->WaitForScene(deadline, stop)) {
+      if (!stop()) spdlog::error("no legged scene from turf-sim (is it running a `kind: legged` scene?)");
+      return false;
+    }
+    const dds::ControlOutcome answer = link_->SwitchToLockstep(deadline, stop);
+    if (!answer.reply || !answer.ok()) {
+      if (!stop()) spdlog::error("turf-sim did not switch to lockstep ({})", answer.Describe());
+      return false;
+    }
+    std::vector<std::string> robots;
+    for (const idl::RobotDescription& r : link_->scene_info().robots()) robots.push_back(r.robot());
+    if (!link_->WaitForFrame(robots, deadline, stop)) {
+      if (!stop()) spdlog::error("turf-sim did not publish the state of its {} robots", robots.size());
+      return false;
+    }
+    steps_ = static_cast<uint32_t>(std::max<long>(1, std::lround(hlvs::kBasicStepMs * 1e-3 / link_->step_s())));
+    if (std::abs(steps_ * link_->step_s() - hlvs::kBasicStepMs * 1e-3) > 1e-9)
+      throw std::invalid_argument(
+          fmt::format("the scene's physics step ({} ms) does not divide HLVS's 8 ms step", link_->step_s() * 1e3));
+    pending_.step_count(steps_);
+    for (const idl::RobotDescription& r : link_->scene_info().robots()) BindSlot(r);
+    LogStart();
+    return true;
+  }
+
+  void BindSlot(const idl::RobotDescription& r) {
+    for (size_t i = 0; i < slots_.size(); ++i) {
+      Slot& s = slots_[i];
+      if (r.robot() != fmt::format("{}_{}", s.team, s.player)) continue;
+      const hlvs::RobotModel* model = hlvs::FindModel(ModelOf(r.model()));
+      std::string error;
+      if (model == nullptr) {
+        spdlog::warn("robot '{}' ({}) is not served: HLVS tables exist for K1 and T1", r.robot(), r.model());
+        return;
+      }
+      s.binding = BindRobot(link_->state(), r.robot(), *model, &error);
+      if (!s.binding) throw std::invalid_argument(error);
+      s.model = model;
+      s.robot = r.robot();
+      hlvs::SessionOptions o;
+      o.robot = r.robot();
+      o.model = model;
+      o.limits = JointLimitsOf(*model);
+      o.team_players = options_.team_players;
+      o.cameras = cameras_;
+      s.session = std::make_unique<hlvs::Session>(o);
+      s.quota = std::make_unique<hlvs::NetworkQuota>(options_.team_players);
+      return;
+    }
+  }
+
+  void LogStart() {
+    for (size_t i = 0; i < slots_.size(); ++i) {
+      const Slot& s = slots_[i];
+      if (s.model != nullptr) {
+        spdlog::info("{} player {}: robot '{}' ({}) on TCP {}:{}; clients from {}", s.team, s.player, s.robot,
+                     s.model->name, options_.listen, ports_[i], s.allow->Describe());
+      }
+    }
+    spdlog::info("{} physics steps of {} ms per 8 ms step; {}; publishing {} (steps, joint commands)", steps_,
+                 link_->step_s() * 1e3,
+                 options_.realtime_factor > 0 ? fmt::format("real time x{}", options_.realtime_factor)
+                                              : std::string("as fast as possible"),
+                 link_->TopicName(dds::Topic::kControl));
+    if (cameras_ == nullptr)
+      spdlog::info("no camera image source: enabled cameras are accepted but no images are sent");
+  }
+
+  void PollUntil(Clock::time_point until, const std::function<bool()>& stop) {
+    do {
+      const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(until - Clock::now());
+      server_->Poll(std::max(wait, std::chrono::milliseconds(0)));
+    } while (Clock::now() < until && !stop());
+  }
+
+  bool RunStep(const std::function<bool()>& stop) {
+    std::string error;
+    std::vector<std::string> warnings;
+    const bool commands = !pending_.joint_commands().empty();
+    idl::SimControl bare = pending_;
+    bare.joint_commands().clear();
+    bool stepped = link_->Step(std::move(pending_), steps_, options_.step_timeout, stop, &error, &warnings);
+    if (!stepped && commands && !stop() && error.rfind("turf-sim refused the step", 0) == 0) {
+      // Joint commands this scene refuses (a motors.max_speed below the HLVS table's max_velocity): the match goes
+      // on without them, counted.
+      rejects_.Reject("step_refused", error);
+      stepped = link_->Step(std::move(bare), steps_, options_.step_timeout, stop, &error, &warnings);
+    }
+    if (!stepped) {
+      if (!stop()) spdlog::error("{}", error);
+      return false;
+    }
+    for (const std::string& w : warnings) spdlog::warn("turf-sim refused {}", w);
+    time_ms_ += hlvs::kBasicStepMs;
+    ++steps_done_;
+    pending_ = idl::SimControl();
+    pending_.op(idl::OP_STEP);
+    pending_.step_count(steps_);
+    const uint64_t real = UnixMs();
+    for (Slot& s : slots_) ServeSlot(&s, real);
+    server_->FlushDrops();
+    std::lock_guard<std::mutex> lock(stats_mutex_);
+    stats_.steps = steps_done_;
+    stats_.time_ms = time_ms_;
+    stats_.refused = rejects_.Total();
+    stats_.refused_by_kind = rejects_.counts();
+    stats_changed_.notify_all();
+    return true;
+  }
+
+  void ServeSlot(Slot* s, uint64_t real_ms) {
+    if (s->model == nullptr) return;
+    const hlvs::RobotReading reading = ReadRobot(link_->state(), *s->binding);
+    if (s->fd >= 0) {
+      for (const hlvs::ActuatorRequests& r : s->queued) s->session->Apply(r, time_ms_);
+      s->queued.clear();
+      Send(s, s->session->Measure(reading, time_ms_, real_ms), real_ms);
+    }
+    idl::JointCommand command;
+    command.robot(s->robot);
+    for (const hlvs::JointOutput& o : s->session->Commands(reading)) command.joints().push_back(ToJointTarget(o));
+    if (!command.joints().empty()) pending_.joint_commands().push_back(std::move(command));
+  }
+
+  void Send(Slot* s, hlvs::SensorMeasurements m, uint64_t real_ms) {
+    if (s->session->camera_unavailable() && !s->camera_logged) {
+      spdlog::info("{}: a camera is enabled but there is no image source: no images are sent", s->robot);
+      s->camera_logged = true;
+    }
+    hlvs::EncodeResult framed = hlvs::FrameSensorMeasurements(m);
+    if (framed.error == Error::kOk && !s->quota->Admit(framed.framed.size(), real_ms)) {
+      hlvs::SensorMeasurements over;
+      over.time_ms = m.time_ms;
+      over.real_time_ms = m.real_time_ms;
+      over.messages.push_back({hlvs::MessageType::kError, s->quota->ExceededText()});
+      framed = hlvs::FrameSensorMeasurements(over);
+      rejects_.Reject("network_quota", fmt::format("{}: {}", s->robot, s->quota->ExceededText()));
+    }
+    if (framed.error != Error::kOk) {
+      rejects_.Reject(std::string("measurement.") + ErrorName(framed.error), s->robot);
+      return;
+    }
+    server_->Send(s->fd, framed.framed);
+  }
+
+  int SlotOfPort(uint16_t port) const {
+    for (size_t i = 0; i < ports_.size(); ++i)
+      if (ports_[i] == port) return static_cast<int>(i);
+    return -1;
+  }
+
+  bool Refuse(FrontEndClient& c, const std::string& kind, const std::string& detail) {
+    std::string error;
+    c.peer->Write(std::string(hlvs::kRefused), &error);  // 8 bytes on a fresh socket; closed when c goes
+    rejects_.Reject(kind, detail);
+    std::lock_guard<std::mutex> lock(stats_mutex_);
+    ++stats_.refused_clients;
+    stats_changed_.notify_all();
+    return false;
+  }
+
+  FrontEndServer::Hooks MakeHooks() {
+    FrontEndServer::Hooks h;
+    h.admit = [this](FrontEndClient& c, const std::string& address, std::string* greeting) {
+      const int i = SlotOfPort(c.port);
+      if (i < 0) return Refuse(c, "no_robot", fmt::format("{} on port {}", address, c.port));
+      Slot& s = slots_[i];
+      if (!s.allow->Allows(address))
+        return Refuse(c, "client_not_allowed",
+                      fmt::format("{} on {} player {}: not in {}", address, s.team, s.player, s.allow->Describe()));
+      if (s.model == nullptr)
+        return Refuse(c, "no_robot", fmt::format("{}: no robot {}_{} (yet)", address, s.team, s.player));
+      if (s.fd >= 0 && PeerHasClosed(s.fd)) {
+        server_->MarkDrop(s.fd, "closed by the peer");
+        s.fd = -1;
+        s.queued.clear();
+      }
+      if (s.fd >= 0) return Refuse(c, "port_busy", fmt::format("{}: {} already has a client", address, s.robot));
+      s.fd = c.peer->fd();
+      s.queued.clear();
+      c.agent = i;
+      *greeting = std::string(hlvs::kWelcome);
+      server_->connections().Reject("client_connected", fmt::format("{} for {}", address, s.robot));
+      std::lock_guard<std::mutex> lock(stats_mutex_);
+      ++stats_.welcomed;
+      ++stats_.clients;
+      stats_changed_.notify_all();
+      return true;
+    };
+    h.message = [this](FrontEndClient& c, const std::string& payload) {
+      Slot& s = slots_[c.agent];
+      if (s.fd != c.peer->fd()) return;  // already refused input: being dropped
+      hlvs::DecodeResult r = hlvs::DecodeActuatorRequests(payload);
+      if (r.error == Error::kOk) {
+        s.queued.push_back(std::move(r.requests));
+        return;
+      }
+      rejects_.Reject(std::string("request.") + ErrorName(r.error), fmt::format("{}: {}", s.robot, r.detail));
+      s.queued.clear();  // nothing of this client's unapplied input moves the robot
+      s.fd = -1;
+      server_->MarkDrop(c.peer->fd(), "sent a refused request");
+    };
+    h.left = [this](const FrontEndClient& c) {
+      if (c.agent < 0) return;
+      Slot& s = slots_[c.agent];
+      if (s.fd == c.peer->fd()) {
+        s.fd = -1;
+        s.queued.clear();
+      }
+      std::lock_guard<std::mutex> lock(stats_mutex_);
+      ++stats_.dropped_clients;
+      --stats_.clients;
+      stats_changed_.notify_all();
+    };
+    return h;
+  }
+
+  void ReportStatus() {
+    int clients = 0;
+    for (const Slot& s : slots_) clients += s.fd >= 0;
+    spdlog::info("step {} time {} ms clients {} refused {}", steps_done_, time_ms_, clients, rejects_.Total());
+  }
+
+  HlvsBridgeOptions options_;
+  AddressAllowlist red_allow_;
+  AddressAllowlist blue_allow_;
+  RejectLog rejects_;
+  std::unique_ptr<LeggedLockstep> link_;
+  std::vector<Slot> slots_;  // red players, then blue, as the ports
+  std::unique_ptr<FrontEndServer> server_;
+  std::vector<uint16_t> ports_;
+  hlvs::CameraSource* cameras_ = nullptr;
+  idl::SimControl pending_ = FirstStep();
+  uint32_t steps_ = 1;
+  uint32_t time_ms_ = 0;
+  uint64_t steps_done_ = 0;
+  mutable std::mutex stats_mutex_;
+  mutable std::condition_variable stats_changed_;
+  HlvsBridgeStats stats_;
+
+  static idl::SimControl FirstStep() {
+    idl::SimControl c;
+    c.op(idl::OP_STEP);
+    return c;
+  }
+};
+
+HlvsBridge::HlvsBridge(HlvsBridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options), nullptr)) {}
+HlvsBridge::HlvsBridge(HlvsBridgeOptions options, dds::Bus& bus)
+    : impl_(std::make_unique<Impl>(std::move(options), &bus)) {}
+HlvsBridge::~HlvsBridge() = default;
+void HlvsBridge::SetCameraSource(hlvs::CameraSource* source) { impl_->SetCameraSource(source); }
+uint16_t HlvsBridge::port(const std::string& team, int player) const { return impl_->port(team, player); }
+bool HlvsBridge::Run(const std::function<bool()>& stop) { return impl_->Run(stop); }
+HlvsBridgeStats HlvsBridge::Stats() const { return impl_->Stats(); }
+HlvsBridgeStats HlvsBridge::WaitForStats(const std::function<bool(const HlvsBridgeStats&)>& done,
+                                         std::chrono::milliseconds timeout) const {
+  return impl_->WaitForStats(done, timeout);
+}
+
+}  // namespace turf
