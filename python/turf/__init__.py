@@ -1,0 +1,32 @@
+"""turf in a Python process: the simulation kernels stepped in-process, Gymnasium-shaped environments and
+VectorSim (worlds in worker processes). No DDS, no sockets.
+
+    import turf
+    sim = turf.Sim("ssl_div_a", seed=1, realism="realistic")
+    obs = sim.step({"blue": commands}, n=8)   # commands: robots_per_team x 6 (turf.SSL_COMMAND_COLUMNS)
+"""
+
+from . import _turf
+from ._turf import (LEGGED_JOINT_COLUMNS, SSL_BALL_COLUMNS, SSL_BALL_DETECTION_COLUMNS, SSL_CAMERA_FRAME_COLUMNS,
+                    SSL_COMMAND_COLUMNS, SSL_ROBOT_COLUMNS, SSL_ROBOT_DETECTION_COLUMNS, LeggedSim, SslSim,
+                    error_names, is_legged_scene, scene_path)
+from .errors import TurfError
+
+
+def Sim(scene="ssl_div_a", seed=None, realism=None):
+    """A world of ``scene`` (a name in configs/scenes/ or a path to a scene file) stepped in this process.
+
+    ``seed`` replaces the scene's seed (every random stream of the run derives from it); ``realism`` is a
+    preset name (ideal, realistic, harsh), a YAML file or YAML text, or None for the scene's own. Returns an
+    SslSim for SSL scenes and a LeggedSim for ``kind: legged`` scenes."""
+    cls = LeggedSim if is_legged_scene(scene) else SslSim
+    return cls(scene, seed=seed, realism=realism or "")
+
+
+from .vector import VectorSim  # noqa: E402  (uses Sim)
+from . import envs  # noqa: E402,F401
+
+__all__ = ["Sim", "SslSim", "LeggedSim", "VectorSim", "TurfError", "envs", "error_names", "is_legged_scene",
+           "scene_path", "SSL_COMMAND_COLUMNS", "SSL_BALL_COLUMNS", "SSL_ROBOT_COLUMNS",
+           "SSL_BALL_DETECTION_COLUMNS", "SSL_ROBOT_DETECTION_COLUMNS", "SSL_CAMERA_FRAME_COLUMNS",
+           "LEGGED_JOINT_COLUMNS"]
