@@ -25,6 +25,7 @@ std::string Joined(const std::vector<std::string>& errors) {
 template <typename SceneT>
 void Apply(const SceneRequest& request, SceneT* scene) {
   if (request.seed) scene->seed = *request.seed;
+  if (request.physics_step) scene->physics.step = *request.physics_step;
   if (request.realism.empty()) return;
   const RealismLoadResult r = LoadRealism(request.realism);
   if (!r.realism) throw std::invalid_argument("realism '" + request.realism + "': " + Joined(r.errors));
@@ -47,14 +48,27 @@ bool IsLeggedScene(const std::string& scene) { return IsLeggedSceneFile(ScenePat
 Scene LoadSsl(const SceneRequest& request) {
   SceneLoadResult r = LoadSceneFile(ScenePath(request.scene));
   if (!r.scene) throw std::invalid_argument(Joined(r.errors));
-  Apply(request, &*r.scene);
-  return std::move(*r.scene);
+  Scene& scene = *r.scene;
+  Apply(request, &scene);
+  if (request.robots_per_team) {
+    scene.robots_per_team = *request.robots_per_team;
+    std::vector<RobotSetup> kept;
+    for (const RobotSetup& robot : scene.robots)
+      if (robot.id < scene.robots_per_team) kept.push_back(robot);
+    scene.robots = std::move(kept);
+  }
+  if (const std::vector<std::string> errors = ValidateScene(scene); !errors.empty())
+    throw std::invalid_argument(Joined(errors));
+  return std::move(scene);
 }
 
 LeggedScene LoadLegged(const SceneRequest& request) {
+  if (request.robots_per_team) throw std::invalid_argument("robots_per_team: SSL scenes only");
   LeggedSceneLoadResult r = LoadLeggedSceneFile(ScenePath(request.scene));
   if (!r.scene) throw std::invalid_argument(Joined(r.errors));
   Apply(request, &*r.scene);
+  if (const std::vector<std::string> errors = ValidateLeggedScene(*r.scene); !errors.empty())
+    throw std::invalid_argument(Joined(errors));
   return std::move(*r.scene);
 }
 

@@ -9,7 +9,7 @@
 
 The arrays are views of the shared memory, valid until the next call; copy what you keep. A batch is checked
 whole before any world steps (the same checks as Sim.step): a refused batch raises TurfError and no world
-changes. World i runs on worker i % workers; workers default to one per core this process may use."""
+changes. World i runs on worker i % workers; workers default to one per core this process may use. physics_step and robots_per_team as turf.Sim's."""
 
 import multiprocessing as mp
 import os
@@ -20,13 +20,13 @@ import numpy as np
 from .errors import TurfError
 
 
-def _worker(index, worlds, cpu, scene, seeds, realism, shm_names, shapes, conn):
+def _worker(index, worlds, cpu, scene, seeds, realism, options, shm_names, shapes, conn):
     from . import Sim  # in the worker process
     if cpu is not None:
         os.sched_setaffinity(0, {cpu})
     blocks = {k: shared_memory.SharedMemory(name=v) for k, v in shm_names.items()}
     arrays = {k: np.ndarray(shapes[k], dtype=np.float64, buffer=blocks[k].buf) for k in shapes}
-    sims = {w: Sim(scene, seed=seeds[w], realism=realism) for w in worlds}
+    sims = {w: Sim(scene, seed=seeds[w], realism=realism, **options) for w in worlds}
 
     def publish(w, obs):
         arrays["ball"][w] = obs["ball"]
@@ -67,12 +67,14 @@ def _worker(index, worlds, cpu, scene, seeds, realism, shm_names, shapes, conn):
 
 
 class VectorSim:
-    def __init__(self, n_worlds, scene="ssl_div_a", seed=1, realism=None, workers=None, cpus=None):
+    def __init__(self, n_worlds, scene="ssl_div_a", seed=1, realism=None, workers=None, cpus=None, physics_step=None,
+                 robots_per_team=None):
         from . import Sim
         if n_worlds < 1:
             raise TurfError("out_of_range", "n_worlds must be at least 1")
         self.n_worlds = n_worlds
-        self.probe = Sim(scene, seed=seed, realism=realism)  # shapes, and the checks of every batch
+        options = {"physics_step": physics_step, "robots_per_team": robots_per_team}
+        self.probe = Sim(scene, seed=seed, realism=realism, **options)  # shapes, and the checks of every batch
         if self.probe.kind != "ssl":
             raise TurfError("not_allowed", "VectorSim runs SSL scenes")
         cpus = sorted(cpus if cpus is not None else os.sched_getaffinity(0))
@@ -92,7 +94,7 @@ class VectorSim:
             parent, child = ctx.Pipe()
             worlds = list(range(i, n_worlds, self.workers))
             p = ctx.Process(target=_worker, daemon=True,
-                            args=(i, worlds, cpus[i % len(cpus)], scene, self.seeds, realism or "", names,
+                            args=(i, worlds, cpus[i % len(cpus)], scene, self.seeds, realism or "", options, names,
                                   self.shapes, child))
             p.start()
             child.close()

@@ -1,15 +1,26 @@
 // Scenes for tests, built in code so each test states what it relies on.
 #pragma once
 
+#include <cstdlib>
+
 #include "core/scene.h"
 
 namespace turf::test {
+
+// The physics step of every test scene: the scene default, or TURF_TEST_PHYSICS_STEP (seconds), so the physics
+// tests can show which larger steps keep the measured motion within their tolerances (tests/core/CMakeLists.txt
+// runs them again at 4 ms, the step `import turf` offers for learning).
+inline double TestPhysicsStep() {
+  const char* step = std::getenv("TURF_TEST_PHYSICS_STEP");
+  return step != nullptr ? std::atof(step) : PhysicsParams{}.step;
+}
 
 // Division A, no robots on the field, ball on the centre mark.
 inline Scene EmptyDivA() {
   Scene s;
   s.name = "test";
   s.field = FieldForDivision(Division::kA);
+  s.physics.step = TestPhysicsStep();
   return s;
 }
 

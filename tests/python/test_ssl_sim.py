@@ -205,3 +205,17 @@ def test_scenes_by_name_and_path_and_bad_ones():
         turf.Sim("ssl_div_a").restore(b"not a snapshot")
     assert e.value.error == "malformed"
     assert "not_finite" in turf.error_names()
+
+
+def test_scene_overrides_for_learning():
+    sim = turf.Sim("ssl_div_a", seed=1, physics_step=turf.FAST_SSL_STEP, robots_per_team=11)
+    assert sim.step_seconds == pytest.approx(0.0025) and sim.robot_count == 22
+    assert sim.observation()["robots"][:, 6].sum() == 22
+    o = sim.step(np.zeros((2, 11, 6)), 7)
+    assert o["time"] == pytest.approx(7 * 0.0025)
+    for kwargs in ({"robots_per_team": 17}, {"robots_per_team": -1}, {"physics_step": 1.0},
+                   {"physics_step": float("nan")}):
+        with pytest.raises(ValueError):
+            turf.Sim("ssl_div_a", **kwargs)
+    with pytest.raises(ValueError):
+        turf.Sim("t1_stand", robots_per_team=1)
