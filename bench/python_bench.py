@@ -4,8 +4,8 @@ physics steps of 2 ms), next to the UDP sync port of turf-sim measured in the sa
     PYTHONPATH=build/python /usr/bin/python3 bench/python_bench.py [--seconds 20] [--sync-requests 1000]
 
 Rows: the kernel alone through Sim.step (2 x 11: every on-field robot commanded at every environment step; 1
-robot: blue 0 alone on the field, commanded), in the shipped scene and in the learning configuration (2.5 ms
-steps, turf.FAST_SSL_STEP, and only the ids the task uses, no parked substitutes), the Gymnasium-shaped environments (actions sampled beforehand, so
+robot: blue 0 alone on the field, commanded), in the shipped scene and in the learning configuration (turf.FAST_SSL:
+2.5 ms steps, each boundary wall as 2 boxes; only the ids the task uses, no parked substitutes), the Gymnasium-shaped environments (actions sampled beforehand, so
 the policy costs nothing), and VectorSim with 2 worker processes pinned to the 2 cores. The sync port rows come
 from build/bench/turf-bench-sync (a UDP client, one SimulationSyncRequest of 1/60 s at a time, 6 robots
 commanded): (a) turf-sim with a separate bridge over Fast DDS, (b) turf-sim --simproto."""
@@ -40,12 +40,12 @@ def match_commands(sim, k):
 
 def SCENE(robots):
     """The shipped scene as it is: 2 ms steps, ids 0..15 a team (the substitutes parked beside the field)."""
-    return {"physics_step": None, "robots_per_team": None}
+    return {"physics_step": None, "robots_per_team": None, "wall_segments": None}
 
 
 def FAST(robots):
-    """The learning configuration: turf.FAST_SSL_STEP and only the robots the task uses."""
-    return {"physics_step": turf.FAST_SSL_STEP, "robots_per_team": robots}
+    """The learning configuration: turf.FAST_SSL and only the robots the task uses."""
+    return dict(turf.FAST_SSL, robots_per_team=robots)
 
 
 CPU_RATES = []  # env-steps per second of this process's CPU time, for the rows measured in this process
@@ -133,7 +133,7 @@ def main():
     rows = [
         ("Sim.step, shipped scene (2 ms, 16 ids a team), one core", lambda: sim_rate(steps, False, False),
          lambda: sim_rate(steps, True, False), True),
-        ("Sim.step, FAST_SSL_STEP (2.5 ms) and only the robots used, one core", lambda: sim_rate(steps, False, True),
+        ("Sim.step, turf.FAST_SSL (2.5 ms, walls of 2 boxes), only the robots used, one core", lambda: sim_rate(steps, False, True),
          lambda: sim_rate(steps, True, True), True),
         ("Gymnasium-shaped env (SslMatchEnv / SslGoToBallKickEnv, their defaults), one core",
          lambda: env_rate(steps, envs.SslMatchEnv()), lambda: env_rate(steps, envs.SslGoToBallKickEnv()), True),

@@ -90,11 +90,13 @@ pyb::dict FieldDict(const Scene& s) {
 void BindSsl(pyb::module_& m) {
   pyb::class_<SslSim>(m, "SslSim", "An SSL world stepped in this process (see turf.Sim).")
       .def(pyb::init([](const std::string& scene, std::optional<uint64_t> seed, const std::string& realism,
-                        std::optional<double> physics_step, std::optional<int> robots_per_team) {
-             return std::make_unique<SslSim>(SceneRequest{scene, seed, realism, physics_step, robots_per_team});
+                        std::optional<double> physics_step, std::optional<int> robots_per_team,
+                        std::optional<int> wall_segments) {
+             return std::make_unique<SslSim>(
+                 SceneRequest{scene, seed, realism, physics_step, robots_per_team, wall_segments});
            }),
            arg("scene") = "ssl_div_a", arg("seed") = pyb::none(), arg("realism") = "",
-           arg("physics_step") = pyb::none(), arg("robots_per_team") = pyb::none())
+           arg("physics_step") = pyb::none(), arg("robots_per_team") = pyb::none(), arg("wall_segments") = pyb::none())
       .def(
           "step",
           [](pyb::object self, const pyb::object& commands, int64_t n) {

@@ -50,6 +50,7 @@ Scene LoadSsl(const SceneRequest& request) {
   if (!r.scene) throw std::invalid_argument(Joined(r.errors));
   Scene& scene = *r.scene;
   Apply(request, &scene);
+  if (request.wall_segments) scene.physics.wall_segments = *request.wall_segments;
   if (request.robots_per_team) {
     scene.robots_per_team = *request.robots_per_team;
     std::vector<RobotSetup> kept;
@@ -63,7 +64,8 @@ Scene LoadSsl(const SceneRequest& request) {
 }
 
 LeggedScene LoadLegged(const SceneRequest& request) {
-  if (request.robots_per_team) throw std::invalid_argument("robots_per_team: SSL scenes only");
+  if (request.robots_per_team || request.wall_segments)
+    throw std::invalid_argument("robots_per_team and wall_segments: SSL scenes only");
   LeggedSceneLoadResult r = LoadLeggedSceneFile(ScenePath(request.scene));
   if (!r.scene) throw std::invalid_argument(Joined(r.errors));
   Apply(request, &*r.scene);

@@ -17,9 +17,11 @@ struct SceneRequest {
   std::optional<uint64_t> seed;
   std::string realism;  // a preset name, a YAML file or YAML text; empty: the scene's
   // Overrides of the scene's keys, checked as the scene file's are (ValidateScene): physics.step (s), and, SSL
-  // only, robots_per_team (ids 0..n-1 exist; robots the file places beyond them are dropped).
+  // only, robots_per_team (ids 0..n-1 exist; robots the file places beyond them are dropped) and
+  // physics.wall_segments.
   std::optional<double> physics_step;
   std::optional<int> robots_per_team;
+  std::optional<int> wall_segments;  // SSL only: core/scene.h's physics.wall_segments
 };
 
 // The file a request names. Throws std::invalid_argument if there is none.

@@ -9,7 +9,7 @@
 
 The arrays are views of the shared memory, valid until the next call; copy what you keep. A batch is checked
 whole before any world steps (the same checks as Sim.step): a refused batch raises TurfError and no world
-changes. World i runs on worker i % workers; workers default to one per core this process may use. physics_step and robots_per_team as turf.Sim's."""
+changes. World i runs on worker i % workers; workers default to one per core this process may use. physics_step, robots_per_team and wall_segments as turf.Sim's."""
 
 import multiprocessing as mp
 import os
@@ -68,12 +68,12 @@ def _worker(index, worlds, cpu, scene, seeds, realism, options, shm_names, shape
 
 class VectorSim:
     def __init__(self, n_worlds, scene="ssl_div_a", seed=1, realism=None, workers=None, cpus=None, physics_step=None,
-                 robots_per_team=None):
+                 robots_per_team=None, wall_segments=None):
         from . import Sim
         if n_worlds < 1:
             raise TurfError("out_of_range", "n_worlds must be at least 1")
         self.n_worlds = n_worlds
-        options = {"physics_step": physics_step, "robots_per_team": robots_per_team}
+        options = {"physics_step": physics_step, "robots_per_team": robots_per_team, "wall_segments": wall_segments}
         self.probe = Sim(scene, seed=seed, realism=realism, **options)  # shapes, and the checks of every batch
         if self.probe.kind != "ssl":
             raise TurfError("not_allowed", "VectorSim runs SSL scenes")

@@ -208,14 +208,31 @@ def test_scenes_by_name_and_path_and_bad_ones():
 
 
 def test_scene_overrides_for_learning():
-    sim = turf.Sim("ssl_div_a", seed=1, physics_step=turf.FAST_SSL_STEP, robots_per_team=11)
+    sim = turf.Sim("ssl_div_a", seed=1, robots_per_team=11, **turf.FAST_SSL)
     assert sim.step_seconds == pytest.approx(0.0025) and sim.robot_count == 22
     assert sim.observation()["robots"][:, 6].sum() == 22
     o = sim.step(np.zeros((2, 11, 6)), 7)
     assert o["time"] == pytest.approx(7 * 0.0025)
     for kwargs in ({"robots_per_team": 17}, {"robots_per_team": -1}, {"physics_step": 1.0},
-                   {"physics_step": float("nan")}):
+                   {"physics_step": float("nan")}, {"wall_segments": 0}, {"wall_segments": 65}):
         with pytest.raises(ValueError):
             turf.Sim("ssl_div_a", **kwargs)
     with pytest.raises(ValueError):
         turf.Sim("t1_stand", robots_per_team=1)
+    with pytest.raises(ValueError):
+        turf.Sim("t1_stand", wall_segments=2)
+
+
+def test_walls_of_two_boxes_bounce_the_ball_as_one_box():
+    """The ball hits the touch-line wall at the seam of its two boxes (x = 0) and beside it: the same rebound as
+    from the whole wall."""
+    rebounds = set()
+    for segments in (1, 2):
+        for x in (0.0, 0.01, 2.0):
+            sim = turf.Sim("ssl_div_a", seed=1, realism="ideal", robots_per_team=1, wall_segments=segments)
+            sim.teleport_robot("blue", 0, on_field=False)
+            sim.teleport_robot("yellow", 0, on_field=False)
+            sim.teleport_ball(x, 4.3, vy=3.0, roll=True)
+            slowest = min(sim.step(None, 1)["ball"][4] for _ in range(150))
+            rebounds.add(round(slowest, 9))
+    assert len(rebounds) == 1 and next(iter(rebounds)) < -1.0
