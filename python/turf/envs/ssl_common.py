@@ -19,11 +19,22 @@ def robot_rows(sim, team, on_field_only=True):
     return np.array(sorted(rows, key=lambda i: ids[i, 1]), dtype=np.int64)
 
 
+def _clip(x, limit):
+    """x clipped to [-limit, limit] in place (np.clip's dispatch costs more than the work here)."""
+    np.minimum(x, limit, out=x)
+    np.maximum(x, -limit, out=x)
+    return x
+
+
 def robot_features(robots, rows):
     """n x ROBOT_FEATURES float32, clipped to the observation bounds."""
     r = robots[rows]
-    out = np.stack([r[:, 0], r[:, 1], np.cos(r[:, 2]), np.sin(r[:, 2]), r[:, 3], r[:, 4], r[:, 5]], axis=1)
-    return np.clip(out, -SPEED_LIMIT, SPEED_LIMIT).astype(np.float32)
+    out = np.empty((len(rows), ROBOT_FEATURES), dtype=np.float32)
+    out[:, 0:2] = r[:, 0:2]
+    out[:, 2] = np.cos(r[:, 2])
+    out[:, 3] = np.sin(r[:, 2])
+    out[:, 4:7] = r[:, 3:6]
+    return _clip(out, np.float32(SPEED_LIMIT))
 
 
 def robot_bounds(n):
@@ -33,7 +44,7 @@ def robot_bounds(n):
 
 
 def ball_features(ball):
-    return np.clip(np.asarray(ball, dtype=np.float64), -SPEED_LIMIT, SPEED_LIMIT).astype(np.float32)
+    return _clip(np.array(ball, dtype=np.float32), np.float32(SPEED_LIMIT))
 
 
 def as_action(action, shape, what="action"):
@@ -49,27 +60,39 @@ def as_action(action, shape, what="action"):
     return a
 
 
-def command_rows(sim, ids, action):
-    """robots_per_team x 6 command rows: each action row (vx, vy, omega in [-1, 1] of the robot's limits, kick
-    > 0: a flat kick at the rules' limit) for the robot of that id; the other ids get no motion."""
-    f = sim.field
-    rows = np.zeros((sim.robots_per_team, len(_turf.SSL_COMMAND_COLUMNS)))
-    a = np.clip(action, -1.0, 1.0)
-    rows[ids, 0] = a[:, 0] * f["max_speed"]
-    rows[ids, 1] = a[:, 1] * f["max_speed"]
-    rows[ids, 2] = a[:, 2] * f["max_angular_speed"]
-    rows[ids, 3] = np.where(a[:, 3] > 0, f["max_flat_kick_speed"], 0.0)
-    return rows
+class Commands:
+    """Actions to command rows: each action row (vx, vy, omega in [-1, 1] of the robot's limits, kick > 0: a flat
+    kick at the rules' limit) for the robot of that id; the other ids get no motion."""
+
+    def __init__(self, sim, ids):
+        f = sim.field
+        self.ids = np.asarray(ids, dtype=np.int64)
+        self.scale = np.array([f["max_speed"], f["max_speed"], f["max_angular_speed"]])
+        self.kick = f["max_flat_kick_speed"]
+        self.rows = np.zeros((sim.robots_per_team, len(_turf.SSL_COMMAND_COLUMNS)))
+
+    def __call__(self, action):
+        a = np.minimum(np.maximum(action, -1.0), 1.0)
+        rows = self.rows.copy()
+        rows[self.ids, 0:3] = a[:, 0:3] * self.scale
+        rows[self.ids, 3] = (a[:, 3] > 0) * self.kick
+        return rows
 
 
-def goal_of(sim, ball):
-    """+1 if the ball is in the yellow goal (x > 0), -1 in the blue one, else 0."""
-    f = sim.field
-    if abs(ball[1]) < f["goal_width"] / 2 and abs(ball[0]) > f["length"] / 2:
-        return 1 if ball[0] > 0 else -1
-    return 0
+class Field:
+    """The field's numbers the tasks use, read once."""
 
+    def __init__(self, sim):
+        f = sim.field
+        self.half_length = f["length"] / 2
+        self.half_width = f["width"] / 2
+        self.half_goal = f["goal_width"] / 2
 
-def out_of_field(sim, ball):
-    f = sim.field
-    return abs(ball[0]) > f["length"] / 2 or abs(ball[1]) > f["width"] / 2
+    def goal(self, ball):
+        """+1 if the ball is in the yellow goal (x > 0), -1 in the blue one, else 0."""
+        if abs(ball[1]) < self.half_goal and abs(ball[0]) > self.half_length:
+            return 1 if ball[0] > 0 else -1
+        return 0
+
+    def out(self, ball):
+        return abs(ball[0]) > self.half_length or abs(ball[1]) > self.half_width

@@ -29,6 +29,8 @@ class SslGoToBallKickEnv(EnvBase):
                        wall_segments=wall_segments)
         self._prepare()
         self.clock = StepClock(1 / 60, self.sim.step_seconds)
+        self.commands = c.Commands(self.sim, [0])
+        self.field = c.Field(self.sim)
         limit = np.array([c.POSITION_LIMIT] * 2 + [1, 1] + [c.SPEED_LIMIT] * 3 + [c.POSITION_LIMIT] * 2
                          + [c.SPEED_LIMIT] * 2 + [1], dtype=np.float32)
         low = -limit
@@ -55,7 +57,7 @@ class SslGoToBallKickEnv(EnvBase):
         ball = o["ball"]
         robot = o["robots"][self.row]
         to_ball = np.hypot(ball[0] - robot[0], ball[1] - robot[1])
-        to_goal = np.hypot(ball[0] - self.sim.field["length"] / 2, ball[1])
+        to_goal = np.hypot(ball[0] - self.field.half_length, ball[1])
         return to_ball, to_goal
 
     def reset(self, *, seed=None, options=None):
@@ -79,14 +81,14 @@ class SslGoToBallKickEnv(EnvBase):
 
     def step(self, action):
         a = c.as_action(action, self.action_space.shape)
-        rows = c.command_rows(self.sim, [0], a[None, :])
+        rows = self.commands(a[None, :])
         o = self.sim.step({"blue": rows}, self.clock.next())
         self.steps += 1
         now = self._distances(o)
         reward = float((self.last[0] - now[0]) + (self.last[1] - now[1]))
         self.last = now
-        goal = c.goal_of(self.sim, o["ball"])
-        out = goal == 0 and c.out_of_field(self.sim, o["ball"])
+        goal = self.field.goal(o["ball"])
+        out = goal == 0 and self.field.out(o["ball"])
         reward += 10.0 * (goal > 0) - 10.0 * (goal < 0) - 1.0 * out
         terminated = bool(goal != 0 or out)
         truncated = bool(not terminated and self.steps >= self.max_episode_steps)

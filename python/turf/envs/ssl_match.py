@@ -32,6 +32,8 @@ class SslMatchEnv(EnvBase):
         self.rows = {t: c.robot_rows(self.sim, t) for t in TEAMS}
         self.ids = {t: self.sim.robot_ids[self.rows[t], 1] for t in TEAMS}
         self.clock = StepClock(1 / 60, self.sim.step_seconds)
+        self.commands = {t: c.Commands(self.sim, self.ids[t]) for t in TEAMS}
+        self.field = c.Field(self.sim)
         ball_high = np.full(6, c.SPEED_LIMIT, dtype=np.float32)
         spaces = {"ball": Box(-ball_high, ball_high, dtype=np.float32)}
         for t in TEAMS:
@@ -62,10 +64,10 @@ class SslMatchEnv(EnvBase):
         commands = {}
         for t in TEAMS:
             a = c.as_action(action[t], self.action_space[t].shape, f"action['{t}']")
-            commands[t] = c.command_rows(self.sim, self.ids[t], a)
+            commands[t] = self.commands[t](a)
         o = self.sim.step(commands, self.clock.next())
         self.steps += 1
-        goal = c.goal_of(self.sim, o["ball"])
+        goal = self.field.goal(o["ball"])
         terminated = goal != 0
         truncated = bool(not terminated and self.steps >= self.max_episode_steps)
         info = {"time": o["time"], "goal": goal, "rewards": {"blue": float(goal), "yellow": float(-goal)}}
