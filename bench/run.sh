@@ -9,6 +9,8 @@
 #                                        turf) on turf: distance walked, falls (issue 14's acceptance run)
 #   bench/run.sh snapshot                kernel snapshots: size, Save and Restore next to a step
 #   bench/run.sh sync [requests]         SSL sync port round trip: separate bridge over DDS vs in turf-sim's process
+#   bench/run.sh python [sim seconds]    `import turf`: env-steps/s of Sim, the Gymnasium-shaped envs and VectorSim
+#                                        against the SSL sync port, in one run (bench/python_bench.py)
 #   bench/run.sh security [sim seconds]  what DDS Security costs: the SSL bench and the DDS hop latency, off and on
 #   bench/run.sh ut-agents --ut-agent PATH --agent-dir DIR
 #                                        real 3D-league agents (UT Austin Villa's base agent, built outside turf)
@@ -17,7 +19,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
 WHAT=all
-if [[ "${1:-}" =~ ^(ssl|simspark|rcssservermj|rcssservermj-nn|snapshot|sync|security|ut-agents)$ ]]; then
+if [[ "${1:-}" =~ ^(ssl|simspark|rcssservermj|rcssservermj-nn|snapshot|sync|python|security|ut-agents)$ ]]; then
   WHAT=$1
   shift
 fi
@@ -155,6 +157,8 @@ case "$WHAT" in
   rcssservermj-nn) bench/rcssservermj_nn/run.sh "$@" ;;
   snapshot) "$BUILD_DIR/bench/turf-bench-snapshot" ;;
   sync) "$BUILD_DIR/bench/turf-bench-sync" --requests "${1:-1000}" ;;
+  python) PYTHONPATH="$BUILD_DIR/python" TURF_BUILD_DIR="$BUILD_DIR" /usr/bin/python3 bench/python_bench.py \
+            --seconds "$SECONDS_SIM" ;;
   security) security ;;
   ut-agents) ut_agents "$@" ;;
   all)
@@ -165,5 +169,7 @@ case "$WHAT" in
     "$BUILD_DIR/bench/turf-bench-snapshot"
     echo
     "$BUILD_DIR/bench/turf-bench-sync"
+    echo
+    PYTHONPATH="$BUILD_DIR/python" TURF_BUILD_DIR="$BUILD_DIR" /usr/bin/python3 bench/python_bench.py
     ;;
 esac

@@ -56,17 +56,32 @@ BallSpring BallContactSpring(double restitution, double step) {
 }
 constexpr const char* kBallSolimp = "0.99 0.99 0.001";
 
-std::string FieldGeoms(const FieldParams& f) {
+// A wall along x (along_x) or y centred at (cx, cy) with half sizes (hx, hy, hz), as `segments` boxes end to end.
+std::string Wall(const char* name, double cx, double cy, double hx, double hy, double hz, bool along_x, int segments,
+                 double friction) {
+  if (segments <= 1) return Box(name, cx, cy, hz, hx, hy, hz, friction);
+  std::string out;
+  const double half = (along_x ? hx : hy) / segments;
+  for (int i = 0; i < segments; ++i) {
+    const double offset = -(along_x ? hx : hy) + half * (2 * i + 1);
+    out += Box(fmt::format("{}_{}", name, i).c_str(), cx + (along_x ? offset : 0), cy + (along_x ? 0 : offset), hz,
+               along_x ? half : hx, along_x ? hy : half, hz, friction);
+  }
+  return out;
+}
+
+std::string FieldGeoms(const FieldParams& f, int wall_segments) {
   std::string out;
   const double wt = f.wall_thickness;
   const double wh = f.wall_height / 2;
   const double x_in = f.length / 2 + f.boundary_width_goal_line;
   const double y_in = f.width / 2 + f.boundary_width;
   // Boundary walls, their inner faces at x_in and y_in.
-  out += Box("wall_left", -x_in - wt / 2, 0, wh, wt / 2, y_in + wt, wh, f.friction);
-  out += Box("wall_right", x_in + wt / 2, 0, wh, wt / 2, y_in + wt, wh, f.friction);
-  out += Box("wall_top", 0, y_in + wt / 2, wh, x_in + wt, wt / 2, wh, f.friction);
-  out += Box("wall_bottom", 0, -y_in - wt / 2, wh, x_in + wt, wt / 2, wh, f.friction);
+  const int n = wall_segments;
+  out += Wall("wall_left", -x_in - wt / 2, 0, wt / 2, y_in + wt, wh, false, n, f.friction);
+  out += Wall("wall_right", x_in + wt / 2, 0, wt / 2, y_in + wt, wh, false, n, f.friction);
+  out += Wall("wall_top", 0, y_in + wt / 2, x_in + wt, wt / 2, wh, true, n, f.friction);
+  out += Wall("wall_bottom", 0, -y_in - wt / 2, x_in + wt, wt / 2, wh, true, n, f.friction);
   // Goals: two side walls (their front ends are the posts) and a back wall.
   const double gt = f.goal_wall_thickness;
   const double gh = f.goal_height / 2;
@@ -127,7 +142,7 @@ std::string BuildMjcf(const Scene& s) {
       R"(    <geom name="{}" type="plane" size="{:.3f} {:.3f} 0.1" contype="0" conaffinity="0" rgba="0.1 0.5 0.1 1"/>)"
       "\n",
       kFloorGeom, s.field.length, s.field.width);
-  x += FieldGeoms(s.field);
+  x += FieldGeoms(s.field, s.physics.wall_segments);
 
   // Ball: inertia chosen so that sliding turns into rolling at k_switch.
   const double inertia_factor = 1.0 / b.k_switch - 1.0;

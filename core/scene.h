@@ -125,6 +125,10 @@ struct CameraParams {
 struct PhysicsParams {
   double step = 0.002;  // s
   int solver_iterations = 20;
+  // Each boundary wall as this many boxes end to end (1: one box). MuJoCo 2.2 sends every robot-wall pair whose
+  // bounding spheres overlap to the convex (MPR) test, and a whole wall's sphere holds the field: shorter boxes
+  // keep far robots out of it. For learning (python/: turf.FAST_SSL_STEP's configuration); scenes keep 1.
+  int wall_segments = 1;
 };
 
 struct RateParams {

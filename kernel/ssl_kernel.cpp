@@ -28,10 +28,14 @@ SslKernel::SslKernel(Scene scene) : world_(std::move(scene)), cameras_(world_.sc
   Reset();
 }
 
-InputError SslKernel::Command(Team topic_team, const RobotCommand& c) {
+InputError SslKernel::CheckCommandInput(Team topic_team, const RobotCommand& c) const {
   if (c.team != topic_team) return InputError::kTeamMismatch;
   if (world_.RobotIndex(c.team, c.id) < 0) return InputError::kUnknownRobot;
-  if (const InputError e = CheckCommand(c); e != InputError::kOk) return e;
+  return CheckCommand(c);
+}
+
+InputError SslKernel::Command(Team topic_team, const RobotCommand& c) {
+  if (const InputError e = CheckCommandInput(topic_team, c); e != InputError::kOk) return e;
   // Valid: now it travels the team's modelled radio link (which may lose it).
   const int t = static_cast<int>(c.team);
   command_stats_[t].Sent();

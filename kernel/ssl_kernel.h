@@ -49,6 +49,8 @@ class SslKernel {
   // A command read from `topic_team`'s command stream: refused if it names
   // the other team (kWrongTeam), an unknown robot or out-of-range values.
   InputError Command(Team topic_team, const RobotCommand& command);
+  // What Command would answer, changing nothing (for all-or-nothing batches).
+  InputError CheckCommandInput(Team topic_team, const RobotCommand& command) const;
   // Teleports show in state() at once.
   InputError TeleportBall(const BallTeleport& teleport);
   InputError TeleportRobot(const RobotTeleport& teleport);

@@ -16,6 +16,7 @@ PACKAGES=(
   libboost-dev nlohmann-json3-dev chromium chromium-driver  # turf-viewer (Boost.Beast, JSON) and its browser test
   openssl  # turf security init: the CA, certificates and signed permissions of DDS Security
   libzstd-dev  # MCAP recordings (codecs/mcap): zstd-compressed chunks
+  python3-pybind11 pybind11-dev python3-numpy python3-pytest  # `import turf` (python/) and its tests
   cyclonedds-dev cyclonedds-tools  # a second DDS implementation: the Booster SDK topics across vendors (tests/booster)
 )
 

@@ -1,15 +1,29 @@
 // Scenes for tests, built in code so each test states what it relies on.
 #pragma once
 
+#include <cstdio>
+#include <cstdlib>
+
 #include "core/scene.h"
 
 namespace turf::test {
+
+// The physics step and wall segments of every test scene: the scene defaults, or TURF_TEST_PHYSICS="STEP
+// SEGMENTS" (seconds, boxes per wall), so the physics tests can show which configurations keep the measured
+// motion within their tolerances (tests/core/CMakeLists.txt runs them again in the one `import turf` offers for
+// learning).
+inline PhysicsParams TestPhysics() {
+  PhysicsParams p;
+  if (const char* v = std::getenv("TURF_TEST_PHYSICS")) std::sscanf(v, "%lf %d", &p.step, &p.wall_segments);
+  return p;
+}
 
 // Division A, no robots on the field, ball on the centre mark.
 inline Scene EmptyDivA() {
   Scene s;
   s.name = "test";
   s.field = FieldForDivision(Division::kA);
+  s.physics = TestPhysics();
   return s;
 }
 

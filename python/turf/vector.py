@@ -1,0 +1,196 @@
+"""VectorSim: many SSL worlds stepped in worker processes, each worker pinned to a core
+(os.sched_setaffinity), with commands and observations in shared memory (no pickling per step).
+
+    vs = turf.VectorSim(8, scene="ssl_div_a", seed=1)        # worlds get seeds 1..8
+    obs = vs.step(commands, n=8)   # commands: n_worlds x 2 x robots_per_team x 6 (or None)
+    obs["ball"]    n_worlds x 6 (turf.SSL_BALL_COLUMNS)
+    obs["robots"]  n_worlds x robots x 9 (turf.SSL_ROBOT_COLUMNS)
+    obs["time"]    n_worlds
+
+The arrays are views of the shared memory, valid until the next call; copy what you keep. A batch is checked
+whole before any world steps (the same checks as Sim.step): a refused batch raises TurfError and no world
+changes. World i runs on worker i % workers; workers default to one per core this process may use. physics_step, robots_per_team and wall_segments as turf.Sim's."""
+
+import multiprocessing as mp
+import os
+from multiprocessing import shared_memory
+
+import numpy as np
+
+from .errors import TurfError
+
+
+def _worker(index, worlds, cpu, scene, seeds, realism, options, shm_names, shapes, conn):
+    from . import Sim  # in the worker process
+    if cpu is not None:
+        os.sched_setaffinity(0, {cpu})
+    blocks = {k: shared_memory.SharedMemory(name=v) for k, v in shm_names.items()}
+    arrays = {k: np.ndarray(shapes[k], dtype=np.float64, buffer=blocks[k].buf) for k in shapes}
+    sims = {w: Sim(scene, seed=seeds[w], realism=realism, **options) for w in worlds}
+
+    def publish(w, obs):
+        arrays["ball"][w] = obs["ball"]
+        arrays["robots"][w] = obs["robots"]
+        arrays["time"][w] = obs["time"]
+
+    for w, sim in sims.items():
+        publish(w, sim.observation())
+    conn.send(("ok", None))
+    while True:
+        op, arg = conn.recv()
+        try:
+            if op == "close":
+                break
+            if op == "step":
+                n, with_commands = arg
+                for w, sim in sims.items():
+                    publish(w, sim.step(arrays["commands"][w] if with_commands else None, n))
+                result = None
+            elif op == "reset":
+                for w, sim in sims.items():
+                    publish(w, sim.reset(seed=None if arg is None else arg[w]))
+                result = None
+            elif op == "save":
+                result = {w: sim.save() for w, sim in sims.items()}
+            elif op == "restore":
+                for w, sim in sims.items():
+                    publish(w, sim.restore(arg[w]))
+                result = None
+            else:
+                raise ValueError(f"unknown op {op}")
+            conn.send(("ok", result))
+        except Exception as e:  # noqa: BLE001 - handed to the caller
+            conn.send(("error", e))
+    for b in blocks.values():
+        b.close()
+    conn.close()
+
+
+class VectorSim:
+    def __init__(self, n_worlds, scene="ssl_div_a", seed=1, realism=None, workers=None, cpus=None, physics_step=None,
+                 robots_per_team=None, wall_segments=None):
+        from . import Sim
+        if n_worlds < 1:
+            raise TurfError("out_of_range", "n_worlds must be at least 1")
+        self.n_worlds = n_worlds
+        options = {"physics_step": physics_step, "robots_per_team": robots_per_team, "wall_segments": wall_segments}
+        self.probe = Sim(scene, seed=seed, realism=realism, **options)  # shapes, and the checks of every batch
+        if self.probe.kind != "ssl":
+            raise TurfError("not_allowed", "VectorSim runs SSL scenes")
+        cpus = sorted(cpus if cpus is not None else os.sched_getaffinity(0))
+        self.workers = min(n_worlds, workers or len(cpus))
+        self.seeds = [seed + i for i in range(n_worlds)]
+        rpt, robots = self.probe.robots_per_team, self.probe.robot_count
+        self.shapes = {"commands": (n_worlds, 2, rpt, 6), "ball": (n_worlds, 6), "robots": (n_worlds, robots, 9),
+                       "time": (n_worlds,)}
+        self._blocks = {k: shared_memory.SharedMemory(create=True, size=max(8, 8 * int(np.prod(s))))
+                        for k, s in self.shapes.items()}
+        self._arrays = {k: np.ndarray(s, dtype=np.float64, buffer=self._blocks[k].buf)
+                        for k, s in self.shapes.items()}
+        ctx = mp.get_context("spawn")
+        self._conns, self._procs = [], []
+        names = {k: b.name for k, b in self._blocks.items()}
+        for i in range(self.workers):
+            parent, child = ctx.Pipe()
+            worlds = list(range(i, n_worlds, self.workers))
+            p = ctx.Process(target=_worker, daemon=True,
+                            args=(i, worlds, cpus[i % len(cpus)], scene, self.seeds, realism or "", options, names,
+                                  self.shapes, child))
+            p.start()
+            child.close()
+            self._conns.append(parent)
+            self._procs.append(p)
+        self._closed = False
+        self._gather()
+
+    def _gather(self):
+        results, error = [], None
+        for c in self._conns:
+            status, value = c.recv()
+            if status == "error" and error is None:
+                error = value
+            results.append(value)
+        if error is not None:
+            raise error
+        return results
+
+    def _all(self, op, arg=None):
+        if self._closed:
+            raise TurfError("not_allowed", "this VectorSim is closed")
+        for c in self._conns:
+            c.send((op, arg))
+        return self._gather()
+
+    def observation(self):
+        return {"ball": self._arrays["ball"], "robots": self._arrays["robots"], "time": self._arrays["time"]}
+
+    def step(self, commands=None, n=1):
+        """Sends each world its commands (n_worlds x 2 x robots_per_team x 6; None: none), then n physics steps."""
+        if commands is not None:
+            try:
+                c = np.asarray(commands, dtype=np.float64)
+            except (TypeError, ValueError):
+                raise TurfError("malformed", "commands: numbers") from None
+            if c.shape != self.shapes["commands"]:
+                raise TurfError("malformed", f"commands: expected shape {self.shapes['commands']}, got {c.shape}")
+            for w in range(self.n_worlds):
+                try:
+                    self.probe.check_commands(c[w])
+                except TurfError as e:
+                    raise TurfError(e.error, f"world {w}: {e.reason}") from None
+            self._arrays["commands"][...] = c
+        if not isinstance(n, (int, np.integer)) or not 1 <= n <= 1000000:
+            raise TurfError("out_of_range", f"step count {n}")
+        self._all("step", (int(n), commands is not None))
+        return self.observation()
+
+    def reset(self, seed=None):
+        """Every world back to its start; a seed gives world i the seed seed + i."""
+        if seed is not None:
+            self.seeds = [seed + i for i in range(self.n_worlds)]
+        self._all("reset", None if seed is None else self.seeds)
+        return self.observation()
+
+    def save(self):
+        """One snapshot (bytes) per world."""
+        merged = {}
+        for part in self._all("save"):
+            merged.update(part)
+        return [merged[w] for w in range(self.n_worlds)]
+
+    def restore(self, snapshots):
+        if len(snapshots) != self.n_worlds:
+            raise TurfError("malformed", f"restore: {self.n_worlds} snapshots, got {len(snapshots)}")
+        self._all("restore", list(snapshots))
+        return self.observation()
+
+    def close(self):
+        if self._closed:
+            return
+        self._closed = True
+        for c in self._conns:
+            try:
+                c.send(("close", None))
+            except (BrokenPipeError, OSError):
+                pass
+        for p in self._procs:
+            p.join(timeout=10)
+            if p.is_alive():
+                p.kill()
+                p.join()
+        self._arrays = {}
+        for b in self._blocks.values():
+            b.close()
+            b.unlink()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:  # noqa: BLE001 - interpreter shutdown
+            pass
