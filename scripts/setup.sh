@@ -17,6 +17,8 @@ PACKAGES=(
   openssl  # turf security init: the CA, certificates and signed permissions of DDS Security
   libzstd-dev  # MCAP recordings (codecs/mcap): zstd-compressed chunks
   cyclonedds-dev cyclonedds-tools  # a second DDS implementation: the Booster SDK topics across vendors (tests/booster)
+  libegl-dev libegl-mesa0 libgl1-mesa-dri  # turf-render: offscreen OpenGL through EGL (Mesa llvmpipe without a GPU)
+  libjpeg62-turbo-dev  # turf-render: JPEG camera images (codecs/image)
 )
 
 missing=()
