@@ -38,6 +38,7 @@ const struct {
     {"participants/viewer/README.md", "viewer/turf-viewer"},
     // Also served in turf-sim's process: turf-sim --rcssservermj ...
     {"participants/rcssservermj_bridge/README.md", "rcssservermj_bridge/turf-rcssservermj-bridge", "sim/turf-sim"},
+    {"participants/render/README.md", "render/turf-render"},
 };
 
 TEST(DocumentedFlags, EachParticipantsReadmeNamesOnlyFlagsItsHelpLists) {
@@ -56,11 +57,12 @@ TEST(DocumentedFlags, EachParticipantsReadmeNamesOnlyFlagsItsHelpLists) {
 
 TEST(DocumentedFlags, EveryFlagOfTheMainReadmeExists) {
   std::set<std::string> offered;
-  for (const char* executable : {"sim/turf-sim", "grsim_bridge/turf-grsim-bridge", "vision_bridge/turf-vision-bridge",
-                                 "simproto_bridge/turf-simproto-bridge", "simspark_bridge/turf-simspark-bridge",
-                                 "rcssservermj_bridge/turf-rcssservermj-bridge", "viewer/turf-viewer", "launcher/turf",
-                                 "launcher/turf launch", "launcher/turf security init", "launcher/turf log info",
-                                 "launcher/turf log diff", "recorder/turf-record", "replay/turf-replay"}) {
+  for (const char* executable :
+       {"sim/turf-sim", "grsim_bridge/turf-grsim-bridge", "vision_bridge/turf-vision-bridge",
+        "simproto_bridge/turf-simproto-bridge", "simspark_bridge/turf-simspark-bridge",
+        "rcssservermj_bridge/turf-rcssservermj-bridge", "viewer/turf-viewer", "launcher/turf", "launcher/turf launch",
+        "launcher/turf security init", "launcher/turf log info", "launcher/turf log diff", "recorder/turf-record",
+        "replay/turf-replay", "render/turf-render"}) {
     const std::set<std::string> flags = Help(executable);
     offered.insert(flags.begin(), flags.end());
   }
