@@ -62,6 +62,16 @@ std::string AddFieldLook(const std::string& mjcf, const Field3d& field) {
   const size_t end = out.find("</worldbody>");
   if (end == std::string::npos) return out;
   out.insert(end, add);
+  // A sky: a light blue gradient, brighter at the horizon.
+  const std::string sky =
+      "<texture name=\"turf_sky\" type=\"skybox\" builtin=\"gradient\" rgb1=\"0.75 0.85 0.95\" "
+      "rgb2=\"0.35 0.5 0.75\" width=\"64\" height=\"64\"/>";
+  const size_t empty = out.find("<asset/>");
+  const size_t open = out.find("<asset>");
+  if (empty != std::string::npos)
+    out.replace(empty, 8, "<asset>" + sky + "</asset>");
+  else if (open != std::string::npos)
+    out.insert(open + 7, sky);
   return out;
 }
 

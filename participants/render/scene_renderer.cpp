@@ -19,6 +19,42 @@ namespace {
 constexpr float kNear = 0.02f;  // m: the clip planes of every camera
 constexpr float kFar = 250.0f;
 
+// Builtin shapes (spheres, capsules, cylinders) with fewer facets than MuJoCo's default 28 x 16: software
+// rasterisation pays per vertex, and a 320 x 240 image shows no difference.
+constexpr int kSlices = 16;
+constexpr int kStacks = 8;
+
+float Dot(const float a[3], const std::array<double, 3>& b) {
+  return a[0] * static_cast<float>(b[0]) + a[1] * static_cast<float>(b[1]) + a[2] * static_cast<float>(b[2]);
+}
+
+// Removes from the scene the geoms whose bounding sphere lies wholly outside the camera's view (behind it, beyond
+// its far plane, or past one of its four sides): with 22 robots most of a scene is out of any one camera's view, and
+// software rendering would transform every vertex of it. Planes and geoms without a model bound stay.
+void CullOutsideFrustum(mjvScene* scn, const Pose& camera, double hfov, double vfov) {
+  const auto forward = CameraForward(camera);
+  const auto up = CameraUp(camera);
+  const std::array<double, 3> right{forward[1] * up[2] - forward[2] * up[1], forward[2] * up[0] - forward[0] * up[2],
+                                    forward[0] * up[1] - forward[1] * up[0]};
+  const float sx = static_cast<float>(std::sin(0.5 * hfov)), cx = static_cast<float>(std::cos(0.5 * hfov));
+  const float sy = static_cast<float>(std::sin(0.5 * vfov)), cy = static_cast<float>(std::cos(0.5 * vfov));
+  int kept = 0;
+  for (int i = 0; i < scn->ngeom; ++i) {
+    const mjvGeom& g = scn->geoms[i];
+    bool visible = g.type == mjGEOM_PLANE || g.modelrbound <= 0;
+    if (!visible) {
+      const float p[3] = {g.pos[0] - static_cast<float>(camera.position[0]),
+                          g.pos[1] - static_cast<float>(camera.position[1]),
+                          g.pos[2] - static_cast<float>(camera.position[2])};
+      const float d = Dot(p, forward), x = Dot(p, right), y = Dot(p, up), r = g.modelrbound;
+      visible = d > kNear - r && d < kFar + r && d * sx - x * cx > -r && d * sx + x * cx > -r && d * sy - y * cy > -r &&
+                d * sy + y * cy > -r;
+    }
+    if (visible) scn->geoms[kept++] = g;
+  }
+  scn->ngeom = kept;
+}
+
 }  // namespace
 
 struct SceneRenderer::Impl {
@@ -66,6 +102,8 @@ SceneRenderer::SceneRenderer(const LeggedScene& scene, std::vector<CameraSpec> c
   m->vis.global.offwidth = width;
   m->vis.global.offheight = height;
   m->vis.quality.offsamples = 0;
+  m->vis.quality.numslices = kSlices;
+  m->vis.quality.numstacks = kStacks;
   mjv_defaultOption(&impl_->option);
   for (int g = 0; g < mjNGROUP; ++g) impl_->option.sitegroup[g] = 0;  // sites are markers, not things a camera sees
   impl_->option.flags[mjVIS_TENDON] = 0;
@@ -73,7 +111,6 @@ SceneRenderer::SceneRenderer(const LeggedScene& scene, std::vector<CameraSpec> c
   mjv_makeScene(m, &impl_->scene, 2000);
   impl_->scene.flags[mjRND_SHADOW] = 0;
   impl_->scene.flags[mjRND_REFLECTION] = 0;
-  impl_->scene.flags[mjRND_SKYBOX] = 0;
   mjr_makeContext(m, &impl_->context, mjFONTSCALE_50);
   mjr_setBuffer(mjFB_OFFSCREEN, &impl_->context);
   if (impl_->context.currentBuffer != mjFB_OFFSCREEN)
@@ -135,6 +172,7 @@ void SceneRenderer::Render(size_t camera, std::vector<uint8_t>* rgb) {
   const auto up = CameraUp(pose);
   mjvScene& scn = impl_->scene;
   mjv_updateScene(impl_->model.get(), impl_->data.get(), &impl_->option, nullptr, &impl_->free_camera, mjCAT_ALL, &scn);
+  CullOutsideFrustum(&scn, pose, spec.hfov, VerticalFov(spec.width, spec.height, spec.hfov));
   const float half_height = kNear * static_cast<float>(std::tan(0.5 * VerticalFov(spec.width, spec.height, spec.hfov)));
   for (mjvGLCamera& gl : scn.camera) {
     for (int i = 0; i < 3; ++i) {
