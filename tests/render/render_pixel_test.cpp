@@ -118,6 +118,34 @@ TEST(RenderPixel, TheBallAppearsWhereThePinholeModelPutsIt) {
   EXPECT_TRUE(Orange(&rgb[3 * (static_cast<size_t>(v) * c.width + u)]));
 }
 
+// Culling keeps what a camera partly sees: a ball whose centre lies just past the image's right edge still shows
+// its left part there.
+TEST(RenderPixel, ABallHalfOutOfViewIsStillDrawnAtTheEdge) {
+  std::string why;
+  auto egl = MakeContextOrNull(&why);
+  if (!egl) GTEST_SKIP() << "no EGL display: " << why;
+  Loaded l = Load(
+      "kind: legged\nfield: {}\nrobots:\n  - name: t1\n    model: ../robots/t1.xml\n    x: -5\n    cameras:\n"
+      "      - {name: camera, width: 320, height: 240, hfov_deg: 70}\n");
+  SceneRenderer renderer(l.scene, l.cameras);
+  ASSERT_TRUE(renderer.SetBodyPose("t1", "H2", Pose{{2.0, 1.0, 1.5}, {1, 0, 0, 0}}));
+  renderer.UpdateFrames();
+  const Pose cam = renderer.CameraPose(0);
+  // 1 m ahead (+x), the centre 0.01 m beyond the right edge of the view (image right = world -y), level.
+  const double edge = std::tan(35.0 * M_PI / 180.0);
+  ASSERT_TRUE(renderer.SetBallPosition({cam.position[0] + 1.0, cam.position[1] - edge - 0.01, cam.position[2]}));
+  renderer.UpdateFrames();
+  std::vector<uint8_t> rgb;
+  renderer.Render(0, &rgb);
+  int count = 0;
+  const auto centroid = OrangeCentroid(rgb, 320, 240, &count);
+  ASSERT_TRUE(centroid) << "the ball was culled";
+  EXPECT_GT((*centroid)[0], 310.0);
+  // Level with the camera: around the middle row (a sliver's shaded lower part reads darker than "orange", so its
+  // centroid sits a few pixels high).
+  EXPECT_NEAR((*centroid)[1], 119.5, 6.0);
+}
+
 // Looking down at the field from above the halfway line: green grass and the white line, as wide as the field's
 // markings say (SimSpark field: 0.05 m).
 TEST(RenderPixel, TheFieldIsGreenWithWhiteLinesOfTheirWidth) {
