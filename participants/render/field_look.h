@@ -1,8 +1,8 @@
 // What turf-render adds to a legged scene's model so that it looks like a soccer field to a vision pipeline:
 // white field lines of their true width (as visual-only boxes 1 mm high: no contact, no mass, no change to the
-// bodies, so the renderer's model poses exactly as turf-sim's), white goal frames, a sun light and a sky (a gradient skybox). The field's
-// markings follow its size: a field of 100 m or more is the FIFA field of RCSSServerMJ (lines 0.12 m, centre
-// circle 9.15 m, penalty areas 16.5 x 40.32 m); a smaller one the SimSpark field (lines 0.05 m, centre circle
+// bodies, so the renderer's model poses exactly as turf-sim's), white goal frames, a sun light and a sky (a gradient
+// skybox). The field's markings follow its size: a field of 100 m or more is the FIFA field of RCSSServerMJ (lines 0.12
+// m, centre circle 9.15 m, penalty areas 16.5 x 40.32 m); a smaller one the SimSpark field (lines 0.05 m, centre circle
 // 2 m, penalty areas 1.8 x 6 m). Pure text in, text out.
 #pragma once
 
