@@ -220,6 +220,7 @@ class RenderNode::Impl {
         "status: {} frames rendered, {} dropped (due by sim time while busy or between states), {} states taken "
         "({} superseded, {} refused), {} encode errors; {:.1f} frames per second of render time",
         s.frames, s.dropped, s.states, s.states_superseded, s.states_refused, s.encode_errors, fps);
+    spdlog::default_logger()->flush();  // at once, also where the output goes to a file or pipe
   }
 
   RenderOptions options_;

@@ -3,9 +3,11 @@
 // arrive with camera_info; --cameras selects; a renderer that cannot keep up drops frames while turf-sim runs on.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <turf/idl/JointsPubSubTypes.h>
 #include <turf/idl/RosImagePubSubTypes.h>
 
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <mutex>
 #include <regex>
@@ -13,6 +15,8 @@
 
 #include "codecs/image/image_codec.h"
 #include "dds/camera_topics.h"
+#include "dds/participant.h"
+#include "dds/topics.h"
 #include "dds/vendor_participant.h"
 #include "participants/common/wakeup.h"
 #include "participants/render/render_node.h"
@@ -77,9 +81,10 @@ class RenderDds : public ::testing::Test {
     for (auto& a : extra) argv.push_back(a);
     return test::Process("render_sim", argv);
   }
-  test::Process Render(const std::string& scene, std::vector<std::string> extra = {}) {
+  test::Process Render(const std::string& scene, std::vector<std::string> extra = {},
+                       const std::string& status_every = "1") {
     std::vector<std::string> argv = {test::Built("participants/render/turf-render"), "--scene", scene, "--status-every",
-                                     "1"};
+                                     status_every};
     for (auto& a : Common()) argv.push_back(a);
     for (auto& a : extra) argv.push_back(a);
     return test::Process("render_render", argv);
@@ -233,6 +238,65 @@ TEST_F(RenderDds, ARendererThatFallsBehindDropsFramesAndNeverHoldsThePhysics) {
   std::smatch m;
   ASSERT_TRUE(std::regex_search(last, m, status_line)) << log;
   EXPECT_GT(std::stoull(m[2]), std::stoull(m[1])) << last;
+}
+
+// Untrusted input: a robots/state sample with a NaN pose is refused whole (nothing drawn from it, counted), and the
+// renderer goes on with the next good state. The states come from this test, not from turf-sim.
+TEST_F(RenderDds, AStateWithANanPoseIsRefusedAndTheNextOneRendered) {
+  const std::string scene = WriteScene("render_nan", "      - {name: camera, width: 64, height: 48, rate_hz: 10}\n");
+  dds::VendorParticipant images(dds::VendorOptions{domain_, "render-test", "", true});
+  test::WakeWait wait;
+  Received<ros::Image_> head;
+  auto r1 = images.MakeReader<ros::Image_PubSubType>(Topic("camera", dds::CameraTopic::kImage),
+                                                     [&](const ros::Image_& s, int64_t) {
+                                                       head.Add(s);
+                                                       wait.Wake();
+                                                     });
+  dds::ParticipantOptions o;
+  o.domain = domain_;
+  o.prefix = prefix_;
+  o.name = "render-test-states";
+  o.qos_file = dds::DefaultQosFile();
+  dds::Participant turf(o);
+  auto states = turf.MakeWriter(dds::Topic::kRobotsState);
+  test::Process render = Render(scene, {}, "0.1");
+  const auto ready_by = Clock::now() + seconds(30);
+  while ((states->Matched() < 1 || r1->Matched() < 1) && Clock::now() < ready_by) {
+    Wakeup idle;
+    idle.WaitFor(std::chrono::milliseconds(100));
+  }
+  ASSERT_GE(states->Matched(), 1) << render.Log();
+  auto state = [](int64_t t_ns, double x) {
+    idl::LeggedState s;
+    s.sim_time_ns(t_ns);
+    idl::LinkState robot;
+    robot.robot("t1");
+    idl::LinkPose head;
+    head.name("H2");
+    head.position().x(x);
+    head.position().z(1.0);
+    head.orientation().w(1.0);
+    robot.links().push_back(head);
+    s.links().push_back(robot);
+    return s;
+  };
+  // One state per frame period, each written once the previous one's outcome is known: an image, or the refusal
+  // in the status line (every 0.1 s; nothing else tells).
+  ASSERT_TRUE(states->Write(state(0, 0.0)));
+  ASSERT_TRUE(wait.Until(Clock::now() + seconds(20), [&] { return head.Count() >= 1; })) << render.Log();
+  ASSERT_TRUE(states->Write(state(100'000'000, std::nan(""))));
+  const auto refused_by = Clock::now() + seconds(20);
+  while (render.Log().find("1 refused") == std::string::npos && Clock::now() < refused_by) {
+    Wakeup idle;
+    idle.WaitFor(std::chrono::milliseconds(100));
+  }
+  ASSERT_NE(render.Log().find("1 refused"), std::string::npos) << render.Log();
+  ASSERT_TRUE(states->Write(state(200'000'000, 0.5)));
+  ASSERT_TRUE(wait.Until(Clock::now() + seconds(20), [&] { return head.Count() >= 2; })) << render.Log();
+  const auto received = head.Copy();
+  EXPECT_EQ(Stamp(received[0].header()), 0);
+  EXPECT_EQ(Stamp(received[1].header()), 200'000'000) << "the NaN state at 100 ms drew nothing";
+  EXPECT_EQ(render.Stop(), 0);
 }
 
 TEST(SelectCameras, AllEnabledByDefaultOrTheNamedOnes) {
