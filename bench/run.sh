@@ -12,6 +12,9 @@
 #   bench/run.sh python [sim seconds]    `import turf`: env-steps/s of Sim, the Gymnasium-shaped envs and VectorSim
 #                                        against the SSL sync port, in one run (bench/python_bench.py)
 #   bench/run.sh security [sim seconds]  what DDS Security costs: the SSL bench and the DDS hop latency, off and on
+#   bench/run.sh render [sim seconds]    camera rendering (issue 16): frames/s for 1, 4, 10 cameras at 320x240 and
+#                                        640x480 (turf-bench-render), and turf-sim's speed alone and next to a
+#                                        turf-render drawing 4 cameras
 #   bench/run.sh ut-agents --ut-agent PATH --agent-dir DIR
 #                                        real 3D-league agents (UT Austin Villa's base agent, built outside turf)
 #                                        play on turf: upright share, falls, approach to the ball (issue 12)
@@ -19,7 +22,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
 WHAT=all
-if [[ "${1:-}" =~ ^(ssl|simspark|rcssservermj|rcssservermj-nn|snapshot|sync|python|security|ut-agents)$ ]]; then
+if [[ "${1:-}" =~ ^(ssl|simspark|rcssservermj|rcssservermj-nn|snapshot|sync|python|security|render|ut-agents)$ ]]; then
   WHAT=$1
   shift
 fi
@@ -139,6 +142,41 @@ security() {
   rm -rf "$dir"
 }
 
+# turf-sim's speed (free-running, simspark_3d.yaml: 2 Naos with 2 cameras each) alone, then with turf-render drawing
+# all 4 cameras at 30 Hz of sim time: turf-sim never waits for the renderer, but on 2 cores they share the CPU.
+render_sim_speed() {
+  local domain=$((150 + RANDOM % 50)) prefix="bench_render_$$" scene=configs/scenes/simspark_3d.yaml
+  local sim=("$BUILD_DIR/participants/sim/turf-sim" --scene "$scene" --speed max --duration "$SECONDS_SIM"
+             --domain "$domain" --prefix "$prefix")
+  # Wall seconds of a whole turf-sim run (including its 1.5 s discovery wait at start-up).
+  run_sim() {
+    local start end
+    start=$(date +%s.%N)
+    "${sim[@]}" >/dev/null 2>&1
+    end=$(date +%s.%N)
+    awk -v a="$start" -v b="$end" 'BEGIN { printf "%.2f", b - a }'
+  }
+  echo "| turf-sim, $SECONDS_SIM s of sim time, free-running (simspark_3d.yaml) | wall s, start-up included |"
+  echo "| --- | --- |"
+  echo "| no renderer (cameras off) | $(run_sim) |"
+  "$BUILD_DIR/participants/render/turf-render" --scene "$scene" --domain "$domain" --prefix "$prefix" \
+    --status-every 3600 >/tmp/turf_bench_render_$$.log 2>&1 &
+  local render=$!
+  sleep 3  # the renderer's start-up (EGL, model, DDS discovery), so it renders from turf-sim's first state
+  echo "| turf-render drawing its 4 cameras at 30 Hz of sim time | $(run_sim) |"
+  kill -TERM "$render"
+  wait "$render" || true
+  grep "status:" /tmp/turf_bench_render_$$.log | tail -1
+  rm -f /tmp/turf_bench_render_$$.log
+}
+
+render() {
+  echo "offscreen camera rendering, $(nproc) cores, load average $(cut -d' ' -f1 /proc/loadavg) at the start"
+  "$BUILD_DIR/bench/turf-bench-render"
+  echo
+  render_sim_speed
+}
+
 # Optional: only with the agent's binary and source directory (bench/ut_agents/run_match.sh --help).
 ut_agents() {
   echo "UT Austin Villa base agents (type 0) on turf (turf launch simspark), 60 s of sim time from the kick-off"
@@ -160,6 +198,7 @@ case "$WHAT" in
   python) PYTHONPATH="$BUILD_DIR/python" TURF_BUILD_DIR="$BUILD_DIR" /usr/bin/python3 bench/python_bench.py \
             --seconds "$SECONDS_SIM" ;;
   security) security ;;
+  render) render ;;
   ut-agents) ut_agents "$@" ;;
   all)
     ssl

@@ -383,7 +383,10 @@ Participant::~Participant() {
 
 // The builtin plugins of DDS Security with the identity's files; a missing file is a configuration error.
 void Participant::EnableSecurity(fdds::DomainParticipantQos& qos) const {
-  const std::string dir = options_.security;
+  AddSecurityProperties(options_.security, qos);
+}
+
+void AddSecurityProperties(const std::string& dir, fdds::DomainParticipantQos& qos) {
   auto file = [&](const std::string& name) {
     const std::string path = dir + "/" + name;
     if (access(path.c_str(), R_OK) != 0)

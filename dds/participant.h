@@ -71,6 +71,10 @@ using WriterListener = std::function<void(WriterEvent event, const RemoteWriter&
 // Loads a Fast DDS QoS profiles file (once per process; Fast DDS keeps profiles process-wide). Throws
 // std::runtime_error if it is missing or not valid.
 void LoadQosProfiles(const std::string& file);
+// Puts DDS Security's builtin plugins with the identity in `dir` (made by `turf security init`) into `qos`; throws
+// std::invalid_argument naming a missing file. Participant does this for --security; VendorParticipant too.
+void AddSecurityProperties(const std::string& dir, eprosima::fastdds::dds::DomainParticipantQos& qos);
+
 // The participant profile every turf participant takes from it (transports: UDP only).
 inline constexpr const char* kParticipantProfile = "turf.participant";
 

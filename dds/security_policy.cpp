@@ -3,6 +3,7 @@
 #include <initializer_list>
 #include <stdexcept>
 
+#include "dds/camera_topics.h"
 #include "dds/topics.h"
 
 namespace turf::dds {
@@ -49,7 +50,26 @@ IdentityGrant Team(const std::string& name, SecurityProfile profile) {
 IdentityGrant Bridge(const std::string& name) { return {name, WithDirection({Direction::kSubscribed}), Everything()}; }
 
 const char* const kNames[] = {"sim",  "vision-bridge", "grsim-bridge", "simproto-bridge", "simspark-bridge",
-                              "blue", "yellow",        "operator",     "observer"};
+                              "blue", "yellow",        "operator",     "observer",        "render"};
+
+IdentityGrant Render() {
+  IdentityGrant g{"render", {}, Suffixes({Topic::kClock, Topic::kLeggedScene, Topic::kRobotsState})};
+  g.publish_cameras = true;
+  return g;
+}
+
+// Every identity but turf-sim's reads the camera topics.
+IdentityGrant WithCameras(IdentityGrant g) {
+  g.subscribe_cameras = true;
+  return g;
+}
+
+std::string JoinCameras(const std::string& prefix, const std::string& indent) {
+  std::string out;
+  for (CameraTopic t : {CameraTopic::kImage, CameraTopic::kCompressed, CameraTopic::kCameraInfo})
+    out += indent + "<topic>" + CameraTopicPattern(prefix, t) + "</topic>\n";
+  return out;
+}
 
 std::string Join(const std::vector<std::string>& topics, const std::string& prefix, const std::string& indent) {
   std::string out;
@@ -67,10 +87,11 @@ IdentityGrant GrantOf(const std::string& name, SecurityProfile profile) {
   if (name == "sim")
     return {name, WithDirection({Direction::kPublished, Direction::kLatched}), WithDirection({Direction::kSubscribed})};
   if (name == "vision-bridge" || name == "grsim-bridge" || name == "simproto-bridge" || name == "simspark-bridge")
-    return Bridge(name);
-  if (name == "blue" || name == "yellow") return Team(name, profile);
-  if (name == "operator") return {name, Suffixes({Topic::kControl}), Everything()};
-  if (name == "observer") return {name, {}, Everything()};
+    return WithCameras(Bridge(name));
+  if (name == "blue" || name == "yellow") return WithCameras(Team(name, profile));
+  if (name == "operator") return WithCameras({name, Suffixes({Topic::kControl}), Everything()});
+  if (name == "observer") return WithCameras({name, {}, Everything()});
+  if (name == "render") return Render();
   std::string known;
   for (const char* n : kNames) known += std::string(known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("'" + name + "' is not a turf security identity (one of: " + known + ")");
@@ -127,11 +148,12 @@ std::string PermissionsXml(const std::string& identity, SecurityProfile profile,
                            const std::string& not_before, const std::string& not_after) {
   const IdentityGrant g = GrantOf(identity, profile);
   std::string rules;
-  if (!g.publish.empty())
-    rules += "        <publish><topics>\n" + Join(g.publish, prefix, "          ") + "        </topics></publish>\n";
-  if (!g.subscribe.empty())
-    rules +=
-        "        <subscribe><topics>\n" + Join(g.subscribe, prefix, "          ") + "        </topics></subscribe>\n";
+  const std::string indent = "          ";
+  const std::string publish = Join(g.publish, prefix, indent) + (g.publish_cameras ? JoinCameras(prefix, indent) : "");
+  const std::string subscribe =
+      Join(g.subscribe, prefix, indent) + (g.subscribe_cameras ? JoinCameras(prefix, indent) : "");
+  if (!publish.empty()) rules += "        <publish><topics>\n" + publish + "        </topics></publish>\n";
+  if (!subscribe.empty()) rules += "        <subscribe><topics>\n" + subscribe + "        </topics></subscribe>\n";
   return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
          "<dds xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\">\n"
          "  <permissions>\n"

@@ -12,6 +12,8 @@
 //                               clock, the field, the camera detections, its own feedback, the legged sensor
 //                               streams. In the lab profile also the ground-truth world state and control (pause,
 //                               teleport); in the tournament profile neither.
+//   render                      turf-render: reads the legged state and scene, publishes the camera topics
+//                               (camera_topics.h; every other identity may read them: they are what a robot sees)
 //   operator                    the match's operator (turf-viewer, scripts): reads everything, publishes control
 //   observer                    reads everything, publishes nothing
 //
@@ -39,6 +41,9 @@ struct IdentityGrant {
   std::string name;                    // directory and certificate name: "blue"
   std::vector<std::string> publish;    // topic suffixes (topics.h), without the prefix
   std::vector<std::string> subscribe;  // likewise
+  // The camera topics (camera_topics.h), by kind: rt/<prefix>/*/*/<kind> in the permissions.
+  bool publish_cameras = false;
+  bool subscribe_cameras = false;
 };
 
 // Every identity's name, in the table's order.

@@ -1,5 +1,7 @@
 #include "dds/topics.h"
 
+#include "dds/camera_topics.h"
+
 namespace turf::dds {
 
 std::string TopicName(const std::string& prefix, Topic topic) {
@@ -31,6 +33,11 @@ std::string TopicsMarkdown() {
   for (const TopicInfo& info : kTopics) {
     out += std::string("| `") + info.suffix + "` | `" + info.type + "` | " + DirectionName(info.direction) + " | `" +
            info.profile + "` | " + info.what + " |\n";
+  }
+  // The camera topics: one set per camera, written by turf-render (camera_topics.h).
+  for (const CameraTopicInfo& info : kCameraTopics) {
+    out += std::string("| `rt/<prefix>/<robot>/<camera>/") + info.kind + "` | `" + info.dds_type +
+           "` | published by turf-render | " + kCameraTopicQos + " | " + info.what + " |\n";
   }
   return out;
 }

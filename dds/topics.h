@@ -168,7 +168,8 @@ enum class Endpoint { kWriter, kReader };
 // One start-up log line: "writes turf/clock (turf::idl::Clock, QoS profile turf.state)".
 std::string EndpointLine(const std::string& prefix, Topic topic, Endpoint endpoint);
 
-// The topic table of README.md (between its topic-table markers), one row per topic.
+// The topic table of README.md (between its topic-table markers), one row per topic, then one per camera topic
+// kind (camera_topics.h).
 std::string TopicsMarkdown();
 
 }  // namespace turf::dds

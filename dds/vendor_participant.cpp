@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
+#include <fastdds/rtps/transport/shared_mem/SharedMemTransportDescriptor.h>
 #include <fastdds/dds/domain/DomainParticipant.hpp>
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <fastdds/dds/publisher/DataWriter.hpp>
@@ -12,6 +14,7 @@
 #include <fastdds/dds/subscriber/Subscriber.hpp>
 #include <fastdds/dds/topic/Topic.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
+#include <fastdds/rtps/flowcontrol/FlowControllerDescriptor.hpp>
 #include <map>
 #include <mutex>
 #include <stdexcept>
@@ -50,13 +53,20 @@ struct VendorParticipant::Impl {
 
 namespace {
 
+constexpr const char* kLargeSampleController = "turf.large_samples";
+constexpr uint32_t kLargeSampleSocketBuffer = 4 * 1024 * 1024;
+
 // The vendor SDKs' default: best effort, volatile, keep last (a few samples for commands arriving together).
-fdds::DataWriterQos WriterQos(fdds::Publisher* publisher) {
+fdds::DataWriterQos WriterQos(fdds::Publisher* publisher, bool large_samples) {
   fdds::DataWriterQos qos = publisher->get_default_datawriter_qos();
   qos.reliability().kind = fdds::BEST_EFFORT_RELIABILITY_QOS;
   qos.durability().kind = fdds::VOLATILE_DURABILITY_QOS;
   qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
   qos.history().depth = 1;
+  if (large_samples) {
+    qos.publish_mode().kind = fdds::ASYNCHRONOUS_PUBLISH_MODE;
+    qos.publish_mode().flow_controller_name = kLargeSampleController;
+  }
   return qos;
 }
 
@@ -124,10 +134,34 @@ class DdsVendorReader final : public VendorParticipant::RawReader, public fdds::
   fdds::DataReader* reader_ = nullptr;
 };
 
+// Shared memory and UDPv4, with socket buffers large enough for a few images, and the flow controller that paces
+// large samples.
+void UseLargeSampleTransports(fdds::DomainParticipantQos& qos) {
+  auto udp = std::make_shared<eprosima::fastdds::rtps::UDPv4TransportDescriptor>();
+  udp->sendBufferSize = kLargeSampleSocketBuffer;
+  udp->receiveBufferSize = kLargeSampleSocketBuffer;
+  auto shm = std::make_shared<eprosima::fastdds::rtps::SharedMemTransportDescriptor>();
+  shm->segment_size(4 * kLargeSampleSocketBuffer);
+  qos.transport().user_transports.clear();
+  qos.transport().user_transports.push_back(shm);
+  qos.transport().user_transports.push_back(udp);
+  qos.transport().use_builtin_transports = false;
+  qos.transport().send_socket_buffer_size = kLargeSampleSocketBuffer;
+  qos.transport().listen_socket_buffer_size = kLargeSampleSocketBuffer;
+  auto controller = std::make_shared<eprosima::fastdds::rtps::FlowControllerDescriptor>();
+  controller->name = kLargeSampleController;
+  controller->max_bytes_per_period = kLargeSampleBytesPerMs;
+  controller->period_ms = 1;
+  qos.flow_controllers().push_back(controller);
+}
+
 }  // namespace
 
 VendorParticipant::VendorParticipant(int domain, const std::string& name)
-    : domain_(domain), impl_(std::make_unique<Impl>()) {
+    : VendorParticipant(VendorOptions{domain, name, "", false}) {}
+
+VendorParticipant::VendorParticipant(const VendorOptions& options)
+    : domain_(options.domain), large_samples_(options.large_samples), impl_(std::make_unique<Impl>()) {
   auto* factory = fdds::DomainParticipantFactory::get_instance();
   fdds::DomainParticipantQos qos = factory->get_default_participant_qos();
   const std::string profiles = DefaultQosFile();
@@ -137,10 +171,14 @@ VendorParticipant::VendorParticipant(int domain, const std::string& name)
       spdlog::warn("QoS file {} has no participant profile '{}'; using Fast DDS defaults", profiles,
                    kParticipantProfile);
   }
-  qos.name(name);
-  impl_->participant = factory->create_participant(domain, qos);
+  qos.name(options.name);
+  if (options.large_samples) UseLargeSampleTransports(qos);
+  if (!options.security.empty()) AddSecurityProperties(options.security, qos);
+  impl_->participant = factory->create_participant(options.domain, qos);
+  if (impl_->participant == nullptr && !options.security.empty())
+    throw std::invalid_argument("DDS Security refused the identity in " + options.security);
   if (impl_->participant == nullptr)
-    throw std::runtime_error("cannot create a DDS participant on domain " + std::to_string(domain));
+    throw std::runtime_error("cannot create a DDS participant on domain " + std::to_string(options.domain));
   impl_->publisher = impl_->participant->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
   impl_->subscriber = impl_->participant->create_subscriber(fdds::SUBSCRIBER_QOS_DEFAULT);
   if (impl_->publisher == nullptr || impl_->subscriber == nullptr)
@@ -157,7 +195,7 @@ std::unique_ptr<VendorParticipant::RawWriter> VendorParticipant::OpenWriter(cons
                                                                             fdds::TopicDataType* type) {
   fdds::TypeSupport support(type);
   fdds::Topic* t = impl_->TopicOf(topic, support);
-  fdds::DataWriter* w = impl_->publisher->create_datawriter(t, WriterQos(impl_->publisher));
+  fdds::DataWriter* w = impl_->publisher->create_datawriter(t, WriterQos(impl_->publisher, large_samples_));
   if (w == nullptr) throw std::runtime_error("cannot create a DDS writer for " + topic);
   return std::make_unique<DdsVendorWriter>(impl_->publisher, w);
 }

@@ -20,10 +20,27 @@ class TopicDataType;
 
 namespace turf::dds {
 
+struct VendorOptions {
+  int domain = 0;
+  std::string name = "turf";
+  // DDS Security: an identity directory of `turf security init` (as ParticipantOptions::security); empty: off.
+  std::string security;
+  // For large samples (camera images, issue 16): the shared-memory transport besides UDPv4 (a local reader that
+  // also has it gets an image without fragmenting it into datagrams), 4 MiB socket buffers, and writers that
+  // publish asynchronously through a flow controller (kLargeSampleBytesPerMs): write() returns at once, Fast DDS's
+  // own thread sends the datagrams paced, so a burst of fragments does not overflow a reader's socket buffer.
+  bool large_samples = false;
+};
+
+// The flow controller's pace for large samples: at most this many bytes a millisecond (128 MB/s).
+inline constexpr int kLargeSampleBytesPerMs = 128 * 1024;
+
 class VendorParticipant {
  public:
-  // Throws std::runtime_error if the participant cannot be created.
+  // Throws std::runtime_error if the participant cannot be created; std::invalid_argument for a security
+  // directory that lacks a file or does not verify.
   VendorParticipant(int domain, const std::string& name);
+  explicit VendorParticipant(const VendorOptions& options);
   ~VendorParticipant();
   VendorParticipant(const VendorParticipant&) = delete;
   VendorParticipant& operator=(const VendorParticipant&) = delete;
@@ -67,6 +84,7 @@ class VendorParticipant {
  private:
   struct Impl;
   int domain_;
+  bool large_samples_ = false;
   std::unique_ptr<Impl> impl_;
 };
 

@@ -73,6 +73,41 @@ void ReadStartJoints(MapReader& m, LeggedRobot* r) {
   }
 }
 
+// robots[].cameras: a list of camera declarations (core/legged/legged_scene.h: CameraDecl); whether a body or
+// camera exists and the values' ranges are checked against the model (core/legged/legged_cameras.h).
+void ReadCameras(MapReader& m, LeggedRobot* r) {
+  const YAML::Node cameras = m.Child("cameras");
+  if (!cameras.IsDefined() || cameras.IsNull()) return;
+  if (!cameras.IsSequence()) {
+    m.Fail("cameras", "expected a list of {name, body, pos, xyaxes, width, height, hfov_deg, rate_hz, encoding, ...}");
+    return;
+  }
+  for (size_t i = 0; i < cameras.size(); ++i) {
+    MapReader c(cameras[i], fmt::format("{}.cameras[{}]", m.path(), i), m.errors());
+    CameraDecl d;
+    if (!c.String("name", &d.name)) c.Fail("name", "required");
+    std::string text;
+    if (c.String("body", &text)) d.body = text;
+    std::array<double, 3> pos{};
+    if (c.Numbers("pos", pos.data(), 3)) d.pos = pos;
+    std::array<double, 6> xy{};
+    if (c.Numbers("xyaxes", xy.data(), 6)) d.xyaxes = xy;
+    int n = 0;
+    if (c.Int("width", &n)) d.width = n;
+    if (c.Int("height", &n)) d.height = n;
+    if (c.Int("jpeg_quality", &n)) d.jpeg_quality = n;
+    double v = 0.0;
+    if (c.Degrees("hfov_deg", &v)) d.hfov = v;
+    if (c.Number("rate_hz", &v)) d.rate_hz = v;
+    if (c.Number("noise_stddev", &v)) d.noise_stddev = v;
+    if (c.String("encoding", &text)) d.encoding = text;
+    bool on = true;
+    if (c.Bool("enabled", &on)) d.enabled = on;
+    c.Finish();
+    r->cameras.push_back(std::move(d));
+  }
+}
+
 // Model files are read once per path, however many robots use them.
 void ReadRobot(MapReader m, const std::string& base_dir, std::map<std::string, std::string>* models, LeggedRobot* r) {
   if (!m.String("name", &r->name)) m.Fail("name", "required");
@@ -100,6 +135,7 @@ void ReadRobot(MapReader m, const std::string& base_dir, std::map<std::string, s
   m.Degrees("yaw_deg", &r->yaw);
   ReadMotors(m.Map("motors"), &r->motors);
   ReadStartJoints(m, r);
+  ReadCameras(m, r);
   m.Finish();
 }
 

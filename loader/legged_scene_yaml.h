@@ -25,6 +25,13 @@
 //                                      with these gains until commanded; the
 //                                      world refuses unknown joints and q
 //                                      outside the joint's range
+//       cameras:                       optional: every MJCF <camera> of the robot file is declared with the
+//                                      defaults below; an entry overrides the one of its name or adds one
+//         - {name: camera, body: head, pos: [x, y, z], xyaxes: [6 numbers: image right, image up],
+//            width: 320, height: 240, hfov_deg: 60, rate_hz: 30, encoding: rgb8|yuv422|jpeg,
+//            jpeg_quality: 80, noise_stddev: 0, enabled: true}
+//                                      (hfov_deg default: the MJCF camera's fovy at this size; without an
+//                                      MJCF camera of that name `body` is required)
 #pragma once
 
 #include <string>

@@ -18,6 +18,8 @@ PACKAGES=(
   libzstd-dev  # MCAP recordings (codecs/mcap): zstd-compressed chunks
   python3-pybind11 pybind11-dev python3-numpy python3-pytest  # `import turf` (python/) and its tests
   cyclonedds-dev cyclonedds-tools  # a second DDS implementation: the Booster SDK topics across vendors (tests/booster)
+  libegl-dev libegl-mesa0 libgl1-mesa-dri  # turf-render: offscreen OpenGL through EGL (Mesa llvmpipe without a GPU)
+  libjpeg62-turbo-dev  # turf-render: JPEG camera images (codecs/image)
 )
 
 missing=()

@@ -3,9 +3,14 @@
 #include <fmt/format.h>
 #include <tinyxml2.h>
 
+#include <mujoco/mujoco.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <sstream>
+#include <stdexcept>
 
 namespace turf {
 
@@ -221,6 +226,21 @@ LeggedMjcf ComposeLeggedMjcf(const LeggedScene& scene) {
   out.Print(&printer);
   result.xml = printer.CStr();
   return result;
+}
+
+mjModel* CompileLeggedMjcf(const std::string& xml) {
+  auto vfs = std::make_unique<mjVFS>();  // ~2 MB: never on the stack
+  mj_defaultVFS(vfs.get());
+  constexpr const char* kFile = "legged_scene.xml";
+  if (mj_makeEmptyFileVFS(vfs.get(), kFile, static_cast<int>(xml.size())) != 0)
+    throw std::invalid_argument("MuJoCo VFS is full");
+  std::copy(xml.begin(), xml.end(), static_cast<char*>(vfs->filedata[vfs->nfile - 1]));
+  constexpr int kErrorSize = 1000;
+  char error[kErrorSize] = {0};
+  mjModel* m = mj_loadXML(kFile, vfs.get(), error, kErrorSize);
+  mj_deleteVFS(vfs.get());
+  if (m == nullptr) throw std::invalid_argument(fmt::format("MuJoCo cannot compile the legged scene: {}", error));
+  return m;
 }
 
 }  // namespace turf

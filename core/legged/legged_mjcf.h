@@ -15,6 +15,9 @@
 
 #include "core/legged/legged_scene.h"
 
+struct mjModel_;
+typedef struct mjModel_ mjModel;
+
 namespace turf {
 
 inline constexpr const char* kLeggedBall = "ball";
@@ -29,5 +32,9 @@ struct LeggedMjcf {
 };
 
 LeggedMjcf ComposeLeggedMjcf(const LeggedScene& scene);
+
+// Compiles composed MJCF text (through MuJoCo's virtual file system); the caller owns the model (mj_deleteModel,
+// or core/mj_state.h's MjModelPtr). Throws std::invalid_argument with MuJoCo's message if it does not compile.
+mjModel* CompileLeggedMjcf(const std::string& xml);
 
 }  // namespace turf

@@ -4,6 +4,7 @@
 // models arrive as MJCF text: core never opens files.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -50,6 +51,24 @@ struct JointStart {
   double kd = 0.0;        // N m s / rad
 };
 
+// A camera declared in the scene for one robot (robots[].cameras): overrides of the robot file's MJCF camera of
+// that name, or a new camera on `body`. Absent values: the MJCF camera's, else the defaults of CameraSpec
+// (core/camera/camera_model.h). Resolved against the compiled model by core/legged/legged_cameras.h.
+struct CameraDecl {
+  std::string name;
+  std::optional<std::string> body;
+  std::optional<std::array<double, 3>> pos;
+  std::optional<std::array<double, 6>> xyaxes;  // image right and image up, in the body frame (MJCF's xyaxes)
+  std::optional<int> width;
+  std::optional<int> height;
+  std::optional<double> hfov;  // rad
+  std::optional<double> rate_hz;
+  std::optional<std::string> encoding;  // rgb8, yuv422, jpeg
+  std::optional<int> jpeg_quality;
+  std::optional<double> noise_stddev;
+  std::optional<bool> enabled;
+};
+
 // One placement of a robot model.
 struct LeggedRobot {
   std::string name;       // unique; prefixes every named element ("nao_1/lj4")
@@ -64,6 +83,7 @@ struct LeggedRobot {
   std::optional<double> z;
   MotorParams motors;
   std::vector<JointStart> start_joints;
+  std::vector<CameraDecl> cameras;  // besides the robot file's MJCF cameras, which are all declared
 };
 
 // The RoboCup 3D soccer field (SimSpark), see shared/protocols/simspark.md.

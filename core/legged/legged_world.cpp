@@ -13,8 +13,6 @@ namespace turf {
 
 namespace {
 
-constexpr int kErrorSize = 1000;
-
 // A stiff motor row's compliance R relative to its inverse inertia (MuJoCo's
 // largest impedance, mjMAXIMP): a load f creeps through at dt R f. Stiffer
 // rows need far more solver iterations than a match scene affords (measured:
@@ -25,21 +23,6 @@ constexpr int kErrorSize = 1000;
 constexpr double kStiffCompliance = 1e-4;
 constexpr double kCreepTime = 0.1;   // s
 constexpr double kCreepLead = 0.01;  // rad
-
-// The model from MJCF text, through MuJoCo's virtual file system.
-mjModel* CompileMjcf(const std::string& xml) {
-  auto vfs = std::make_unique<mjVFS>();  // ~2 MB: never on the stack
-  mj_defaultVFS(vfs.get());
-  constexpr const char* kFile = "legged_scene.xml";
-  if (mj_makeEmptyFileVFS(vfs.get(), kFile, static_cast<int>(xml.size())) != 0)
-    throw std::invalid_argument("MuJoCo VFS is full");
-  std::copy(xml.begin(), xml.end(), static_cast<char*>(vfs->filedata[vfs->nfile - 1]));
-  char error[kErrorSize] = {0};
-  mjModel* m = mj_loadXML(kFile, vfs.get(), error, kErrorSize);
-  mj_deleteVFS(vfs.get());
-  if (m == nullptr) throw std::invalid_argument(fmt::format("MuJoCo cannot compile the legged scene: {}", error));
-  return m;
-}
 
 bool StartsWith(const char* s, const std::string& prefix) {
   return s != nullptr && std::string(s).compare(0, prefix.size(), prefix) == 0;
@@ -91,7 +74,7 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
   LeggedMjcf composed = ComposeLeggedMjcf(scene_);
   if (!composed.errors.empty()) throw std::invalid_argument(composed.errors.front());
   mjcf_ = std::move(composed.xml);
-  model_.reset(CompileMjcf(mjcf_));
+  model_.reset(CompileLeggedMjcf(mjcf_));
   data_.reset(mj_makeData(model_.get()));
   const mjModel* m = model_.get();
   step_ns_ = std::llround(m->opt.timestep * 1e9);

@@ -11,6 +11,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "dds/camera_topics.h"
 #include "dds/topics.h"
 #include "tests/support/source_files.h"
 
@@ -99,7 +100,7 @@ TEST(Topics, MarkdownHasOneRowPerTopic) {
   std::string line;
   std::vector<std::string> rows;
   while (std::getline(lines, line)) rows.push_back(line);
-  ASSERT_EQ(rows.size(), dds::kTopicCount + 2);
+  ASSERT_EQ(rows.size(), dds::kTopicCount + dds::kCameraTopicCount + 2);
   EXPECT_EQ(rows[0], "| topic | type | direction | QoS profile | when, what |");
   for (size_t i = 0; i < dds::kTopicCount; ++i) {
     const dds::TopicInfo& info = dds::kTopics[i];
@@ -108,6 +109,17 @@ TEST(Topics, MarkdownHasOneRowPerTopic) {
   }
   EXPECT_NE(md.find("| `ssl/field` | `SslField` | published, latched | `turf.field` | "), std::string::npos);
   EXPECT_NE(md.find("| `control` | `SimControl` | subscribed | `turf.control` | "), std::string::npos);
+  EXPECT_NE(md.find("| `rt/<prefix>/<robot>/<camera>/image_raw` | `sensor_msgs::msg::dds_::Image_` | published by "
+                    "turf-render | best effort, volatile, keep last 1 | "),
+            std::string::npos);
+}
+
+TEST(Topics, CameraTopicsAreNamedAsRos2NamesThem) {
+  EXPECT_EQ(dds::CameraTopicName("turf", "t1", "camera", dds::CameraTopic::kImage), "rt/turf/t1/camera/image_raw");
+  EXPECT_EQ(dds::CameraTopicName("", "nao", "top", dds::CameraTopic::kCameraInfo), "rt/nao/top/camera_info");
+  EXPECT_EQ(dds::CameraTopicName("m", "k1", "camera", dds::CameraTopic::kCompressed),
+            "rt/m/k1/camera/image_raw/compressed");
+  EXPECT_EQ(dds::CameraTopicPattern("turf", dds::CameraTopic::kImage), "rt/turf/*/*/image_raw");
 }
 
 // README.md's topic table is the generated one: the text between the markers must equal TopicsMarkdown().

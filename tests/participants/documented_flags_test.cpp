@@ -39,6 +39,7 @@ const struct {
     // Also served in turf-sim's process: turf-sim --rcssservermj ...
     {"participants/rcssservermj_bridge/README.md", "rcssservermj_bridge/turf-rcssservermj-bridge", "sim/turf-sim"},
     {"participants/hlvs_bridge/README.md", "hlvs_bridge/turf-hlvs-bridge"},
+    {"participants/render/README.md", "render/turf-render"},
 };
 
 TEST(DocumentedFlags, EachParticipantsReadmeNamesOnlyFlagsItsHelpLists) {
@@ -62,7 +63,7 @@ TEST(DocumentedFlags, EveryFlagOfTheMainReadmeExists) {
         "simproto_bridge/turf-simproto-bridge", "simspark_bridge/turf-simspark-bridge",
         "rcssservermj_bridge/turf-rcssservermj-bridge", "hlvs_bridge/turf-hlvs-bridge", "viewer/turf-viewer",
         "launcher/turf", "launcher/turf launch", "launcher/turf security init", "launcher/turf log info",
-        "launcher/turf log diff", "recorder/turf-record", "replay/turf-replay"}) {
+        "launcher/turf log diff", "recorder/turf-record", "replay/turf-replay", "render/turf-render"}) {
     const std::set<std::string> flags = Help(executable);
     offered.insert(flags.begin(), flags.end());
   }

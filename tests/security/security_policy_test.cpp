@@ -77,6 +77,27 @@ TEST(SecurityPolicy, ObserversPublishNothingAndEveryTopicIsReadBySomeone) {
     EXPECT_TRUE(Has(dds::GrantOf("observer", SecurityProfile::kTournament).subscribe, t)) << t.info().suffix;
 }
 
+// turf-render alone publishes the camera topics (by pattern, rt/<prefix>/*/*/<kind>); every identity but turf-sim
+// reads them, teams too in a tournament (they are what a robot sees).
+TEST(SecurityPolicy, OnlyTheRendererPublishesCameraImagesAndEveryoneButTheSimReadsThem) {
+  for (SecurityProfile profile : {SecurityProfile::kLab, SecurityProfile::kTournament})
+    for (const std::string& name : dds::IdentityNames()) {
+      const dds::IdentityGrant g = dds::GrantOf(name, profile);
+      EXPECT_EQ(g.publish_cameras, name == "render") << name;
+      EXPECT_EQ(g.subscribe_cameras, name != "render" && name != "sim") << name;
+    }
+  const std::string render =
+      dds::PermissionsXml("render", SecurityProfile::kTournament, "m", "2026-01-01T00:00:00", "2027-01-01T00:00:00");
+  const size_t publish = render.find("<publish>");
+  ASSERT_NE(publish, std::string::npos);
+  EXPECT_GT(render.find("<topic>rt/m/*/*/image_raw</topic>"), publish);
+  EXPECT_NE(render.find("<topic>rt/m/*/*/camera_info</topic>"), std::string::npos);
+  EXPECT_NE(render.find("<topic>m/robots/state</topic>"), std::string::npos);
+  const std::string blue =
+      dds::PermissionsXml("blue", SecurityProfile::kTournament, "m", "2026-01-01T00:00:00", "2027-01-01T00:00:00");
+  EXPECT_GT(blue.find("<topic>rt/m/*/*/image_raw/compressed</topic>"), blue.find("<subscribe>"));
+}
+
 TEST(SecurityPolicy, AnUnknownIdentityIsRefusedByName) {
   try {
     dds::GrantOf("referee", SecurityProfile::kLab);

@@ -1,0 +1,317 @@
+// turf-sim and turf-render as real processes on a private domain and prefix, with a ROS 2-style subscriber
+// (dds::VendorParticipant, exact topic names and ROS 2's types): the images of the declared size and encoding
+// arrive with camera_info; --cameras selects; a renderer that cannot keep up drops frames while turf-sim runs on.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <turf/idl/JointsPubSubTypes.h>
+#include <turf/idl/RosImagePubSubTypes.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <mutex>
+#include <regex>
+#include <vector>
+
+#include "codecs/image/image_codec.h"
+#include "dds/camera_topics.h"
+#include "dds/participant.h"
+#include "dds/topics.h"
+#include "dds/vendor_participant.h"
+#include "participants/common/wakeup.h"
+#include "participants/render/render_node.h"
+#include "tests/support/process.h"
+#include "tests/support/wake_wait.h"
+#include "tests/test_domain.h"
+
+namespace turf {
+namespace {
+
+namespace ros = sensor_msgs::msg::dds_;
+using std::chrono::seconds;
+using Clock = std::chrono::steady_clock;
+
+const std::string kSource = TURF_SOURCE_DIR;
+
+// A T1 standing scene with the cameras `cameras_yaml` (indented list items under `cameras:`).
+std::string WriteScene(const std::string& name, const std::string& cameras_yaml) {
+  const std::string path = test::LogDir() + "/" + name + "_" + std::to_string(getpid()) + ".yaml";
+  std::ofstream out(path);
+  out << "kind: legged\nname: render-test\nphysics: {step: 0.005}\nrates: {joint_state_hz: 200}\n"
+         "robots:\n  - name: t1\n    model: "
+      << kSource << "/configs/robots/t1.xml\n    z: 0.665\n    cameras:\n"
+      << cameras_yaml;
+  return path;
+}
+
+template <class Sample>
+struct Received {
+  std::mutex mutex;
+  std::vector<Sample> samples;
+  void Add(const Sample& s) {
+    std::lock_guard<std::mutex> lock(mutex);
+    samples.push_back(s);
+  }
+  size_t Count() {
+    std::lock_guard<std::mutex> lock(mutex);
+    return samples.size();
+  }
+  std::vector<Sample> Copy() {
+    std::lock_guard<std::mutex> lock(mutex);
+    return samples;
+  }
+};
+
+int64_t Stamp(const std_msgs::msg::dds_::Header_& h) {
+  return static_cast<int64_t>(h.stamp().sec()) * 1'000'000'000 + h.stamp().nanosec();
+}
+
+class RenderDds : public ::testing::Test {
+ protected:
+  int domain_ = test::TestDomain(16);
+  std::string prefix_ = "render" + std::to_string(getpid());
+
+  std::vector<std::string> Common() { return {"--domain", std::to_string(domain_), "--prefix", prefix_}; }
+  std::string Topic(const std::string& camera, dds::CameraTopic kind) {
+    return dds::CameraTopicName(prefix_, "t1", camera, kind);
+  }
+  test::Process Sim(const std::string& scene, std::vector<std::string> extra = {}) {
+    std::vector<std::string> argv = {test::Built("participants/sim/turf-sim"), "--scene", scene};
+    for (auto& a : Common()) argv.push_back(a);
+    for (auto& a : extra) argv.push_back(a);
+    return test::Process("render_sim", argv);
+  }
+  test::Process Render(const std::string& scene, std::vector<std::string> extra = {},
+                       const std::string& status_every = "1") {
+    std::vector<std::string> argv = {test::Built("participants/render/turf-render"), "--scene", scene, "--status-every",
+                                     status_every};
+    for (auto& a : Common()) argv.push_back(a);
+    for (auto& a : extra) argv.push_back(a);
+    return test::Process("render_render", argv);
+  }
+};
+
+TEST_F(RenderDds, ImagesOfTheDeclaredSizeAndEncodingArriveWithCameraInfo) {
+  const std::string scene =
+      WriteScene("render_sizes",
+                 "      - {name: camera, width: 160, height: 120, rate_hz: 20}\n"
+                 "      - {name: chest, body: torso, pos: [0.1, 0, 0], xyaxes: [0, -1, 0, 0, 0, 1], width: 64, "
+                 "height: 48, hfov_deg: 90, rate_hz: 10, encoding: yuv422}\n"
+                 "      - {name: back, body: torso, pos: [-0.1, 0, 0], xyaxes: [0, 1, 0, 0, 0, 1], width: 64, "
+                 "height: 48, rate_hz: 10, encoding: jpeg}\n");
+  dds::VendorParticipant dds(dds::VendorOptions{domain_, "render-test", "", true});
+  test::WakeWait wait;
+  Received<ros::Image_> head, chest;
+  Received<ros::CompressedImage_> back;
+  Received<ros::CameraInfo_> info;
+  auto r1 = dds.MakeReader<ros::Image_PubSubType>(Topic("camera", dds::CameraTopic::kImage),
+                                                  [&](const ros::Image_& s, int64_t) {
+                                                    head.Add(s);
+                                                    wait.Wake();
+                                                  });
+  auto r2 = dds.MakeReader<ros::Image_PubSubType>(Topic("chest", dds::CameraTopic::kImage),
+                                                  [&](const ros::Image_& s, int64_t) {
+                                                    chest.Add(s);
+                                                    wait.Wake();
+                                                  });
+  auto r3 = dds.MakeReader<ros::CompressedImage_PubSubType>(Topic("back", dds::CameraTopic::kCompressed),
+                                                            [&](const ros::CompressedImage_& s, int64_t) {
+                                                              back.Add(s);
+                                                              wait.Wake();
+                                                            });
+  auto r4 = dds.MakeReader<ros::CameraInfo_PubSubType>(Topic("camera", dds::CameraTopic::kCameraInfo),
+                                                       [&](const ros::CameraInfo_& s, int64_t) {
+                                                         info.Add(s);
+                                                         wait.Wake();
+                                                       });
+  test::Process render = Render(scene);
+  test::Process sim = Sim(scene);
+  ASSERT_TRUE(
+      wait.Until(Clock::now() + seconds(60),
+                 [&] { return head.Count() >= 3 && chest.Count() >= 2 && back.Count() >= 2 && info.Count() >= 3; }))
+      << "head " << head.Count() << ", chest " << chest.Count() << ", back " << back.Count() << "\n"
+      << render.Log();
+  for (const ros::Image_& img : head.Copy()) {
+    EXPECT_EQ(img.width(), 160u);
+    EXPECT_EQ(img.height(), 120u);
+    EXPECT_EQ(img.encoding(), "rgb8");
+    EXPECT_EQ(img.step(), 480u);
+    EXPECT_EQ(img.data().size(), 160u * 120u * 3u);
+    EXPECT_EQ(img.header().frame_id(), "t1/camera");
+    EXPECT_EQ(Stamp(img.header()) % 5'000'000, 0) << "a state's time: a multiple of the 5 ms step";
+  }
+  const auto heads = head.Copy();
+  for (size_t i = 1; i < heads.size(); ++i) EXPECT_GT(Stamp(heads[i].header()), Stamp(heads[i - 1].header()));
+  for (const ros::Image_& img : chest.Copy()) {
+    EXPECT_EQ(img.encoding(), "yuv422_yuy2");
+    EXPECT_EQ(img.step(), 128u);
+    EXPECT_EQ(img.data().size(), 64u * 48u * 2u);
+  }
+  for (const ros::CompressedImage_& img : back.Copy()) {
+    EXPECT_EQ(img.format(), "jpeg");
+    int w = 0, h = 0;
+    EXPECT_EQ(image::DecodeJpeg(img.data(), 64 * 48, &w, &h).error, Error::kOk);
+    EXPECT_EQ(w, 64);
+    EXPECT_EQ(h, 48);
+  }
+  const ros::CameraInfo_ k = info.Copy().front();
+  EXPECT_EQ(k.width(), 160u);
+  EXPECT_EQ(k.distortion_model(), "plumb_bob");
+  EXPECT_DOUBLE_EQ(k.k()[2], 79.5);
+  EXPECT_DOUBLE_EQ(k.k()[0], k.k()[4]);
+  EXPECT_DOUBLE_EQ(k.k()[8], 1.0);
+  EXPECT_EQ(sim.Stop(), 0);
+  EXPECT_EQ(render.Stop(), 0);
+}
+
+TEST_F(RenderDds, CamerasSelectsWhichOnesThisRendererDraws) {
+  const std::string scene = WriteScene("render_select",
+                                       "      - {name: camera, width: 64, height: 48, rate_hz: 20}\n"
+                                       "      - {name: chest, body: torso, width: 64, height: 48, rate_hz: 20}\n");
+  dds::VendorParticipant dds(dds::VendorOptions{domain_, "render-test", "", true});
+  test::WakeWait wait;
+  Received<ros::Image_> head, chest;
+  auto r1 = dds.MakeReader<ros::Image_PubSubType>(Topic("camera", dds::CameraTopic::kImage),
+                                                  [&](const ros::Image_& s, int64_t) {
+                                                    head.Add(s);
+                                                    wait.Wake();
+                                                  });
+  auto r2 = dds.MakeReader<ros::Image_PubSubType>(Topic("chest", dds::CameraTopic::kImage),
+                                                  [&](const ros::Image_& s, int64_t) {
+                                                    chest.Add(s);
+                                                    wait.Wake();
+                                                  });
+  test::Process render = Render(scene, {"--cameras", "t1/chest"});
+  test::Process sim = Sim(scene);
+  ASSERT_TRUE(wait.Until(Clock::now() + seconds(60), [&] { return chest.Count() >= 5; })) << render.Log();
+  EXPECT_EQ(head.Count(), 0u);
+  EXPECT_EQ(sim.Stop(), 0);
+  EXPECT_EQ(render.Stop(), 0);
+  // An unknown camera is a configuration error that names the scene's cameras.
+  test::Process bad = Render(scene, {"--cameras", "t1/eye"});
+  const auto status = bad.Wait(std::chrono::milliseconds(30000));
+  ASSERT_TRUE(status);
+  EXPECT_EQ(WEXITSTATUS(*status), 2);
+  EXPECT_NE(bad.Log().find("t1/camera, t1/chest"), std::string::npos) << bad.Log();
+}
+
+// A camera far beyond what the renderer can draw (640x480 at 1000 Hz of sim time) while turf-sim runs as fast as
+// it can for 20 s of sim time: turf-sim reaches its duration and exits by itself; the images that arrive are a
+// sparse subset of the due frames (stamps further apart than the camera's period), so frames were dropped, not
+// waited for. (No wall-clock assertion: the speed comparison is in bench/.)
+TEST_F(RenderDds, ARendererThatFallsBehindDropsFramesAndNeverHoldsThePhysics) {
+  const std::string scene =
+      WriteScene("render_behind", "      - {name: camera, width: 640, height: 480, rate_hz: 1000}\n");
+  dds::VendorParticipant dds(dds::VendorOptions{domain_, "render-test", "", true});
+  test::WakeWait wait;
+  Received<ros::Image_> head;
+  auto r1 = dds.MakeReader<ros::Image_PubSubType>(Topic("camera", dds::CameraTopic::kImage),
+                                                  [&](const ros::Image_& s, int64_t) {
+                                                    head.Add(s);
+                                                    wait.Wake();
+                                                  });
+  test::Process render = Render(scene);
+  // The renderer is up (its image writer matched this reader) before turf-sim starts. Discovery wakes nothing
+  // here: look every 100 ms until the deadline.
+  const auto ready_by = Clock::now() + seconds(30);
+  while (r1->Matched() < 1 && Clock::now() < ready_by) {
+    Wakeup idle;
+    idle.WaitFor(std::chrono::milliseconds(100));
+  }
+  ASSERT_GE(r1->Matched(), 1) << render.Log();
+  test::Process sim = Sim(scene, {"--speed", "max", "--duration", "20"});
+  const auto status = sim.Wait(std::chrono::milliseconds(120000));
+  ASSERT_TRUE(status) << "turf-sim did not reach 20 s of sim time";
+  EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0);
+  ASSERT_TRUE(wait.Until(Clock::now() + seconds(20), [&] { return head.Count() >= 2; })) << render.Log();
+  const auto images = head.Copy();
+  const int64_t span = Stamp(images.back().header()) - Stamp(images.front().header());
+  const int64_t due = span / 1'000'000;  // frames due at 1000 Hz over that span
+  EXPECT_LT(static_cast<int64_t>(images.size()) * 4, due) << images.size() << " images over " << span << " ns";
+  EXPECT_EQ(render.Stop(), 0);
+  // Its last status line counts more frames dropped than rendered.
+  const std::string log = render.Log();
+  const std::regex status_line(R"(status: (\d+) frames rendered, (\d+) dropped)");
+  std::string last;
+  for (auto it = std::sregex_iterator(log.begin(), log.end(), status_line); it != std::sregex_iterator(); ++it)
+    last = it->str();
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(last, m, status_line)) << log;
+  EXPECT_GT(std::stoull(m[2]), std::stoull(m[1])) << last;
+}
+
+// Untrusted input: a robots/state sample with a NaN pose is refused whole (nothing drawn from it, counted), and the
+// renderer goes on with the next good state. The states come from this test, not from turf-sim.
+TEST_F(RenderDds, AStateWithANanPoseIsRefusedAndTheNextOneRendered) {
+  const std::string scene = WriteScene("render_nan", "      - {name: camera, width: 64, height: 48, rate_hz: 10}\n");
+  dds::VendorParticipant images(dds::VendorOptions{domain_, "render-test", "", true});
+  test::WakeWait wait;
+  Received<ros::Image_> head;
+  auto r1 = images.MakeReader<ros::Image_PubSubType>(Topic("camera", dds::CameraTopic::kImage),
+                                                     [&](const ros::Image_& s, int64_t) {
+                                                       head.Add(s);
+                                                       wait.Wake();
+                                                     });
+  dds::ParticipantOptions o;
+  o.domain = domain_;
+  o.prefix = prefix_;
+  o.name = "render-test-states";
+  o.qos_file = dds::DefaultQosFile();
+  dds::Participant turf(o);
+  auto states = turf.MakeWriter(dds::Topic::kRobotsState);
+  test::Process render = Render(scene, {}, "0.1");
+  const auto ready_by = Clock::now() + seconds(30);
+  while ((states->Matched() < 1 || r1->Matched() < 1) && Clock::now() < ready_by) {
+    Wakeup idle;
+    idle.WaitFor(std::chrono::milliseconds(100));
+  }
+  ASSERT_GE(states->Matched(), 1) << render.Log();
+  auto state = [](int64_t t_ns, double x) {
+    idl::LeggedState s;
+    s.sim_time_ns(t_ns);
+    idl::LinkState robot;
+    robot.robot("t1");
+    idl::LinkPose head;
+    head.name("H2");
+    head.position().x(x);
+    head.position().z(1.0);
+    head.orientation().w(1.0);
+    robot.links().push_back(head);
+    s.links().push_back(robot);
+    return s;
+  };
+  // One state per frame period, each written once the previous one's outcome is known: an image, or the refusal
+  // in the status line (every 0.1 s; nothing else tells).
+  ASSERT_TRUE(states->Write(state(0, 0.0)));
+  ASSERT_TRUE(wait.Until(Clock::now() + seconds(20), [&] { return head.Count() >= 1; })) << render.Log();
+  ASSERT_TRUE(states->Write(state(100'000'000, std::nan(""))));
+  const auto refused_by = Clock::now() + seconds(20);
+  while (render.Log().find("1 refused") == std::string::npos && Clock::now() < refused_by) {
+    Wakeup idle;
+    idle.WaitFor(std::chrono::milliseconds(100));
+  }
+  ASSERT_NE(render.Log().find("1 refused"), std::string::npos) << render.Log();
+  ASSERT_TRUE(states->Write(state(200'000'000, 0.5)));
+  ASSERT_TRUE(wait.Until(Clock::now() + seconds(20), [&] { return head.Count() >= 2; })) << render.Log();
+  const auto received = head.Copy();
+  EXPECT_EQ(Stamp(received[0].header()), 0);
+  EXPECT_EQ(Stamp(received[1].header()), 200'000'000) << "the NaN state at 100 ms drew nothing";
+  EXPECT_EQ(render.Stop(), 0);
+}
+
+TEST(SelectCameras, AllEnabledByDefaultOrTheNamedOnes) {
+  CameraSpec a, b, c;
+  a.robot = b.robot = c.robot = "t1";
+  a.name = "a";
+  b.name = "b";
+  c.name = "c";
+  c.enabled = false;
+  EXPECT_EQ(SelectCameras({a, b, c}, {}).size(), 2u);
+  const auto only = SelectCameras({a, b, c}, {"t1/c"});
+  ASSERT_EQ(only.size(), 1u);
+  EXPECT_EQ(only[0].name, "c");
+  EXPECT_THROW(SelectCameras({a, b, c}, {"t1/x"}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace turf
