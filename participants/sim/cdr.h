@@ -16,9 +16,16 @@ namespace turf {
 // Samples above this are refused when read back (no topic of turf's comes near it).
 inline constexpr size_t kMaxCdrSample = 16u << 20;
 
+// One type object per thread and type: making one computes the type's bounds, which costs more than a small sample.
+template <class PubSub>
+PubSub& TypeOnThisThread() {
+  thread_local PubSub type;
+  return type;
+}
+
 template <class PubSub>
 bool ToCdr(const dds::SampleOf<PubSub>& sample, std::vector<uint8_t>* out) {
-  PubSub type;
+  PubSub& type = TypeOnThisThread<PubSub>();
   eprosima::fastrtps::rtps::SerializedPayload_t payload(
       type.getSerializedSizeProvider(const_cast<void*>(static_cast<const void*>(&sample)))());
   if (!type.serialize(const_cast<void*>(static_cast<const void*>(&sample)), &payload)) return false;
@@ -30,7 +37,7 @@ bool ToCdr(const dds::SampleOf<PubSub>& sample, std::vector<uint8_t>* out) {
 template <class PubSub>
 bool FromCdr(const uint8_t* data, size_t size, dds::SampleOf<PubSub>* out) {
   if (size == 0 || size > kMaxCdrSample) return false;
-  PubSub type;
+  PubSub& type = TypeOnThisThread<PubSub>();
   eprosima::fastrtps::rtps::SerializedPayload_t payload(static_cast<uint32_t>(size));
   std::memcpy(payload.data, data, size);
   payload.length = static_cast<uint32_t>(size);

@@ -314,7 +314,7 @@ TEST(ResimulationLegged, T1WithJointCommandsIsReproducedByteForByte) {
   const SceneSource source =
       SourceOf(ScenePath("t1_stand.yaml"), "legged", loaded.scene->name, loaded.scene->seed, "realistic");
   const std::string file = TempFile("resim_t1");
-  const Recorded rec = RecordMatch(std::move(*loaded.scene), source, 10.0, file,
+  const Recorded rec = RecordMatch(std::move(*loaded.scene), source, 20.0, file,
                                    [](dds::Bus& bus) { return std::make_unique<T1Script>(bus); });
   ASSERT_EQ(rec.totals.dropped, 0u);
   ASSERT_GT(rec.rounds, 20);
@@ -323,7 +323,7 @@ TEST(ResimulationLegged, T1WithJointCommandsIsReproducedByteForByte) {
   std::filesystem::remove(file);
   EXPECT_TRUE(r.identical) << r.verdict;
   EXPECT_GT(r.input_records, 20u);
-  EXPECT_GT(r.recorded, 2000u);  // robots/state, joint states, IMU, forces, links at 200 Hz for 10 s
+  EXPECT_GT(r.recorded, 4000u);  // robots/state, joint states, IMU, forces, links at 200 Hz for 20 s
   EXPECT_EQ(r.reproduced, r.recorded) << r.verdict;
 }
 
