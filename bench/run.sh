@@ -15,6 +15,8 @@
 #   bench/run.sh render [sim seconds]    camera rendering (issue 16): frames/s for 1, 4, 10 cameras at 320x240 and
 #                                        640x480 (turf-bench-render), and turf-sim's speed alone and next to a
 #                                        turf-render drawing 4 cameras
+#   bench/run.sh record [sim seconds]    recording cost: turf-sim free-running alone and with turf-record on its
+#                                        domain; the recorder's CPU, peak memory and MB per simulated minute
 #   bench/run.sh ut-agents --ut-agent PATH --agent-dir DIR
 #                                        real 3D-league agents (UT Austin Villa's base agent, built outside turf)
 #                                        play on turf: upright share, falls, approach to the ball (issue 12)
@@ -22,12 +24,16 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
 WHAT=all
-if [[ "${1:-}" =~ ^(ssl|simspark|rcssservermj|rcssservermj-nn|snapshot|sync|python|security|render|ut-agents)$ ]]; then
+if [[ "${1:-}" =~ ^(ssl|simspark|rcssservermj|rcssservermj-nn|snapshot|sync|python|security|render|record|ut-agents)$ ]]; then
   WHAT=$1
   shift
 fi
 SECONDS_SIM=${1:-20}
-[ -x "$BUILD_DIR/bench/turf-bench-simspark" ] || bash scripts/build.sh
+if [[ "$WHAT" == record ]]; then  # needs only turf-sim and turf-record
+  [ -x "$BUILD_DIR/participants/recorder/turf-record" ] || bash scripts/build.sh
+else
+  [ -x "$BUILD_DIR/bench/turf-bench-simspark" ] || bash scripts/build.sh
+fi
 
 ssl() {
   local bin="$BUILD_DIR/bench/turf-bench-sim"
@@ -177,6 +183,43 @@ render() {
   render_sim_speed
 }
 
+# One turf-sim run of the SSL 2x11 match (realistic sensors) at --speed max on a private domain; prints its wall
+# seconds without the 1.5 s discovery window it waits at start.
+record_sim() {
+  local domain=$1 prefix=$2 t0 t1
+  t0=$(date +%s.%N)
+  "$BUILD_DIR/participants/sim/turf-sim" --scene configs/scenes/ssl_div_a.yaml --realism realistic -d "$domain" \
+    -p "$prefix" --speed max --duration "$SECONDS_SIM" --log-level warn
+  t1=$(date +%s.%N)
+  awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a - 1.5 }'
+}
+
+# Recording cost (issue 17): turf-sim free-running alone, then with turf-record on its domain (zstd, the default).
+record() {
+  local domain=$((100 + RANDOM % 50)) prefix="bench$$" dir alone with rec tck stat cpu hwm bytes
+  dir=$(mktemp -d)
+  tck=$(getconf CLK_TCK)
+  alone=$(record_sim "$domain" "$prefix")
+  "$BUILD_DIR/participants/recorder/turf-record" "$dir/match.mcap" -d "$domain" -p "$prefix" --log-level warn &
+  rec=$!
+  with=$(record_sim "$domain" "$prefix")
+  # The recorder's CPU (user + system) and peak resident memory so far, then Ctrl-C closes its file.
+  stat=$(cut -d' ' -f14,15 "/proc/$rec/stat")
+  cpu=$(awk -v s="$stat" -v t="$tck" 'BEGIN { split(s, f, " "); printf "%.2f", (f[1] + f[2]) / t }')
+  hwm=$(awk '/VmHWM/ { printf "%.0f", $2 / 1024 }' "/proc/$rec/status")
+  kill -INT "$rec"
+  wait "$rec" || true
+  bytes=$(stat -c %s "$dir/match.mcap")
+  echo "Recording cost: SSL division A 2x11, realistic sensors, ${SECONDS_SIM} s of sim time at --speed max; $(nproc) cores"
+  echo "| turf-sim alone s | turf-sim with recorder s | RTF alone | RTF recorded | recorder CPU s | recorder MiB (peak) | MB per sim minute |"
+  echo "| --- | --- | --- | --- | --- | --- | --- |"
+  awk -v a="$alone" -v w="$with" -v c="$cpu" -v m="$hwm" -v b="$bytes" -v s="$SECONDS_SIM" 'BEGIN {
+    printf "| %.2f | %.2f | %.1f | %.1f | %s | %s | %.2f |\n", a, w, s / a, s / w, c, m, b / 1e6 / s * 60 }'
+  echo "turf-sim's wall time without its 1.5 s discovery window; RTF: simulated s per wall s. One run each; the file"
+  echo "is zstd-compressed (the recorder's default)."
+  rm -rf "$dir"
+}
+
 # Optional: only with the agent's binary and source directory (bench/ut_agents/run_match.sh --help).
 ut_agents() {
   echo "UT Austin Villa base agents (type 0) on turf (turf launch simspark), 60 s of sim time from the kick-off"
@@ -199,6 +242,7 @@ case "$WHAT" in
             --seconds "$SECONDS_SIM" ;;
   security) security ;;
   render) render ;;
+  record) record ;;
   ut-agents) ut_agents "$@" ;;
   all)
     ssl

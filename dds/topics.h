@@ -56,6 +56,11 @@
     "legged scenes, at the joint-state rate: each robot's body poses, keyed by robot")                              \
   X(kLeggedScene, LeggedSceneInfo, "legged/scene", "turf.field", kLatched,                                          \
     "legged scenes: the robots' shapes, 3D field size")                                                             \
+  X(kSimRun, SimRun, "sim/run", "turf.field", kLatched,                                                             \
+    "once, latched: the scene file's text and directory, realism and seed, for `turf replay --resimulate`")         \
+  X(kAppliedInputs, AppliedInputs, "sim/applied_inputs", "turf.control", kPublished,                                \
+    "before a step, when inputs were taken since the last: the step count, sim time and each input sample's "       \
+    "CDR, in the order applied")                                                                                    \
   X(kRobotsState, LeggedState, "robots/state", "turf.state", kPublished,                                            \
     "legged scenes, at the joint-state rate: all robots' joints, IMU, forces and links of one frame, with the ball")
 

@@ -15,7 +15,7 @@ PACKAGES=(
   clang libclang-rt-14-dev clang-format  # clang-format: scripts/check-format.sh (CI)
   libboost-dev nlohmann-json3-dev chromium chromium-driver  # turf-viewer (Boost.Beast, JSON) and its browser test
   openssl  # turf security init: the CA, certificates and signed permissions of DDS Security
-  libzstd-dev  # MCAP recordings (codecs/mcap): zstd-compressed chunks
+  libzstd-dev liblz4-dev  # MCAP recordings (codecs/mcap): zstd- or lz4-compressed chunks
   python3-pybind11 pybind11-dev python3-numpy python3-pytest  # `import turf` (python/) and its tests
   cyclonedds-dev cyclonedds-tools  # a second DDS implementation: the Booster SDK topics across vendors (tests/booster)
   libegl-dev libegl-mesa0 libgl1-mesa-dri  # turf-render: offscreen OpenGL through EGL (Mesa llvmpipe without a GPU)

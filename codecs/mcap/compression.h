@@ -1,5 +1,5 @@
-// Chunk compression of MCAP files: "" (none) and "zstd" (Debian's libzstd). lz4 is named by the specification
-// but not built here (liblz4-dev is not in scripts/setup.sh): a reader meets it as kUnknownCompression.
+// Chunk compression of MCAP files: "" (none), "zstd" (Debian's libzstd) and "lz4" (an LZ4 frame, Debian's liblz4), the
+// three the specification names. Another name is kUnknownCompression for a reader.
 #pragma once
 
 #include <cstdint>
@@ -11,11 +11,11 @@
 
 namespace turf::mcap {
 
-enum class Compression : uint8_t { kNone, kZstd };
+enum class Compression : uint8_t { kNone, kZstd, kLz4 };
 
-// The Chunk record's compression field: "" or "zstd".
+// The Chunk record's compression field: "", "zstd" or "lz4".
 const char* CompressionField(Compression c);
-// "none" or "zstd" (a command line's word); nullopt for anything else.
+// "none", "zstd" or "lz4" (a command line's word); nullopt for anything else.
 std::optional<Compression> CompressionFromWord(std::string_view word);
 
 std::string Compress(Compression c, std::string_view bytes, int zstd_level);

@@ -20,8 +20,8 @@ int main(int argc, char** argv) {
   app.add_option("--topics", options.topics,
                  "record only these topics (names without prefix, e.g. world_state,clock); default: all")
       ->delimiter(',');
-  app.add_option("--compression", compression, "chunk compression: zstd or none")
-      ->check(CLI::IsMember({"zstd", "none"}))
+  app.add_option("--compression", compression, "chunk compression: zstd, lz4 or none")
+      ->check(CLI::IsMember({"zstd", "lz4", "none"}))
       ->capture_default_str();
   app.add_option("--chunk-size", options.chunk_size, "bytes (uncompressed) at which a chunk is closed")
       ->check(CLI::Range(size_t{4096}, size_t{256} << 20))

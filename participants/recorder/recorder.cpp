@@ -7,6 +7,7 @@
 #include <turf/idl/JointsPubSubTypes.h>
 #include <turf/idl/SensorStatsPubSubTypes.h>
 #include <turf/idl/SimControlPubSubTypes.h>
+#include <turf/idl/SimRecordPubSubTypes.h>
 #include <turf/idl/SslRobotPubSubTypes.h>
 #include <turf/idl/SslVisionPubSubTypes.h>
 #include <turf/idl/WorldStatePubSubTypes.h>
@@ -22,30 +23,12 @@
 #include "participants/common/mcap_file.h"
 #include "participants/common/wakeup.h"
 #include "participants/recorder/idl_schema.h"
+#include "participants/recorder/sim_time.h"
 
 namespace turf {
 namespace {
 
-template <class T, class = void>
-struct HasSimTime : std::false_type {};
-template <class T>
-struct HasSimTime<T, std::void_t<decltype(std::declval<const T&>().sim_time_ns())>> : std::true_type {};
-template <class T, class = void>
-struct HasCaptureTime : std::false_type {};
-template <class T>
-struct HasCaptureTime<T, std::void_t<decltype(std::declval<const T&>().capture_time_ns())>> : std::true_type {};
-
-// The sample's simulation time (MCAP publish_time), 0 where its type has none.
-template <class T>
-uint64_t SimTimeOf(const T& sample) {
-  int64_t t = 0;
-  if constexpr (HasSimTime<T>::value) {
-    t = sample.sim_time_ns();
-  } else if constexpr (HasCaptureTime<T>::value) {
-    t = sample.capture_time_ns();
-  }
-  return t > 0 ? static_cast<uint64_t>(t) : 0;
-}
+using record::SimTimeOf;
 
 uint64_t UnixNowNs() {
   return static_cast<uint64_t>(
@@ -122,15 +105,20 @@ std::string CheckTopicNames(const std::vector<std::string>& names) {
 
 class Recorder::Impl {
  public:
-  explicit Impl(const RecorderOptions& o)
-      : options_(o), sink_(o.file), writer_(&sink_, WriterOptionsOf(o)), participant_(DdsOptions(o)) {
+  Impl(const RecorderOptions& o, dds::Bus* bus)
+      : options_(o),
+        sink_(o.file),
+        writer_(&sink_, WriterOptionsOf(o)),
+        own_bus_(bus != nullptr ? nullptr : std::make_unique<dds::Participant>(DdsOptions(o))),
+        participant_(bus != nullptr ? *bus : *own_bus_) {
     if (!sink_.ok()) throw std::invalid_argument("cannot write " + o.file + ": " + sink_.error());
     std::apply([this](const auto&... topic) { (Add(topic), ...); }, dds::kTypedTopics);
     sink_.Flush();
     spdlog::info(
         "recording {} topics of DDS domain {}, prefix '{}', into {} ({} chunks of up to {} KiB, closed at "
         "least every {} s)",
-        taps_.size(), o.domain, o.prefix, o.file, o.compression == mcap::Compression::kZstd ? "zstd" : "uncompressed",
+        taps_.size(), o.domain, o.prefix, o.file,
+        o.compression == mcap::Compression::kNone ? "uncompressed" : mcap::CompressionField(o.compression),
         o.chunk_size / 1024, o.chunk_interval_s);
     participant_.LogTopics();
   }
@@ -197,12 +185,14 @@ class Recorder::Impl {
   McapFileSink sink_;
   mcap::Writer writer_;
   Wakeup wakeup_;
-  dds::Participant participant_;  // after the writer and the wakeup its readers use; before the taps
+  std::unique_ptr<dds::Bus> own_bus_;  // after the writer and the wakeup its readers use; before the taps
+  dds::Bus& participant_;
   std::vector<std::unique_ptr<Tap>> taps_;
   RecorderTotals totals_;
 };
 
-Recorder::Recorder(const RecorderOptions& options) : impl_(std::make_unique<Impl>(options)) {}
+Recorder::Recorder(const RecorderOptions& options) : impl_(std::make_unique<Impl>(options, nullptr)) {}
+Recorder::Recorder(const RecorderOptions& options, dds::Bus& bus) : impl_(std::make_unique<Impl>(options, &bus)) {}
 Recorder::~Recorder() = default;
 void Recorder::Run(const std::function<bool()>& stop) { impl_->Run(stop); }
 RecorderTotals Recorder::totals() const { return impl_->totals(); }

@@ -27,6 +27,10 @@
 
 namespace turf {
 
+namespace dds {
+class Bus;
+}  // namespace dds
+
 struct RecorderOptions : ParticipantOptions {
   RecorderOptions() { name = "turf-record"; }
   std::string file;
@@ -51,6 +55,8 @@ class Recorder : Pinned {
  public:
   // Opens the file and subscribes; throws std::invalid_argument (exit status 2) if the file cannot be made.
   explicit Recorder(const RecorderOptions& options);
+  // On `bus` (a dds::MemoryBus: turf-sim's node in the same process, in tests), which must outlive the recorder.
+  Recorder(const RecorderOptions& options, dds::Bus& bus);
   ~Recorder();
   // Records until `stop()`, then closes the file (a valid MCAP file with its summary).
   void Run(const std::function<bool()>& stop);

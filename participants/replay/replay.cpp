@@ -6,6 +6,7 @@
 #include <turf/idl/JointsPubSubTypes.h>
 #include <turf/idl/SensorStatsPubSubTypes.h>
 #include <turf/idl/SimControlPubSubTypes.h>
+#include <turf/idl/SimRecordPubSubTypes.h>
 #include <turf/idl/SslRobotPubSubTypes.h>
 #include <turf/idl/SslVisionPubSubTypes.h>
 #include <turf/idl/WorldStatePubSubTypes.h>
@@ -90,8 +91,8 @@ class Replayer {
     try {
       damage = mcap::Scan(source, {}, &info, [&](const mcap::Channel& c, const mcap::Message& m) { Play(info, c, m); });
     } catch (const Stopped&) {
-      spdlog::info("stopped at {} messages", totals_.published);
-      return totals_;
+      spdlog::info("{} at {} messages", totals_.reached_end ? "reached --end" : "stopped", totals_.published);
+      if (!totals_.reached_end) return totals_;
     }
     if (damage.error == mcap::ReadError::kBadMagic || damage.error == mcap::ReadError::kNewerVersion)
       throw std::invalid_argument(options_.file + ": " + damage.Describe());
@@ -155,19 +156,27 @@ class Replayer {
     if (!have_first_) {
       have_first_ = true;
       start_ns_ = m.log_time + static_cast<uint64_t>(options_.start_s * 1e9);
+      end_ns_ = options_.end_s > 0 ? m.log_time + static_cast<uint64_t>(options_.end_s * 1e9) : UINT64_MAX;
       clock_->SetOrigin(start_ns_);
+    }
+    if (m.log_time > end_ns_) {
+      totals_.reached_end = true;
+      throw Stopped{};
     }
     if (m.log_time < start_ns_ && player->info().direction != dds::Direction::kLatched) {
       ++totals_.before_start;
       return;
     }
-    const auto due = clock_->Due(m.log_time);
-    while (SteadyClock::now() < due) {  // real-time pacing: sleep, in slices that notice a stop
+    WaitWhilePaused();
+    for (auto due = clock_->Due(m.log_time); SteadyClock::now() < due; due = clock_->Due(m.log_time)) {
+      // Real-time pacing: sleep, in slices that notice a stop or a pause.
       if (stop_()) throw Stopped{};
       std::this_thread::sleep_for(
           std::min<SteadyClock::duration>(due - SteadyClock::now(), std::chrono::milliseconds(50)));
+      WaitWhilePaused();
     }
     if (stop_()) throw Stopped{};
+    last_sim_time_ns_ = m.publish_time;
     if (player->Publish(m.data)) {
       ++totals_.published;
     } else if (++totals_.refused <= 10) {
@@ -181,6 +190,19 @@ class Replayer {
     }
   }
 
+  // While options_.paused() answers true: the pacing clock stands still (checked every 50 ms).
+  void WaitWhilePaused() {
+    if (!options_.paused || !options_.paused()) return;
+    clock_->Pause(SteadyClock::now());
+    spdlog::info("paused (sim time {:.3f} s); SIGUSR1 resumes", last_sim_time_ns_ * 1e-9);
+    while (options_.paused()) {
+      if (stop_()) throw Stopped{};
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    clock_->Resume(SteadyClock::now());
+    spdlog::info("resumed");
+  }
+
   const ReplayOptions& options_;
   const std::function<bool()>& stop_;
   dds::Participant participant_;
@@ -190,6 +212,8 @@ class Replayer {
   SteadyClock::time_point last_progress_;
   bool have_first_ = false;
   uint64_t start_ns_ = 0;
+  uint64_t end_ns_ = UINT64_MAX;
+  uint64_t last_sim_time_ns_ = 0;
   ReplayTotals totals_;
 };
 

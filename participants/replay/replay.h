@@ -9,7 +9,9 @@
 // deserialize is refused and counted; a damaged file is played up to the damage, which is logged.
 // --start S begins S seconds (of recorded receive time) after the first message: earlier messages are skipped,
 // except those of latched topics (the field), which are published at once so a viewer has them.
-// Not yet: pause, seeking while playing, --resimulate (issue 17).
+// --end S stops S seconds (of recorded receive time) after the first message. Pausing: while `paused()` answers
+// true (turf-replay: SIGUSR1 toggles it) nothing is published and the pacing clock stands still; playing resumes
+// where it stopped. Re-simulation (--resimulate) is resimulate.h.
 #pragma once
 
 #include <cstdint>
@@ -23,8 +25,10 @@ namespace turf {
 struct ReplayOptions : ParticipantOptions {
   ReplayOptions() { name = "turf-replay"; }
   std::string file;
-  double speed = 1.0;  // 0: as fast as possible
-  double start_s = 0;  // skip this much recorded time from the first message
+  double speed = 1.0;            // 0: as fast as possible
+  double start_s = 0;            // skip this much recorded time from the first message
+  double end_s = 0;              // stop this much recorded time after the first message; 0: at the end of the file
+  std::function<bool()> paused;  // while it answers true, playing waits (null: never)
   // Before the first message: wait (up to 30 s) until a reader of some replayed topic is matched.
   bool wait_for_reader = false;
   double progress_interval_s = 10.0;
@@ -35,6 +39,7 @@ struct ReplayTotals {
   uint64_t skipped = 0;       // inputs and channels of no known topic
   uint64_t refused = 0;       // CDR that did not deserialize
   uint64_t before_start = 0;  // skipped by --start
+  bool reached_end = false;   // stopped by --end
 };
 
 // Plays the file until its end or `stop()`; throws std::invalid_argument (exit status 2) if it cannot be opened or

@@ -13,4 +13,16 @@ std::chrono::steady_clock::time_point ReplayClock::Due(uint64_t log_time_ns) {
                       std::chrono::duration<double, std::nano>(wall_ns));
 }
 
+void ReplayClock::Pause(std::chrono::steady_clock::time_point now) {
+  if (paused_) return;
+  paused_ = true;
+  paused_at_ = now;
+}
+
+void ReplayClock::Resume(std::chrono::steady_clock::time_point now) {
+  if (!paused_) return;
+  paused_ = false;
+  if (now > paused_at_) start_ += now - paused_at_;
+}
+
 }  // namespace turf

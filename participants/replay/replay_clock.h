@@ -18,12 +18,19 @@ class ReplayClock {
   }
   // The moment the message logged at `log_time_ns` is due (at once for one before the origin).
   std::chrono::steady_clock::time_point Due(uint64_t log_time_ns);
+  // Pause at `now`; Resume at a later `now` moves every later message on by the time paused (a second Pause or a
+  // Resume while running changes nothing).
+  void Pause(std::chrono::steady_clock::time_point now);
+  void Resume(std::chrono::steady_clock::time_point now);
+  bool paused() const { return paused_; }
 
  private:
   double speed_;
   std::chrono::steady_clock::time_point start_;
   bool have_origin_ = false;
   uint64_t origin_ns_ = 0;
+  bool paused_ = false;
+  std::chrono::steady_clock::time_point paused_at_;
 };
 
 }  // namespace turf

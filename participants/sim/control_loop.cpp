@@ -60,6 +60,9 @@ ControlLoop::ControlLoop(dds::Bus& bus, const SimNodeOptions& options, Timing ti
       clock_writer_(bus.MakeWriter<idl::ClockPubSubType>(dds::Topic::kClock)),
       reply_writer_(bus.MakeWriter<idl::SimControlReplyPubSubType>(dds::Topic::kControlReply)),
       control_reader_(bus.MakeReader<idl::SimControlPubSubType>(dds::Topic::kControl, [this] { OnControl(); })),
+      run_writer_(bus.MakeWriter(dds::Topic::kSimRun)),
+      applied_(bus),
+      schedule_(options.resimulate.get()),
       time_(options.mode, options.speed, options.start_paused),
       rejects_("input") {}
 
@@ -88,7 +91,7 @@ class ControlLoop::RunLock {
 void ControlLoop::Run(const std::function<bool()>& stop) {
   {
     const RunLock lock(*this);
-    Resume();
+    PublishRun(Resume());
     // The run's epoch: the wall clock once, here; sim time then counts on from it.
     run_epoch_unix_ns_.store(UnixNowNs() - node_.TimeNs());
     PublishState();
@@ -106,6 +109,7 @@ void ControlLoop::Run(const std::function<bool()>& stop) {
       idle = !Iterate();
     }
     if (!idle) continue;
+    if (schedule_ != nullptr) break;  // re-simulating: nothing arrives later; the world cannot step any more
     wakeup_.WaitUntil(Pacer::Clock::now() + std::chrono::milliseconds(50));
     const RunLock lock(*this);
     pacer_.Anchor(Pacer::Clock::now(), node_.TimeNs());
@@ -124,10 +128,29 @@ bool ControlLoop::Iterate() {
     next_status_ = now + std::chrono::seconds(10);
   }
   if (!time_.CanStep()) return false;
-  if (time_.Paces()) Pace();
-  node_.Step();
-  AfterStep();
+  if (time_.Paces() && schedule_ == nullptr) Pace();
+  StepOnce();
   return true;
+}
+
+void ControlLoop::StepOnce() {
+  node_.Step();
+  ++steps_;
+  AfterStep();
+}
+
+void ControlLoop::PublishRun(bool resumed) {
+  const SceneSource& s = options_.scene_source;
+  idl::SimRun run;
+  run.kind(s.kind);
+  run.scene_name(s.name);
+  run.scene_path(s.path);
+  run.scene_dir(s.dir);
+  run.scene_yaml(s.yaml);
+  run.realism(s.realism);
+  run.seed(s.seed);
+  run.resumed(resumed);
+  run_writer_->Write(run);
 }
 
 void ControlLoop::OnControl() {
@@ -142,10 +165,7 @@ bool ControlLoop::ServeInCaller() {
   if (!lock.owns() || !running_) return false;
   TakeInputs();
   if (steps_on_request_.load() && time_.pending_steps() <= kInlineStepBudget) {
-    while (time_.CanStep() && (end_ns_ < 0 || node_.TimeNs() < end_ns_)) {
-      node_.Step();
-      AfterStep();
-    }
+    while (time_.CanStep() && (end_ns_ < 0 || node_.TimeNs() < end_ns_)) StepOnce();
   }
   // Whatever is left (real time runs on, a long STEP) goes on in the loop's thread.
   if (time_.CanStep()) Wake();
@@ -174,12 +194,41 @@ void ControlLoop::Pace() {
 }
 
 void ControlLoop::TakeInputs() {
+  if (schedule_ != nullptr) {
+    TakeScheduled();
+    return;
+  }
   node_.TakeCommands();
   if (control_reader_->Take(&control_inbox_)) {
-    for (const idl::SimControl& c : control_inbox_) HandleControl(c);
+    for (const idl::SimControl& c : control_inbox_) {
+      applied_.Took(dds::Topic::kControl, c);
+      HandleControl(c);
+    }
   }
+  applied_.Flush(steps_, node_.TimeNs());
   const uint64_t overflow = node_.CommandsOverflowed() + control_reader_->Overflowed();
   overflow_.Check(overflow, [this](const char* kind, const std::string& detail) { Reject(kind, detail); });
+  steps_on_request_.store(time_.paused() || time_.mode() == TimeMode::kLockstep);
+}
+
+void ControlLoop::TakeScheduled() {
+  const std::string control = dds::Topic::kControl.info().suffix;
+  while (const idl::AppliedInputs* record = schedule_->NextDue(steps_)) {
+    for (const idl::AppliedInput& in : record->inputs()) {
+      applied_.Took(in.topic(), in.cdr());
+      if (in.topic() != control) {
+        if (std::string e = node_.ApplyRecordedInput(in.topic(), in.cdr()); !e.empty()) schedule_->Fail(e);
+        continue;
+      }
+      idl::SimControl request;
+      if (FromCdr<idl::SimControlPubSubType>(in.cdr().data(), in.cdr().size(), &request)) {
+        HandleControl(request);
+      } else {
+        schedule_->Fail(fmt::format("applied inputs #{}: a control sample that is no SimControl", record->number()));
+      }
+    }
+    applied_.Flush(steps_, node_.TimeNs());
+  }
   steps_on_request_.store(time_.paused() || time_.mode() == TimeMode::kLockstep);
 }
 
@@ -286,20 +335,24 @@ void ControlLoop::AfterStep() {
   }
 }
 
-void ControlLoop::Resume() {
-  if (options_.resume_dir.empty()) return;
+bool ControlLoop::Resume() {
+  if (options_.resume_dir.empty()) return false;
   const std::string path = ResumePath(options_.resume_dir, options_.prefix);
   const ResumeRead read = ReadResumeFile(path, node_.SceneIdentity());
   if (!read.why_not.empty()) spdlog::warn("not resuming: {}; starting from the scene's start", read.why_not);
+  bool resumed = false;
   if (read.snapshot) {
-    if (const std::string e = node_.RestoreKernel(*read.snapshot); !e.empty())
+    if (const std::string e = node_.RestoreKernel(*read.snapshot); !e.empty()) {
       spdlog::warn("not resuming from {}: {}; starting from the scene's start", path, e);
-    else
+    } else {
       spdlog::info("resumed from {} at t={:.3f}s (frame {})", path, node_.TimeNs() * 1e-9, node_.Frame());
+      resumed = true;
+    }
   }
   const int64_t every_ns = std::max<int64_t>(timing_.step_ns, std::llround(options_.snapshot_every * 1e9));
   next_snapshot_ns_ = (node_.TimeNs() / every_ns + 1) * every_ns;
   spdlog::info("writing a snapshot every {} s of sim time to {}", every_ns * 1e-9, path);
+  return resumed;
 }
 
 // At the first step at or past each multiple of snapshot_every: a crash loses at most that much simulated time.

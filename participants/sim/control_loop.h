@@ -10,6 +10,10 @@
 //                                   advanced by the sim time reached at each
 //                                   reset), so epoch + sim time never goes back
 //   control_reply  SimControlReply  one per control request
+//   sim/run        SimRun           latched, at start: the scene source and seed (options.scene_source)
+//   sim/applied_inputs AppliedInputs after each poll that took inputs: what was applied at which step
+//                                   (applied_inputs.h); a re-simulation (options.resimulate) takes its
+//                                   inputs from a recorded schedule of these instead of from the readers
 // Subscribes:
 //   control        SimControl       pause/resume, step, reset, time mode here;
 //                                   teleports and realism go to the node
@@ -52,6 +56,7 @@
 #include "participants/common/overflow_watch.h"
 #include "participants/common/process.h"
 #include "participants/common/wakeup.h"
+#include "participants/sim/applied_inputs.h"
 #include "participants/sim/node_options.h"
 #include "participants/sim/pacer.h"
 
@@ -83,8 +88,12 @@ class ControlLoop : Pinned {
    public:
     virtual int64_t TimeNs() const = 0;
     virtual uint64_t Frame() const = 0;
-    // Takes the node's command topics (before each poll's control requests).
+    // Takes the node's command topics (before each poll's control requests); tells the loop each sample it takes
+    // (ControlLoop::Took) before applying it.
     virtual void TakeCommands() = 0;
+    // Re-simulation: applies a recorded sample of one of the node's command topics (its name without prefix) as
+    // TakeCommands would; "" or why it could not (an unknown topic, bytes that are no sample of its type).
+    virtual std::string ApplyRecordedInput(const std::string& topic, const std::vector<uint8_t>& cdr) = 0;
     // Samples the command readers dropped so far.
     virtual uint64_t CommandsOverflowed() const = 0;
     // One physics step, with whatever commands are due.
@@ -127,6 +136,11 @@ class ControlLoop : Pinned {
 
   // For the node's command readers' on_data callbacks (any thread).
   void Wake() { wakeup_.Notify(); }
+  // The node took `sample` from `topic` and applies it next (the applied-inputs record).
+  template <class PubSub>
+  void Took(const dds::TopicDef<PubSub>& topic, const dds::SampleOf<PubSub>& sample) {
+    applied_.Took(topic, sample);
+  }
   // Counts and logs (rate-limited) a refused input of `kind`.
   void Reject(const std::string& kind, const std::string& detail) { rejects_.Reject(kind, detail); }
   // Logs the time mode, as the last line of a node's startup report.
@@ -152,6 +166,11 @@ class ControlLoop : Pinned {
   bool ServeInCaller();
   void Pace();
   void TakeInputs();
+  // Re-simulation: the recorded inputs due at this step, each record applied and logged again as it was.
+  void TakeScheduled();
+  // One physics step and what follows it.
+  void StepOnce();
+  void PublishRun(bool resumed);
   void HandleControl(const idl::SimControl& request);
   ControlAnswer QueueSteps(const idl::SimControl& request);
   ControlAnswer SetTimeMode(idl::TimeMode mode, double speed);
@@ -160,7 +179,7 @@ class ControlLoop : Pinned {
   void AfterStep();
   void PublishState();
   // --resume-dir: continue from the match's resume file, if there is one; then write one every snapshot_every.
-  void Resume();
+  bool Resume();
   void WriteSnapshotIfDue();
 
   Node& node_;
@@ -184,6 +203,10 @@ class ControlLoop : Pinned {
   std::unique_ptr<dds::Writer<idl::ClockPubSubType>> clock_writer_;
   std::unique_ptr<dds::Writer<idl::SimControlReplyPubSubType>> reply_writer_;
   std::unique_ptr<dds::Reader<idl::SimControlPubSubType>> control_reader_;
+  std::unique_ptr<dds::Writer<idl::SimRunPubSubType>> run_writer_;
+  AppliedInputsLog applied_;
+  InputSchedule* schedule_ = nullptr;  // options_.resimulate
+  uint64_t steps_ = 0;                 // under run_mutex_: steps since Run started (resets do not restart it)
 
   TimeControl time_;                                   // modes, pause, STEP requests (kernel/time_control.h)
   std::map<uint64_t, idl::SimControl> step_requests_;  // by TimeControl token

@@ -61,8 +61,20 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
 
   void TakeCommands() override {
     if (command_reader_->Take(&command_inbox_)) {
-      for (const idl::JointCommand& c : command_inbox_) ApplyCommand(c);
+      for (const idl::JointCommand& c : command_inbox_) {
+        loop_.Took(dds::Topic::kRobotJointCommand, c);
+        ApplyCommand(c);
+      }
     }
+  }
+
+  std::string ApplyRecordedInput(const std::string& topic, const std::vector<uint8_t>& cdr) override {
+    if (topic != dds::Topic::kRobotJointCommand.info().suffix) return "a legged scene takes no input on " + topic;
+    idl::JointCommand c;
+    if (!FromCdr<idl::JointCommandPubSubType>(cdr.data(), cdr.size(), &c))
+      return "a recorded " + topic + " sample is no JointCommand";
+    ApplyCommand(c);
+    return {};
   }
 
   uint64_t CommandsOverflowed() const override { return command_reader_->Overflowed(); }

@@ -2,12 +2,27 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "participants/common/participant_options.h"
 #include "participants/sim/pacer.h"
 
 namespace turf {
+
+class InputSchedule;
+
+// The match as turf-sim loaded it, published latched on sim/run so a recording can be re-simulated from the file
+// alone (participants/replay/resimulate.h). Filled by turf-sim's start-up; empty in a node made without a file.
+struct SceneSource {
+  std::string kind;     // "ssl" or "legged"
+  std::string name;     // the scene's name
+  std::string path;     // the scene file as given
+  std::string dir;      // its absolute directory: relative paths in it (robot models) resolve against it
+  std::string yaml;     // the file's text
+  std::string realism;  // --realism as given (a preset or a file); empty: the scene's own
+  uint64_t seed = 0;
+};
 
 struct SimNodeOptions : ParticipantOptions {
   SimNodeOptions() { name = "turf-sim"; }
@@ -19,6 +34,10 @@ struct SimNodeOptions : ParticipantOptions {
   // into this directory, and a start continues from the one there. Empty: neither.
   std::string resume_dir;
   double snapshot_every = 1.0;
+  SceneSource scene_source;
+  // Re-simulation (turf replay --resimulate): the node takes its inputs from this recorded schedule at the steps it
+  // names instead of from its readers, never paces, and Run returns when the world cannot step any more.
+  std::shared_ptr<InputSchedule> resimulate;
 };
 
 struct SimNodeStats {

@@ -26,6 +26,9 @@ int64_t UnixNowNs() {
 }
 
 class SslNode final : public SimNode::Impl, private ControlLoop::Node {
+  static constexpr dds::TopicDef<idl::SslRobotCommandPubSubType> kCommandTopics[kTeamCount] = {
+      dds::Topic::kSslCommandBlue, dds::Topic::kSslCommandYellow};
+
  public:
   SslNode(Scene scene, SimNodeOptions options, dds::Bus* bus)
       : options_(std::move(options)),
@@ -65,8 +68,23 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
   void TakeCommands() override {
     for (int t = 0; t < kTeamCount; ++t) {
       if (!command_readers_[t]->Take(&command_inbox_)) continue;
-      for (const idl::SslRobotCommand& c : command_inbox_) ApplyCommand(c, static_cast<Team>(t));
+      for (const idl::SslRobotCommand& c : command_inbox_) {
+        loop_.Took(kCommandTopics[t], c);
+        ApplyCommand(c, static_cast<Team>(t));
+      }
     }
+  }
+
+  std::string ApplyRecordedInput(const std::string& topic, const std::vector<uint8_t>& cdr) override {
+    for (int t = 0; t < kTeamCount; ++t) {
+      if (topic != kCommandTopics[t].info().suffix) continue;
+      idl::SslRobotCommand c;
+      if (!FromCdr<idl::SslRobotCommandPubSubType>(cdr.data(), cdr.size(), &c))
+        return "a recorded " + topic + " sample is no SslRobotCommand";
+      ApplyCommand(c, static_cast<Team>(t));
+      return {};
+    }
+    return "an SSL scene takes no input on " + topic;
   }
 
   uint64_t CommandsOverflowed() const override {

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <utility>
@@ -14,6 +15,7 @@
 #include "loader/legged_scene_yaml.h"
 #include "loader/realism_yaml.h"
 #include "loader/scene_yaml.h"
+#include "loader/text_file.h"
 #include "participants/common/cli_checks.h"
 #include "participants/common/process.h"
 #include "participants/common/writer_watch.h"
@@ -70,8 +72,23 @@ int RunAlone(dds::Participant& dds, const std::function<void()>& run) {
 
 // Either kind of scene: the command line's realism, then turf-sim's node alone or with the front-end the command
 // line asks for in this process (sim_host.h); the other kind's front-end is refused.
+// What sim/run publishes: the scene file's text and directory, the realism flag and the seed, so a recording can
+// be re-simulated from the file alone (turf replay --resimulate).
+SceneSource SourceOf(const SimCommandLine& command_line, bool legged, const std::string& name, uint64_t seed) {
+  SceneSource s{legged ? "legged" : "ssl", name, command_line.scene_path, "", "", command_line.realism, seed};
+  std::error_code ec;
+  s.dir = std::filesystem::absolute(command_line.scene_path, ec).parent_path().string();
+  std::string error;
+  if (!ReadTextFile(command_line.scene_path, 1u << 20, &s.yaml, &error))
+    spdlog::warn("sim/run: cannot read {} again ({}): a recording of this run cannot be re-simulated",
+                 command_line.scene_path, error);
+  return s;
+}
+
 template <class SceneKind>
 int RunScene(SceneKind scene, const SimCommandLine& command_line, bool legged) {
+  SimNodeOptions options = command_line.node;
+  options.scene_source = SourceOf(command_line, legged, scene.name, scene.seed);
   if (!command_line.realism.empty()) {
     const std::optional<SensorRealism> r = LoadRealismOption(command_line.realism);
     if (!r) return kExitBadConfig;
@@ -93,11 +110,11 @@ int RunScene(SceneKind scene, const SimCommandLine& command_line, bool legged) {
     if (legged && command_line.rcssservermj) front_ends.rcssservermj = command_line.rcssservermj_options;
     if (legged && command_line.booster) front_ends.booster = command_line.booster_options;
     if (!legged) front_ends.simproto = command_line.simproto_options;
-    SimHost host(std::move(scene), command_line.node, std::move(front_ends));
+    SimHost host(std::move(scene), options, std::move(front_ends));
     return RunAlone(host.participant(), [&] { host.Run(StopRequested); });
   }
-  dds::Participant dds(DdsOptions(command_line.node));  // outlives the node
-  SimNode node(std::move(scene), command_line.node, dds);
+  dds::Participant dds(DdsOptions(options));  // outlives the node
+  SimNode node(std::move(scene), options, dds);
   return RunAlone(dds, [&] { node.Run(StopRequested); });
 }
 

@@ -6,6 +6,7 @@
 #include <turf/idl/JointsPubSubTypes.h>
 #include <turf/idl/SensorStatsPubSubTypes.h>
 #include <turf/idl/SimControlPubSubTypes.h>
+#include <turf/idl/SimRecordPubSubTypes.h>
 #include <turf/idl/SslRobotPubSubTypes.h>
 #include <turf/idl/SslVisionPubSubTypes.h>
 #include <turf/idl/WorldStatePubSubTypes.h>

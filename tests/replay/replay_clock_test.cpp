@@ -28,5 +28,20 @@ TEST(ReplayClock, AnOriginAfterTheFirstMessage) {
   EXPECT_EQ(clock.Due(12'000'000'000), start + 1s);
 }
 
+TEST(ReplayClock, APauseMovesEveryLaterMessageOnByItsLength) {
+  const auto start = std::chrono::steady_clock::time_point(100s);
+  ReplayClock clock(1.0, start);
+  EXPECT_EQ(clock.Due(1'000'000'000), start);
+  EXPECT_EQ(clock.Due(3'000'000'000), start + 2s);
+  clock.Pause(start + 1s);
+  EXPECT_TRUE(clock.paused());
+  clock.Pause(start + 2s);  // a second pause changes nothing
+  clock.Resume(start + 5s);
+  EXPECT_FALSE(clock.paused());
+  EXPECT_EQ(clock.Due(3'000'000'000), start + 6s);  // paused 4 s
+  clock.Resume(start + 9s);                         // not paused: nothing
+  EXPECT_EQ(clock.Due(3'000'000'000), start + 6s);
+}
+
 }  // namespace
 }  // namespace turf

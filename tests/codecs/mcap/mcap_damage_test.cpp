@@ -59,8 +59,11 @@ TEST_P(McapCut, EveryFlippedByteIsReadOrNamed) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Compressions, McapCut, ::testing::Values(Compression::kNone, Compression::kZstd),
-                         [](const auto& p) { return std::string(p.param == Compression::kZstd ? "zstd" : "none"); });
+INSTANTIATE_TEST_SUITE_P(Compressions, McapCut,
+                         ::testing::Values(Compression::kNone, Compression::kZstd, Compression::kLz4),
+                         [](const auto& p) {
+                           return std::string(p.param == Compression::kNone ? "none" : CompressionField(p.param));
+                         });
 
 TEST(McapDamage, ANewerMajorVersionIsRefusedWithTheReason) {
   std::string file = fixture::WriteFile(fixture::SomeMessages(3), Compression::kNone, 1024);

@@ -36,7 +36,7 @@ TEST_P(McapRoundTrip, ScanGivesBackEveryMessageInOrder) {
   EXPECT_EQ(info.schemas.at(1).name, "turf::idl::Clock");
   EXPECT_EQ(info.channels.at(2).metadata.at("qos"), "turf.state");
   EXPECT_GT(info.statistics.chunk_count, 5u);
-  const char* field = GetParam() == Compression::kZstd ? "zstd" : "";
+  const char* field = CompressionField(GetParam());
   EXPECT_EQ(info.chunks_by_compression.at(field), info.statistics.chunk_count);
 }
 
@@ -93,8 +93,11 @@ TEST_P(McapRoundTrip, ABigMessageClosesItsChunk) {
   EXPECT_EQ(info.channel_bytes.at(2), 100000u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Compressions, McapRoundTrip, ::testing::Values(Compression::kNone, Compression::kZstd),
-                         [](const auto& p) { return std::string(p.param == Compression::kZstd ? "zstd" : "none"); });
+INSTANTIATE_TEST_SUITE_P(Compressions, McapRoundTrip,
+                         ::testing::Values(Compression::kNone, Compression::kZstd, Compression::kLz4),
+                         [](const auto& p) {
+                           return std::string(p.param == Compression::kNone ? "none" : CompressionField(p.param));
+                         });
 
 TEST(McapRoundTripZstd, CompressesRepetitiveData) {
   std::vector<Sent> sent = fixture::SomeMessages(500);
