@@ -62,6 +62,16 @@ struct Received {
   }
 };
 
+// A reader of `topic` that keeps every sample in `into` and wakes `wait`.
+template <class PubSub, class Sample>
+auto Collect(dds::VendorParticipant& participant, const std::string& topic, Received<Sample>* into,
+             test::WakeWait* wait) {
+  return participant.MakeReader<PubSub>(topic, [into, wait](const Sample& s, int64_t) {
+    into->Add(s);
+    wait->Wake();
+  });
+}
+
 int64_t Stamp(const std_msgs::msg::dds_::Header_& h) {
   return static_cast<int64_t>(h.stamp().sec()) * 1'000'000'000 + h.stamp().nanosec();
 }
@@ -104,26 +114,10 @@ TEST_F(RenderDds, ImagesOfTheDeclaredSizeAndEncodingArriveWithCameraInfo) {
   Received<ros::Image_> head, chest;
   Received<ros::CompressedImage_> back;
   Received<ros::CameraInfo_> info;
-  auto r1 = dds.MakeReader<ros::Image_PubSubType>(Topic("camera", dds::CameraTopic::kImage),
-                                                  [&](const ros::Image_& s, int64_t) {
-                                                    head.Add(s);
-                                                    wait.Wake();
-                                                  });
-  auto r2 = dds.MakeReader<ros::Image_PubSubType>(Topic("chest", dds::CameraTopic::kImage),
-                                                  [&](const ros::Image_& s, int64_t) {
-                                                    chest.Add(s);
-                                                    wait.Wake();
-                                                  });
-  auto r3 = dds.MakeReader<ros::CompressedImage_PubSubType>(Topic("back", dds::CameraTopic::kCompressed),
-                                                            [&](const ros::CompressedImage_& s, int64_t) {
-                                                              back.Add(s);
-                                                              wait.Wake();
-                                                            });
-  auto r4 = dds.MakeReader<ros::CameraInfo_PubSubType>(Topic("camera", dds::CameraTopic::kCameraInfo),
-                                                       [&](const ros::CameraInfo_& s, int64_t) {
-                                                         info.Add(s);
-                                                         wait.Wake();
-                                                       });
+  auto r1 = Collect<ros::Image_PubSubType>(dds, Topic("camera", dds::CameraTopic::kImage), &head, &wait);
+  auto r2 = Collect<ros::Image_PubSubType>(dds, Topic("chest", dds::CameraTopic::kImage), &chest, &wait);
+  auto r3 = Collect<ros::CompressedImage_PubSubType>(dds, Topic("back", dds::CameraTopic::kCompressed), &back, &wait);
+  auto r4 = Collect<ros::CameraInfo_PubSubType>(dds, Topic("camera", dds::CameraTopic::kCameraInfo), &info, &wait);
   test::Process render = Render(scene);
   test::Process sim = Sim(scene);
   ASSERT_TRUE(
@@ -171,16 +165,8 @@ TEST_F(RenderDds, CamerasSelectsWhichOnesThisRendererDraws) {
   dds::VendorParticipant dds(dds::VendorOptions{domain_, "render-test", "", true});
   test::WakeWait wait;
   Received<ros::Image_> head, chest;
-  auto r1 = dds.MakeReader<ros::Image_PubSubType>(Topic("camera", dds::CameraTopic::kImage),
-                                                  [&](const ros::Image_& s, int64_t) {
-                                                    head.Add(s);
-                                                    wait.Wake();
-                                                  });
-  auto r2 = dds.MakeReader<ros::Image_PubSubType>(Topic("chest", dds::CameraTopic::kImage),
-                                                  [&](const ros::Image_& s, int64_t) {
-                                                    chest.Add(s);
-                                                    wait.Wake();
-                                                  });
+  auto r1 = Collect<ros::Image_PubSubType>(dds, Topic("camera", dds::CameraTopic::kImage), &head, &wait);
+  auto r2 = Collect<ros::Image_PubSubType>(dds, Topic("chest", dds::CameraTopic::kImage), &chest, &wait);
   test::Process render = Render(scene, {"--cameras", "t1/chest"});
   test::Process sim = Sim(scene);
   ASSERT_TRUE(wait.Until(Clock::now() + seconds(60), [&] { return chest.Count() >= 5; })) << render.Log();
@@ -205,11 +191,7 @@ TEST_F(RenderDds, ARendererThatFallsBehindDropsFramesAndNeverHoldsThePhysics) {
   dds::VendorParticipant dds(dds::VendorOptions{domain_, "render-test", "", true});
   test::WakeWait wait;
   Received<ros::Image_> head;
-  auto r1 = dds.MakeReader<ros::Image_PubSubType>(Topic("camera", dds::CameraTopic::kImage),
-                                                  [&](const ros::Image_& s, int64_t) {
-                                                    head.Add(s);
-                                                    wait.Wake();
-                                                  });
+  auto r1 = Collect<ros::Image_PubSubType>(dds, Topic("camera", dds::CameraTopic::kImage), &head, &wait);
   test::Process render = Render(scene);
   // The renderer is up (its image writer matched this reader) before turf-sim starts. Discovery wakes nothing
   // here: look every 100 ms until the deadline.
@@ -247,11 +229,7 @@ TEST_F(RenderDds, AStateWithANanPoseIsRefusedAndTheNextOneRendered) {
   dds::VendorParticipant images(dds::VendorOptions{domain_, "render-test", "", true});
   test::WakeWait wait;
   Received<ros::Image_> head;
-  auto r1 = images.MakeReader<ros::Image_PubSubType>(Topic("camera", dds::CameraTopic::kImage),
-                                                     [&](const ros::Image_& s, int64_t) {
-                                                       head.Add(s);
-                                                       wait.Wake();
-                                                     });
+  auto r1 = Collect<ros::Image_PubSubType>(images, Topic("camera", dds::CameraTopic::kImage), &head, &wait);
   dds::ParticipantOptions o;
   o.domain = domain_;
   o.prefix = prefix_;

@@ -16,6 +16,8 @@
 #include <optional>
 #include <string>
 
+#include "tests/support/tcp_connect.h"
+
 namespace turf::test {
 
 class AgentClient {
@@ -26,31 +28,11 @@ class AgentClient {
   AgentClient& operator=(const AgentClient&) = delete;
   AgentClient(AgentClient&& o) noexcept : fd_(o.fd_), in_(std::move(o.in_)) { o.fd_ = -1; }
 
-  // To 127.0.0.1:port, from `source` (an IPv4 address of this machine, e.g. another loopback address such as
-  // 127.0.0.2) when given.
+  // To 127.0.0.1:port, from `source` when given (tests/support/tcp_connect.h).
   bool Connect(uint16_t port, const char* source = nullptr) {
     Close();
-    fd_ = socket(AF_INET, SOCK_STREAM, 0);
-    if (source != nullptr) {
-      sockaddr_in from{};
-      from.sin_family = AF_INET;
-      if (inet_pton(AF_INET, source, &from.sin_addr) != 1 ||
-          bind(fd_, reinterpret_cast<sockaddr*>(&from), sizeof(from)) != 0) {
-        Close();
-        return false;
-      }
-    }
-    sockaddr_in addr{};
-    addr.sin_family = AF_INET;
-    addr.sin_port = htons(port);
-    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    if (connect(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) != 0) {
-      Close();  // a caller may try again
-      return false;
-    }
-    const int one = 1;
-    setsockopt(fd_, IPPROTO_TCP, TCP_NODELAY, &one, sizeof(one));
-    return true;
+    fd_ = ConnectLoopback(port, source);
+    return fd_ >= 0;
   }
   void Close() {
     if (fd_ >= 0) close(fd_);
