@@ -7,11 +7,15 @@
 #include <turf/idl/ClockPubSubTypes.h>
 #include <turf/idl/SslVisionPubSubTypes.h>
 #include <turf/idl/WorldStatePubSubTypes.h>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <thread>
 
@@ -20,6 +24,7 @@
 #include "participants/viewer/recording.h"
 #include "tests/support/process.h"
 #include "tests/viewer/web_client.h"
+#include "tests/viewer/webdriver.h"
 
 namespace turf {
 namespace {
@@ -222,6 +227,70 @@ TEST(RecordingViewer, RefusesAFileThatIsNoMcapWithExitStatus2) {
   ASSERT_TRUE(status.has_value());
   EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 2) << viewer.process().Log();
   EXPECT_NE(viewer.process().Log().find("bad_magic"), std::string::npos) << viewer.process().Log();
+}
+
+// Polls `done` for up to `ms` (a page's state changes only when it fetches one).
+bool Within(int ms, const std::function<bool()>& done) {
+  const auto end = SteadyClock::now() + std::chrono::milliseconds(ms);
+  while (SteadyClock::now() < end) {
+    if (done()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
+// The page in headless Chromium: the slider bar appears, the live controls hide, a seek shows the recorded
+// state of that time, Play moves time on. Skipped without Chromium.
+TEST(RecordingViewerBrowser, TheSliderSeeksAndPlayMovesTheRecordedWorld) {
+  const std::string chromium = test::FindExecutable({"chromium", "chromium-browser", "google-chrome"});
+  const std::string chromedriver = test::FindExecutable({"chromedriver"});
+  if (chromium.empty() || chromedriver.empty()) GTEST_SKIP() << "headless Chromium not installed";
+  const std::string file = WriteFile("viewer_recording_browser.mcap", Recording());
+  RecordingViewerProcess viewer(file);
+  ASSERT_EQ(GetWhenUp(viewer.port(), "/recording/info").status, 200) << viewer.process().Log();
+  const int driver_port = test::FreeTcpPort();
+  test::Process driver_process("chromedriver_recording", {chromedriver, "--port=" + std::to_string(driver_port)});
+  const std::string profile = TURF_BINARY_DIR "/tests/viewer/chrome_profile_rec_" + std::to_string(getpid());
+  std::filesystem::remove_all(profile);
+  std::filesystem::create_directories(profile);
+  {
+    test::WebDriver driver(driver_port);
+    ASSERT_TRUE(driver.WaitReady(10000)) << driver_process.Log();
+    ASSERT_TRUE(driver.NewSession(chromium, profile, 1280, 800)) << driver.error();
+    ASSERT_TRUE(driver.Navigate("http://127.0.0.1:" + std::to_string(viewer.port()) + "/")) << driver.error();
+    auto page_time = [&] {
+      const auto t = driver.Execute("const s = window.turfViewer.state(); return s ? s.t : -1;");
+      return t && t->is_number() ? t->get<double>() : -1.0;
+    };
+    // At start the page shows the first state, with the slider bar and without the simulation controls.
+    ASSERT_TRUE(Within(10000, [&] { return std::abs(page_time() - 0.01) < 1e-9; })) << viewer.process().Log();
+    const auto shown = driver.Execute(
+        "return [!document.getElementById('recording-bar').classList.contains('hidden'),"
+        " document.getElementById('pause').offsetParent === null,"
+        " document.getElementById('realism').offsetParent === null,"
+        " document.getElementById('connection').textContent];");
+    ASSERT_TRUE(shown.has_value());
+    EXPECT_EQ(*shown, json({true, true, true, "recording"}));
+    // A seek (what the slider's input does) shows the state at or before that time.
+    ASSERT_TRUE(driver.Execute("window.turfRecording.seek(1.234); return true;"));
+    EXPECT_TRUE(Within(5000, [&] { return std::abs(page_time() - 1.23) < 1e-9; })) << page_time();
+    const auto ball = driver.Execute("return window.turfViewer.state().ball.p[0];");
+    EXPECT_TRUE(ball && std::abs(ball->get<double>() - 0.123) < 1e-6);
+    // Play at 10x: time moves on and stops at the end.
+    const auto speed = driver.Find("#rec-speed option[value='10']");
+    ASSERT_TRUE(speed && driver.Click(*speed)) << driver.error();
+    const auto play = driver.Find("#rec-play");
+    ASSERT_TRUE(play && driver.Click(*play)) << driver.error();
+    EXPECT_TRUE(Within(10000, [&] { return std::abs(page_time() - 2.0) < 1e-9; })) << page_time();
+    const auto playing = driver.Execute("return window.turfRecording.playing();");
+    EXPECT_TRUE(playing && *playing == false);
+    const auto png = driver.Screenshot();
+    if (png) {
+      std::filesystem::create_directories(TURF_BINARY_DIR "/tests/viewer/artifacts");
+      std::ofstream(TURF_BINARY_DIR "/tests/viewer/artifacts/recording.png", std::ios::binary) << *png;
+    }
+  }
+  std::filesystem::remove_all(profile);
 }
 
 // In process: the index over a string, and the query parser.
