@@ -98,6 +98,9 @@ Recording::Kind KindOf(const mcap::FileInfo& info, const mcap::Channel& c) {
   return Recording::kKinds;
 }
 
+// To the microsecond, as the state messages' times (json_util.h).
+double Seconds(int64_t ns) { return std::round(static_cast<double>(ns) * 1e-3) * 1e-6; }
+
 int64_t ToNs(uint64_t publish_time) {
   return static_cast<int64_t>(std::min<uint64_t>(publish_time, static_cast<uint64_t>(INT64_MAX)));
 }
@@ -189,11 +192,11 @@ std::string Recording::StatsJsonAt(int64_t t_ns) const {
 std::string Recording::InfoJson(const std::string& file) const {
   nlohmann::json j = {{"type", "recording"},
                       {"file", file},
-                      {"states", samples_[kState].size() + samples_[kLinks].size()},
+                      {"states", (samples_[kState].empty() ? samples_[kLinks] : samples_[kState]).size()},
                       {"damage", damage_.ok() ? std::string() : damage_.Describe()}};
   if (const auto span = Span()) {
-    j["start"] = static_cast<double>(span->first) * 1e-9;
-    j["end"] = static_cast<double>(span->second) * 1e-9;
+    j["start"] = Seconds(span->first);
+    j["end"] = Seconds(span->second);
   }
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }

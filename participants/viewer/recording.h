@@ -55,7 +55,7 @@ class Recording {
   std::string FieldJson() const;
   std::string StateJsonAt(int64_t t_ns) const;
   std::string StatsJsonAt(int64_t t_ns) const;
-  // {"type":"recording", start, end (s), states, damage ("" or where it is)}.
+  // {"type":"recording", start, end (s, to the microsecond), states (in the span), damage ("" or where it is)}.
   std::string InfoJson(const std::string& file) const;
 
  private:

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <turf/idl/ClockPubSubTypes.h>
+#include <turf/idl/JointsPubSubTypes.h>
 #include <turf/idl/SslVisionPubSubTypes.h>
 #include <turf/idl/WorldStatePubSubTypes.h>
 #include <unistd.h>
@@ -304,6 +305,65 @@ TEST(RecordingIndex, KeepsOnlyTheShownTopicsAndSkipsTheRest) {
   EXPECT_EQ(r.skipped(), static_cast<uint64_t>(kStates));  // the command channel
   EXPECT_FALSE(r.FieldJson().empty());
   EXPECT_TRUE(r.StatsJsonAt(1'000'000'000).empty());  // no stats recorded
+}
+
+// A legged scene: robots "a" (links every 10 ms to 100 ms, at x = 1 m per 10 ms) and "b" (links at 50 ms only).
+std::string LeggedRecording() {
+  mcap::StringSink sink;
+  mcap::Writer writer(&sink, {});
+  const uint16_t scene_schema = writer.AddSchema("turf::idl::LeggedSceneInfo", "omgidl", "");
+  const uint16_t links_schema = writer.AddSchema("turf::idl::LinkState", "omgidl", "");
+  const uint16_t scene = writer.AddChannel(scene_schema, "turf/legged/scene", "cdr");
+  const uint16_t links = writer.AddChannel(links_schema, "turf/robots/links", "cdr");
+  idl::LeggedSceneInfo info;
+  info.name("two");
+  for (const char* name : {"a", "b"}) {
+    idl::RobotDescription r;
+    r.robot(name);
+    idl::RobotGeom g;
+    g.body("torso");
+    g.shape(idl::GEOM_SPHERE);
+    g.size().x(0.1);
+    g.orientation().w(1.0);
+    r.geoms().push_back(g);
+    info.robots().push_back(r);
+  }
+  writer.Write(scene, 0, 1, 0, Cdr<idl::LeggedSceneInfoPubSubType>(info));
+  auto pose = [&](const char* robot, int i) {
+    idl::LinkState l;
+    l.robot(robot);
+    l.sim_time_ns(i * kStepNs);
+    l.frame(static_cast<uint64_t>(i));
+    idl::LinkPose p;
+    p.name("torso");
+    p.position().x(i);
+    p.orientation().w(1.0);
+    l.links().push_back(p);
+    writer.Write(links, static_cast<uint32_t>(i), 2, static_cast<uint64_t>(i * kStepNs),
+                 Cdr<idl::LinkStatePubSubType>(l));
+  };
+  for (int i = 1; i <= 10; ++i) {
+    pose("a", i);
+    if (i == 5) pose("b", i);
+  }
+  writer.Close();
+  return sink.bytes();
+}
+
+TEST(RecordingIndex, ALeggedSceneShowsEachRobotsNewestLinksAtOrBeforeT) {
+  const std::string bytes = LeggedRecording();
+  const viewer::Recording r{mcap::StringSource(bytes)};
+  ASSERT_TRUE(r.damage().ok()) << r.damage().Describe();
+  EXPECT_EQ(json::parse(r.FieldJson())["type"], "legged");
+  const json at = json::parse(r.StateJsonAt(75'000'000));
+  EXPECT_DOUBLE_EQ(at["t"].get<double>(), 0.07);
+  EXPECT_DOUBLE_EQ(at["links"]["a"][0].get<double>(), 7.0);
+  EXPECT_DOUBLE_EQ(at["links"]["b"][0].get<double>(), 5.0);
+  // 0.3 s: a's newest (0.1 s) is within the 0.2 s window, b's (0.05 s) no longer.
+  const json late = json::parse(r.StateJsonAt(300'000'000));
+  EXPECT_DOUBLE_EQ(late["links"]["a"][0].get<double>(), 10.0);
+  EXPECT_FALSE(late["links"].contains("b"));
+  EXPECT_TRUE(r.StateJsonAt(5'000'000).empty());  // before the first
 }
 
 TEST(RecordingIndex, ReadsTheTimeOfAQuery) {
