@@ -1,8 +1,10 @@
 // turf-viewer: a live web view of a turf match with grSim's controls (drag
 // robots and the ball, pause, step, reset, speed), served from DDS to any
 // browser. Topics and protocol: viewer_node.h, viewer_json.h, page_request.h.
+// With --recording FILE: a turf-record file with a time slider instead (recording_viewer.h).
 #include "participants/common/participant_main.h"
 #include "participants/common/process.h"
+#include "participants/viewer/recording_viewer.h"
 #include "participants/viewer/viewer_node.h"
 
 int main(int argc, char** argv) {
@@ -20,7 +22,13 @@ int main(int argc, char** argv) {
   app.add_option("--rate", options.rate_hz, "state messages to the page per second, at most")
       ->capture_default_str()
       ->check(CLI::Range(1.0, 1000.0));
+  app.add_option("--recording", options.recording,
+                 "show this turf-record MCAP file instead of DDS, with a time slider (no DDS; see README)");
   return participant.Run(argc, argv, [&] {
+    if (!options.recording.empty()) {
+      turf::RecordingViewer(options).Run(turf::StopRequested);
+      return turf::kExitClean;
+    }
     turf::ViewerNode(options).Run(turf::StopRequested);
     return turf::kExitClean;
   });

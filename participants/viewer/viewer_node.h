@@ -39,6 +39,7 @@ struct ViewerOptions : ParticipantOptions {
   uint16_t port = 8080;   // 0: any free port (see ViewerNode::port())
   std::string web_root;   // must hold index.html
   double rate_hz = 60.0;  // state messages to the pages, at most
+  std::string recording;  // an MCAP file to show instead of DDS (recording_viewer.h); empty: live
 };
 
 struct ViewerStats {

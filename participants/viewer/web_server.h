@@ -22,7 +22,9 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "core/pinned.h"
 
@@ -47,6 +49,9 @@ struct WebServerHandlers {
   std::function<void(uint64_t client, std::string text)> on_message;
   // Input refused by the server itself, e.g. "page.binary", "http.bad_target".
   std::function<void(uint64_t client, const std::string& kind, const std::string& detail)> on_refused;
+  // A GET or HEAD of a target under /recording/ (query included), answered with this JSON, or 404 when it
+  // gives nullopt (on the I/O thread: it must be quick and thread-safe). Unset: those targets are files too.
+  std::function<std::optional<std::string>(std::string_view target)> on_get;
 };
 
 struct WebServerStats {

@@ -91,6 +91,25 @@ void HttpSession::Upgrade(http::request<http::string_body> request) {
   std::make_shared<PageSession>(std::move(stream_), slot_.ptr())->Start(std::move(request));
 }
 
+http::response<http::string_body> HttpSession::DynamicResponse(const http::request<http::string_body>& request) {
+  const std::optional<std::string> body = slot_.shared().handlers.on_get(Std(request.target()));
+  if (!body) return Plain(http::status::not_found, request.version(), request.keep_alive(), "not found\n");
+  http::response<http::string_body> res{http::status::ok, request.version()};
+  res.set(http::field::server, kServer);
+  res.set(http::field::content_type, "application/json");
+  res.set(http::field::cache_control, "no-store");
+  res.set("X-Content-Type-Options", "nosniff");
+  res.set("Content-Security-Policy", kPolicy);
+  res.keep_alive(request.keep_alive());
+  if (request.method() == http::verb::head) {
+    res.content_length(body->size());
+  } else {
+    res.body() = *body;
+    res.prepare_payload();
+  }
+  return res;
+}
+
 http::response<http::string_body> HttpSession::StaticResponse(const http::request<http::string_body>& request) {
   const unsigned version = request.version();
   const bool keep_alive = request.keep_alive();
@@ -100,6 +119,8 @@ http::response<http::string_body> HttpSession::StaticResponse(const http::reques
     res.set(http::field::allow, "GET, HEAD");
     return res;
   }
+  if (slot_.shared().handlers.on_get && Std(request.target()).rfind("/recording/", 0) == 0)
+    return DynamicResponse(request);
   const std::optional<std::string> file = StaticFile(Std(request.target()));
   if (!file) {
     slot_.shared().Refuse(0, "http.bad_target", "target '" + Clip(request.target()) + "'");

@@ -68,6 +68,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   void Upgrade(http::request<http::string_body> request);
   void Respond(http::response<http::string_body> response);
   http::response<http::string_body> StaticResponse(const http::request<http::string_body>& request);
+  http::response<http::string_body> DynamicResponse(const http::request<http::string_body>& request);
 
   beast::tcp_stream stream_;
   beast::flat_buffer buffer_;

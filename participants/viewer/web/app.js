@@ -34,6 +34,7 @@
     scale: 1, ox: 0, oy: 0, dpr: 1,
     drawn: false,           // a state is on the canvas since the last layout
     received: {},           // messages by type, for the console and tests
+    recording: false,       // turf-viewer --recording: states come from recording.js, controls are hidden
   };
 
   // --- geometry: field metres <-> canvas CSS pixels ---
@@ -375,7 +376,10 @@
     const live = !s.viewer || s.viewer.control;
     const gone = s.viewer && s.viewer.gone_since ? new Date(s.viewer.gone_since) : null;
     const badge = $('connection');
-    if (view.ws && view.ws.readyState === WebSocket.OPEN) {
+    if (view.recording) {
+      setText('connection', 'recording');
+      badge.classList.remove('warn');
+    } else if (view.ws && view.ws.readyState === WebSocket.OPEN) {
       setText('connection', live ? 'live' : gone ? `turf-sim gone since ${gone.toLocaleTimeString()}` : 'view only');
       badge.classList.toggle('warn', !live);
       badge.title = live ? '' : gone ? 'turf-sim stopped: this is the last state it published'
@@ -686,6 +690,9 @@
     ready: () => !!(sceneKnown() && view.cur && view.drawn && view.cur.viewer && view.cur.viewer.control &&
       view.ws && view.ws.readyState === WebSocket.OPEN),
     state: () => view.cur,
+    // recording.js: a message fetched over HTTP, handled as if the WebSocket had brought it.
+    deliver: (text) => onMessage({ data: text }),
+    setRecording: (on) => { view.recording = on; },
     received: () => ({ ...view.received, socket: view.ws ? view.ws.readyState : -1 }),
     field: () => view.field,
     legged: () => view.legged,
