@@ -15,7 +15,7 @@
 #   bench/run.sh render [sim seconds]    camera rendering (issue 16): frames/s for 1, 4, 10 cameras at 320x240 and
 #                                        640x480 (turf-bench-render), and turf-sim's speed alone and next to a
 #                                        turf-render drawing 4 cameras
-#   bench/run.sh record [sim seconds]    recording cost: turf-sim free-running alone and with turf-record on its
+#   bench/run.sh record [sim seconds]    recording cost (SSL 2x11 and 22 Naos): turf-sim free-running alone and with turf-record on its
 #                                        domain; the recorder's CPU, peak memory and MB per simulated minute
 #   bench/run.sh ut-agents --ut-agent PATH --agent-dir DIR
 #                                        real 3D-league agents (UT Austin Villa's base agent, built outside turf)
@@ -183,26 +183,26 @@ render() {
   render_sim_speed
 }
 
-# One turf-sim run of the SSL 2x11 match (realistic sensors) at --speed max on a private domain; prints its wall
-# seconds without the 1.5 s discovery window it waits at start.
+# One turf-sim run of SCENE (realistic sensors) at --speed max on a private domain; prints its wall seconds without
+# the 1.5 s discovery window it waits at start.
 record_sim() {
-  local domain=$1 prefix=$2 t0 t1
+  local domain=$1 prefix=$2 scene=$3 t0 t1
   t0=$(date +%s.%N)
-  "$BUILD_DIR/participants/sim/turf-sim" --scene configs/scenes/ssl_div_a.yaml --realism realistic -d "$domain" \
+  "$BUILD_DIR/participants/sim/turf-sim" --scene "$scene" --realism realistic -d "$domain" \
     -p "$prefix" --speed max --duration "$SECONDS_SIM" --log-level warn
   t1=$(date +%s.%N)
   awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a - 1.5 }'
 }
 
-# Recording cost (issue 17): turf-sim free-running alone, then with turf-record on its domain (zstd, the default).
-record() {
-  local domain=$((100 + RANDOM % 50)) prefix="bench$$" dir alone with rec tck stat cpu hwm bytes
+# One row: turf-sim free-running on SCENE alone, then with turf-record on its domain (zstd, the default).
+record_row() {
+  local label=$1 scene=$2 domain=$((100 + RANDOM % 50)) prefix="bench$$" dir alone with rec tck stat cpu hwm bytes
   dir=$(mktemp -d)
   tck=$(getconf CLK_TCK)
-  alone=$(record_sim "$domain" "$prefix")
+  alone=$(record_sim "$domain" "$prefix" "$scene")
   "$BUILD_DIR/participants/recorder/turf-record" "$dir/match.mcap" -d "$domain" -p "$prefix" --log-level warn &
   rec=$!
-  with=$(record_sim "$domain" "$prefix")
+  with=$(record_sim "$domain" "$prefix" "$scene")
   # The recorder's CPU (user + system) and peak resident memory so far, then Ctrl-C closes its file.
   stat=$(cut -d' ' -f14,15 "/proc/$rec/stat")
   cpu=$(awk -v s="$stat" -v t="$tck" 'BEGIN { split(s, f, " "); printf "%.2f", (f[1] + f[2]) / t }')
@@ -210,14 +210,20 @@ record() {
   kill -INT "$rec"
   wait "$rec" || true
   bytes=$(stat -c %s "$dir/match.mcap")
-  echo "Recording cost: SSL division A 2x11, realistic sensors, ${SECONDS_SIM} s of sim time at --speed max; $(nproc) cores"
-  echo "| turf-sim alone s | turf-sim with recorder s | RTF alone | RTF recorded | recorder CPU s | recorder MiB (peak) | MB per sim minute |"
-  echo "| --- | --- | --- | --- | --- | --- | --- |"
-  awk -v a="$alone" -v w="$with" -v c="$cpu" -v m="$hwm" -v b="$bytes" -v s="$SECONDS_SIM" 'BEGIN {
-    printf "| %.2f | %.2f | %.1f | %.1f | %s | %s | %.2f |\n", a, w, s / a, s / w, c, m, b / 1e6 / s * 60 }'
+  awk -v l="$label" -v a="$alone" -v w="$with" -v c="$cpu" -v m="$hwm" -v b="$bytes" -v s="$SECONDS_SIM" 'BEGIN {
+    printf "| %s | %.2f | %.2f | %.1f | %.1f | %s | %s | %.2f |\n", l, a, w, s / a, s / w, c, m, b / 1e6 / s * 60 }'
+  rm -rf "$dir"
+}
+
+# Recording cost (issue 17): the SSL 2x11 match and a 22-robot legged match, each alone and recorded.
+record() {
+  echo "Recording cost: realistic sensors, ${SECONDS_SIM} s of sim time at --speed max; $(nproc) cores"
+  echo "| match | turf-sim alone s | turf-sim with recorder s | RTF alone | RTF recorded | recorder CPU s | recorder MiB (peak) | MB per sim minute |"
+  echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
+  record_row "SSL division A 2x11" configs/scenes/ssl_div_a.yaml
+  record_row "SimSpark 22 Naos (legged)" configs/scenes/simspark_match.yaml
   echo "turf-sim's wall time without its 1.5 s discovery window; RTF: simulated s per wall s. One run each; the file"
   echo "is zstd-compressed (the recorder's default)."
-  rm -rf "$dir"
 }
 
 # Optional: only with the agent's binary and source directory (bench/ut_agents/run_match.sh --help).
