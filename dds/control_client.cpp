@@ -21,7 +21,7 @@ bool ValidReply(const idl::SimControlReply& r) {
   const auto op = static_cast<uint32_t>(r.op());
   const auto result = static_cast<uint32_t>(r.result());
   const auto error = static_cast<uint32_t>(r.error());
-  if (op > static_cast<uint32_t>(idl::OP_SET_REALISM)) return false;
+  if (op > static_cast<uint32_t>(idl::OP_SEEK)) return false;
   if (result > static_cast<uint32_t>(idl::RESULT_REJECTED)) return false;
   if (error >= static_cast<uint32_t>(Error::kCount)) return false;  // any code of the taxonomy
   // A success carries no error code, a refusal one.

@@ -51,6 +51,10 @@ int main(int argc, char** argv) {
                  "stop this many seconds (of recorded time) after the first message (0: at the end of the file)")
       ->check(CLI::Range(0.0, 1e9))
       ->capture_default_str();
+  bool no_stdin = false;
+  app.add_flag("--no-stdin", no_stdin,
+               "ignore the standard input (by default it takes commands, one per line: pause, resume, seek SECONDS of "
+               "simulation time, speed X or speed max)");
   app.add_flag("--wait-for-reader", options.wait_for_reader,
                "before the first message, wait (up to 30 s) until a reader of a replayed topic is matched");
   bool resimulate = false;
@@ -70,9 +74,10 @@ int main(int argc, char** argv) {
       return r.identical ? turf::kExitClean : turf::kExitFailure;
     }
     options.speed = speed == "max" ? 0.0 : std::stod(speed);
+    options.stdin_commands = !no_stdin;
     std::signal(SIGUSR1, TogglePause);
     options.paused = [] { return g_paused.load(); };
-    spdlog::info("pause and resume: kill -USR1 {}", ::getpid());
+    spdlog::info("pause and resume: kill -USR1 {} (or the control topic: pause, resume, speed, seek)", ::getpid());
     turf::Replay(options, turf::StopRequested);
     return turf::kExitClean;
   });

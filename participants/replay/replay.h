@@ -9,9 +9,18 @@
 // deserialize is refused and counted; a damaged file is played up to the damage, which is logged.
 // --start S begins S seconds (of recorded receive time) after the first message: earlier messages are skipped,
 // except those of latched topics (the field), which are published at once so a viewer has them.
-// --end S stops S seconds (of recorded receive time) after the first message. Pausing: while `paused()` answers
-// true (turf-replay: SIGUSR1 toggles it) nothing is published and the pacing clock stands still; playing resumes
-// where it stopped. Re-simulation (--resimulate) is resimulate.h.
+// --end S stops S seconds (of recorded receive time) after the first message.
+// Control while playing (replay_control.h: turf-sim's control topics, so the viewer's pause button works here):
+// - pause and resume (also a toggle of `paused()`; turf-replay: SIGUSR1): while paused nothing is published and the
+//   pacing clock stands still; playing resumes where it stopped;
+// - speed (OP_SET_TIME_MODE): from the last published message on;
+// - seek (OP_SEEK, simulation time): playing goes on from the first output whose simulation time is at or after the
+//   target (latched topics are always published). Forward, the file is read on without publishing; back, it is
+//   read again from its start (a seek back in a long recording takes the time of reading up to the target). The
+//   reply comes when the target is reached, or is refused (CONTROL_OUT_OF_RANGE) if the file ends first.
+// - the same from the standard input with `stdin_commands` (replay_keys.h: pause, resume, seek S, speed X).
+// The recorded control replies are not replayed: they answered the recorded match's clients.
+// Re-simulation (--resimulate) is resimulate.h.
 #pragma once
 
 #include <cstdint>
@@ -31,6 +40,7 @@ struct ReplayOptions : ParticipantOptions {
   std::function<bool()> paused;  // while it answers true, playing waits (null: never)
   // Before the first message: wait (up to 30 s) until a reader of some replayed topic is matched.
   bool wait_for_reader = false;
+  bool stdin_commands = false;  // read terminal commands (replay_keys.h) from the standard input
   double progress_interval_s = 10.0;
 };
 
@@ -39,6 +49,7 @@ struct ReplayTotals {
   uint64_t skipped = 0;       // inputs and channels of no known topic
   uint64_t refused = 0;       // CDR that did not deserialize
   uint64_t before_start = 0;  // skipped by --start
+  uint64_t seeks = 0;         // OP_SEEK requests carried out
   bool reached_end = false;   // stopped by --end
 };
 

@@ -13,6 +13,14 @@ std::chrono::steady_clock::time_point ReplayClock::Due(uint64_t log_time_ns) {
                       std::chrono::duration<double, std::nano>(wall_ns));
 }
 
+void ReplayClock::Rebase(uint64_t log_time_ns, double speed, std::chrono::steady_clock::time_point now) {
+  speed_ = speed;
+  start_ = now;
+  have_origin_ = true;
+  origin_ns_ = log_time_ns;
+  if (paused_) paused_at_ = now;
+}
+
 void ReplayClock::Pause(std::chrono::steady_clock::time_point now) {
   if (paused_) return;
   paused_ = true;

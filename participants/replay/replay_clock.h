@@ -16,6 +16,10 @@ class ReplayClock {
     have_origin_ = true;
     origin_ns_ = log_time_ns;
   }
+  // From `now` on, the message logged at `log_time_ns` is due at once and later ones at `speed` (a seek or a new
+  // speed); a pause stays in force, counted from `now`.
+  void Rebase(uint64_t log_time_ns, double speed, std::chrono::steady_clock::time_point now);
+  double speed() const { return speed_; }
   // The moment the message logged at `log_time_ns` is due (at once for one before the origin).
   std::chrono::steady_clock::time_point Due(uint64_t log_time_ns);
   // Pause at `now`; Resume at a later `now` moves every later message on by the time paused (a second Pause or a

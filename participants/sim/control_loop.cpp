@@ -260,6 +260,9 @@ void ControlLoop::HandleControl(const idl::SimControl& request) {
     case idl::OP_SET_REALISM:
       answer = node_.ChangeRealism(RealismChangeOf(request));
       break;
+    case idl::OP_SEEK:
+      answer = {idl::CONTROL_NOT_ALLOWED, "seek is turf-replay's: a running simulation does not go back in time"};
+      break;
     default:
       answer = {idl::CONTROL_UNKNOWN_OP, fmt::format("unknown op {}", static_cast<int>(request.op()))};
       break;

@@ -43,5 +43,20 @@ TEST(ReplayClock, APauseMovesEveryLaterMessageOnByItsLength) {
   EXPECT_EQ(clock.Due(3'000'000'000), start + 6s);
 }
 
+TEST(ReplayClock, RebaseMakesAMessageDueNowAtANewSpeed) {
+  const auto start = std::chrono::steady_clock::time_point(100s);
+  ReplayClock clock(1.0, start);
+  EXPECT_EQ(clock.Due(1'000'000'000), start);
+  clock.Rebase(8'000'000'000, 4.0, start + 3s);  // a seek to 8 s (recorded), now at 4x
+  EXPECT_EQ(clock.speed(), 4.0);
+  EXPECT_EQ(clock.Due(8'000'000'000), start + 3s);
+  EXPECT_EQ(clock.Due(12'000'000'000), start + 4s);
+  clock.Pause(start + 3s);
+  clock.Rebase(2'000'000'000, 1.0, start + 10s);  // rebased while paused: the pause counts from the rebase
+  clock.Resume(start + 12s);
+  EXPECT_EQ(clock.Due(2'000'000'000), start + 12s);
+  EXPECT_EQ(clock.Due(3'000'000'000), start + 13s);
+}
+
 }  // namespace
 }  // namespace turf

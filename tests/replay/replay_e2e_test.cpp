@@ -1,6 +1,7 @@
 // turf-replay as a real process on a private domain: a recording (made here with the MCAP writer from serialized
 // samples) is played back; every world state arrives in order and serializes to the recorded bytes, a recorded
-// input (a blue command) is not played, and a message that is no CDR sample is refused and counted.
+// input (a blue command) is not played, and a message that is no CDR sample is refused and counted. Pause and
+// seek over the control topic while it plays.
 #include <fastdds/rtps/common/SerializedPayload.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -11,11 +12,13 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <vector>
 
 #include "codecs/mcap/writer.h"
+#include "dds/control_client.h"
 #include "dds/participant.h"
 #include "participants/common/mcap_file.h"
 #include "participants/recorder/idl_schema.h"
@@ -155,6 +158,92 @@ TEST(ReplayE2e, StartSkipsTheRecordedTimeBeforeIt) {
   EXPECT_GE(got.front().sim_time_ns(), 510'000'000);  // none before the start
   EXPECT_EQ(got.back().sim_time_ns(), 1'000'000'000);
   ExpectRecordedInOrder(got, recorded);
+}
+
+idl::SimControl Request(idl::ControlOp op, int64_t seek_ns = 0) {
+  idl::SimControl r;
+  r.op(op);
+  r.seek_time_ns(seek_ns);
+  return r;
+}
+
+// Splits arrival-ordered sim times (10 ms apart when played in order) into runs that each go forward without a
+// jump (a gap of more than 5 samples: more than DDS drops at this pace).
+std::vector<std::vector<int64_t>> Runs(const std::vector<int64_t>& times) {
+  std::vector<std::vector<int64_t>> runs;
+  for (const int64_t t : times) {
+    if (runs.empty() || t <= runs.back().back() || t > runs.back().back() + 50'000'000) runs.emplace_back();
+    runs.back().push_back(t);
+  }
+  return runs;
+}
+
+std::string Show(const std::vector<int64_t>& times) {
+  std::string out;
+  for (const int64_t t : times) out += std::to_string(t / 1'000'000) + " ";
+  return out;
+}
+
+// At a tenth of the recorded pace: a pause stops the stream at the sim time its reply names; a seek back while
+// paused plays again from 50 ms once resumed; a seek forward goes on at 900 ms; a seek past the end (while paused)
+// is refused when the file ends. A replay refuses what would change the match. The sim times received form exactly
+// those runs.
+TEST(ReplayE2e, PausesAndSeeksOverTheControlTopic) {
+  constexpr int64_t kMs = 1'000'000;
+  const int domain = TestDomain(47);
+  const std::string prefix = "replayseek" + std::to_string(getpid());
+  const std::string file = LogDir() + "/" + prefix + ".mcap";
+  WriteRecording(file);
+
+  dds::Participant participant({domain, "replay-test", prefix, TURF_SOURCE_DIR "/configs/qos/turf_qos.xml"});
+  std::mutex mutex;
+  std::condition_variable cv;
+  auto world = participant.MakeReader(dds::Topic::kWorldState, [&] { cv.notify_all(); });
+  dds::ControlClient control(participant, "replay-test");
+  Process replay(prefix, {Built("participants/replay/turf-replay"), file, "--speed", "0.1", "--wait-for-reader",
+                          "--domain", std::to_string(domain), "--prefix", prefix});
+  std::vector<int64_t> seen;  // sim times in arrival order
+  const auto wait_for = [&](const std::function<bool()>& done) {
+    std::unique_lock<std::mutex> lock(mutex);
+    return cv.wait_for(lock, 30s, [&] {
+      std::vector<idl::WorldState> batch;
+      if (world->Take(&batch))
+        for (const idl::WorldState& s : batch) seen.push_back(s.sim_time_ns());
+      return done();
+    });
+  };
+  const auto call = [&](const idl::SimControl& request) { return control.Call(request, 30s); };
+
+  ASSERT_TRUE(wait_for([&] { return !seen.empty() && seen.back() >= 200 * kMs; })) << Show(seen) << replay.Log();
+  const dds::ControlOutcome pause = call(Request(idl::OP_PAUSE));
+  ASSERT_TRUE(pause.ok()) << pause.Describe() << replay.Log();
+  const int64_t paused_at = pause.reply->sim_time_ns();
+  const dds::ControlOutcome back = call(Request(idl::OP_SEEK, 50 * kMs));
+  ASSERT_TRUE(back.ok()) << back.Describe() << replay.Log();
+  EXPECT_EQ(back.reply->sim_time_ns(), 50 * kMs);
+  const dds::ControlOutcome teleport = call(Request(idl::OP_TELEPORT_BALL));
+  EXPECT_EQ(teleport.code(), idl::CONTROL_NOT_ALLOWED) << teleport.Describe();
+  ASSERT_TRUE(call(Request(idl::OP_RESUME)).ok());
+  ASSERT_TRUE(wait_for([&] { return Runs(seen).size() >= 2 && seen.back() >= 80 * kMs; })) << Show(seen);
+  const dds::ControlOutcome forward = call(Request(idl::OP_SEEK, 900 * kMs));
+  ASSERT_TRUE(forward.ok()) << forward.Describe() << replay.Log();
+  EXPECT_EQ(forward.reply->sim_time_ns(), 900 * kMs);
+  ASSERT_TRUE(wait_for([&] { return seen.back() >= 920 * kMs; })) << Show(seen);
+  ASSERT_TRUE(call(Request(idl::OP_PAUSE)).ok());  // so the file cannot end before the seek arrives
+  const dds::ControlOutcome past_end = call(Request(idl::OP_SEEK, 5000 * kMs));
+  EXPECT_EQ(past_end.code(), idl::CONTROL_OUT_OF_RANGE) << past_end.Describe();
+
+  const std::optional<int> status = replay.Wait(30s);
+  ASSERT_TRUE(status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << replay.Log();
+  EXPECT_NE(replay.Log().find("3 seeks"), std::string::npos) << replay.Log();
+  wait_for([] { return true; });
+  const auto runs = Runs(seen);
+  ASSERT_EQ(runs.size(), 3u) << Show(seen);
+  EXPECT_EQ(runs[0].back(), paused_at) << Show(seen);  // nothing after the pause's sim time until the seek back
+  EXPECT_EQ(runs[1].front(), 50 * kMs) << Show(seen);
+  EXPECT_LT(runs[1].back(), 900 * kMs) << Show(seen);
+  EXPECT_EQ(runs[2].front(), 900 * kMs) << Show(seen);
+  EXPECT_LT(runs[2].back(), 1000 * kMs) << Show(seen);  // the seek past the end skipped the rest
 }
 
 }  // namespace
