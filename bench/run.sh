@@ -194,6 +194,27 @@ record_sim() {
   awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a - 1.5 }'
 }
 
+# turf-viewer --recording FILE: its peak resident MiB after the page's requests for 100 slider times across the
+# recording (the chunk cache bounds it, participants/viewer/recording.h).
+viewer_peak() {
+  local file=$1 port=$((20000 + RANDOM % 20000)) viewer info start end i
+  "$BUILD_DIR/participants/viewer/turf-viewer" --recording "$file" --port "$port" --log-level warn &
+  viewer=$!
+  for i in $(seq 1 300); do  # up to 60 s to read the file and listen
+    info=$(curl -sf "http://127.0.0.1:$port/recording/info") && break
+    sleep 0.2
+  done
+  start=$(printf '%s' "$info" | /usr/bin/python3 -c 'import json,sys; print(json.load(sys.stdin).get("start", 0))')
+  end=$(printf '%s' "$info" | /usr/bin/python3 -c 'import json,sys; print(json.load(sys.stdin).get("end", 0))')
+  for i in $(seq 0 99); do
+    curl -sf -o /dev/null "http://127.0.0.1:$port/recording/state?t=$(awk -v a="$start" -v b="$end" -v i="$i" \
+      'BEGIN { printf "%.3f", a + (b - a) * i / 99 }')" || true
+  done
+  awk '/VmHWM/ { printf "%.0f", $2 / 1024 }' "/proc/$viewer/status"
+  kill -INT "$viewer"
+  wait "$viewer" || true
+}
+
 # One row: turf-sim free-running on SCENE alone, then with turf-record on its domain (zstd, the default).
 record_row() {
   local label=$1 scene=$2 domain=$((100 + RANDOM % 50)) prefix="bench$$" dir alone with rec tck stat cpu hwm bytes
@@ -210,16 +231,18 @@ record_row() {
   kill -INT "$rec"
   wait "$rec" || true
   bytes=$(stat -c %s "$dir/match.mcap")
-  awk -v l="$label" -v a="$alone" -v w="$with" -v c="$cpu" -v m="$hwm" -v b="$bytes" -v s="$SECONDS_SIM" 'BEGIN {
-    printf "| %s | %.2f | %.2f | %.1f | %.1f | %s | %s | %.2f |\n", l, a, w, s / a, s / w, c, m, b / 1e6 / s * 60 }'
+  view=$(viewer_peak "$dir/match.mcap")
+  awk -v l="$label" -v a="$alone" -v w="$with" -v c="$cpu" -v m="$hwm" -v b="$bytes" -v s="$SECONDS_SIM" -v v="$view" \
+    'BEGIN { printf "| %s | %.2f | %.2f | %.1f | %.1f | %s | %s | %.2f | %s |\n", l, a, w, s / a, s / w, c, m,
+             b / 1e6 / s * 60, v }'
   rm -rf "$dir"
 }
 
 # Recording cost (issue 17): the SSL 2x11 match and a 22-robot legged match, each alone and recorded.
 record() {
   echo "Recording cost: realistic sensors, ${SECONDS_SIM} s of sim time at --speed max; $(nproc) cores"
-  echo "| match | turf-sim alone s | turf-sim with recorder s | RTF alone | RTF recorded | recorder CPU s | recorder MiB (peak) | MB per sim minute |"
-  echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
+  echo "| match | turf-sim alone s | turf-sim with recorder s | RTF alone | RTF recorded | recorder CPU s | recorder MiB (peak) | MB per sim minute | turf-viewer --recording MiB (peak) |"
+  echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
   record_row "SSL division A 2x11" configs/scenes/ssl_div_a.yaml
   record_row "SimSpark 22 Naos (legged)" configs/scenes/simspark_match.yaml
   echo "turf-sim's wall time without its 1.5 s discovery window; RTF: simulated s per wall s. One run each; the file"

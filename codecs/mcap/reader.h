@@ -60,6 +60,11 @@ using MessageFn = std::function<void(const Channel& channel, const Message& mess
 
 Damage ReadSummary(const ByteSource& source, const ReaderOptions& options, FileInfo* out);
 Damage Scan(const ByteSource& source, const ReaderOptions& options, FileInfo* out, const MessageFn& on_message = {});
+// The messages of the one Chunk record at `offset` (a Message's chunk_offset from Scan), in file order, checked as
+// Scan checks a chunk; `info` must hold the channels (Scan's FileInfo; counts in it grow). A record there that is no
+// Chunk is kMalformed.
+Damage ReadChunkAt(const ByteSource& source, const ReaderOptions& options, uint64_t offset, FileInfo* info,
+                   const MessageFn& on_message);
 
 // The magic bytes at `offset` (fewer than 8 when the file is shorter): kOk, kBadMagic, kNewerVersion or kTruncated.
 Damage CheckMagic(std::string_view bytes, uint64_t offset);

@@ -68,7 +68,8 @@ struct Message {
   uint32_t sequence = 0;
   uint64_t log_time = 0;
   uint64_t publish_time = 0;
-  std::string_view data;  // a view into the record it was parsed from
+  std::string_view data;      // a view into the record it was parsed from
+  uint64_t chunk_offset = 0;  // Scan: the file offset of the Chunk record it came in (ReadChunkAt); 0: none
 };
 
 // The fields of a Chunk record before its records; `records` views the (possibly compressed) bytes.

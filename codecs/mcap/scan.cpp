@@ -41,6 +41,17 @@ class Scanner {
     }
   }
 
+  Damage RunChunk(uint64_t pos) {
+    if (pos >= size_) return MakeDamage(ReadError::kTruncated, pos, "no record at offset " + N(pos));
+    uint8_t op = 0;
+    std::string record;
+    if (Damage d = ReadRecord(pos, &op, &record); !d.ok()) return d;
+    if (op != static_cast<uint8_t>(Op::kChunk))
+      return MakeDamage(ReadError::kMalformed, pos,
+                        std::string("a ") + OpName(op) + " record where a Chunk was expected");
+    return TakeChunk(pos, std::string_view(record).substr(kRecordPrefix));
+  }
+
  private:
   // The whole record at `pos` (prefix included) into `record`.
   Damage ReadRecord(uint64_t pos, uint8_t* op, std::string* record) {
@@ -144,7 +155,10 @@ class Scanner {
     if (Damage d = WalkChunk(pos, records, &messages); !d.ok()) return d;
     ++out_->statistics.chunk_count;
     ++out_->chunks_by_compression[chunk.compression];
-    for (const Message& m : messages) Deliver(m);
+    for (Message& m : messages) {
+      m.chunk_offset = pos;
+      Deliver(m);
+    }
     return {};
   }
 
@@ -219,6 +233,11 @@ class Scanner {
 
 Damage Scan(const ByteSource& source, const ReaderOptions& options, FileInfo* out, const MessageFn& on_message) {
   return Scanner(source, options, out, on_message).Run();
+}
+
+Damage ReadChunkAt(const ByteSource& source, const ReaderOptions& options, uint64_t offset, FileInfo* info,
+                   const MessageFn& on_message) {
+  return Scanner(source, options, info, on_message).RunChunk(offset);
 }
 
 }  // namespace turf::mcap

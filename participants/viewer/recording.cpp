@@ -10,10 +10,13 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <list>
 #include <map>
+#include <mutex>
 
 #include "dds/topics.h"
 #include "participants/viewer/viewer_model.h"
@@ -107,32 +110,119 @@ int64_t ToNs(uint64_t publish_time) {
 
 }  // namespace
 
-Recording::Recording(const mcap::ByteSource& source) {
+// The recently read chunks' messages, decompressed, least recently used first out; at most `budget` bytes (and
+// always the chunk just read).
+class Recording::ChunkCache {
+ public:
+  using Messages = std::shared_ptr<const std::vector<std::string>>;
+  ChunkCache(const mcap::ByteSource& source, mcap::FileInfo channels, size_t budget)
+      : source_(source), channels_(std::move(channels)), budget_(budget) {}
+
+  // The messages of the chunk at `offset`, in file order; null if it cannot be read.
+  Messages Get(uint64_t offset) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto hit = chunks_.find(offset);
+    if (hit != chunks_.end()) {
+      lru_.splice(lru_.end(), lru_, hit->second.second);
+      return hit->second.first;
+    }
+    auto messages = std::make_shared<std::vector<std::string>>();
+    mcap::FileInfo info = channels_;
+    size_t bytes = 0;
+    const mcap::Damage d =
+        mcap::ReadChunkAt(source_, {}, offset, &info, [&](const mcap::Channel&, const mcap::Message& m) {
+          messages->emplace_back(m.data);
+          bytes += m.data.size();
+        });
+    ++reads_;
+    if (!d.ok()) {
+      ++failures_;
+      return nullptr;
+    }
+    lru_.push_back(offset);
+    chunks_[offset] = {messages, std::prev(lru_.end())};
+    sizes_[offset] = bytes;
+    bytes_ += bytes;
+    while (bytes_ > budget_ && lru_.size() > 1) Evict();
+    return messages;
+  }
+  size_t bytes() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return bytes_;
+  }
+  uint64_t reads() const { return reads_; }
+  uint64_t failures() const { return failures_; }
+
+ private:
+  void Evict() {
+    const uint64_t oldest = lru_.front();
+    lru_.pop_front();
+    chunks_.erase(oldest);
+    bytes_ -= sizes_[oldest];
+    sizes_.erase(oldest);
+  }
+
+  const mcap::ByteSource& source_;
+  const mcap::FileInfo channels_;
+  const size_t budget_;
+  mutable std::mutex mutex_;
+  std::list<uint64_t> lru_;
+  std::map<uint64_t, std::pair<Messages, std::list<uint64_t>::iterator>> chunks_;
+  std::map<uint64_t, size_t> sizes_;
+  size_t bytes_ = 0;
+  std::atomic<uint64_t> reads_{0};
+  std::atomic<uint64_t> failures_{0};
+};
+
+Recording::Recording(std::unique_ptr<const mcap::ByteSource> source, size_t cache_bytes) : source_(std::move(source)) {
   mcap::FileInfo info;
   std::map<uint16_t, Kind> kinds;
   uint64_t order = 0;
-  damage_ = mcap::Scan(source, {}, &info, [&](const mcap::Channel& c, const mcap::Message& m) {
+  uint64_t chunk = 0;
+  uint32_t index = 0;  // of the message in its chunk
+  damage_ = mcap::Scan(*source_, {}, &info, [&](const mcap::Channel& c, const mcap::Message& m) {
+    if (m.chunk_offset != chunk) index = 0;
+    chunk = m.chunk_offset;
+    const uint32_t at = index++;
     auto it = kinds.find(c.id);
     if (it == kinds.end()) it = kinds.emplace(c.id, KindOf(info, c)).first;
     if (it->second == kKinds) {
       ++skipped_;
       return;
     }
-    Keep(it->second, m, order++);
+    Keep(it->second, m, order++, at);
   });
   for (auto& samples : samples_)
     std::stable_sort(samples.begin(), samples.end(), [](const Sample& a, const Sample& b) { return a.t_ns < b.t_ns; });
+  mcap::FileInfo channels;
+  channels.schemas = info.schemas;
+  channels.channels = info.channels;
+  cache_ = std::make_unique<ChunkCache>(*source_, std::move(channels), cache_bytes);
 }
 
-void Recording::Keep(Kind kind, const mcap::Message& m, uint64_t order) {
+Recording::~Recording() = default;
+
+void Recording::Keep(Kind kind, const mcap::Message& m, uint64_t order, uint32_t index) {
   // Only samples the model takes are kept, so what is shown at t never falls back past a bad one silently.
   ViewerModel probe("", "");
   if (!Feed(probe, kind, m.data)) {
     ++skipped_;
     return;
   }
-  samples_[kind].push_back({ToNs(m.publish_time), order, std::string(m.data)});
+  Sample sample{ToNs(m.publish_time), order, m.chunk_offset, index, {}};
+  if (m.chunk_offset == 0) sample.cdr = std::string(m.data);
+  samples_[kind].push_back(std::move(sample));
 }
+
+bool Recording::FeedSample(ViewerModel& model, Kind kind, const Sample& sample) const {
+  if (sample.chunk_offset == 0) return Feed(model, kind, sample.cdr);
+  const ChunkCache::Messages chunk = cache_->Get(sample.chunk_offset);
+  return chunk && sample.index < chunk->size() && Feed(model, kind, (*chunk)[sample.index]);
+}
+
+size_t Recording::cached_bytes() const { return cache_->bytes(); }
+uint64_t Recording::chunk_reads() const { return cache_->reads(); }
+uint64_t Recording::reread_failures() const { return cache_->failures(); }
 
 bool Recording::refused() const {
   return damage_.error == mcap::ReadError::kBadMagic || damage_.error == mcap::ReadError::kNewerVersion;
@@ -155,9 +245,9 @@ void Recording::FeedScene(ViewerModel& model) const {
   const Sample* field = samples_[kField].empty() ? nullptr : &samples_[kField].back();
   const Sample* legged = samples_[kLegged].empty() ? nullptr : &samples_[kLegged].back();
   if (field && (!legged || field->order > legged->order)) {
-    Feed(model, kField, field->cdr);
+    FeedSample(model, kField, *field);
   } else if (legged) {
-    Feed(model, kLegged, legged->cdr);
+    FeedSample(model, kLegged, *legged);
   }
 }
 
@@ -170,13 +260,13 @@ std::string Recording::FieldJson() const {
 std::string Recording::StateJsonAt(int64_t t_ns) const {
   ViewerModel model("", "");
   FeedScene(model);
-  if (const Sample* s = NewestAtOrBefore(kState, t_ns)) Feed(model, kState, s->cdr);
-  if (const Sample* s = NewestAtOrBefore(kClock, t_ns)) Feed(model, kClock, s->cdr);
+  if (const Sample* s = NewestAtOrBefore(kState, t_ns)) FeedSample(model, kState, *s);
+  if (const Sample* s = NewestAtOrBefore(kClock, t_ns)) FeedSample(model, kClock, *s);
   // The samples of the windows before t, oldest first, so the newest of each camera and robot wins.
   auto window = [&](Kind kind, int64_t span) {
     const auto& s = samples_[kind];
     auto it = std::lower_bound(s.begin(), s.end(), t_ns - span, [](const Sample& x, int64_t t) { return x.t_ns < t; });
-    for (; it != s.end() && it->t_ns <= t_ns; ++it) Feed(model, kind, it->cdr);
+    for (; it != s.end() && it->t_ns <= t_ns; ++it) FeedSample(model, kind, *it);
   };
   window(kCamera, kMaxFrameAgeNs);
   if (model.is_legged()) window(kLinks, kLinkWindowNs);
@@ -185,7 +275,7 @@ std::string Recording::StateJsonAt(int64_t t_ns) const {
 
 std::string Recording::StatsJsonAt(int64_t t_ns) const {
   ViewerModel model("", "");
-  if (const Sample* s = NewestAtOrBefore(kStats, t_ns)) Feed(model, kStats, s->cdr);
+  if (const Sample* s = NewestAtOrBefore(kStats, t_ns)) FeedSample(model, kStats, *s);
   return model.Stats();
 }
 

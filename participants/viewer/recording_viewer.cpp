@@ -21,9 +21,9 @@ namespace {
 using SteadyClock = std::chrono::steady_clock;
 
 std::unique_ptr<viewer::Recording> Load(const std::string& path) {
-  McapFileSource source(path);
-  if (!source.ok()) throw std::invalid_argument("--recording: cannot read " + path + ": " + source.error());
-  auto recording = std::make_unique<viewer::Recording>(source);
+  auto source = std::make_unique<McapFileSource>(path);
+  if (!source->ok()) throw std::invalid_argument("--recording: cannot read " + path + ": " + source->error());
+  auto recording = std::make_unique<viewer::Recording>(std::move(source));
   if (recording->refused()) throw std::invalid_argument("--recording: " + path + ": " + recording->damage().Describe());
   return recording;
 }

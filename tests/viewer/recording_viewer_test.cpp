@@ -297,7 +297,7 @@ TEST(RecordingViewerBrowser, TheSliderSeeksAndPlayMovesTheRecordedWorld) {
 // In process: the index over a string, and the query parser.
 TEST(RecordingIndex, KeepsOnlyTheShownTopicsAndSkipsTheRest) {
   const std::string bytes = Recording();
-  const viewer::Recording r{mcap::StringSource(bytes)};
+  const viewer::Recording r{std::make_unique<mcap::StringSource>(bytes)};
   EXPECT_TRUE(r.damage().ok());
   EXPECT_EQ(r.count(viewer::Recording::kState), static_cast<size_t>(kStates));
   EXPECT_EQ(r.count(viewer::Recording::kClock), static_cast<size_t>(kStates));
@@ -305,6 +305,34 @@ TEST(RecordingIndex, KeepsOnlyTheShownTopicsAndSkipsTheRest) {
   EXPECT_EQ(r.skipped(), static_cast<uint64_t>(kStates));  // the command channel
   EXPECT_FALSE(r.FieldJson().empty());
   EXPECT_TRUE(r.StatsJsonAt(1'000'000'000).empty());  // no stats recorded
+}
+
+// Shown from chunks read again on demand, through a cache of 8 KiB (one or two of these 4 KiB chunks): every state
+// at its time, in any order, and the cache stays within its budget; with a large cache a second pass reads nothing.
+TEST(RecordingIndex, ReadsSamplesFromTheirChunksWithinTheCacheBudget) {
+  const std::string bytes = Recording();
+  const viewer::Recording small{std::make_unique<mcap::StringSource>(bytes), 8192};
+  const viewer::Recording large{std::make_unique<mcap::StringSource>(bytes), 1u << 30};
+  ASSERT_TRUE(small.damage().ok()) << small.damage().Describe();
+  EXPECT_EQ(small.chunk_reads(), 0u);  // nothing read again before something is shown
+  const auto pass = [](const viewer::Recording& r) {
+    for (int i : {1, 200, 2, 199, 100, 57, 143, 3, 198}) {
+      const json at = json::parse(r.StateJsonAt(i * kStepNs));
+      EXPECT_NEAR(at["t"].get<double>(), i * 0.01, 1e-6) << i;
+      EXPECT_NEAR(at["ball"]["p"][0].get<double>(), i * 1e-3, 1e-6) << i;
+    }
+  };
+  for (int round = 0; round < 2; ++round) {
+    pass(small);
+    EXPECT_LE(small.cached_bytes(), 8192u);
+    pass(large);
+  }
+  const uint64_t large_reads = large.chunk_reads();
+  EXPECT_GT(large_reads, 2u);                   // the states span several chunks
+  EXPECT_GT(small.chunk_reads(), large_reads);  // evicted chunks were read again
+  pass(large);
+  EXPECT_EQ(large.chunk_reads(), large_reads);  // all cached: nothing read again
+  EXPECT_EQ(small.reread_failures(), 0u);
 }
 
 // A legged scene: robots "a" (links every 10 ms to 100 ms, at x = 1 m per 10 ms) and "b" (links at 50 ms only).
@@ -352,7 +380,7 @@ std::string LeggedRecording() {
 
 TEST(RecordingIndex, ALeggedSceneShowsEachRobotsNewestLinksAtOrBeforeT) {
   const std::string bytes = LeggedRecording();
-  const viewer::Recording r{mcap::StringSource(bytes)};
+  const viewer::Recording r{std::make_unique<mcap::StringSource>(bytes)};
   ASSERT_TRUE(r.damage().ok()) << r.damage().Describe();
   EXPECT_EQ(json::parse(r.FieldJson())["type"], "legged");
   const json at = json::parse(r.StateJsonAt(75'000'000));
