@@ -5,7 +5,7 @@ physics steps of 2 ms), next to the UDP sync port of turf-sim measured in the sa
 
 Rows: the kernel alone through Sim.step (2 x 11: every on-field robot commanded at every environment step; 1
 robot: blue 0 alone on the field, commanded), in the shipped scene and in the learning configuration (turf.FAST_SSL:
-2.5 ms steps, each boundary wall as 2 boxes, walls and goals static bodies; only the ids the task uses, no parked
+2.5 ms steps, no boundary wall boxes, goals static bodies; only the ids the task uses, no parked
 substitutes), that again while publishing on DDS (Sim.publish, nobody reading), the Gymnasium-shaped environments
 (actions sampled beforehand, so the policy costs nothing), and VectorSim with 2 worker processes pinned to the 2 cores. The sync port rows come
 from build/bench/turf-bench-sync (a UDP client, one SimulationSyncRequest of 1/60 s at a time, 6 robots
@@ -136,7 +136,7 @@ def main():
     rows = [
         ("Sim.step, shipped scene (2 ms, 16 ids a team), one core", lambda: sim_rate(steps, False, False),
          lambda: sim_rate(steps, True, False), True),
-        ("Sim.step, turf.FAST_SSL (2.5 ms, walls of 2 boxes, walls and goals static bodies), only the robots used, "
+        ("Sim.step, turf.FAST_SSL (2.5 ms, no wall boxes, goals static bodies), only the robots used, "
          "one core", lambda: sim_rate(steps, False, True), lambda: sim_rate(steps, True, True), True),
         ("the row above with sim.publish(domain=...) (every topic written to DDS, no reader)",
          lambda: sim_rate(steps, False, True, True), lambda: sim_rate(steps, True, True, True), True),

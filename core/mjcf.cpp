@@ -77,12 +77,15 @@ std::string Wall(const char* name, double cx, double cy, double hx, double hy, d
   return out;
 }
 
-// The walls and goals. With walls of more than one box (physics.wall_segments, the learning configuration), every
-// wall box and every goal is a static body of its own: MuJoCo 2.2 pairs each geom of the world body with every
-// body, each pair costing a filter and a bounding-sphere test (a convex test where the spheres overlap), while
-// other bodies go through its sweep-and-prune broadphase, which never pairs a robot with a wall or goal whose
-// box around its bounding spheres it is not in. The same boxes touch the same robots; only contacts' order in
-// MuJoCo's list differs (and so the solver's last bits).
+// The walls and goals. physics.wall_segments: 1 (the scenes): each boundary wall one box of the world body.
+// More (the learning configuration's choices): every wall box and every goal is a static body of its own: MuJoCo
+// 2.2 pairs each geom of the world body with every body, each pair costing a filter and a bounding-sphere test (a
+// convex test where the spheres overlap), while other bodies go through its sweep-and-prune broadphase, which
+// never pairs a robot with a wall or goal whose box around its bounding spheres it is not in. The same boxes touch
+// the same robots; only contacts' order in MuJoCo's list differs (and so the solver's last bits). 0 (turf.FAST_SSL):
+// no boundary wall boxes at all, goals as for more. They are never touched: World::StageContainment puts the ball
+// and every robot on the field back at a wall's inner face after each step, so at the next collision test nothing
+// is inside a wall (tests/core: Physics.WallBoxesInBodiesBounceTheBallAsOneBoxWallsDo, the same path with 0, 1, 2).
 std::string FieldGeoms(const FieldParams& f, int wall_segments) {
   std::string out;
   const double wt = f.wall_thickness;
@@ -91,10 +94,12 @@ std::string FieldGeoms(const FieldParams& f, int wall_segments) {
   const double y_in = f.width / 2 + f.boundary_width;
   // Boundary walls, their inner faces at x_in and y_in.
   const int n = wall_segments;
-  out += Wall("wall_left", -x_in - wt / 2, 0, wt / 2, y_in + wt, wh, false, n, f.friction);
-  out += Wall("wall_right", x_in + wt / 2, 0, wt / 2, y_in + wt, wh, false, n, f.friction);
-  out += Wall("wall_top", 0, y_in + wt / 2, x_in + wt, wt / 2, wh, true, n, f.friction);
-  out += Wall("wall_bottom", 0, -y_in - wt / 2, x_in + wt, wt / 2, wh, true, n, f.friction);
+  if (n >= 1) {
+    out += Wall("wall_left", -x_in - wt / 2, 0, wt / 2, y_in + wt, wh, false, n, f.friction);
+    out += Wall("wall_right", x_in + wt / 2, 0, wt / 2, y_in + wt, wh, false, n, f.friction);
+    out += Wall("wall_top", 0, y_in + wt / 2, x_in + wt, wt / 2, wh, true, n, f.friction);
+    out += Wall("wall_bottom", 0, -y_in - wt / 2, x_in + wt, wt / 2, wh, true, n, f.friction);
+  }
   // Goals: two side walls (their front ends are the posts) and a back wall.
   const double gt = f.goal_wall_thickness;
   const double gh = f.goal_height / 2;
@@ -110,7 +115,7 @@ std::string FieldGeoms(const FieldParams& f, int wall_segments) {
                 f.friction);
     goal += Box(fmt::format("goal_{}_back", name).c_str(), x_line + side * (f.goal_depth + gt / 2), 0, gh, gt / 2,
                 f.goal_width / 2 + gt, gh, f.friction);
-    out += wall_segments > 1 ? StaticBody(fmt::format("goal_{}", name), goal) : goal;
+    out += wall_segments != 1 ? StaticBody(fmt::format("goal_{}", name), goal) : goal;
   }
   return out;
 }
