@@ -5,8 +5,9 @@ physics steps of 2 ms), next to the UDP sync port of turf-sim measured in the sa
 
 Rows: the kernel alone through Sim.step (2 x 11: every on-field robot commanded at every environment step; 1
 robot: blue 0 alone on the field, commanded), in the shipped scene and in the learning configuration (turf.FAST_SSL:
-2.5 ms steps, each boundary wall as 2 boxes; only the ids the task uses, no parked substitutes), the Gymnasium-shaped environments (actions sampled beforehand, so
-the policy costs nothing), and VectorSim with 2 worker processes pinned to the 2 cores. The sync port rows come
+2.5 ms steps, no boundary wall boxes, goals static bodies; only the ids the task uses, no parked
+substitutes), that again while publishing on DDS (Sim.publish, nobody reading), the Gymnasium-shaped environments
+(actions sampled beforehand, so the policy costs nothing), and VectorSim with 2 worker processes pinned to the 2 cores. The sync port rows come
 from build/bench/turf-bench-sync (a UDP client, one SimulationSyncRequest of 1/60 s at a time, 6 robots
 commanded): (a) turf-sim with a separate bridge over Fast DDS, (b) turf-sim --simproto."""
 
@@ -59,7 +60,7 @@ def timed(steps, body):
     return steps / (time.perf_counter() - start)
 
 
-def sim_rate(steps, one_robot, fast):
+def sim_rate(steps, one_robot, fast, publish=False):
     options = FAST if fast else SCENE
     if one_robot:
         env = envs.SslGoToBallKickEnv(realism="realistic", **options(1))
@@ -67,6 +68,8 @@ def sim_rate(steps, one_robot, fast):
         sim = env.sim
     else:
         sim = turf.Sim("ssl_div_a", seed=1, realism="realistic", **options(11))
+    if publish:  # a domain and prefix of this run's own, nobody reading
+        sim.publish(domain=1 + os.getpid() % 99, prefix=f"bench{os.getpid()}")
     clock = StepClock(1 / 60, sim.step_seconds)
     commands = [match_commands(sim, k) for k in range(steps)]
     if one_robot:
@@ -133,8 +136,10 @@ def main():
     rows = [
         ("Sim.step, shipped scene (2 ms, 16 ids a team), one core", lambda: sim_rate(steps, False, False),
          lambda: sim_rate(steps, True, False), True),
-        ("Sim.step, turf.FAST_SSL (2.5 ms, walls of 2 boxes), only the robots used, one core", lambda: sim_rate(steps, False, True),
-         lambda: sim_rate(steps, True, True), True),
+        ("Sim.step, turf.FAST_SSL (2.5 ms, no wall boxes, goals static bodies), only the robots used, "
+         "one core", lambda: sim_rate(steps, False, True), lambda: sim_rate(steps, True, True), True),
+        ("the row above with sim.publish(domain=...) (every topic written to DDS, no reader)",
+         lambda: sim_rate(steps, False, True, True), lambda: sim_rate(steps, True, True, True), True),
         ("Gymnasium-shaped env (SslMatchEnv / SslGoToBallKickEnv, their defaults), one core",
          lambda: env_rate(steps, envs.SslMatchEnv()), lambda: env_rate(steps, envs.SslGoToBallKickEnv()), True),
         ("VectorSim, 2 worlds, 2 workers pinned to 2 cores (as the row above)", lambda: vector_rate(steps, 2, False),

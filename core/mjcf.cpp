@@ -56,7 +56,13 @@ BallSpring BallContactSpring(double restitution, double step) {
 }
 constexpr const char* kBallSolimp = "0.99 0.99 0.001";
 
-// A wall along x (along_x) or y centred at (cx, cy) with half sizes (hx, hy, hz), as `segments` boxes end to end.
+// `geoms` in a static body of their own (no joint: welded to the world).
+std::string StaticBody(const std::string& name, const std::string& geoms) {
+  return fmt::format("    <body name=\"{}\">\n{}    </body>\n", name, geoms);
+}
+
+// A wall along x (along_x) or y centred at (cx, cy) with half sizes (hx, hy, hz), as `segments` boxes end to end,
+// each (when more than one) in a static body of its own.
 std::string Wall(const char* name, double cx, double cy, double hx, double hy, double hz, bool along_x, int segments,
                  double friction) {
   if (segments <= 1) return Box(name, cx, cy, hz, hx, hy, hz, friction);
@@ -64,12 +70,22 @@ std::string Wall(const char* name, double cx, double cy, double hx, double hy, d
   const double half = (along_x ? hx : hy) / segments;
   for (int i = 0; i < segments; ++i) {
     const double offset = -(along_x ? hx : hy) + half * (2 * i + 1);
-    out += Box(fmt::format("{}_{}", name, i).c_str(), cx + (along_x ? offset : 0), cy + (along_x ? 0 : offset), hz,
-               along_x ? half : hx, along_x ? hy : half, hz, friction);
+    const std::string box = fmt::format("{}_{}", name, i);
+    out += StaticBody(box, Box(box.c_str(), cx + (along_x ? offset : 0), cy + (along_x ? 0 : offset), hz,
+                               along_x ? half : hx, along_x ? hy : half, hz, friction));
   }
   return out;
 }
 
+// The walls and goals. physics.wall_segments: 1 (the scenes): each boundary wall one box of the world body.
+// More (the learning configuration's choices): every wall box and every goal is a static body of its own: MuJoCo
+// 2.2 pairs each geom of the world body with every body, each pair costing a filter and a bounding-sphere test (a
+// convex test where the spheres overlap), while other bodies go through its sweep-and-prune broadphase, which
+// never pairs a robot with a wall or goal whose box around its bounding spheres it is not in. The same boxes touch
+// the same robots; only contacts' order in MuJoCo's list differs (and so the solver's last bits). 0 (turf.FAST_SSL):
+// no boundary wall boxes at all, goals as for more. They are never touched: World::StageContainment puts the ball
+// and every robot on the field back at a wall's inner face after each step, so at the next collision test nothing
+// is inside a wall (tests/core: Physics.WallBoxesInBodiesBounceTheBallAsOneBoxWallsDo, the same path with 0, 1, 2).
 std::string FieldGeoms(const FieldParams& f, int wall_segments) {
   std::string out;
   const double wt = f.wall_thickness;
@@ -78,10 +94,12 @@ std::string FieldGeoms(const FieldParams& f, int wall_segments) {
   const double y_in = f.width / 2 + f.boundary_width;
   // Boundary walls, their inner faces at x_in and y_in.
   const int n = wall_segments;
-  out += Wall("wall_left", -x_in - wt / 2, 0, wt / 2, y_in + wt, wh, false, n, f.friction);
-  out += Wall("wall_right", x_in + wt / 2, 0, wt / 2, y_in + wt, wh, false, n, f.friction);
-  out += Wall("wall_top", 0, y_in + wt / 2, x_in + wt, wt / 2, wh, true, n, f.friction);
-  out += Wall("wall_bottom", 0, -y_in - wt / 2, x_in + wt, wt / 2, wh, true, n, f.friction);
+  if (n >= 1) {
+    out += Wall("wall_left", -x_in - wt / 2, 0, wt / 2, y_in + wt, wh, false, n, f.friction);
+    out += Wall("wall_right", x_in + wt / 2, 0, wt / 2, y_in + wt, wh, false, n, f.friction);
+    out += Wall("wall_top", 0, y_in + wt / 2, x_in + wt, wt / 2, wh, true, n, f.friction);
+    out += Wall("wall_bottom", 0, -y_in - wt / 2, x_in + wt, wt / 2, wh, true, n, f.friction);
+  }
   // Goals: two side walls (their front ends are the posts) and a back wall.
   const double gt = f.goal_wall_thickness;
   const double gh = f.goal_height / 2;
@@ -90,12 +108,14 @@ std::string FieldGeoms(const FieldParams& f, int wall_segments) {
     const double x_line = side * f.length / 2;
     const double x_mid = x_line + side * (f.goal_depth + gt) / 2;
     const double y_side = f.goal_width / 2 + gt / 2;
-    out += Box(fmt::format("goal_{}_post_pos", name).c_str(), x_mid, y_side, gh, (f.goal_depth + gt) / 2, gt / 2, gh,
-               f.friction);
-    out += Box(fmt::format("goal_{}_post_neg", name).c_str(), x_mid, -y_side, gh, (f.goal_depth + gt) / 2, gt / 2, gh,
-               f.friction);
-    out += Box(fmt::format("goal_{}_back", name).c_str(), x_line + side * (f.goal_depth + gt / 2), 0, gh, gt / 2,
-               f.goal_width / 2 + gt, gh, f.friction);
+    std::string goal;
+    goal += Box(fmt::format("goal_{}_post_pos", name).c_str(), x_mid, y_side, gh, (f.goal_depth + gt) / 2, gt / 2, gh,
+                f.friction);
+    goal += Box(fmt::format("goal_{}_post_neg", name).c_str(), x_mid, -y_side, gh, (f.goal_depth + gt) / 2, gt / 2, gh,
+                f.friction);
+    goal += Box(fmt::format("goal_{}_back", name).c_str(), x_line + side * (f.goal_depth + gt / 2), 0, gh, gt / 2,
+                f.goal_width / 2 + gt, gh, f.friction);
+    out += wall_segments != 1 ? StaticBody(fmt::format("goal_{}", name), goal) : goal;
   }
   return out;
 }

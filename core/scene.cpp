@@ -48,7 +48,7 @@ std::vector<std::string> ValidateScene(const Scene& s) {
   Checker c;
   c.Range("physics.step", s.physics.step, 1e-4, 0.01);
   c.Range("physics.solver_iterations", s.physics.solver_iterations, 1, 1000);
-  c.Range("physics.wall_segments", s.physics.wall_segments, 1, 64);
+  c.Range("physics.wall_segments", s.physics.wall_segments, 0, 64);  // 0: none (core/mjcf.cpp, FieldGeoms)
   c.Range("rates.world_state_hz", s.rates.world_state_hz, 1, 1000);
   c.Range("rates.command_timeout", s.rates.command_timeout, 0.01, 60);
 

@@ -12,6 +12,7 @@
 #include "loader/realism_yaml.h"
 #include "participants/sim/control_loop.h"
 #include "participants/sim/legged_convert.h"
+#include "participants/sim/legged_publisher.h"
 #include "participants/sim/stats_report.h"
 
 namespace turf {
@@ -26,21 +27,14 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
         own_bus_(bus != nullptr ? nullptr : MakeNodeParticipant(options_)),
         bus_(bus != nullptr ? *bus : *own_bus_),
         loop_(bus_, options_, LoopTiming(kernel_), *this),
-        joint_writer_(bus_.MakeWriter<idl::JointStatePubSubType>(dds::Topic::kRobotJointState)),
-        imu_writer_(bus_.MakeWriter<idl::ImuStatePubSubType>(dds::Topic::kRobotImu)),
-        force_writer_(bus_.MakeWriter<idl::ForceStatePubSubType>(dds::Topic::kRobotForce)),
-        links_writer_(bus_.MakeWriter<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks)),
-        state_writer_(bus_.MakeWriter<idl::LeggedStatePubSubType>(dds::Topic::kRobotsState)),
-        world_writer_(bus_.MakeWriter<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
-        scene_writer_(bus_.MakeWriter<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene)),
-        stats_writer_(bus_.MakeWriter<idl::SensorStatsPubSubType>(dds::Topic::kStats)),
+        publisher_(bus_),
         command_reader_(
             bus_.MakeReader<idl::JointCommandPubSubType>(dds::Topic::kRobotJointCommand, [this] { loop_.Wake(); })) {}
 
   void Run(const std::function<bool()>& stop) override {
     ReportStartup();
-    PublishSceneInfo();
-    PublishReleased();  // the readings of frame 0
+    publisher_.PublishSceneInfo(kernel_);
+    publisher_.PublishReleased(kernel_);  // the readings of frame 0
     loop_.Run(stop);
   }
 
@@ -80,13 +74,7 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
   uint64_t CommandsOverflowed() const override { return command_reader_->Overflowed(); }
   void Step() override { kernel_.Step(); }
 
-  void AfterStep() override {
-    PublishReleased();
-    if (kernel_.stats()) {
-      stats_writer_->Write(StatsToIdl(*kernel_.stats()));
-      last_stats_ = *kernel_.stats();
-    }
-  }
+  void AfterStep() override { publisher_.AfterStep(kernel_); }
 
   ControlAnswer ApplyStepCommands(const idl::SimControl& req) override {
     if (!req.commands().empty())
@@ -132,7 +120,7 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
 
   void ResetWorld() override {
     kernel_.Reset();
-    PublishReleased();
+    publisher_.PublishReleased(kernel_);
   }
   std::string SaveKernel() const override { return kernel_.Save(); }
   std::string RestoreKernel(std::string_view snapshot) override { return kernel_.Restore(snapshot); }
@@ -165,73 +153,7 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
 
   // --- Outputs ---
 
-  // The sensor streams' samples that arrived (their modelled links).
-  void PublishReleased() {
-    for (const LeggedSample& s : kernel_.released()) {
-      switch (s.stream) {
-        case LeggedStream::kJoints:
-          FillJoints(s.robot_state, s.time_ns, s.frame, &joint_sample_);
-          joint_writer_->Write(joint_sample_);
-          break;
-        case LeggedStream::kImu:
-          FillImu(s.robot_state, s.time_ns, &imu_sample_);
-          imu_writer_->Write(imu_sample_);
-          break;
-        default:
-          FillForce(s.robot_state, s.time_ns, &force_sample_);
-          force_writer_->Write(force_sample_);
-          break;
-      }
-    }
-  }
-
-  // The whole frame (sensor noise of this frame, no link delay), body poses
-  // and the ball: what bridges and viewers read.
-  void PublishState() override {
-    kernel_.Measure(&state_);
-    FillState(state_, &frame_sample_);
-    // The whole frame first: a lockstep driver (the SimSpark bridge) waits for it.
-    state_writer_->Write(frame_sample_);
-    for (const idl::LinkState& links : frame_sample_.links()) links_writer_->Write(links);
-    if (state_.has_ball) {
-      idl::WorldState world;
-      world.sim_time_ns(state_.time_ns);
-      world.frame(state_.frame);
-      world.ball().position(V3(state_.ball_position));
-      world.ball().velocity(V3(state_.ball_velocity));
-      world_writer_->Write(world);
-    }
-  }
-
-  void PublishSceneInfo() {
-    const LeggedScene& s = kernel_.scene();
-    idl::LeggedSceneInfo info;
-    info.name(s.name);
-    info.has_field(s.field.enabled);
-    info.field_length(s.field.length);
-    info.field_width(s.field.width);
-    info.goal_width(s.field.goal_width);
-    info.goal_depth(s.field.goal_depth);
-    info.goal_height(s.field.goal_height);
-    info.ball_radius(s.field.ball_radius);
-    for (int i = 0; i < kernel_.world().RobotCount(); ++i) {
-      idl::RobotDescription robot;
-      robot.robot(s.robots[i].name);
-      robot.id(s.robots[i].id);
-      robot.model(s.robots[i].model);
-      for (const LeggedGeom& g : kernel_.world().RobotGeoms(i)) {
-        idl::RobotGeom geom;
-        geom.body(g.body);
-        geom.shape(ToIdl(g.shape));
-        geom.size(V3(g.size));
-        geom.position(V3(g.position));
-        geom.orientation(Q4(g.orientation));
-        robot.geoms().push_back(geom);
-      }
-      info.robots().push_back(robot);
-    }
-    scene_writer_->Write(info);
-  }
+  void PublishState() override { publisher_.PublishState(kernel_); }
 
   void ReportStartup() const {
     const LeggedScene& s = kernel_.scene();
@@ -262,7 +184,7 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
 
   void ReportStatus() const override {
     loop_.ReportStatusLine(fmt::format("recoveries={}", kernel_.world().health().instability_recoveries));
-    ReportStreams(last_stats_);
+    ReportStreams(publisher_.last_stats());
   }
 
   SimNodeOptions options_;
@@ -270,22 +192,9 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
   std::unique_ptr<dds::Bus> own_bus_;  // when the node makes its own participant
   dds::Bus& bus_;
   ControlLoop loop_;  // before the readers: their callbacks wake it
-  std::unique_ptr<dds::Writer<idl::JointStatePubSubType>> joint_writer_;
-  std::unique_ptr<dds::Writer<idl::ImuStatePubSubType>> imu_writer_;
-  std::unique_ptr<dds::Writer<idl::ForceStatePubSubType>> force_writer_;
-  std::unique_ptr<dds::Writer<idl::LinkStatePubSubType>> links_writer_;
-  std::unique_ptr<dds::Writer<idl::LeggedStatePubSubType>> state_writer_;
-  std::unique_ptr<dds::Writer<idl::WorldStatePubSubType>> world_writer_;
-  std::unique_ptr<dds::Writer<idl::LeggedSceneInfoPubSubType>> scene_writer_;
-  std::unique_ptr<dds::Writer<idl::SensorStatsPubSubType>> stats_writer_;
+  LeggedPublisher publisher_;
   std::unique_ptr<dds::Reader<idl::JointCommandPubSubType>> command_reader_;
 
-  LeggedWorldState state_;
-  idl::LeggedState frame_sample_;
-  idl::JointState joint_sample_;
-  idl::ImuState imu_sample_;
-  idl::ForceState force_sample_;
-  StreamReport last_stats_;
   std::vector<JointCommand> checked_;
   std::vector<idl::JointCommand> command_inbox_;
 };

@@ -14,6 +14,7 @@
 #include "loader/realism_yaml.h"
 #include "participants/sim/control_loop.h"
 #include "participants/sim/convert.h"
+#include "participants/sim/ssl_publisher.h"
 #include "participants/sim/stats_report.h"
 
 namespace turf {
@@ -36,19 +37,14 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
         own_bus_(bus != nullptr ? nullptr : MakeNodeParticipant(options_)),
         bus_(bus != nullptr ? *bus : *own_bus_),
         loop_(bus_, options_, LoopTiming(kernel_.scene(), kernel_.world().step_ns()), *this),
-        state_writer_(bus_.MakeWriter<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
-        field_writer_(bus_.MakeWriter<idl::SslFieldPubSubType>(dds::Topic::kSslField)),
-        camera_writer_(bus_.MakeWriter<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)),
-        feedback_writers_{bus_.MakeWriter<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackBlue),
-                          bus_.MakeWriter<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackYellow)},
-        stats_writer_(bus_.MakeWriter<idl::SensorStatsPubSubType>(dds::Topic::kStats)),
+        publisher_(bus_),
         command_readers_{
             bus_.MakeReader<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue, [this] { loop_.Wake(); }),
             bus_.MakeReader<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow, [this] { loop_.Wake(); })} {}
 
   void Run(const std::function<bool()>& stop) override {
     ReportStartup();
-    field_writer_->Write(FieldToIdl(kernel_.scene(), kernel_.cameras()));
+    publisher_.PublishField(kernel_);
     loop_.Run(stop);
   }
 
@@ -152,34 +148,14 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
   // --- Outputs ---
 
   void AfterStep() override {
-    PublishCameraFrames();
-    if (kernel_.stats()) PublishStats(*kernel_.stats());
-    for (const RobotSnapshot& r : kernel_.feedback())
-      feedback_writers_[static_cast<int>(r.team)]->Write(FeedbackToIdl(r, kernel_.time_ns()));
-  }
-
-  void PublishCameraFrames() {
-    if (kernel_.camera_frames().empty()) return;
-    // Source timestamp: the wall time the simulation was at the capture.
-    const int64_t wall_now = UnixNowNs();
+    // Camera frames' source timestamp: the wall time the simulation was at the capture.
+    const bool frames = !kernel_.camera_frames().empty();
     const TimeMode mode = loop_.mode();
     const double per_sim_ns = (mode == TimeMode::kRealtime || mode == TimeMode::kScaled) ? 1.0 / loop_.speed() : 0.0;
-    for (const CameraFrame& f : kernel_.camera_frames()) {
-      ToIdl(f, &camera_sample_);
-      const int64_t age = std::llround((kernel_.time_ns() - f.capture_time_ns) * per_sim_ns);
-      camera_writer_->Write(camera_sample_, wall_now - age);
-    }
+    publisher_.AfterStep(kernel_, frames ? UnixNowNs() : 0, per_sim_ns);
   }
 
-  void PublishState() override {
-    ToIdl(kernel_.state(), &state_sample_);
-    state_writer_->Write(state_sample_);
-  }
-
-  void PublishStats(const StreamReport& report) {
-    stats_writer_->Write(StatsToIdl(report));
-    last_stats_ = report;
-  }
+  void PublishState() override { publisher_.PublishState(kernel_); }
 
   void ReportStartup() const {
     const Scene& s = kernel_.scene();
@@ -215,7 +191,7 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
     const WorldHealth& h = kernel_.world().health();
     loop_.ReportStatusLine(
         fmt::format("containment={} recoveries={}", h.containment_corrections, h.instability_recoveries));
-    ReportStreams(last_stats_);
+    ReportStreams(publisher_.last_stats());
   }
 
   SimNodeOptions options_;
@@ -223,17 +199,10 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
   std::unique_ptr<dds::Bus> own_bus_;  // when the node makes its own participant
   dds::Bus& bus_;
   ControlLoop loop_;  // before the readers: their callbacks wake it
-  std::unique_ptr<dds::Writer<idl::WorldStatePubSubType>> state_writer_;
-  std::unique_ptr<dds::Writer<idl::SslFieldPubSubType>> field_writer_;
-  std::unique_ptr<dds::Writer<idl::CameraFramePubSubType>> camera_writer_;
-  std::unique_ptr<dds::Writer<idl::SslRobotFeedbackPubSubType>> feedback_writers_[kTeamCount];
-  std::unique_ptr<dds::Writer<idl::SensorStatsPubSubType>> stats_writer_;
+  SslPublisher publisher_;
   std::unique_ptr<dds::Reader<idl::SslRobotCommandPubSubType>> command_readers_[kTeamCount];
 
   std::string realism_dir_ = DefaultRealismDir();
-  StreamReport last_stats_;
-  idl::WorldState state_sample_;
-  idl::CameraFrame camera_sample_;
   std::vector<idl::SslRobotCommand> command_inbox_;
 };
 

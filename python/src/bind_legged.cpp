@@ -1,6 +1,7 @@
 // turf._turf.LeggedSim: the legged kernel for Python (legged_sim.h).
 #include <pybind11/stl.h>
 
+#include "python/src/bind_publish.h"
 #include "python/src/bind_util.h"
 #include "python/src/legged_sim.h"
 #include "python/src/sim_error.h"
@@ -64,6 +65,22 @@ int RobotOf(const LeggedSim& sim, const pyb::handle& robot) {
   return -1;
 }
 
+// None, or a dict of robot (name or index) -> joints x 5 rows; `out` points into the arrays returned.
+std::vector<pyb::array_t<double>> RobotArrays(const LeggedSim& sim, const pyb::object& commands,
+                                              std::vector<LeggedSim::RobotCommands>* out) {
+  std::vector<pyb::array_t<double>> keep;
+  if (commands.is_none()) return keep;
+  if (!pyb::isinstance<pyb::dict>(commands))
+    Check(Error::kMalformed, "commands: a dict of robot (name or index) -> joints x 5 array");
+  for (const auto& [key, value] : commands.cast<pyb::dict>()) {
+    const int robot = RobotOf(sim, key);
+    const auto joints = static_cast<pyb::ssize_t>(sim.joint_names(robot).size());
+    keep.push_back(Shaped(value, {joints, kJointColumns}, "commands of robot " + std::to_string(robot)));
+    out->push_back({robot, keep.back().data()});
+  }
+  return keep;
+}
+
 JointMode ModeOf(const std::string& mode) {
   const char* names[] = {"velocity", "position", "torque", "pd"};
   for (int i = 0; i < kJointModeCount; ++i)
@@ -75,30 +92,20 @@ JointMode ModeOf(const std::string& mode) {
 }  // namespace
 
 void BindLegged(pyb::module_& m) {
-  pyb::class_<LeggedSim>(m, "LeggedSim", "A legged world stepped in this process (see turf.Sim).")
-      .def(pyb::init([](const std::string& scene, std::optional<uint64_t> seed, const std::string& realism,
-                        std::optional<double> physics_step, std::optional<int> robots_per_team,
-                        std::optional<int> wall_segments) {
-             return std::make_unique<LeggedSim>(
-                 SceneRequest{scene, seed, realism, physics_step, robots_per_team, wall_segments});
-           }),
-           arg("scene"), arg("seed") = pyb::none(), arg("realism") = "", arg("physics_step") = pyb::none(),
-           arg("robots_per_team") = pyb::none(), arg("wall_segments") = pyb::none())
+  pyb::class_<LeggedSim> cls(m, "LeggedSim", "A legged world stepped in this process (see turf.Sim).");
+  cls.def(pyb::init([](const std::string& scene, std::optional<uint64_t> seed, const std::string& realism,
+                       std::optional<double> physics_step, std::optional<int> robots_per_team,
+                       std::optional<int> wall_segments) {
+            return std::make_unique<LeggedSim>(
+                SceneRequest{scene, seed, realism, physics_step, robots_per_team, wall_segments});
+          }),
+          arg("scene"), arg("seed") = pyb::none(), arg("realism") = "", arg("physics_step") = pyb::none(),
+          arg("robots_per_team") = pyb::none(), arg("wall_segments") = pyb::none())
       .def(
           "step",
           [](LeggedSim& sim, const pyb::object& commands, int64_t n) {
             std::vector<LeggedSim::RobotCommands> robots;
-            std::vector<pyb::array_t<double>> keep;
-            if (!commands.is_none()) {
-              if (!pyb::isinstance<pyb::dict>(commands))
-                Check(Error::kMalformed, "commands: a dict of robot (name or index) -> joints x 5 array");
-              for (const auto& [key, value] : commands.cast<pyb::dict>()) {
-                const int robot = RobotOf(sim, key);
-                const auto joints = static_cast<pyb::ssize_t>(sim.joint_names(robot).size());
-                keep.push_back(Shaped(value, {joints, kJointColumns}, "commands of robot " + std::to_string(robot)));
-                robots.push_back({robot, keep.back().data()});
-              }
-            }
+            const std::vector<pyb::array_t<double>> keep = RobotArrays(sim, commands, &robots);
             {
               pyb::gil_scoped_release release;
               sim.Step(robots, n);
@@ -106,6 +113,14 @@ void BindLegged(pyb::module_& m) {
             return Observation(sim);
           },
           arg("commands") = pyb::none(), arg("n") = 1)
+      .def(
+          "check_commands",
+          [](LeggedSim& sim, const pyb::object& commands) {
+            std::vector<LeggedSim::RobotCommands> robots;
+            const std::vector<pyb::array_t<double>> keep = RobotArrays(sim, commands, &robots);
+            sim.CheckCommands(robots);
+          },
+          arg("commands"), "Raises TurfError for what step(commands) would refuse; changes nothing.")
       .def("observation", &Observation)
       .def(
           "joint_command",
@@ -198,6 +213,7 @@ void BindLegged(pyb::module_& m) {
                                return names;
                              })
       .def_property_readonly("realism", [](const LeggedSim& s) { return RealismDict(s.kernel().realism()); });
+  BindPublish(cls);
   m.attr("LEGGED_JOINT_COLUMNS") = pyb::make_tuple("q", "dq", "kp", "kd", "tau");
 }
 

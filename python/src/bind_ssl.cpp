@@ -1,6 +1,7 @@
 // turf._turf.SslSim: the SSL kernel for Python (ssl_sim.h).
 #include <pybind11/stl.h>
 
+#include "python/src/bind_publish.h"
 #include "python/src/bind_util.h"
 #include "python/src/sim_error.h"
 #include "python/src/ssl_sim.h"
@@ -88,15 +89,15 @@ pyb::dict FieldDict(const Scene& s) {
 }  // namespace
 
 void BindSsl(pyb::module_& m) {
-  pyb::class_<SslSim>(m, "SslSim", "An SSL world stepped in this process (see turf.Sim).")
-      .def(pyb::init([](const std::string& scene, std::optional<uint64_t> seed, const std::string& realism,
-                        std::optional<double> physics_step, std::optional<int> robots_per_team,
-                        std::optional<int> wall_segments) {
-             return std::make_unique<SslSim>(
-                 SceneRequest{scene, seed, realism, physics_step, robots_per_team, wall_segments});
-           }),
-           arg("scene") = "ssl_div_a", arg("seed") = pyb::none(), arg("realism") = "",
-           arg("physics_step") = pyb::none(), arg("robots_per_team") = pyb::none(), arg("wall_segments") = pyb::none())
+  pyb::class_<SslSim> cls(m, "SslSim", "An SSL world stepped in this process (see turf.Sim).");
+  cls.def(pyb::init([](const std::string& scene, std::optional<uint64_t> seed, const std::string& realism,
+                       std::optional<double> physics_step, std::optional<int> robots_per_team,
+                       std::optional<int> wall_segments) {
+            return std::make_unique<SslSim>(
+                SceneRequest{scene, seed, realism, physics_step, robots_per_team, wall_segments});
+          }),
+          arg("scene") = "ssl_div_a", arg("seed") = pyb::none(), arg("realism") = "", arg("physics_step") = pyb::none(),
+          arg("robots_per_team") = pyb::none(), arg("wall_segments") = pyb::none())
       .def(
           "step",
           [](pyb::object self, const pyb::object& commands, int64_t n) {
@@ -198,6 +199,7 @@ void BindSsl(pyb::module_& m) {
                              })
       .def_property_readonly("field", [](const SslSim& s) { return FieldDict(s.kernel().scene()); })
       .def_property_readonly("realism", [](const SslSim& s) { return RealismDict(s.kernel().realism()); });
+  BindPublish(cls);
   m.attr("SSL_COMMAND_COLUMNS") = pyb::make_tuple("vx", "vy", "omega", "kick_speed", "chip", "dribbler");
   m.attr("SSL_BALL_COLUMNS") = pyb::make_tuple("x", "y", "z", "vx", "vy", "vz");
   m.attr("SSL_ROBOT_COLUMNS") =

@@ -25,8 +25,7 @@ int LeggedSim::RobotIndex(const std::string& name) const {
   return index;
 }
 
-void LeggedSim::Step(const std::vector<RobotCommands>& commands, int64_t n) {
-  CheckStepCount(n);
+void LeggedSim::CheckCommands(const std::vector<RobotCommands>& commands) {
   batch_.assign(commands.size(), {});
   for (size_t i = 0; i < commands.size(); ++i) {
     const int robot = commands[i].robot;
@@ -47,9 +46,18 @@ void LeggedSim::Step(const std::vector<RobotCommands>& commands, int64_t n) {
     Check(kernel_->world().CheckJointCommands(robot, batch_[i]),
           "joint commands of robot '" + kernel_->scene().robots[robot].name + "'");
   }
+}
+
+void LeggedSim::Step(const std::vector<RobotCommands>& commands, int64_t n) {
+  CheckStepCount(n);
+  CheckCommands(commands);
   for (size_t i = 0; i < commands.size(); ++i) kernel_->SetJointCommands(commands[i].robot, batch_[i]);
-  for (int64_t i = 0; i < n; ++i) kernel_->Step();
+  for (int64_t i = 0; i < n; ++i) {
+    kernel_->Step();
+    if (publication_) publication_->AfterStep(*kernel_);
+  }
   Refresh();
+  if (publication_) publication_->PublishState(*kernel_);
 }
 
 void LeggedSim::SetJointCommand(int robot, const JointCommand& command) {
@@ -60,12 +68,12 @@ void LeggedSim::SetJointCommand(int robot, const JointCommand& command) {
 void LeggedSim::PlaceRobot(int robot, const RobotPlacement& placement) {
   CheckRobot(robot);
   Check(kernel_->PlaceRobot(robot, placement), "robot teleport");
-  Refresh();
+  StateChanged();
 }
 
 void LeggedSim::PlaceBall(const std::array<double, 3>& position, const std::array<double, 3>& velocity) {
   Check(kernel_->PlaceBall(position, velocity), "ball teleport");
-  Refresh();
+  StateChanged();
 }
 
 void LeggedSim::SetRealism(const std::string& preset, const std::vector<std::pair<std::string, double>>& values) {
@@ -83,12 +91,18 @@ void LeggedSim::Reset(std::optional<uint64_t> seed) {
   } else {
     kernel_->Reset();
   }
-  Refresh();
+  StateChanged(/*released=*/true);
 }
 
 void LeggedSim::Restore(const std::string& snapshot) {
   if (std::string e = kernel_->Restore(snapshot); !e.empty()) Check(Error::kMalformed, "snapshot (" + e + ")");
+  StateChanged();
+}
+
+// As turf-sim: a reset publishes the readings its streams released.
+void LeggedSim::StateChanged(bool released) {
   Refresh();
+  if (publication_) publication_->StateChanged(*kernel_, released);
 }
 
 void LeggedSim::Refresh() {

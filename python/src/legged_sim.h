@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "kernel/legged_kernel.h"
+#include "python/src/publication.h"
 #include "python/src/scene_source.h"
 
 namespace turf::py {
@@ -39,6 +40,8 @@ class LeggedSim {
     const double* rows;  // joint_names(robot).size() rows
   };
   void Step(const std::vector<RobotCommands>& commands, int64_t n);
+  // What Step would refuse of `commands` (throws SimError for the first refused robot), changing nothing.
+  void CheckCommands(const std::vector<RobotCommands>& commands);
   void SetJointCommand(int robot, const JointCommand& command);
   void PlaceRobot(int robot, const RobotPlacement& placement);
   void PlaceBall(const std::array<double, 3>& position, const std::array<double, 3>& velocity);
@@ -47,17 +50,28 @@ class LeggedSim {
   std::string Save() const { return kernel_->Save(); }
   void Restore(const std::string& snapshot);
 
+  // The world's topics on a DDS domain (publication.h), as SslSim's.
+  void Publish(const PublishOptions& options) {
+    publication_.reset();
+    publication_ = std::make_unique<LeggedPublication>(options, *kernel_);
+  }
+  void Unpublish() { publication_.reset(); }
+  const LeggedPublication* publication() const { return publication_.get(); }
+
   const LeggedWorldState& measured() const { return measured_; }
   const LeggedWorldState& truth() const { return truth_; }
 
  private:
   void CheckRobot(int robot) const;
   void Refresh();
+  // After an input that changed the state outside a step (teleport, reset, restore).
+  void StateChanged(bool released = false);
 
   std::unique_ptr<LeggedKernel> kernel_;
   LeggedWorldState measured_, truth_;
   std::vector<std::vector<std::string>> joint_names_;
   std::vector<std::vector<JointCommand>> batch_;
+  std::unique_ptr<LeggedPublication> publication_;
 };
 
 }  // namespace turf::py

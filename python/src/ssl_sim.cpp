@@ -56,8 +56,10 @@ void SslSim::Step(const std::vector<TeamCommands>& commands, int64_t n) {
   for (int64_t i = 0; i < n; ++i) {
     kernel_->Step();
     CollectCameras();
+    if (publication_) publication_->AfterStep(*kernel_);
   }
   Refresh();
+  if (publication_) publication_->PublishState(*kernel_);
 }
 
 void SslSim::Command(const RobotCommand& command) {
@@ -66,12 +68,12 @@ void SslSim::Command(const RobotCommand& command) {
 
 void SslSim::TeleportBall(const BallTeleport& teleport) {
   Check(kernel_->TeleportBall(teleport), "ball teleport");
-  Refresh();
+  StateChanged();
 }
 
 void SslSim::TeleportRobot(const RobotTeleport& teleport) {
   Check(kernel_->TeleportRobot(teleport), RobotName(teleport.team, teleport.id) + " teleport");
-  Refresh();
+  StateChanged();
 }
 
 void SslSim::SetRealism(const std::string& preset, const std::vector<std::pair<std::string, double>>& values) {
@@ -89,13 +91,18 @@ void SslSim::Reset(std::optional<uint64_t> seed) {
     kernel_->Reset();
   }
   ClearCameras();
-  Refresh();
+  StateChanged();
 }
 
 void SslSim::Restore(const std::string& snapshot) {
   if (std::string e = kernel_->Restore(snapshot); !e.empty()) Check(Error::kMalformed, "snapshot (" + e + ")");
   ClearCameras();
+  StateChanged();
+}
+
+void SslSim::StateChanged() {
   Refresh();
+  if (publication_) publication_->PublishState(*kernel_, /*force=*/true);
 }
 
 void SslSim::ClearCameras() {

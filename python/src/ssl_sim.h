@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "kernel/ssl_kernel.h"
+#include "python/src/publication.h"
 #include "python/src/scene_source.h"
 
 namespace turf::py {
@@ -59,6 +60,15 @@ class SslSim {
   std::string Save() const { return kernel_->Save(); }
   void Restore(const std::string& snapshot);
 
+  // The world's topics on a DDS domain from now on (publication.h), replacing an earlier publication; Unpublish
+  // ends it. publication() is null while not publishing.
+  void Publish(const PublishOptions& options) {
+    publication_.reset();
+    publication_ = std::make_unique<SslPublication>(options, *kernel_);
+  }
+  void Unpublish() { publication_.reset(); }
+  const SslPublication* publication() const { return publication_.get(); }
+
   // Outputs, refreshed by every input and step. ball/robots have a fixed size (views stay valid).
   const double* ball() const { return ball_.data(); }
   const double* robots() const { return robots_.data(); }
@@ -73,6 +83,8 @@ class SslSim {
   void CollectCameras();
   void Refresh();
   void ClearCameras();
+  // After an input that changed the state outside a step (teleport, reset, restore).
+  void StateChanged();
 
   SceneRequest request_;
   std::unique_ptr<SslKernel> kernel_;
@@ -81,6 +93,7 @@ class SslSim {
   std::vector<int32_t> robot_ids_;
   std::vector<double> ball_detections_, robot_detections_, frames_;
   std::vector<RobotCommand> batch_;
+  std::unique_ptr<SslPublication> publication_;
 };
 
 }  // namespace turf::py

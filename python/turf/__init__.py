@@ -15,11 +15,13 @@ from .errors import TurfError
 
 # The learning configuration of SSL scenes, for Sim(..., **FAST_SSL): the largest physics step at which every
 # physics test of tests/core still passes, 2.5 ms against the scenes' 2 ms (3 ms and 4 ms fail
-# Physics.GoalStopsTheBall: the ball sinks into the goal's back wall), and each boundary wall as 2 boxes (MuJoCo
-# 2.2 runs its convex test on every robot-wall pair whose bounding spheres overlap; a whole wall's holds the
-# field). ctest runs the physics tests in this configuration too (core_tests' "learning." tests).
+# Physics.GoalStopsTheBall: the ball sinks into the goal's back wall), and no boundary wall boxes, goals as static
+# bodies of their own (core/mjcf.cpp: the walls' boxes are never touched, the containment stage keeping ball and
+# robots at their inner faces; a 2 x 11 match runs the same to the bit with and without them; MuJoCo 2.2 tested
+# them against every robot at every step). ctest runs the physics tests in this configuration too (core_tests'
+# "learning." tests).
 FAST_SSL_STEP = 0.0025
-FAST_SSL = {"physics_step": FAST_SSL_STEP, "wall_segments": 2}
+FAST_SSL = {"physics_step": FAST_SSL_STEP, "wall_segments": 0}
 
 
 def Sim(scene="ssl_div_a", seed=None, realism=None, physics_step=None, robots_per_team=None, wall_segments=None):
@@ -28,7 +30,7 @@ def Sim(scene="ssl_div_a", seed=None, realism=None, physics_step=None, robots_pe
     ``seed`` replaces the scene's seed (every random stream of the run derives from it); ``realism`` is a
     preset name (ideal, realistic, harsh), a YAML file or YAML text, or None for the scene's own.
     ``physics_step`` (s), ``robots_per_team`` (SSL: ids 0..n-1 exist; fewer parked robots, faster steps) and
-    ``wall_segments`` (SSL: boxes per boundary wall) override the scene's and are checked as the file's are
+    ``wall_segments`` (SSL: boxes per boundary wall, 0 for none) override the scene's and are checked as the file's are
     (``**turf.FAST_SSL``: the learning configuration). Returns an SslSim for SSL scenes and a
     LeggedSim for ``kind: legged`` scenes."""
     cls = LeggedSim if is_legged_scene(scene) else SslSim

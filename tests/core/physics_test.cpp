@@ -333,6 +333,32 @@ TEST(Physics, WallsKeepTheBallIn) {
   }
 }
 
+// The boundary walls as the learning configuration may build them (core/mjcf.cpp: several boxes, each a static
+// body of its own; or none, the containment stage alone keeping the ball in) give the ball the path the scenes'
+// one-box walls of the world body give it, to the bit: the containment stage puts it back at a wall's inner face
+// after every step, so no wall box is ever inside it at a collision test.
+TEST(Physics, WallBoxesInBodiesBounceTheBallAsOneBoxWallsDo) {
+  Scene one_box = test::EmptyDivA();
+  one_box.physics.wall_segments = 1;
+  Scene boxes = one_box, none = one_box;
+  boxes.physics.wall_segments = 2;
+  none.physics.wall_segments = 0;
+  World a(one_box), b(boxes), c(none);
+  for (double angle = 0.1; angle < 2 * M_PI; angle += 0.7) {
+    const BallTeleport t{{0, 0, 0.0215}, {6.5 * std::cos(angle), 6.5 * std::sin(angle), 0}, false};
+    for (World* w : {&a, &b, &c}) ASSERT_EQ(w->TeleportBall(t), InputError::kOk);
+    for (int i = 0; i < Steps(a, 2.0); ++i) {
+      for (World* w : {&a, &b, &c}) w->Step();
+      const Vec3 pa = a.Snapshot().ball.position;
+      for (const World* w : {&b, &c}) {
+        ASSERT_EQ(pa.x, w->Snapshot().ball.position.x) << "angle " << angle << " step " << i;
+        ASSERT_EQ(pa.y, w->Snapshot().ball.position.y) << "angle " << angle << " step " << i;
+      }
+    }
+  }
+  EXPECT_GT(a.health().containment_corrections, 0u);  // the walls were reached
+}
+
 TEST(Physics, GoalStopsTheBall) {
   World w(test::EmptyDivA());
   const FieldParams& f = w.scene().field;

@@ -214,7 +214,7 @@ def test_scene_overrides_for_learning():
     o = sim.step(np.zeros((2, 11, 6)), 7)
     assert o["time"] == pytest.approx(7 * 0.0025)
     for kwargs in ({"robots_per_team": 17}, {"robots_per_team": -1}, {"physics_step": 1.0},
-                   {"physics_step": float("nan")}, {"wall_segments": 0}, {"wall_segments": 65}):
+                   {"physics_step": float("nan")}, {"wall_segments": -1}, {"wall_segments": 65}):
         with pytest.raises(ValueError):
             turf.Sim("ssl_div_a", **kwargs)
     with pytest.raises(ValueError):
@@ -225,9 +225,9 @@ def test_scene_overrides_for_learning():
 
 def test_walls_of_two_boxes_bounce_the_ball_as_one_box():
     """The ball hits the touch-line wall at the seam of its two boxes (x = 0) and beside it: the same rebound as
-    from the whole wall."""
+    from the whole wall, and as without wall boxes (0, turf.FAST_SSL: the containment stage alone)."""
     rebounds = set()
-    for segments in (1, 2):
+    for segments in (1, 2, 0):
         for x in (0.0, 0.01, 2.0):
             sim = turf.Sim("ssl_div_a", seed=1, realism="ideal", robots_per_team=1, wall_segments=segments)
             sim.teleport_robot("blue", 0, on_field=False)

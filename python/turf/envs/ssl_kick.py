@@ -1,7 +1,7 @@
 """SSL, one robot: go to the ball and kick it into the goal at +x.
 
 Blue robot 0 alone on the field (every other robot parked off it; by default the scene has only id 0 a team,
-and physics steps of turf.FAST_SSL (2.5 ms, walls of 2 boxes)). Each reset places the robot and the ball at
+and physics steps of turf.FAST_SSL (2.5 ms, no wall boxes)). Each reset places the robot and the ball at
 random (the environment's np_random, seeded by reset(seed=...)). An environment step is 1/60 s.
 
 Observation: Box(12) float32: robot x, y, cos(yaw), sin(yaw), vx, vy, omega; ball x, y, vx, vy; ball contact.
@@ -22,7 +22,7 @@ class SslGoToBallKickEnv(EnvBase):
     metadata = {"render_modes": [], "render_fps": 60}
 
     def __init__(self, scene="ssl_div_a", realism="ideal", seed=1, max_episode_steps=600, render_mode=None,
-                 physics_step=FAST_SSL_STEP, wall_segments=2, robots_per_team=1):
+                 physics_step=FAST_SSL_STEP, wall_segments=0, robots_per_team=1):
         self.render_mode = render_mode
         self.max_episode_steps = max_episode_steps
         self.sim = Sim(scene, seed=seed, realism=realism, physics_step=physics_step, robots_per_team=robots_per_team,

@@ -2,7 +2,7 @@
 
 Starts from the scene's kick-off formation (the robots on the field at the scene's start, 11 a team in
 ssl_div_a). By default the scene has ids 0..10 a team (no parked substitutes) and physics steps of
-turf.FAST_SSL (2.5 ms, walls of 2 boxes). An environment step is 1/60 s.
+turf.FAST_SSL (2.5 ms, no wall boxes). An environment step is 1/60 s.
 
 Observation: Dict(ball: Box(6) x, y, z, vx, vy, vz; blue, yellow: Box(n, 7) per robot by id: x, y, cos(yaw),
 sin(yaw), vx, vy, omega). Action: Dict(blue, yellow: Box(n, 4) in [-1, 1], as SslGoToBallKick's per robot).
@@ -23,7 +23,7 @@ class SslMatchEnv(EnvBase):
     metadata = {"render_modes": [], "render_fps": 60}
 
     def __init__(self, scene="ssl_div_a", realism="realistic", seed=1, max_episode_steps=3600, render_mode=None,
-                 physics_step=FAST_SSL_STEP, wall_segments=2, robots_per_team=11):
+                 physics_step=FAST_SSL_STEP, wall_segments=0, robots_per_team=11):
         self.render_mode = render_mode
         self.max_episode_steps = max_episode_steps
         self.sim = Sim(scene, seed=seed, realism=realism, physics_step=physics_step, robots_per_team=robots_per_team,
