@@ -57,8 +57,10 @@ int main(int argc, char** argv) {
   std::vector<std::string> cameras;
   app.add_option("--scene", options.scene_file, "the legged scene turf-sim runs (its robots' cameras)")->required();
   app.add_option("--cameras", cameras,
-                 "cameras to render, as <robot>/<camera>, comma-separated or repeated (default: every enabled "
-                 "camera of the scene); several turf-render processes can split a scene's cameras");
+                 "cameras to render, as <robot>/<camera>, comma-separated or repeated (default: every camera of the "
+                 "scene, on as declared); `off`: every camera starts off, to be switched on at run time "
+                 "(<prefix>/cameras/control); several turf-render processes can split a scene's "
+                 "cameras");
   app.add_flag("--list-cameras", options.list_cameras, "print the scene's cameras and exit");
   app.add_option("--status-every", options.status_every, "seconds between status lines")
       ->capture_default_str()
@@ -74,9 +76,14 @@ int main(int argc, char** argv) {
       return turf::kExitClean;
     }
     options.cameras = SplitIds(cameras);
-    std::vector<turf::CameraSpec> selected = turf::SelectCameras(all, options.cameras);
-    if (selected.empty()) spdlog::warn("no camera to render: the scene declares none enabled");
-    spdlog::info("scene {}: {} camera(s), rendering {}", options.scene_file, all.size(), selected.size());
+    options.cameras_off = options.cameras.size() == 1 && options.cameras[0] == "off";
+    if (options.cameras_off) options.cameras.clear();
+    std::vector<turf::CameraSpec> selected = turf::RenderSet(all, options.cameras, options.cameras_off);
+    size_t on = 0;
+    for (const turf::CameraSpec& c : selected) on += c.enabled;
+    if (selected.empty()) spdlog::warn("no camera to render: the scene declares none");
+    spdlog::info("scene {}: {} camera(s), {} in this renderer's set, {} on at start", options.scene_file, all.size(),
+                 selected.size(), on);
     turf::RenderNode(options, std::move(scene), std::move(selected)).Run(turf::StopRequested);
     return turf::kExitClean;
   });
