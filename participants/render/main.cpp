@@ -62,6 +62,14 @@ int main(int argc, char** argv) {
                  "(<prefix>/cameras/control); several turf-render processes can split a scene's "
                  "cameras");
   app.add_flag("--list-cameras", options.list_cameras, "print the scene's cameras and exit");
+  bool no_team_colours = false;
+  app.add_flag("--no-team-colours", no_team_colours,
+               "robots keep their files' colours (by default a robot named red_*, blue_* or yellow_* has its trunk "
+               "in that team's colour)");
+  app.add_option("--brightness", options.brightness,
+                 "every light this many times as bright (a simple lighting change: 0.5 dim, 1.5 bright)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 4.0));
   app.add_option("--status-every", options.status_every, "seconds between status lines")
       ->capture_default_str()
       ->check(CLI::Range(0.1, 3600.0));
@@ -75,6 +83,7 @@ int main(int argc, char** argv) {
                     c.enabled ? "" : " (disabled)");
       return turf::kExitClean;
     }
+    options.team_colours = !no_team_colours;
     options.cameras = SplitIds(cameras);
     options.cameras_off = options.cameras.size() == 1 && options.cameras[0] == "off";
     if (options.cameras_off) options.cameras.clear();

@@ -79,7 +79,9 @@ class RenderNode::Impl {
   void Run(const std::function<bool()>& stop) {
     EglContext egl;
     spdlog::info("OpenGL: {}", egl.Renderer());
-    SceneRenderer renderer(scene_, cameras_);
+    SceneRenderer renderer(scene_, cameras_, RenderLook{options_.team_colours, options_.brightness});
+    spdlog::info("look: team colours {} (robots named red_*, blue_*, yellow_*), lights x{}",
+                 options_.team_colours ? "on" : "off", options_.brightness);
     dds::VendorParticipant images(
         dds::VendorOptions{options_.domain, options_.name + "-images", options_.security, true});
     std::vector<CameraOutput> outputs = MakeOutputs(images);

@@ -34,6 +34,8 @@ struct RenderOptions : ParticipantOptions {
   bool cameras_off = false;          // --cameras off: every camera of the set starts off
   bool list_cameras = false;         // --list-cameras
   double status_every = 10.0;        // --status-every: seconds between status lines
+  bool team_colours = true;          // --no-team-colours turns it off (scene_renderer.h: RenderLook)
+  double brightness = 1.0;           // --brightness
 };
 
 // The cameras to render: `requested` ids (in the scene's order), or every enabled one when empty. An unknown id
