@@ -47,7 +47,13 @@ IdentityGrant Team(const std::string& name, SecurityProfile profile) {
   return g;
 }
 
-IdentityGrant Bridge(const std::string& name) { return {name, WithDirection({Direction::kSubscribed}), Everything()}; }
+// The bridges write what turf-sim reads; and cameras/control (the HLVS bridge, which runs as simspark-bridge, asks
+// turf-render for the cameras its clients enable).
+IdentityGrant Bridge(const std::string& name) {
+  IdentityGrant g{name, WithDirection({Direction::kSubscribed}), Everything()};
+  g.publish.push_back(kCameraControlSuffix);
+  return g;
+}
 
 const char* const kNames[] = {"sim",  "vision-bridge", "grsim-bridge", "simproto-bridge", "simspark-bridge",
                               "blue", "yellow",        "operator",     "observer",        "render"};
