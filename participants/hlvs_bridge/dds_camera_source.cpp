@@ -38,7 +38,10 @@ struct DdsCameraSource::Impl {
   };
 
   CameraSourceOptions options;
-  dds::VendorParticipant participant;
+  dds::VendorParticipant participant;  // images: large samples
+  // The switch on a participant of its own, without large samples: written synchronously, so the last "off" is
+  // sent before the bridge exits.
+  dds::VendorParticipant control_participant;
   std::unique_ptr<ControlWriter> control;
   std::map<std::string, std::unique_ptr<dds::VendorParticipant::RawReader>> readers;  // bridge thread only
   int64_t base_ns = 0;                                                                // bridge thread only
@@ -54,8 +57,10 @@ struct DdsCameraSource::Impl {
   explicit Impl(CameraSourceOptions o)
       : options(std::move(o)),
         participant(
-            dds::VendorOptions{options.domain, options.name + "-cameras", options.security, /*large_samples=*/true}) {
-    control = participant.MakeWriter<idl::CameraControlPubSubType>(dds::CameraControlTopicName(options.prefix));
+            dds::VendorOptions{options.domain, options.name + "-cameras", options.security, /*large_samples=*/true}),
+        control_participant(dds::VendorOptions{options.domain, options.name + "-camera-switch", options.security,
+                                               /*large_samples=*/false}) {
+    control = control_participant.MakeWriter<idl::CameraControlPubSubType>(dds::CameraControlTopicName(options.prefix));
     resend = std::thread([this] { ResendLoop(); });
   }
 

@@ -8,7 +8,8 @@
 //
 // Reads:  rt/<prefix>/<robot>/<camera>/image_raw (sensor_msgs::msg::dds_::Image_, rgb8 or yuv422_yuy2)
 // Writes: <prefix>/cameras/control (turf::idl::CameraControl)
-// Both on a participant of its own for large samples (dds::VendorParticipant), as turf-render's.
+// The images on a participant of its own for large samples (dds::VendorParticipant), as turf-render's; the switch
+// on another, without (written synchronously, so the last "off" is sent before the bridge exits).
 #pragma once
 
 #include <cstdint>

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ struct CameraControlRequest {
   double rate_hz = 0;  // 0: the declared rate
   std::string source;  // who asks (logs)
 };
+
+// A command line's switch, "red_1/camera=on", "red_1/camera=on@62.5" (Hz of sim time) or "red_1/camera=off"; nullopt
+// (with `why`) for anything else, a rate as CameraSwitch refuses it included.
+std::optional<CameraControlRequest> ParseCameraSwitch(const std::string& text, std::string* why);
 
 class CameraSwitch {
  public:

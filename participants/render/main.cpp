@@ -13,6 +13,7 @@
 #include "participants/common/participant_main.h"
 #include "participants/common/process.h"
 #include "participants/render/render_node.h"
+#include "participants/render/switch_command.h"
 
 namespace {
 
@@ -55,7 +56,14 @@ int main(int argc, char** argv) {
   CLI::App& app = participant.app();
   turf::RenderOptions options;
   std::vector<std::string> cameras;
-  app.add_option("--scene", options.scene_file, "the legged scene turf-sim runs (its robots' cameras)")->required();
+  app.add_option("--scene", options.scene_file,
+                 "the legged scene turf-sim runs (its robots' cameras); required but with --switch");
+  std::vector<std::string> switches;
+  app.add_option(
+         "--switch", switches,
+         "switch a camera of the running renderers and exit, no --scene needed: ROBOT/CAMERA=on, "
+         "ROBOT/CAMERA=on@HZ (Hz of sim time) or ROBOT/CAMERA=off; repeatable (writes <prefix>/cameras/control)")
+      ->type_name("ID=STATE");
   app.add_option("--cameras", cameras,
                  "cameras to render, as <robot>/<camera>, comma-separated or repeated (default: every camera of the "
                  "scene, on as declared); `off`: every camera starts off, to be switched on at run time "
@@ -75,6 +83,17 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.1, 3600.0));
   participant.AddCommonFlags(options);
   return participant.Run(argc, argv, [&] {
+    if (!switches.empty()) {
+      std::vector<turf::CameraControlRequest> requests;
+      for (const std::string& text : switches) {
+        std::string why;
+        auto r = turf::ParseCameraSwitch(text, &why);
+        if (!r) throw std::invalid_argument("--switch " + why);
+        requests.push_back(*r);
+      }
+      return static_cast<turf::ExitCode>(turf::SendCameraSwitches(options, requests));
+    }
+    if (options.scene_file.empty()) throw std::invalid_argument("--scene is required (but with --switch)");
     auto [scene, all] = LoadScene(options.scene_file);
     if (options.list_cameras) {
       for (const turf::CameraSpec& c : all)

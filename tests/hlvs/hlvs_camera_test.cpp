@@ -2,7 +2,8 @@
 // turf-render with that scene and turf-hlvs-bridge as real processes, and a scripted HLVS client. The client
 // enables "Camera" every 16 ms: the bridge switches the camera on in turf-render (cameras/control), and the client
 // gets CameraMeasurements of 320 x 240, raw (quality -1), B G R bytes, at times that are multiples of 16 ms after
-// the enabling step, each a different frame; red_1 looks at the field (green in the G byte). Then the client sets
+// the enabling step, each a different frame (the client turns the head all the time); red_1 looks at the field
+// (green in the G byte). Then the client sets
 // 0 and no camera comes any more. Skipped where turf-render can make no EGL context.
 #include <gtest/gtest.h>
 #include <sys/socket.h>
@@ -10,6 +11,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <set>
 #include <string>
 #include <thread>
@@ -31,6 +33,14 @@ hlvs::pb::ActuatorRequests CameraStep(uint32_t ms) {
   auto* s = r.add_sensor_time_steps();
   s->set_name("Camera");
   s->set_timestep(ms);
+  return r;
+}
+
+hlvs::pb::ActuatorRequests NeckTo(double rad) {
+  hlvs::pb::ActuatorRequests r;
+  auto* p = r.add_motor_positions();
+  p->set_name("Neck");
+  p->set_position(rad);
   return r;
 }
 
@@ -78,6 +88,7 @@ TEST(HlvsCamera, AClientGetsRenderedImagesAtItsStepAndNoneOnceOff) {
   while (images < 5 && Clock::now() < deadline) {
     auto m = client.Receive(20s);
     ASSERT_TRUE(m.has_value()) << bridge.Log();
+    ASSERT_TRUE(client.Send(NeckTo(0.5 * std::sin(m->time() * 1e-3 * M_PI))));  // the head keeps turning
     for (const auto& w : m->messages()) ADD_FAILURE() << "a message: " << w.text();
     if (enabled_at == 0 && m->time() > first->time()) enabled_at = m->time();  // the request's step at the latest
     for (const auto& c : m->cameras()) {
@@ -96,7 +107,7 @@ TEST(HlvsCamera, AClientGetsRenderedImagesAtItsStepAndNoneOnceOff) {
     }
   }
   ASSERT_GE(images, 5) << render.Log() << bridge.Log();
-  EXPECT_EQ(distinct.size(), static_cast<size_t>(images)) << "never one frame twice (the robot sways a little)";
+  EXPECT_EQ(distinct.size(), static_cast<size_t>(images)) << "never one frame twice (the head turns all the time)";
   EXPECT_NE(render.Log().find("camera red_1/camera on at 62.5 Hz of sim time (asked by 'turf-hlvs-bridge')"),
             std::string::npos)
       << render.Log();

@@ -61,5 +61,28 @@ TEST(CameraSwitch, ABadRateIsRefusedAndChangesNothing) {
   }
 }
 
+TEST(CameraSwitch, ParsesCommandLineSwitches) {
+  std::string why;
+  auto on = ParseCameraSwitch("red_1/camera=on", &why);
+  ASSERT_TRUE(on.has_value()) << why;
+  EXPECT_EQ(on->robot, "red_1");
+  EXPECT_EQ(on->camera, "camera");
+  EXPECT_TRUE(on->enabled);
+  EXPECT_DOUBLE_EQ(on->rate_hz, 0);
+  auto fast = ParseCameraSwitch("nao_1/top=on@62.5", &why);
+  ASSERT_TRUE(fast.has_value()) << why;
+  EXPECT_DOUBLE_EQ(fast->rate_hz, 62.5);
+  auto off = ParseCameraSwitch("nao_1/top=off", &why);
+  ASSERT_TRUE(off.has_value()) << why;
+  EXPECT_FALSE(off->enabled);
+  for (const char* bad :
+       {"nao_1/top", "nao_1=on", "/top=on", "nao_1/=on", "nao_1/top=yes", "nao_1/top=on@", "nao_1/top=on@0",
+        "nao_1/top=on@-3", "nao_1/top=on@nan", "nao_1/top=on@5000", "nao_1/top=on@5x", "nao_1/top=onn"}) {
+    why.clear();
+    EXPECT_FALSE(ParseCameraSwitch(bad, &why).has_value()) << bad;
+    EXPECT_FALSE(why.empty()) << bad;
+  }
+}
+
 }  // namespace
 }  // namespace turf

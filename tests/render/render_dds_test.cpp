@@ -280,8 +280,9 @@ TEST_F(RenderDds, AStateWithANanPoseIsRefusedAndTheNextOneRendered) {
 }
 
 // --cameras off: the renderer takes states and draws nothing (its status line: states taken, 0 frames, 0 cameras
-// on) until a control sample on cameras/control switches a camera on at a rate; then that camera's images come at
-// that rate of sim time. A control sample with a NaN rate is refused (logged, counted), and off stops it again.
+// on) until a control sample on cameras/control switches a camera on at a rate (here from `turf-render --switch`);
+// then that camera's images come at that rate of sim time. A control sample with a NaN rate (from this test's own
+// writer) is refused (logged, counted), and off stops it again.
 TEST_F(RenderDds, CamerasOffUntilAControlSampleSwitchesOneOn) {
   const std::string scene = WriteScene("render_switch",
                                        "      - {name: camera, width: 64, height: 48, rate_hz: 20}\n"
@@ -325,17 +326,23 @@ TEST_F(RenderDds, CamerasOffUntilAControlSampleSwitchesOneOn) {
     send(true, std::nan(""));
     return render.Log().find("refused (1 so far)") != std::string::npos;
   })) << render.Log();
-  ASSERT_TRUE(poll([&] {
-    if (chest.Count() == 0) send(true, 5.0);
-    return chest.Count() >= 3;
-  })) << render.Log();
-  EXPECT_TRUE(log_has("camera t1/chest on at 5 Hz of sim time (asked by 'render-test')")) << render.Log();
+  // The command line's switch (turf-render --switch) writes the same samples.
+  auto cli_switch = [&](const std::string& state) {
+    std::vector<std::string> argv = {test::Built("participants/render/turf-render"), "--switch", "t1/chest=" + state};
+    for (auto& a : Common()) argv.push_back(a);
+    test::Process p("render_switch", argv);
+    const auto status = p.Wait(std::chrono::milliseconds(30000));
+    return status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0;
+  };
+  ASSERT_TRUE(cli_switch("on@5"));
+  ASSERT_TRUE(wait.Until(Clock::now() + seconds(60), [&] { return chest.Count() >= 3; })) << render.Log();
+  EXPECT_TRUE(log_has("camera t1/chest on at 5 Hz of sim time (asked by 'turf-render --switch')")) << render.Log();
   EXPECT_EQ(head.Count(), 0u);
   const auto images = chest.Copy();
   for (size_t i = 1; i < images.size(); ++i)
     EXPECT_GT(Stamp(images[i].header()) - Stamp(images[i - 1].header()), 150'000'000) << "5 Hz of sim time, not 20";
-  ASSERT_TRUE(send(false, 0));
-  EXPECT_TRUE(log_has("camera t1/chest off (asked by 'render-test')")) << render.Log();
+  ASSERT_TRUE(cli_switch("off"));
+  EXPECT_TRUE(log_has("camera t1/chest off (asked by 'turf-render --switch')")) << render.Log();
   EXPECT_EQ(sim.Stop(), 0);
   EXPECT_EQ(render.Stop(), 0);
 }
