@@ -13,4 +13,8 @@ std::string CameraTopicPattern(const std::string& prefix, CameraTopic topic) {
   return CameraTopicName(prefix, "*", "*", topic);
 }
 
+std::string CameraControlTopicName(const std::string& prefix) {
+  return (prefix.empty() ? std::string() : prefix + "/") + kCameraControlSuffix;
+}
+
 }  // namespace turf::dds

@@ -50,4 +50,15 @@ std::string CameraTopicName(const std::string& prefix, const std::string& robot,
 // The same with * for robot and camera: "rt/turf/*/*/image_raw", for DDS Security's permissions.
 std::string CameraTopicPattern(const std::string& prefix, CameraTopic topic);
 
+// turf-render's run-time switch (idl/ros/CameraControl.idl): <prefix>/cameras/control, turf's own type, on the
+// same participant kind as the images (VendorParticipant: best effort, volatile, keep last); senders re-send their
+// settings every kCameraControlResendSeconds.
+inline constexpr const char* kCameraControlSuffix = "cameras/control";
+inline constexpr const char* kCameraControlType = "turf::idl::CameraControl";
+inline constexpr const char* kCameraControlWhat =
+    "per camera, the newest counts: enable or disable it, at a rate of sim time (0: the scene's); senders (the HLVS "
+    "bridge) re-send every second";
+inline constexpr double kCameraControlResendSeconds = 1.0;
+std::string CameraControlTopicName(const std::string& prefix);
+
 }  // namespace turf::dds

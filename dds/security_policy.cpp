@@ -47,13 +47,20 @@ IdentityGrant Team(const std::string& name, SecurityProfile profile) {
   return g;
 }
 
-IdentityGrant Bridge(const std::string& name) { return {name, WithDirection({Direction::kSubscribed}), Everything()}; }
+// The bridges write what turf-sim reads; and cameras/control (the HLVS bridge, which runs as simspark-bridge, asks
+// turf-render for the cameras its clients enable).
+IdentityGrant Bridge(const std::string& name) {
+  IdentityGrant g{name, WithDirection({Direction::kSubscribed}), Everything()};
+  g.publish.push_back(kCameraControlSuffix);
+  return g;
+}
 
 const char* const kNames[] = {"sim",  "vision-bridge", "grsim-bridge", "simproto-bridge", "simspark-bridge",
                               "blue", "yellow",        "operator",     "observer",        "render"};
 
 IdentityGrant Render() {
   IdentityGrant g{"render", {}, Suffixes({Topic::kClock, Topic::kLeggedScene, Topic::kRobotsState})};
+  g.subscribe.push_back(kCameraControlSuffix);  // cameras on and off at run time
   g.publish_cameras = true;
   return g;
 }
@@ -89,7 +96,11 @@ IdentityGrant GrantOf(const std::string& name, SecurityProfile profile) {
   if (name == "vision-bridge" || name == "grsim-bridge" || name == "simproto-bridge" || name == "simspark-bridge")
     return WithCameras(Bridge(name));
   if (name == "blue" || name == "yellow") return WithCameras(Team(name, profile));
-  if (name == "operator") return WithCameras({name, Suffixes({Topic::kControl}), Everything()});
+  if (name == "operator") {
+    IdentityGrant g = WithCameras({name, Suffixes({Topic::kControl}), Everything()});
+    g.publish.push_back(kCameraControlSuffix);  // switches turf-render's cameras
+    return g;
+  }
   if (name == "observer") return WithCameras({name, {}, Everything()});
   if (name == "render") return Render();
   std::string known;

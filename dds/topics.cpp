@@ -39,6 +39,8 @@ std::string TopicsMarkdown() {
     out += std::string("| `rt/<prefix>/<robot>/<camera>/") + info.kind + "` | `" + info.dds_type +
            "` | published by turf-render | " + kCameraTopicQos + " | " + info.what + " |\n";
   }
+  out += std::string("| `<prefix>/") + kCameraControlSuffix + "` | `" + kCameraControlType +
+         "` | read by turf-render | " + kCameraTopicQos + " | " + kCameraControlWhat + " |\n";
   return out;
 }
 

@@ -104,6 +104,7 @@ void Session::SetTimeStep(const NamedStep& s, uint32_t now_ms) {
     return Warn(fmt::format("Device \"{}\" is not supported, time step command, ignored.", s.name));
   Sensor& sensor = sensors_[s.name];
   if (s.time_step_ms == 0) {
+    if (device == Device::kCamera && sensor.period != 0) EnableCamera(s.name, 0);
     sensor.period = 0;
     return;
   }
@@ -118,6 +119,13 @@ void Session::SetTimeStep(const NamedStep& s, uint32_t now_ms) {
   if (device == Device::kCamera && !CameraQuotaAllows(s.name, s.time_step_ms)) return;
   sensor.period = s.time_step_ms;
   sensor.next = now_ms + s.time_step_ms;
+  if (device == Device::kCamera) EnableCamera(s.name, s.time_step_ms);
+}
+
+void Session::EnableCamera(const std::string& name, uint32_t period_ms) {
+  if (options_.cameras == nullptr) return;
+  for (const CameraEntry& c : options_.model->cameras)
+    if (name == c.name) options_.cameras->Enable(options_.robot, c.mjcf, period_ms);
 }
 
 bool Session::CameraQuotaAllows(const std::string& name, uint32_t period) {

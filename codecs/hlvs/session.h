@@ -110,6 +110,7 @@ class Session {
   bool CameraQuotaAllows(const std::string& name, uint32_t period);
   bool Due(const std::string& name, uint32_t now_ms);
   void MeasureCameras(uint32_t now_ms, SensorMeasurements* out);
+  void EnableCamera(const std::string& name, uint32_t period_ms);  // tells the camera source
   JointOutput MotorCommand(size_t i, double position);
 
   SessionOptions options_;

@@ -12,6 +12,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "codecs/hlvs/camera_source.h"
 #include "codecs/hlvs/session.h"
 #include "codecs/hlvs/wire.h"
 #include "participants/common/address_allowlist.h"
@@ -174,6 +175,7 @@ class HlvsBridge::Impl {
       if (!stop()) spdlog::error("turf-sim did not publish the state of its {} robots", robots.size());
       return false;
     }
+    if (cameras_ != nullptr) cameras_->Attached(link_->state().sim_time_ns());
     steps_ = static_cast<uint32_t>(std::max<long>(1, std::lround(hlvs::kBasicStepMs * 1e-3 / link_->step_s())));
     if (std::abs(steps_ * link_->step_s() - hlvs::kBasicStepMs * 1e-3) > 1e-9)
       throw std::invalid_argument(
@@ -285,7 +287,13 @@ class HlvsBridge::Impl {
 
   void Send(Slot* s, hlvs::SensorMeasurements m, uint64_t real_ms) {
     if (s->session->camera_unavailable() && !s->camera_logged) {
-      spdlog::info("{}: a camera is enabled but there is no image source: no images are sent", s->robot);
+      if (cameras_ == nullptr)
+        spdlog::info("{}: a camera is enabled but there is no image source: no images are sent", s->robot);
+      else
+        spdlog::info(
+            "{}: a camera was due and no new image of its size had come (not drawn yet; or is turf-render "
+            "not running with this scene?): it is left out of such messages (logged once)",
+            s->robot);
       s->camera_logged = true;
     }
     hlvs::EncodeResult framed = hlvs::FrameSensorMeasurements(m);

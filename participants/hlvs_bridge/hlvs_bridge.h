@@ -24,8 +24,9 @@
 // Writes: control (SimControl: OP_SET_TIME_MODE, OP_STEP with joint commands). Reads: legged/scene, robots/state,
 // clock, control_reply (participants/common/legged_lockstep.h).
 //
-// Cameras: accepted in requests (time steps with the quota, exposure), but turf renders no images yet: with no
-// CameraSource an enabled camera is never in a SensorMeasurements (logged once).
+// Cameras: accepted in requests (time steps with the quota, exposure); images come from a hlvs::CameraSource
+// (SetCameraSource; main.cpp gives it turf-render's topics, dds_camera_source.h). With none, or with no new frame
+// when a camera is due, the camera is left out of that SensorMeasurements (logged once per robot).
 #pragma once
 
 #include <chrono>

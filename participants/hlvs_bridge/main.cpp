@@ -1,9 +1,12 @@
 // turf-hlvs-bridge: the Humanoid League virtual season's robot API (one TCP server per robot: red 10001-10004, blue
 // 10021-10024) in front of turf-sim running a legged scene (configs/scenes/hlvs.yaml). Ports, time and choices:
 // hlvs_bridge.h.
+#include <memory>
+
 #include "participants/common/cli_checks.h"
 #include "participants/common/participant_main.h"
 #include "participants/common/process.h"
+#include "participants/hlvs_bridge/dds_camera_source.h"
 #include "participants/hlvs_bridge/hlvs_bridge.h"
 
 int main(int argc, char** argv) {
@@ -41,7 +44,17 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--duration", options.duration, "stop after this many simulated seconds (0: run until Ctrl-C)")
       ->check(turf::FiniteAtLeastZero());
+  bool no_images = false;
+  app.add_flag("--no-camera-images", no_images,
+               "send no camera images (by default a camera a client enables is asked of turf-render, "
+               "<prefix>/cameras/control, and its images taken from rt/<prefix>/<robot>/<camera>/image_raw)");
   return participant.Run(argc, argv, [&] {
-    return turf::HlvsBridge(options).Run(turf::StopRequested) ? turf::kExitClean : turf::kExitFailure;
+    std::unique_ptr<turf::DdsCameraSource> images;  // outlives the bridge
+    if (!no_images)
+      images = std::make_unique<turf::DdsCameraSource>(
+          turf::CameraSourceOptions{options.domain, options.prefix, options.security, options.name});
+    turf::HlvsBridge bridge(options);
+    bridge.SetCameraSource(images.get());
+    return bridge.Run(turf::StopRequested) ? turf::kExitClean : turf::kExitFailure;
   });
 }

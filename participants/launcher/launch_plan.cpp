@@ -74,7 +74,7 @@ void ApplySet(const std::string& set, LaunchProfile* profile, std::vector<std::s
     return;
   }
   if (!ValidFlagName(name) || name == "domain" || name == "prefix" || name == "qos" ||
-      (process == "sim" && (name == "scene" || name == "realism"))) {
+      ((process == "sim" || process == "render") && name == "scene") || (process == "sim" && name == "realism")) {
     errors->push_back(
         fmt::format("--set {}: '{}' is not a flag --set may change (use --domain, --prefix, --realism)", set, name));
     return;
@@ -147,6 +147,7 @@ ProcessCommand MakeCommand(const ProcessSpec& spec, const LaunchProfile& profile
     for (const Flag& f : spec.flags) command.argv.insert(command.argv.end(), {"-" + f.name, f.value});
     return command;
   }
+  if (spec.name == "render") command.argv.insert(command.argv.end(), {"--scene", profile.scene});
   if (spec.name == "sim") {
     command.argv.insert(command.argv.end(), {"--scene", profile.scene});
     if (!profile.realism.empty()) command.argv.insert(command.argv.end(), {"--realism", profile.realism});

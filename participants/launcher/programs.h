@@ -32,6 +32,8 @@ inline constexpr Program kPrograms[] = {
     // The web view (not a bridge, but started like one: listed under a profile's `bridges:`); it pauses and
     // teleports, as the operator.
     {"viewer", "turf-viewer", "viewer", Scenes::kAny, "operator"},
+    // The robots' cameras (legged scenes; given the profile's scene, as turf-sim).
+    {"render", "turf-render", "render", Scenes::kLegged, "render"},
 };
 
 // Bridges a profile may list under `bridges:` (every program but discovery and sim).

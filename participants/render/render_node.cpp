@@ -1,6 +1,7 @@
 #include "participants/render/render_node.h"
 
 #include <spdlog/spdlog.h>
+#include <turf/idl/CameraControlPubSubTypes.h>
 #include <turf/idl/JointsPubSubTypes.h>
 #include <turf/idl/RosImagePubSubTypes.h>
 
@@ -16,6 +17,7 @@
 #include "dds/vendor_participant.h"
 #include "participants/common/wakeup.h"
 #include "participants/render/camera_messages.h"
+#include "participants/render/camera_switch.h"
 #include "participants/render/egl_context.h"
 #include "participants/render/scene_renderer.h"
 
@@ -43,6 +45,13 @@ std::vector<CameraSpec> SelectCameras(const std::vector<CameraSpec>& all, const 
   return out;
 }
 
+std::vector<CameraSpec> RenderSet(const std::vector<CameraSpec>& all, const std::vector<std::string>& requested,
+                                  bool off) {
+  std::vector<CameraSpec> out = requested.empty() ? all : SelectCameras(all, requested);
+  for (CameraSpec& c : out) c.enabled = !off && (requested.empty() ? c.enabled : true);
+  return out;
+}
+
 namespace {
 
 bool Finite(const idl::Vec3& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
@@ -54,6 +63,7 @@ bool Finite(const idl::Quat& q) {
 struct CameraOutput {
   CameraSpec spec;
   FrameSchedule schedule;
+  uint64_t dropped_before = 0;  // by the schedules this camera had before its last switch
   std::unique_ptr<dds::VendorParticipant::Writer<ros::Image_PubSubType>> image;
   std::unique_ptr<dds::VendorParticipant::Writer<ros::CompressedImage_PubSubType>> compressed;
   std::unique_ptr<dds::VendorParticipant::Writer<ros::CameraInfo_PubSubType>> info;
@@ -64,23 +74,38 @@ struct CameraOutput {
 class RenderNode::Impl {
  public:
   Impl(RenderOptions options, LeggedScene scene, std::vector<CameraSpec> cameras)
-      : options_(std::move(options)), scene_(std::move(scene)), cameras_(std::move(cameras)) {}
+      : options_(std::move(options)), scene_(std::move(scene)), cameras_(std::move(cameras)), switch_(cameras_) {}
 
   void Run(const std::function<bool()>& stop) {
     EglContext egl;
     spdlog::info("OpenGL: {}", egl.Renderer());
-    SceneRenderer renderer(scene_, cameras_);
+    SceneRenderer renderer(scene_, cameras_, RenderLook{options_.team_colours, options_.brightness});
+    spdlog::info("look: team colours {} (robots named red_*, blue_*, yellow_*), lights x{}",
+                 options_.team_colours ? "on" : "off", options_.brightness);
     dds::VendorParticipant images(
         dds::VendorOptions{options_.domain, options_.name + "-images", options_.security, true});
     std::vector<CameraOutput> outputs = MakeOutputs(images);
-    dds::Participant turf(DdsOptions(options_));
+    {
+      std::lock_guard<std::mutex> lock(stats_mutex_);
+      stats_.cameras_on = switch_.enabled_count();
+    }
     Wakeup wake;
+    auto controls = images.MakeReader<idl::CameraControlPubSubType>(
+        dds::CameraControlTopicName(options_.prefix), [this, &wake](const idl::CameraControl& c, int64_t) {
+          std::lock_guard<std::mutex> lock(controls_mutex_);
+          controls_.push_back({c.robot(), c.camera(), c.enabled(), c.rate_hz(), c.source()});
+          wake.Notify();
+        });
+    spdlog::info("reads {} (turf::idl::CameraControl): cameras on and off at run time; {} of {} on",
+                 dds::CameraControlTopicName(options_.prefix), switch_.enabled_count(), switch_.size());
+    dds::Participant turf(DdsOptions(options_));
     auto reader = turf.MakeReader(dds::Topic::kRobotsState, [&wake] { wake.Notify(); });
     spdlog::info("{}", dds::EndpointLine(options_.prefix, dds::Topic::kRobotsState, dds::Endpoint::kReader));
     std::vector<idl::LeggedState> batch;
     auto next_status = Clock::now() + Seconds(options_.status_every);
     while (!stop()) {
       wake.WaitFor(std::chrono::milliseconds(100));
+      ApplyControls(outputs);
       if (reader->Take(&batch)) Handle(batch, renderer, outputs);
       if (Clock::now() >= next_status) {
         LogStatus();
@@ -88,6 +113,7 @@ class RenderNode::Impl {
       }
     }
     LogStatus();
+    controls.reset();  // no callback into this object from here on
   }
 
   RenderStats Stats() const {
@@ -103,7 +129,7 @@ class RenderNode::Impl {
   std::vector<CameraOutput> MakeOutputs(dds::VendorParticipant& images) {
     std::vector<CameraOutput> outputs;
     for (const CameraSpec& c : cameras_) {
-      CameraOutput o{c, FrameSchedule(c.rate_hz), nullptr, nullptr, nullptr};
+      CameraOutput o{c, FrameSchedule(c.rate_hz), 0, nullptr, nullptr, nullptr};
       const bool jpeg = c.encoding == ImageEncoding::kJpeg;
       const dds::CameraTopic kind = jpeg ? dds::CameraTopic::kCompressed : dds::CameraTopic::kImage;
       const std::string image_topic = dds::CameraTopicName(options_.prefix, c.robot, c.name, kind);
@@ -114,10 +140,10 @@ class RenderNode::Impl {
       else
         o.image = images.MakeWriter<ros::Image_PubSubType>(image_topic);
       o.info = images.MakeWriter<ros::CameraInfo_PubSubType>(info_topic);
-      spdlog::info("camera {}: {}x{}, {:.1f} deg horizontal, {} Hz of sim time, {}: writes {} ({}) and {} ({}); {}",
+      spdlog::info("camera {}: {}x{}, {:.1f} deg horizontal, {} Hz of sim time, {}: writes {} ({}) and {} ({}); {}; {}",
                    CameraId(c), c.width, c.height, c.hfov * 180.0 / M_PI, c.rate_hz, EncodingName(c.encoding),
                    image_topic, dds::Info(kind).dds_type, info_topic, dds::Info(dds::CameraTopic::kCameraInfo).dds_type,
-                   dds::kCameraTopicQos);
+                   dds::kCameraTopicQos, c.enabled ? "on" : "off");
       outputs.push_back(std::move(o));
     }
     return outputs;
@@ -133,7 +159,7 @@ class RenderNode::Impl {
     }
     std::vector<size_t> due;
     for (size_t i = 0; i < outs.size(); ++i)
-      if (outs[i].schedule.Offer(state.sim_time_ns())) due.push_back(i);
+      if (switch_.enabled(i) && outs[i].schedule.Offer(state.sim_time_ns())) due.push_back(i);
     if (due.empty()) return UpdateDropped(outs);
     if (!Apply(state, renderer)) {
       std::lock_guard<std::mutex> lock(stats_mutex_);
@@ -154,7 +180,38 @@ class RenderNode::Impl {
   }
   void UpdateDroppedLocked(const std::vector<CameraOutput>& outs) {
     stats_.dropped = 0;
-    for (const CameraOutput& o : outs) stats_.dropped += o.schedule.dropped();
+    for (const CameraOutput& o : outs) stats_.dropped += o.dropped_before + o.schedule.dropped();
+  }
+
+  // The control samples that arrived, in order: a camera switched on starts a new schedule at its rate.
+  void ApplyControls(std::vector<CameraOutput>& outs) {
+    std::vector<CameraControlRequest> pending;
+    {
+      std::lock_guard<std::mutex> lock(controls_mutex_);
+      pending.swap(controls_);
+    }
+    for (const CameraControlRequest& r : pending) {
+      std::string why;
+      const CameraSwitch::Outcome outcome = switch_.Apply(r, &why);
+      std::lock_guard<std::mutex> lock(stats_mutex_);
+      if (outcome == CameraSwitch::Outcome::kRefused) {
+        ++stats_.controls_refused;
+        if (stats_.controls_refused <= 5 || stats_.controls_refused % 100 == 0)
+          spdlog::warn("camera control for {}/{} from '{}' refused ({} so far): {}", r.robot, r.camera, r.source,
+                       stats_.controls_refused, why);
+        continue;
+      }
+      if (outcome != CameraSwitch::Outcome::kChanged) continue;
+      ++stats_.controls;
+      const size_t i = switch_.Find(r.robot, r.camera);
+      CameraOutput& o = outs[i];
+      o.dropped_before += o.schedule.dropped();
+      o.schedule = FrameSchedule(switch_.rate_hz(i));
+      spdlog::info("camera {} {}{} (asked by '{}')", CameraId(o.spec), r.enabled ? "on" : "off",
+                   r.enabled ? fmt::format(" at {} Hz of sim time", switch_.rate_hz(i)) : "", r.source);
+    }
+    std::lock_guard<std::mutex> lock(stats_mutex_);
+    stats_.cameras_on = switch_.enabled_count();
   }
 
   // The state's poses into the renderer; false (nothing drawn) if a value is not finite.
@@ -218,14 +275,19 @@ class RenderNode::Impl {
     const double fps = s.render_seconds > 0 ? static_cast<double>(s.frames) / s.render_seconds : 0.0;
     spdlog::info(
         "status: {} frames rendered, {} dropped (due by sim time while busy or between states), {} states taken "
-        "({} superseded, {} refused), {} encode errors; {:.1f} frames per second of render time",
-        s.frames, s.dropped, s.states, s.states_superseded, s.states_refused, s.encode_errors, fps);
+        "({} superseded, {} refused), {} encode errors; {:.1f} frames per second of render time; {} camera(s) on, "
+        "{} switches, {} controls refused",
+        s.frames, s.dropped, s.states, s.states_superseded, s.states_refused, s.encode_errors, fps, s.cameras_on,
+        s.controls, s.controls_refused);
     spdlog::default_logger()->flush();  // at once, also where the output goes to a file or pipe
   }
 
   RenderOptions options_;
   LeggedScene scene_;
   std::vector<CameraSpec> cameras_;
+  CameraSwitch switch_;  // the render thread's only
+  std::mutex controls_mutex_;
+  std::vector<CameraControlRequest> controls_;  // arrived, not applied yet
   std::vector<uint8_t> rgb_;
   int unknown_warned_ = 0;
   mutable std::mutex stats_mutex_;

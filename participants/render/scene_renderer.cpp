@@ -11,6 +11,7 @@
 #include "core/legged/legged_mjcf.h"
 #include "core/mj_state.h"
 #include "participants/render/field_look.h"
+#include "participants/render/team_colours.h"
 
 namespace turf {
 
@@ -74,7 +75,42 @@ struct SceneRenderer::Impl {
   }
 };
 
-SceneRenderer::SceneRenderer(const LeggedScene& scene, std::vector<CameraSpec> cameras)
+namespace {
+
+// Each team robot's top-level body's geoms in its team's colour (their materials set aside).
+void WearTeamColours(mjModel* m, const LeggedScene& scene) {
+  for (const LeggedRobot& r : scene.robots) {
+    const auto rgba = TeamColour(r.name);
+    if (!rgba) continue;
+    const std::string prefix = LeggedElementName(r.name, "");
+    for (int g = 0; g < m->ngeom; ++g) {
+      const int b = m->geom_bodyid[g];
+      const char* body = mj_id2name(m, mjOBJ_BODY, b);
+      if (m->body_parentid[b] != 0 || body == nullptr || std::string(body).rfind(prefix, 0) != 0) continue;
+      m->geom_matid[g] = -1;
+      for (int k = 0; k < 4; ++k) m->geom_rgba[4 * g + k] = (*rgba)[k];
+    }
+  }
+}
+
+// Every light, and the headlight, `scale` times as bright.
+void ScaleLights(mjModel* m, double scale) {
+  const float s = static_cast<float>(scale);
+  for (int i = 0; i < 3 * m->nlight; ++i) {
+    m->light_diffuse[i] *= s;
+    m->light_ambient[i] *= s;
+    m->light_specular[i] *= s;
+  }
+  for (int k = 0; k < 3; ++k) {
+    m->vis.headlight.diffuse[k] *= s;
+    m->vis.headlight.ambient[k] *= s;
+    m->vis.headlight.specular[k] *= s;
+  }
+}
+
+}  // namespace
+
+SceneRenderer::SceneRenderer(const LeggedScene& scene, std::vector<CameraSpec> cameras, const RenderLook& look)
     : cameras_(std::move(cameras)), impl_(std::make_unique<Impl>()) {
   mjv_defaultScene(&impl_->scene);
   mjr_defaultContext(&impl_->context);
@@ -82,6 +118,8 @@ SceneRenderer::SceneRenderer(const LeggedScene& scene, std::vector<CameraSpec> c
   if (!mjcf.errors.empty()) throw std::invalid_argument(mjcf.errors.front());
   impl_->model.reset(CompileLeggedMjcf(AddFieldLook(mjcf.xml, scene.field)));
   mjModel* m = impl_->model.get();
+  if (look.team_colours) WearTeamColours(m, scene);
+  ScaleLights(m, look.brightness);
   impl_->data.reset(mj_makeData(m));
   mj_kinematics(m, impl_->data.get());  // the start pose, for bodies no state moves
   for (int b = 0; b < m->nbody; ++b) {

@@ -15,11 +15,17 @@
 
 namespace turf {
 
+// What a renderer may change of the scene's look.
+struct RenderLook {
+  bool team_colours = true;  // robots named for a team wear its colour (team_colours.h)
+  double brightness = 1.0;   // scales every light (the sun, MuJoCo's headlight); 0..4
+};
+
 class SceneRenderer {
  public:
   // A GL context must be current on this thread for the object's life. Throws std::invalid_argument for a scene
   // that does not compose or compile, or a camera whose robot or body is not in it.
-  SceneRenderer(const LeggedScene& scene, std::vector<CameraSpec> cameras);
+  SceneRenderer(const LeggedScene& scene, std::vector<CameraSpec> cameras, const RenderLook& look = {});
   ~SceneRenderer();
   SceneRenderer(const SceneRenderer&) = delete;
   SceneRenderer& operator=(const SceneRenderer&) = delete;

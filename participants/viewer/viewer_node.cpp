@@ -24,6 +24,7 @@
 #include "participants/common/overflow_watch.h"
 #include "participants/common/process.h"
 #include "participants/common/wakeup.h"
+#include "participants/viewer/camera_frames.h"
 #include "participants/viewer/viewer_json.h"
 #include "participants/viewer/viewer_model.h"
 #include "participants/viewer/web_server.h"
@@ -80,6 +81,7 @@ class ViewerNode::Impl {
       Reject(kind, detail);
       if (client != 0) OnPageMessage(client, viewer::RefusedJson(kind, detail), /*refusal=*/true);
     };
+    handlers.on_image = [this](std::string_view target) { return camera_frames_.Jpeg(target); };
     std::string error;
     server_ = viewer::WebServer::Start(std::move(web), std::move(handlers), &error);
     if (!server_) {
@@ -365,6 +367,8 @@ class ViewerNode::Impl {
   std::atomic<uint64_t> replies_{0};
   std::atomic<bool> control_matched_{false};
   std::optional<SteadyClock::time_point> matched_since_;
+  viewer::CameraFrames camera_frames_{
+      viewer::CameraFramesOptions{options_.domain, options_.prefix, options_.security, options_.name}};
 
   // Last: the server's I/O thread calls into the members above, so it stops first.
   std::unique_ptr<viewer::WebServer> server_;

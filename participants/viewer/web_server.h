@@ -52,6 +52,8 @@ struct WebServerHandlers {
   // A GET or HEAD of a target under /recording/ (query included), answered with this JSON, or 404 when it
   // gives nullopt (on the I/O thread: it must be quick and thread-safe). Unset: those targets are files too.
   std::function<std::optional<std::string>(std::string_view target)> on_get;
+  // The same for targets under /camera/, answered as image/jpeg (the camera panel; camera_frames.h).
+  std::function<std::optional<std::string>(std::string_view target)> on_image;
 };
 
 struct WebServerStats {

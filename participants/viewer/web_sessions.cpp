@@ -91,12 +91,14 @@ void HttpSession::Upgrade(http::request<http::string_body> request) {
   std::make_shared<PageSession>(std::move(stream_), slot_.ptr())->Start(std::move(request));
 }
 
-http::response<http::string_body> HttpSession::DynamicResponse(const http::request<http::string_body>& request) {
-  const std::optional<std::string> body = slot_.shared().handlers.on_get(Std(request.target()));
+http::response<http::string_body> HttpSession::DynamicResponse(const http::request<http::string_body>& request,
+                                                               bool image) {
+  const auto& handlers = slot_.shared().handlers;
+  const std::optional<std::string> body = (image ? handlers.on_image : handlers.on_get)(Std(request.target()));
   if (!body) return Plain(http::status::not_found, request.version(), request.keep_alive(), "not found\n");
   http::response<http::string_body> res{http::status::ok, request.version()};
   res.set(http::field::server, kServer);
-  res.set(http::field::content_type, "application/json");
+  res.set(http::field::content_type, image ? "image/jpeg" : "application/json");
   res.set(http::field::cache_control, "no-store");
   res.set("X-Content-Type-Options", "nosniff");
   res.set("Content-Security-Policy", kPolicy);
@@ -120,7 +122,9 @@ http::response<http::string_body> HttpSession::StaticResponse(const http::reques
     return res;
   }
   if (slot_.shared().handlers.on_get && Std(request.target()).rfind("/recording/", 0) == 0)
-    return DynamicResponse(request);
+    return DynamicResponse(request, false);
+  if (slot_.shared().handlers.on_image && Std(request.target()).rfind("/camera/", 0) == 0)
+    return DynamicResponse(request, true);
   const std::optional<std::string> file = StaticFile(Std(request.target()));
   if (!file) {
     slot_.shared().Refuse(0, "http.bad_target", "target '" + Clip(request.target()) + "'");

@@ -68,7 +68,8 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   void Upgrade(http::request<http::string_body> request);
   void Respond(http::response<http::string_body> response);
   http::response<http::string_body> StaticResponse(const http::request<http::string_body>& request);
-  http::response<http::string_body> DynamicResponse(const http::request<http::string_body>& request);
+  // A /recording/ target (JSON, on_get) or, with `image`, a /camera/ one (JPEG, on_image).
+  http::response<http::string_body> DynamicResponse(const http::request<http::string_body>& request, bool image);
 
   beast::tcp_stream stream_;
   beast::flat_buffer buffer_;

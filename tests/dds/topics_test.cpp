@@ -100,7 +100,7 @@ TEST(Topics, MarkdownHasOneRowPerTopic) {
   std::string line;
   std::vector<std::string> rows;
   while (std::getline(lines, line)) rows.push_back(line);
-  ASSERT_EQ(rows.size(), dds::kTopicCount + dds::kCameraTopicCount + 2);
+  ASSERT_EQ(rows.size(), dds::kTopicCount + dds::kCameraTopicCount + 3);  // header, rule, ..., cameras/control
   EXPECT_EQ(rows[0], "| topic | type | direction | QoS profile | when, what |");
   for (size_t i = 0; i < dds::kTopicCount; ++i) {
     const dds::TopicInfo& info = dds::kTopics[i];
@@ -109,6 +109,9 @@ TEST(Topics, MarkdownHasOneRowPerTopic) {
   }
   EXPECT_NE(md.find("| `ssl/field` | `SslField` | published, latched | `turf.field` | "), std::string::npos);
   EXPECT_NE(md.find("| `control` | `SimControl` | subscribed | `turf.control` | "), std::string::npos);
+  EXPECT_EQ(rows.back().rfind("| `<prefix>/cameras/control` | `turf::idl::CameraControl` | read by turf-render | ", 0),
+            0u)
+      << rows.back();
   EXPECT_NE(md.find("| `rt/<prefix>/<robot>/<camera>/image_raw` | `sensor_msgs::msg::dds_::Image_` | published by "
                     "turf-render | best effort, volatile, keep last 1 | "),
             std::string::npos);

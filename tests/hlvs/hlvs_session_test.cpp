@@ -157,8 +157,26 @@ class FixedCamera : public CameraSource {
     i.image.assign(size_t{r.width} * r.height * 3, 'x');
     return i;
   }
+  void Enable(const std::string& robot, const std::string& camera, uint32_t period_ms) override {
+    enables.push_back(robot + "/" + camera + "@" + std::to_string(period_ms));
+  }
   CameraRequest last;
+  std::vector<std::string> enables;
 };
+
+TEST_F(HlvsSessionTest, TheImageSourceHearsEachCameraPeriodChangeOnce) {
+  FixedCamera source;
+  options_.cameras = &source;
+  Session s(options_);
+  s.Apply(Steps({{"Camera", 16}}), 8);
+  s.Apply(Steps({{"Camera", 16}}), 16);  // the same again: nothing changes
+  s.Apply(Steps({{"Camera", 12}}), 24);  // refused (not a multiple of 8): nothing changes
+  s.Apply(Steps({{"Camera", 32}}), 32);
+  s.Apply(Steps({{"Camera", 0}}), 40);
+  s.Apply(Steps({{"Camera", 0}}), 48);  // already off
+  s.Apply(Steps({{"Gyro", 8}}), 56);    // not a camera
+  EXPECT_EQ(source.enables, (std::vector<std::string>{"red_1/camera@16", "red_1/camera@32", "red_1/camera@0"}));
+}
 
 TEST_F(HlvsSessionTest, CamerasNeedAnImageSource) {
   Session none(options_);

@@ -237,12 +237,19 @@ TEST(LaunchPlan, HlvsPlan) {
   ASSERT_TRUE(r.profile.has_value()) << r.errors[0];
   const LaunchPlan plan = BuildPlan(*r.profile, {}, kLauncherDir);
   ASSERT_TRUE(plan.errors.empty()) << plan.errors[0];
-  ASSERT_EQ(plan.commands.size(), 3u);  // turf-sim, the bridge, the viewer
+  ASSERT_EQ(plan.commands.size(), 4u);  // turf-sim, the bridge, turf-render, the viewer
   const std::string build = std::string(TURF_BINARY_DIR) + "/participants/";
   EXPECT_EQ(Args(plan.commands[0]), "--scene " + kScenes + "/hlvs.yaml --domain 0 --prefix turf ");
   EXPECT_EQ(plan.commands[1].name, "hlvs");
   EXPECT_EQ(plan.commands[1].argv[0], build + "hlvs_bridge/turf-hlvs-bridge");
   EXPECT_EQ(Args(plan.commands[1]), "--domain 0 --prefix turf --listen 0.0.0.0 --realtime-factor 1 --team-players 4 ");
+  // turf-render gets the profile's scene, as turf-sim; --set may not change it.
+  EXPECT_EQ(plan.commands[2].name, "render");
+  EXPECT_EQ(plan.commands[2].argv[0], build + "render/turf-render");
+  EXPECT_EQ(Args(plan.commands[2]), "--scene " + kScenes + "/hlvs.yaml --domain 0 --prefix turf --status-every 10 ");
+  LaunchOverrides o;
+  o.sets = {"render.scene=x.yaml"};
+  EXPECT_FALSE(BuildPlan(*r.profile, o, kLauncherDir).errors.empty());
 }
 
 TEST(LaunchPlan, SimSparkPlanAndSyncMode) {

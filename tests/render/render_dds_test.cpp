@@ -3,12 +3,14 @@
 // arrive with camera_info; --cameras selects; a renderer that cannot keep up drops frames while turf-sim runs on.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <turf/idl/CameraControlPubSubTypes.h>
 #include <turf/idl/JointsPubSubTypes.h>
 #include <turf/idl/RosImagePubSubTypes.h>
 
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <mutex>
 #include <regex>
 #include <vector>
@@ -274,6 +276,74 @@ TEST_F(RenderDds, AStateWithANanPoseIsRefusedAndTheNextOneRendered) {
   const auto received = head.Copy();
   EXPECT_EQ(Stamp(received[0].header()), 0);
   EXPECT_EQ(Stamp(received[1].header()), 200'000'000) << "the NaN state at 100 ms drew nothing";
+  EXPECT_EQ(render.Stop(), 0);
+}
+
+// --cameras off: the renderer takes states and draws nothing (its status line: states taken, 0 frames, 0 cameras
+// on) until a control sample on cameras/control switches a camera on at a rate (here from `turf-render --switch`);
+// then that camera's images come at that rate of sim time. A control sample with a NaN rate (from this test's own
+// writer) is refused (logged, counted), and off stops it again.
+TEST_F(RenderDds, CamerasOffUntilAControlSampleSwitchesOneOn) {
+  const std::string scene = WriteScene("render_switch",
+                                       "      - {name: camera, width: 64, height: 48, rate_hz: 20}\n"
+                                       "      - {name: chest, body: torso, width: 64, height: 48, rate_hz: 20}\n");
+  dds::VendorParticipant dds(dds::VendorOptions{domain_, "render-test", "", true});
+  test::WakeWait wait;
+  Received<ros::Image_> head, chest;
+  auto r1 = Collect<ros::Image_PubSubType>(dds, Topic("camera", dds::CameraTopic::kImage), &head, &wait);
+  auto r2 = Collect<ros::Image_PubSubType>(dds, Topic("chest", dds::CameraTopic::kImage), &chest, &wait);
+  auto control = dds.MakeWriter<idl::CameraControlPubSubType>(dds::CameraControlTopicName(prefix_));
+  test::Process render = Render(scene, {"--cameras", "off"}, "0.2");
+  test::Process sim = Sim(scene);
+  // Looks every 100 ms (a log line or a refusal wakes nothing) until `check` or 30 s.
+  auto poll = [](const std::function<bool()>& check) {
+    const auto by = Clock::now() + seconds(30);
+    while (!check() && Clock::now() < by) {
+      Wakeup idle;
+      idle.WaitFor(std::chrono::milliseconds(100));
+    }
+    return check();
+  };
+  auto log_has = [&](const std::string& text) {
+    return poll([&] { return render.Log().find(text) != std::string::npos; });
+  };
+  // States are taken and discarded: a status line with states and no frame.
+  const std::regex idle_line(
+      R"(status: 0 frames rendered, 0 dropped \(.*\), [1-9]\d* states taken .* 0 camera\(s\) on)");
+  ASSERT_TRUE(poll([&] { return std::regex_search(render.Log(), idle_line); })) << render.Log();
+  EXPECT_EQ(head.Count() + chest.Count(), 0u);
+  auto send = [&control](bool on, double rate) {
+    idl::CameraControl c;
+    c.robot("t1");
+    c.camera("chest");
+    c.enabled(on);
+    c.rate_hz(rate);
+    c.source("render-test");
+    return control->Write(c);
+  };
+  // Best effort and discovery: sent until it took effect, as the bridge re-sends.
+  ASSERT_TRUE(poll([&] {
+    send(true, std::nan(""));
+    return render.Log().find("refused (1 so far)") != std::string::npos;
+  })) << render.Log();
+  // The command line's switch (turf-render --switch) writes the same samples.
+  auto cli_switch = [&](const std::string& state) {
+    std::vector<std::string> argv = {test::Built("participants/render/turf-render"), "--switch", "t1/chest=" + state};
+    for (auto& a : Common()) argv.push_back(a);
+    test::Process p("render_switch", argv);
+    const auto status = p.Wait(std::chrono::milliseconds(30000));
+    return status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0;
+  };
+  ASSERT_TRUE(cli_switch("on@5"));
+  ASSERT_TRUE(wait.Until(Clock::now() + seconds(60), [&] { return chest.Count() >= 3; })) << render.Log();
+  EXPECT_TRUE(log_has("camera t1/chest on at 5 Hz of sim time (asked by 'turf-render --switch')")) << render.Log();
+  EXPECT_EQ(head.Count(), 0u);
+  const auto images = chest.Copy();
+  for (size_t i = 1; i < images.size(); ++i)
+    EXPECT_GT(Stamp(images[i].header()) - Stamp(images[i - 1].header()), 150'000'000) << "5 Hz of sim time, not 20";
+  ASSERT_TRUE(cli_switch("off"));
+  EXPECT_TRUE(log_has("camera t1/chest off (asked by 'turf-render --switch')")) << render.Log();
+  EXPECT_EQ(sim.Stop(), 0);
   EXPECT_EQ(render.Stop(), 0);
 }
 

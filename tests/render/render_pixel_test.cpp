@@ -17,6 +17,7 @@
 #include "participants/render/egl_context.h"
 #include "participants/render/field_look.h"
 #include "participants/render/scene_renderer.h"
+#include "participants/render/team_colours.h"
 
 namespace turf {
 namespace {
@@ -179,6 +180,65 @@ TEST(RenderPixel, TheFieldIsGreenWithWhiteLinesOfTheirWidth) {
   const uint8_t* grass = &rgb[3 * (static_cast<size_t>(20) * c.width + u)];
   EXPECT_GT(grass[1], grass[0] + 20);
   EXPECT_GT(grass[1], grass[2] + 20);
+}
+
+TEST(TeamColours, TheNameSaysTheTeam) {
+  EXPECT_TRUE(TeamColour("red_1").has_value());
+  EXPECT_TRUE(TeamColour("Blue-3").has_value());
+  EXPECT_TRUE(TeamColour("yellow2").has_value());
+  EXPECT_TRUE(TeamColour("blue").has_value());
+  EXPECT_FALSE(TeamColour("redshirt").has_value());
+  EXPECT_FALSE(TeamColour("nao_1").has_value());
+  EXPECT_FALSE(TeamColour("").has_value());
+  EXPECT_GT((*TeamColour("red_1"))[0], 0.8f);
+  EXPECT_GT((*TeamColour("blue_1"))[2], 0.8f);
+}
+
+// red_1's head camera 1.2 m in front of blue_1, level: blue_1's trunk is blue in the image (and not with
+// --no-team-colours); with the lights at half brightness the grass below the horizon is darker.
+class TeamLook : public ::testing::Test {
+ protected:
+  std::vector<uint8_t> Render(const RenderLook& look) {
+    Loaded l = Load(
+        "kind: legged\nfield: {}\nrobots:\n  - name: red_1\n    model: ../robots/t1.xml\n    x: -5\n    cameras:\n"
+        "      - {name: camera, width: 160, height: 120, hfov_deg: 60}\n"
+        "  - name: blue_1\n    model: ../robots/t1.xml\n    x: 0\n    yaw_deg: 180\n");
+    SceneRenderer renderer(l.scene, l.cameras, look);
+    EXPECT_TRUE(renderer.SetBodyPose("red_1", "H2", Pose{{-1.2, 0.0, 0.75}, {1, 0, 0, 0}}));
+    renderer.UpdateFrames();
+    std::vector<uint8_t> rgb;
+    renderer.Render(0, &rgb);
+    return rgb;
+  }
+  static int Blue(const std::vector<uint8_t>& rgb) {
+    int n = 0;
+    for (size_t i = 0; i + 2 < rgb.size(); i += 3)
+      n += rgb[i + 2] > 120 && rgb[i + 2] > rgb[i] + 60 && rgb[i + 2] > rgb[i + 1] + 50;
+    return n;
+  }
+  // The mean green of the bottom quarter (grass).
+  static double Grass(const std::vector<uint8_t>& rgb) {
+    double sum = 0;
+    int n = 0;
+    for (size_t i = rgb.size() * 3 / 4 / 3 * 3; i + 2 < rgb.size(); i += 3, ++n) sum += rgb[i + 1];
+    return sum / n;
+  }
+};
+
+TEST_F(TeamLook, ATeamRobotWearsItsColourAndTheLightsDim) {
+  std::string why;
+  auto egl = MakeContextOrNull(&why);
+  if (!egl) GTEST_SKIP() << "no EGL display: " << why;
+  const std::vector<uint8_t> team = Render(RenderLook{});
+  SaveArtifact("blue_1_from_red_1", team, 160, 120);
+  const std::vector<uint8_t> plain = Render(RenderLook{false, 1.0});
+  SaveArtifact("blue_1_no_team_colours", plain, 160, 120);
+  const std::vector<uint8_t> dim = Render(RenderLook{true, 0.5});
+  SaveArtifact("blue_1_half_light", dim, 160, 120);
+  EXPECT_GT(Blue(team), 150) << "blue_1's trunk, about 17 x 23 px at 1.2 m";
+  EXPECT_LT(Blue(plain), 10);
+  EXPECT_LT(Grass(dim), 0.8 * Grass(team)) << Grass(dim) << " vs " << Grass(team);
+  EXPECT_GT(Grass(dim), 0.2 * Grass(team)) << "dimmer, not black";
 }
 
 TEST(FieldLook, MarkingsFollowTheFieldSize) {

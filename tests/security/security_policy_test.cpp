@@ -93,6 +93,13 @@ TEST(SecurityPolicy, OnlyTheRendererPublishesCameraImagesAndEveryoneButTheSimRea
   EXPECT_GT(render.find("<topic>rt/m/*/*/image_raw</topic>"), publish);
   EXPECT_NE(render.find("<topic>rt/m/*/*/camera_info</topic>"), std::string::npos);
   EXPECT_NE(render.find("<topic>m/robots/state</topic>"), std::string::npos);
+  // Cameras switched at run time: the operator writes cameras/control, the renderer reads it.
+  EXPECT_GT(render.find("<topic>m/cameras/control</topic>"), render.find("<subscribe>"));
+  const std::string op =
+      dds::PermissionsXml("operator", SecurityProfile::kLab, "m", "2026-01-01T00:00:00", "2027-01-01T00:00:00");
+  const size_t cc = op.find("<topic>m/cameras/control</topic>");
+  ASSERT_NE(cc, std::string::npos) << op;
+  EXPECT_LT(cc, op.find("<subscribe>")) << "published" << op;
   const std::string blue =
       dds::PermissionsXml("blue", SecurityProfile::kTournament, "m", "2026-01-01T00:00:00", "2027-01-01T00:00:00");
   EXPECT_GT(blue.find("<topic>rt/m/*/*/image_raw/compressed</topic>"), blue.find("<subscribe>"));

@@ -498,5 +498,35 @@ TEST_F(ViewerBrowser, LeggedSceneDrawsRobotsWhereTheirLinksAreAndDragsBallAndRob
   EXPECT_EQ(viewer_->Stop(), 0) << viewer_->Log();
 }
 
+// The camera panel: turf-render draws red_1's head camera of the HLVS scene (declared off there, on by --cameras);
+// the page opened at ?camera=red_1/camera shows its newest images (polled from the viewer,
+// /camera/red_1/camera.jpg) in the legged scene's side panel.
+TEST_F(ViewerBrowser, TheCameraPanelShowsARobotsCameraLive) {
+  Launch("hlvs.yaml");
+  Process render("viewer_render", {Built("participants/render/turf-render"), "--scene",
+                                   TURF_SOURCE_DIR "/configs/scenes/hlvs.yaml", "--cameras", "red_1/camera", "--domain",
+                                   std::to_string(dds_.domain), "--prefix", dds_.prefix, "--qos", dds_.qos_file});
+  LeggedClient truth(dds_);
+  OpenPage([&] { return truth.WaitFor([&] { return truth.links.count("red_1") && truth.world; }); });
+  if (HasFatalFailure()) return;
+  ASSERT_TRUE(driver_->Navigate("http://127.0.0.1:" + std::to_string(viewer_port_) + "/?camera=red_1/camera"))
+      << driver_->error();
+  const char* kShown =
+      "const p = document.getElementById('camera-panel');"
+      "const i = [...document.querySelectorAll('.camera-view img')].find(x => !x.classList.contains('hidden'));"
+      "return {panel: !p.classList.contains('hidden'), width: i ? i.naturalWidth : 0, height: i ? i.naturalHeight : 0,"
+      " status: document.getElementById('camera-status').textContent};";
+  json shown;
+  const bool ok = Within(60000, [&] {
+    shown = driver_->Execute(kShown).value_or(json());
+    return shown.is_object() && shown["width"] == 320 &&
+           shown["status"].get<std::string>().find(" 3 frames") != std::string::npos;
+  });
+  ASSERT_TRUE(ok) << shown.dump() << "\n" << render.Log() << viewer_->Log();
+  EXPECT_TRUE(shown["panel"].get<bool>()) << "the legged scene shows the panel";
+  EXPECT_EQ(shown["height"], 240);
+  EXPECT_TRUE(SavePng(driver_->Screenshot(), "camera_panel.png")) << driver_->error();
+}
+
 }  // namespace
 }  // namespace turf::test

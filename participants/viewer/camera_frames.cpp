@@ -1,0 +1,161 @@
+#include "participants/viewer/camera_frames.h"
+
+#include <spdlog/spdlog.h>
+#include <turf/idl/RosImagePubSubTypes.h>
+
+#include <atomic>
+#include <map>
+#include <mutex>
+#include <vector>
+
+#include "codecs/image/image_codec.h"
+#include "core/camera/camera_model.h"
+#include "dds/camera_topics.h"
+#include "dds/vendor_participant.h"
+
+namespace turf::viewer {
+
+namespace {
+
+namespace ros = sensor_msgs::msg::dds_;
+constexpr size_t kMaxCompressed = 8u << 20;
+constexpr int kJpegQuality = 80;
+
+bool Token(std::string_view s) {
+  if (s.empty() || s.size() > 64) return false;
+  for (char c : s)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+  return true;
+}
+
+}  // namespace
+
+std::optional<CameraTarget> ParseCameraTarget(std::string_view target) {
+  target = target.substr(0, target.find('?'));
+  constexpr std::string_view kHead = "/camera/", kTail = ".jpg";
+  if (target.size() <= kHead.size() + kTail.size() || target.substr(0, kHead.size()) != kHead ||
+      target.substr(target.size() - kTail.size()) != kTail)
+    return std::nullopt;
+  const std::string_view ids = target.substr(kHead.size(), target.size() - kHead.size() - kTail.size());
+  const size_t slash = ids.find('/');
+  if (slash == std::string_view::npos) return std::nullopt;
+  CameraTarget t{std::string(ids.substr(0, slash)), std::string(ids.substr(slash + 1))};
+  if (!Token(t.robot) || !Token(t.camera)) return std::nullopt;
+  return t;
+}
+
+struct CameraFrames::Impl {
+  struct Frame {
+    std::vector<uint8_t> raw;  // rgb8 or yuyv, rows packed
+    bool yuyv = false;
+    int width = 0, height = 0;
+    std::string jpeg;  // empty until encoded (or a compressed frame's bytes)
+  };
+  struct Camera {
+    std::unique_ptr<dds::VendorParticipant::RawReader> raw, compressed;
+    std::optional<Frame> newest;
+  };
+
+  CameraFramesOptions options;
+  std::mutex mutex;  // guards everything below
+  std::unique_ptr<dds::VendorParticipant> participant;
+  std::map<std::string, Camera> cameras;
+  std::atomic<uint64_t> refused{0}, served{0};
+
+  void Refuse(const std::string& what) {
+    if (refused++ < 5) spdlog::warn("camera panel: refused {}", what);
+  }
+
+  void OnRaw(const std::string& key, const ros::Image_& image) {
+    const bool yuyv = image.encoding() == "yuv422_yuy2";
+    const size_t bpp = yuyv ? 2 : 3;
+    if ((!yuyv && image.encoding() != "rgb8") || image.width() == 0 || image.height() == 0 ||
+        image.width() > kMaxImageSide || image.height() > kMaxImageSide || image.step() != image.width() * bpp ||
+        image.data().size() != size_t{image.step()} * image.height())
+      return Refuse(key + ": an image of " + std::to_string(image.width()) + "x" + std::to_string(image.height()) +
+                    " '" + image.encoding() + "'");
+    Frame f{image.data(), yuyv, static_cast<int>(image.width()), static_cast<int>(image.height()), {}};
+    std::lock_guard<std::mutex> lock(mutex);
+    cameras[key].newest = std::move(f);
+  }
+
+  void OnCompressed(const std::string& key, const ros::CompressedImage_& image) {
+    if (image.format().find("jpeg") == std::string::npos || image.data().empty() ||
+        image.data().size() > kMaxCompressed)
+      return Refuse(key + ": a compressed image '" + image.format() + "'");
+    Frame f;
+    f.jpeg.assign(image.data().begin(), image.data().end());
+    std::lock_guard<std::mutex> lock(mutex);
+    cameras[key].newest = std::move(f);
+  }
+
+  // Under the lock: the camera's readers, made at its first request.
+  void Follow(const CameraTarget& t, const std::string& key, Camera& c) {
+    if (!participant)
+      participant = std::make_unique<dds::VendorParticipant>(
+          dds::VendorOptions{options.domain, options.name + "-cameras", options.security, /*large_samples=*/true});
+    const std::string raw = dds::CameraTopicName(options.prefix, t.robot, t.camera, dds::CameraTopic::kImage);
+    const std::string jpeg = dds::CameraTopicName(options.prefix, t.robot, t.camera, dds::CameraTopic::kCompressed);
+    c.raw = participant->MakeReader<ros::Image_PubSubType>(
+        raw, [this, key](const ros::Image_& image, int64_t) { OnRaw(key, image); });
+    c.compressed = participant->MakeReader<ros::CompressedImage_PubSubType>(
+        jpeg, [this, key](const ros::CompressedImage_& image, int64_t) { OnCompressed(key, image); });
+    spdlog::info("camera panel: reading {} and {}", raw, jpeg);
+  }
+};
+
+CameraFrames::CameraFrames(CameraFramesOptions options) : impl_(std::make_unique<Impl>()) {
+  impl_->options = std::move(options);
+}
+
+CameraFrames::~CameraFrames() {
+  std::map<std::string, Impl::Camera> cameras;
+  {
+    std::lock_guard<std::mutex> lock(impl_->mutex);
+    cameras.swap(impl_->cameras);
+  }
+  cameras.clear();  // the readers go (their callbacks end) before the participant
+}
+
+std::optional<std::string> CameraFrames::Jpeg(std::string_view target) {
+  const std::optional<CameraTarget> t = ParseCameraTarget(target);
+  if (!t) {
+    impl_->Refuse("target '" + std::string(target.substr(0, 80)) + "'");
+    return std::nullopt;
+  }
+  const std::string key = t->robot + "/" + t->camera;
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  auto it = impl_->cameras.find(key);
+  if (it == impl_->cameras.end() || (!it->second.raw && !it->second.compressed)) {
+    size_t followed = 0;
+    for (const auto& [k, c] : impl_->cameras) followed += c.raw != nullptr;
+    if (followed >= kMaxCameras) {
+      impl_->Refuse(key + ": already following " + std::to_string(followed) + " cameras");
+      return std::nullopt;
+    }
+    Impl::Camera& c = impl_->cameras[key];
+    impl_->Follow(*t, key, c);
+    return std::nullopt;
+  }
+  std::optional<Impl::Frame>& f = it->second.newest;
+  if (!f) return std::nullopt;
+  if (f->jpeg.empty()) {
+    std::vector<uint8_t> rgb = f->raw;
+    if (f->yuyv) rgb = image::YuyvToRgb(f->raw, f->width, f->height).bytes;
+    const image::Encoded e = image::EncodeJpeg(rgb, f->width, f->height, kJpegQuality);
+    if (e.error != Error::kOk) {
+      impl_->Refuse(key + ": a frame JPEG refused (" + std::string(ErrorName(e.error)) + ")");
+      f.reset();
+      return std::nullopt;
+    }
+    f->jpeg.assign(e.bytes.begin(), e.bytes.end());
+    f->raw.clear();
+  }
+  ++impl_->served;
+  return f->jpeg;
+}
+
+uint64_t CameraFrames::refused() const { return impl_->refused.load(); }
+uint64_t CameraFrames::served() const { return impl_->served.load(); }
+
+}  // namespace turf::viewer
