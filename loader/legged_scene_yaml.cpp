@@ -147,13 +147,16 @@ void ReadOdeSurface(MapReader m, OdeSurface* s) {
   m.Finish();
 }
 
-// `contacts: {law: ode, ...}`: rcssserver3d's contact law (core/legged/ode_contacts.h); `law: mujoco` or no block:
+// `contacts: {law: ode, ...}`: rcssserver3d's contact law (core/legged/ode_contacts.h); `law: ode_friction`: only its
+// tangential law (unbounded friction, force-dependent slip) on MuJoCo's normal contact; `law: mujoco` or no block:
 // MuJoCo's own.
 void ReadContacts(MapReader m, OdeContactLaw* c) {
   std::string law = "mujoco";
   m.String("law", &law);
-  if (law != "ode" && law != "mujoco") m.Fail("law", "must be \"ode\" or \"mujoco\"");
-  c->enabled = law == "ode";
+  if (law != "ode" && law != "ode_friction" && law != "mujoco")
+    m.Fail("law", "must be \"ode\", \"ode_friction\" or \"mujoco\"");
+  c->enabled = law == "ode" || law == "ode_friction";
+  c->ode_normal = law == "ode";
   m.Number("reference_step", &c->reference_step);
   m.Number("surface_layer", &c->surface_layer);
   m.Number("world_erp", &c->world_erp);

@@ -112,6 +112,9 @@ struct OdeSurface {
 // rcssserver3d's contact law for robots on the ground (ode_contacts.h). Off: MuJoCo's own contacts.
 struct OdeContactLaw {
   bool enabled = false;
+  // true: ODE's normal spring-damper too (`law: ode`); false: only the tangential law, on MuJoCo's own normal
+  // contact (`law: ode_friction`).
+  bool ode_normal = true;
   double reference_step = 0.02;  // s: the step ERP and CFM were given for
   double surface_layer = 0.001;  // m of penetration left alone
   double world_erp = 0.2;        // where no surface sets ERP / CFM

@@ -52,11 +52,14 @@ void OdeContacts::Apply(const mjModel* model, mjData* data) const {
     if (s1 == Surface::kNone || s2 == Surface::kNone || con.efc_address < 0 || con.dim < 3) continue;
     const OdeMixed mixed = MixOdeSurfaces(law_, Of(s1), Of(s2));
     const int n = con.efc_address;
-    // Normal row: the spring-damper on the penetration beyond the surface layer, implicit over h.
-    const double r = std::min(0.0, data->efc_pos[n] - data->efc_margin[n] + law_.surface_layer);
-    const double khc = mixed.k * h + mixed.c;
-    data->efc_R[n] = 1.0 / (h * khc);
-    data->efc_aref[n] = -(mixed.k * r / khc + data->efc_vel[n]) / h;
+    // Normal row: the spring-damper on the penetration beyond the surface layer, implicit over h (ode_friction:
+    // MuJoCo's own row, from the geoms' solref and solimp).
+    if (law_.ode_normal) {
+      const double r = std::min(0.0, data->efc_pos[n] - data->efc_margin[n] + law_.surface_layer);
+      const double khc = mixed.k * h + mixed.c;
+      data->efc_R[n] = 1.0 / (h * khc);
+      data->efc_aref[n] = -(mixed.k * r / khc + data->efc_vel[n]) / h;
+    }
     // Tangential rows: force-dependent slip. Rows beyond them (torsion, rolling) carry no force, as in ODE.
     for (int j = 1; j < con.dim; ++j) {
       const int row = n + j;

@@ -49,12 +49,15 @@ TEST(LeggedSceneYamlTest, SimSparkMatchSceneParks22NaosOffTheField) {
   }
 }
 
-// The match scene carries rcssserver3d's contact parameters (off); `law: ode` turns them on and a Nao stands on them.
+// The match scene carries rcssserver3d's contact parameters with its tangential law on (`law: ode_friction`);
+// `law: ode` turns the whole law on and a Nao stands on it.
 TEST(LeggedSceneYamlTest, ContactLawBlockLoadsAndIsChecked) {
   LeggedSceneLoadResult r = LoadLeggedSceneFile(kScenes + "simspark_match.yaml");
   ASSERT_TRUE(r.scene) << r.errors.front();
   const OdeContactLaw& c = r.scene->contacts;
-  EXPECT_FALSE(c.enabled);
+  EXPECT_TRUE(c.enabled);
+  EXPECT_FALSE(c.ode_normal);
+  EXPECT_EQ(c.robot.slip, 5e-3);
   EXPECT_EQ(c.robot.erp, 0.6);
   EXPECT_EQ(c.robot.cfm, 1e-4);
   EXPECT_EQ(c.ground.cfm, -1.0);  // not set
@@ -64,9 +67,13 @@ TEST(LeggedSceneYamlTest, ContactLawBlockLoadsAndIsChecked) {
                            dir);
   ASSERT_TRUE(r.scene) << r.errors.front();
   EXPECT_TRUE(r.scene->contacts.enabled);
+  EXPECT_TRUE(r.scene->contacts.ode_normal);
   LeggedWorld w(std::move(*r.scene));
   for (int i = 0; w.time_ns() < 2'000'000'000; ++i) w.Step();
   EXPECT_NEAR(w.State().robots[0].base_position[2], 0.385, 0.005);  // standing
+  r = ParseLeggedSceneYaml("kind: legged\ncontacts: {law: mujoco}\n" + nao, dir);
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_FALSE(r.scene->contacts.enabled);
   EXPECT_TRUE(HasError(ParseLeggedSceneYaml("kind: legged\ncontacts: {law: bullet}\n" + nao, dir), "law"));
   EXPECT_TRUE(
       HasError(ParseLeggedSceneYaml("kind: legged\ncontacts: {law: ode, robot: {erp: 2}}\n" + nao, dir), "contacts"));

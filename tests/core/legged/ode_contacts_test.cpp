@@ -90,6 +90,35 @@ TEST_P(OdeBoxTest, SlidesAtTheForceDependentSlipVelocity) {
   EXPECT_NEAR(x2 - x1, expected_v * 1.0, 0.02 * expected_v);  // steady state over the second second
 }
 
+// `law: ode_friction`: the same slip on MuJoCo's own normal contact. The box rests where MuJoCo's contact puts it
+// (not at the springs' deflection) and slides at slip F / 4 under a push that MuJoCo's Coulomb friction (mu 1 against
+// 39 N of weight) holds with the law off.
+TEST_P(OdeBoxTest, FrictionOnlyLawSlidesOnMuJoCosNormalContact) {
+  LeggedScene mujoco = BoxScene(GetParam());
+  mujoco.contacts.enabled = false;
+  LeggedScene friction = BoxScene(GetParam());
+  friction.contacts.ode_normal = false;
+  double rest[2] = {0, 0};
+  double slid[2] = {0, 0};
+  int i = 0;
+  for (LeggedScene* scene : {&mujoco, &friction}) {
+    LeggedWorld w(*scene);
+    Release(w);
+    while (w.time_ns() < 500'000'000) w.Step();
+    rest[i] = Height(w);
+    const int64_t t0 = w.time_ns();
+    Release(w, 8.0);
+    while (w.time_ns() < t0 + 1'000'000'000) w.Step();
+    const double x1 = X(w);
+    while (w.time_ns() < t0 + 2'000'000'000) w.Step();
+    slid[i++] = X(w) - x1;
+  }
+  EXPECT_NEAR(rest[1], rest[0], 2e-5);  // MuJoCo's normal contact in both
+  EXPECT_GT(std::abs(rest[1] - (kHalfHeight - 0.001 - kMass * 9.81 / (4 * 2e5))), 1e-4);  // not ODE's springs
+  EXPECT_LT(slid[0], 1e-3);  // Coulomb friction holds the push (MuJoCo's soft friction creeps 0.7 mm/s)
+  EXPECT_NEAR(slid[1], 5e-3 * 8.0 / 4, 0.02 * 5e-3 * 8.0 / 4);  // the reference's slip: 0.01 m/s
+}
+
 INSTANTIATE_TEST_SUITE_P(Steps, OdeBoxTest, ::testing::Values(0.002, 0.005, 0.02 / 3));
 
 }  // namespace
