@@ -64,7 +64,7 @@ simspark_run() {
       --log-level warn &
     local sim=$!
     "$BUILD_DIR/bench/turf-bench-simspark" --port "$port" --agents "$agents" --seconds "$SECONDS_SIM" \
-      --motion "$motion" --label "$label, in turf-sim" $header || true
+      --motion "$motion" --label "$label, in turf-sim" --server-pid "$sim" $header || true
     kill -INT "$sim" 2>/dev/null || true
     wait "$sim" 2>/dev/null || true
     return
@@ -109,7 +109,7 @@ rcssservermj_run() {
     "${flags[@]}" --log-level warn &
   local sim=$!
   "$BUILD_DIR/bench/turf-bench-rcssservermj" --port "$port" --agents "$agents" --seconds "$SECONDS_SIM" \
-    --motion "$motion" --label "$agents agents, $mode, $motion" $header || true
+    --motion "$motion" --label "$agents agents, $mode, $motion" --server-pid "$sim" $header || true
   kill -INT "$sim" 2>/dev/null || true
   wait "$sim" 2>/dev/null || true
 }
