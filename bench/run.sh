@@ -123,6 +123,8 @@ rcssservermj() {
   rcssservermj_run 22 sync all
   rcssservermj_run 22 real-time upper
   echo "RTF: simulated seconds per wall second over the measured stretch (sync: as fast as the agents answer)."
+  echo "server / agents ms/cyc: CPU time (user + system) per 20 ms cycle of turf-sim (all its threads) and of the"
+  echo "agents' process, over the same stretch: steadier than RTF on a loaded machine."
   echo "The parked robots of the scene are simulated too. Target (issue 14): >= 5x with 22 agents."
 }
 
