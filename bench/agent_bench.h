@@ -1,16 +1,22 @@
 // The 3D-league agent benchmarks' common part (turf-bench-simspark, turf-bench-rcssservermj): N scripted agents
 // connect at once (trying again until the front-end listens), say hello, then answer every perception; each agent
 // acts on its own perceptions, in whatever order they come, like separate agent processes. Prints simulated seconds
-// per wall second over the measured stretch (from agent 0's 10th perception on) as one table row.
+// per wall second over the measured stretch (from agent 0's 10th perception on) as one table row, with the CPU time
+// per 20 ms cycle of the server (--server-pid: user + system of that process, from /proc) and of the agents (this
+// process) over the same stretch: less sensitive to other load on the machine than the wall-clock rate.
 #pragma once
 
 #include <poll.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -27,6 +33,7 @@ struct AgentBenchOptions {
   std::string label;
   std::string motion = "upper";
   double startup_s = 60.0;
+  int server_pid = 0;  // 0: the server's CPU time is not reported
 };
 
 inline void AddAgentBenchOptions(CLI::App& app, AgentBenchOptions* o, const std::string& motion_help) {
@@ -42,6 +49,7 @@ inline void AddAgentBenchOptions(CLI::App& app, AgentBenchOptions* o, const std:
                  "seconds to wait for the port and every agent's first perception (turf-sim loading its scene, a "
                  "bridge attaching: up to its 30 s attach timeout)")
       ->capture_default_str();
+  app.add_option("--server-pid", o->server_pid, "report this process's CPU time per cycle (the server's)");
 }
 
 // The simulation time of a perception ("(time (now 1.22))"), -1 without one.
@@ -58,6 +66,25 @@ struct AgentScript {
 namespace detail {
 
 using Clock = std::chrono::steady_clock;
+
+// User + system CPU seconds of process `pid` (/proc/<pid>/stat), of this process for 0; -1 if unreadable.
+inline double CpuSeconds(int pid) {
+  if (pid == 0) {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return u.ru_utime.tv_sec + u.ru_stime.tv_sec + (u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-6;
+  }
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t comm_end = stat.rfind(')');
+  if (comm_end == std::string::npos) return -1.0;
+  std::istringstream fields(stat.substr(comm_end + 2));  // from field 3 (state) on
+  std::string field;
+  double ticks = 0;
+  for (int i = 3; i <= 15 && fields >> field; ++i)
+    if (i >= 14) ticks += std::stod(field);  // utime, stime
+  return ticks / static_cast<double>(sysconf(_SC_CLK_TCK));
+}
 
 inline bool ConnectAll(const AgentBenchOptions& o, Clock::time_point deadline,
                        std::vector<turf::test::AgentClient>* clients) {
@@ -94,6 +121,7 @@ inline int RunAgentBench(const AgentBenchOptions& o, const AgentScript& script) 
   std::vector<uint64_t> perceptions(o.agents, 0);
   double t_start = -1.0, t_now = 0.0;
   Clock::time_point wall_start;
+  double server_cpu_start = 0, agents_cpu_start = 0;
   uint64_t bytes = 0;
   const auto give_up = Clock::now() + std::chrono::seconds(static_cast<int>(o.seconds * 20 + 60));
   int started = 0;  // agents with a first perception
@@ -120,20 +148,29 @@ inline int RunAgentBench(const AgentBenchOptions& o, const AgentScript& script) 
         if (t_start < 0 && perceptions[0] >= 10) {
           t_start = t;
           wall_start = Clock::now();
+          server_cpu_start = o.server_pid > 0 ? detail::CpuSeconds(o.server_pid) : -1.0;
+          agents_cpu_start = detail::CpuSeconds(0);
         }
       }
     }
     if (t_start >= 0 && t_now - t_start >= o.seconds) break;
   }
   const double wall = std::chrono::duration<double>(Clock::now() - wall_start).count();
+  const double server_cpu = o.server_pid > 0 ? detail::CpuSeconds(o.server_pid) - server_cpu_start : -1.0;
+  const double agents_cpu = detail::CpuSeconds(0) - agents_cpu_start;
   const double sim = t_now - t_start;
   if (sim < o.seconds) {
     std::fprintf(stderr, "measured only %.2f s of simulation\n", sim);
     return 1;
   }
-  if (o.header) std::printf("%-28s %8s %8s %8s %10s %12s\n", "run", "agents", "sim s", "wall s", "RTF", "KB/agent/s");
-  std::printf("%-28s %8d %8.2f %8.2f %9.2fx %12.1f\n", o.label.c_str(), o.agents, sim, wall, sim / wall,
-              bytes / 1024.0 / o.agents / wall);
+  const double cycles = sim / 0.02;  // both leagues' cycle
+  char server_column[32] = "-";
+  if (server_cpu >= 0) std::snprintf(server_column, sizeof(server_column), "%.2f", server_cpu * 1e3 / cycles);
+  if (o.header)
+    std::printf("%-28s %8s %8s %8s %10s %12s %14s %14s\n", "run", "agents", "sim s", "wall s", "RTF", "KB/agent/s",
+                "server ms/cyc", "agents ms/cyc");
+  std::printf("%-28s %8d %8.2f %8.2f %9.2fx %12.1f %14s %14.2f\n", o.label.c_str(), o.agents, sim, wall, sim / wall,
+              bytes / 1024.0 / o.agents / wall, server_column, agents_cpu * 1e3 / cycles);
   return 0;
 }
 

@@ -64,7 +64,7 @@ simspark_run() {
       --log-level warn &
     local sim=$!
     "$BUILD_DIR/bench/turf-bench-simspark" --port "$port" --agents "$agents" --seconds "$SECONDS_SIM" \
-      --motion "$motion" --label "$label, in turf-sim" $header || true
+      --motion "$motion" --label "$label, in turf-sim" --server-pid "$sim" $header || true
     kill -INT "$sim" 2>/dev/null || true
     wait "$sim" 2>/dev/null || true
     return
@@ -109,7 +109,7 @@ rcssservermj_run() {
     "${flags[@]}" --log-level warn &
   local sim=$!
   "$BUILD_DIR/bench/turf-bench-rcssservermj" --port "$port" --agents "$agents" --seconds "$SECONDS_SIM" \
-    --motion "$motion" --label "$agents agents, $mode, $motion" $header || true
+    --motion "$motion" --label "$agents agents, $mode, $motion" --server-pid "$sim" $header || true
   kill -INT "$sim" 2>/dev/null || true
   wait "$sim" 2>/dev/null || true
 }
@@ -123,6 +123,8 @@ rcssservermj() {
   rcssservermj_run 22 sync all
   rcssservermj_run 22 real-time upper
   echo "RTF: simulated seconds per wall second over the measured stretch (sync: as fast as the agents answer)."
+  echo "server / agents ms/cyc: CPU time (user + system) per 20 ms cycle of turf-sim (all its threads) and of the"
+  echo "agents' process, over the same stretch: steadier than RTF on a loaded machine."
   echo "The parked robots of the scene are simulated too. Target (issue 14): >= 5x with 22 agents."
 }
 

@@ -94,6 +94,35 @@ void RestoreSampleFields(StateReader& in, LeggedSample* s) {
   }
 }
 
+// The sample of one stream: the robot's name, id and has_imu and that stream's fields, nothing else (the joint
+// stream carries no links, the IMU no joints): three whole copies of every robot at every frame cost more than the
+// physics step's serving budget in a 22-robot match.
+LeggedRobotState StreamFields(const LeggedRobotState& r, LeggedStream stream) {
+  LeggedRobotState out;
+  out.name = r.name;
+  out.id = r.id;
+  out.has_imu = r.has_imu;
+  switch (stream) {
+    case LeggedStream::kJoints:
+      out.joint_names = r.joint_names;
+      out.joint_positions = r.joint_positions;
+      out.joint_velocities = r.joint_velocities;
+      out.joint_efforts = r.joint_efforts;
+      break;
+    case LeggedStream::kImu:
+      out.orientation = r.orientation;
+      out.gyro = r.gyro;
+      out.accelerometer = r.accelerometer;
+      out.base_position = r.base_position;
+      out.base_orientation = r.base_orientation;
+      break;
+    default:
+      out.forces = r.forces;
+      break;
+  }
+  return out;
+}
+
 }  // namespace
 
 const char* LeggedStreamName(LeggedStream stream) {
@@ -192,7 +221,7 @@ void LeggedKernel::SendSensorFrame() {
         continue;
       }
       if (in_flight_.size() >= kMaxInFlight) in_flight_.pop_front();
-      in_flight_.push_back({*arrival, {s, r, time_ns(), frame(), scratch_.robots[r]}});
+      in_flight_.push_back({*arrival, {s, r, time_ns(), frame(), StreamFields(scratch_.robots[r], s)}});
     }
   }
 }
@@ -272,7 +301,7 @@ void LeggedKernel::RestoreFrom(StateReader& in) {
       in.Fail("sample of an unknown robot");
       return;
     }
-    f.sample.robot_state = scratch_.robots[f.sample.robot];
+    f.sample.robot_state = StreamFields(scratch_.robots[f.sample.robot], f.sample.stream);
     RestoreSampleFields(in, &f.sample);
   }
   next_stats_ns_ = in.Get<int64_t>();

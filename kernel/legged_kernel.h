@@ -34,9 +34,9 @@ enum class LeggedStream : uint8_t { kJoints, kImu, kTouch, kCount };
 const char* LeggedStreamName(LeggedStream stream);  // "joint_state", "imu", "force"
 
 // One robot's reading of one stream, as measured at `time_ns`. Only the
-// stream's fields of `robot_state` are meaningful (joints: positions,
+// stream's fields of `robot_state` are set (joints: names, positions,
 // velocities, efforts; IMU: orientation, gyro, accelerometer, base pose;
-// touch: forces).
+// touch: forces), with the robot's name, id and has_imu; the rest is empty.
 struct LeggedSample {
   LeggedStream stream = LeggedStream::kJoints;
   int robot = 0;

@@ -49,6 +49,7 @@ void ReadField(MapReader m, Field3d* f) {
     f->ball_y = start[1];
   }
   m.Number("wall_distance", &f->wall_distance);
+  m.Bool("walls", &f->walls);
   m.Finish();
 }
 

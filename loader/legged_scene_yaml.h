@@ -9,7 +9,8 @@
 //   physics: {step, solver_iterations}
 //   rates: {joint_state_hz}
 //   field: {length, width, goal_width, goal_depth, goal_height, goal_wall,
-//           ball_radius, ball_mass, ball_start: [x, y], wall_distance}
+//           ball_radius, ball_mass, ball_start: [x, y], wall_distance,
+//           walls (default true: the four outer walls at wall_distance)}
 //       present = the RoboCup 3D soccer field with goals and ball
 //   robots:                            one entry per placed robot
 //     - name: nao_1                    unique; prefixes its joints on the topics

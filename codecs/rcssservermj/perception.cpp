@@ -2,7 +2,9 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <string_view>
 
 namespace turf::rcssservermj {
 
@@ -94,7 +96,41 @@ double Truncate(double v, int decimals) {
   return std::copysign(whole / scale, v);
 }
 
-void AppendNumber(std::string* out, double v, int decimals) { out->append(PythonFloat(Truncate(v, decimals))); }
+// The common case without PythonFloat's general path: Truncate's integer of hundredths or thousandths, written with
+// the decimal point put in and trailing zeros dropped. That is Python's repr of the truncated double: below 1e15 the
+// integer has at most 15 significant digits, so its decimal is the shortest that reads back as the same double, and
+// 0.001 <= |value| < 1e16 is written in fixed notation. Tested against the general path.
+void AppendNumber(std::string* out, double v, int decimals) {
+  static constexpr double kScale[] = {1.0, 10.0, 100.0, 1000.0};  // std::pow(10, decimals), exactly
+  const double x = decimals >= 0 && decimals <= 3 ? v * kScale[decimals] : NAN;
+  if (!(std::abs(x) < 1e15)) {  // NaN, infinite, huge, or other decimals
+    out->append(PythonFloat(Truncate(v, decimals)));
+    return;
+  }
+  const double nearest = std::round(x);
+  const double whole = std::abs(x - nearest) < 1e-6 ? nearest : std::trunc(x);  // as Truncate
+  char digits[24];
+  const auto written = std::to_chars(digits, digits + sizeof(digits), static_cast<uint64_t>(std::abs(whole)));
+  std::string_view text(digits, static_cast<size_t>(written.ptr - digits));
+  if (std::signbit(v)) out->push_back('-');  // the truncated value keeps v's sign, zero included (-0.0)
+  if (whole == 0) {
+    out->append("0.0");
+    return;
+  }
+  const size_t d = static_cast<size_t>(decimals);
+  if (text.size() <= d) {
+    out->append("0.").append(d - text.size(), '0');
+  } else {
+    out->append(text.substr(0, text.size() - d)).push_back('.');
+  }
+  std::string_view fraction = text.size() <= d ? text : text.substr(text.size() - d);
+  while (!fraction.empty() && fraction.back() == '0') fraction.remove_suffix(1);
+  if (fraction.empty()) {
+    out->push_back('0');
+  } else {
+    out->append(fraction);
+  }
+}
 
 std::string FormatPerception(const MjPerception& p) {
   std::string out;

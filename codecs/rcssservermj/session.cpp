@@ -122,7 +122,11 @@ void Session::Receive(int id, const std::string& payload) {
   Agent* a = FindAgent(id);
   if (a == nullptr || a->kicked) return;
   if (a->active) {
-    a->queue.push_back(payload);
+    // Parsed now, while the world steps and other agents think, not when the next cycle takes it (its issues are
+    // reported now too).
+    ActionMessage m = ParseActions(payload, *a->model);
+    for (const ActionIssue& issue : m.issues) Issue(id, turf::ErrorName(issue.error), issue.detail);
+    a->queue.push_back(std::move(m));
     if (a->queue.size() > options_.max_queued)
       Kick(a, fmt::format("more than {} messages waiting (in sync mode: one per cycle)", options_.max_queued));
     return;
@@ -232,9 +236,8 @@ WorldRequests Session::TakeRequests() {
     const size_t take = sync() ? (Owes(a) ? std::min<size_t>(1, a.queue.size()) : 0) : a.queue.size();
     a.answers += sync() ? take : 0;
     for (size_t i = 0; i < take; ++i) {
-      const ActionMessage m = ParseActions(a.queue.front(), *a.model);
+      const ActionMessage m = std::move(a.queue.front());
       a.queue.pop_front();
-      for (const ActionIssue& issue : m.issues) Issue(id, turf::ErrorName(issue.error), issue.detail);
       Apply(&a, m);
     }
   }

@@ -5,7 +5,8 @@
 // requests it returns. Same shape as codecs/simspark/session.h.
 //
 // One cycle (0.02 s = 4 physics steps of 5 ms), in the reference's order:
-//   Receive()/Monitor()   queue an agent's messages / apply nothing yet
+//   Receive()/Monitor()   parse and queue an agent's messages / queue a
+//                         monitor's; apply nothing yet
 //   ReadyToStep()         sync mode: every active agent has answered every
 //                         perception it was sent
 //   TakeRequests()        cycle start: activate the agents that sent init,
@@ -160,10 +161,10 @@ class Session {
     int robot = -1;
     Side side = Side::kLeft;
     int number = 0;
-    std::deque<std::string> queue;
-    std::vector<PdCommand> motors;  // the persisting commands, model order
-    uint64_t perceptions = 0;       // released since activation
-    uint64_t answers = 0;           // sync mode: messages taken
+    std::deque<ActionMessage> queue;  // parsed on arrival
+    std::vector<PdCommand> motors;    // the persisting commands, model order
+    uint64_t perceptions = 0;         // released since activation
+    uint64_t answers = 0;             // sync mode: messages taken
   };
 
   Agent* FindAgent(int id);

@@ -103,10 +103,12 @@ std::string FieldXml(const Field3d& f, double friction) {
         f.goal_width / 2 + f.goal_wall, f.goal_wall / 2);
   }
   const double d = f.wall_distance;
-  box("wall_neg_x", -d, 0, 0, 0.5, d, 0.5);
-  box("wall_pos_x", d, 0, 0, 0.5, d, 0.5);
-  box("wall_neg_y", 0, -d, 0, d, 0.5, 0.5);
-  box("wall_pos_y", 0, d, 0, d, 0.5, 0.5);
+  if (f.walls) {
+    box("wall_neg_x", -d, 0, 0, 0.5, d, 0.5);
+    box("wall_pos_x", d, 0, 0, 0.5, d, 0.5);
+    box("wall_neg_y", 0, -d, 0, d, 0.5, 0.5);
+    box("wall_pos_y", 0, d, 0, d, 0.5, 0.5);
+  }
   const double inertia = 0.4 * f.ball_mass * f.ball_radius * f.ball_radius;
   x += fmt::format(R"(    <body name="{}" pos="{:.6g} {:.6g} {:.6g}">)"
                    "\n"

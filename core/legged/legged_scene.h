@@ -100,6 +100,9 @@ struct Field3d {
   double ball_x = 0.0;
   double ball_y = 0.0;
   double wall_distance = 25.0;  // |x|, |y| of the outer walls' centres
+  // The four outer walls. RCSSServerMJ's field has none (nothing stops a ball or robot leaving the field); its scene
+  // turns them off, which also saves their collision tests against every robot geom in each step.
+  bool walls = true;
 };
 
 // One surface's contact parameters in ODE's terms (core/legged/ode_contacts.h); negative = not set.

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <condition_variable>
-#include <future>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -16,6 +16,7 @@
 #include "participants/common/cycle_loop.h"
 #include "participants/common/front_end_server.h"
 #include "participants/common/process.h"
+#include "participants/common/worker_thread.h"
 #include "participants/rcssservermj_bridge/legged_link.h"
 
 namespace turf {
@@ -135,18 +136,22 @@ class RcssServerMjBridge::Impl {
   }
 
   // The reference's order: the actions, then the perceptions of the state before this step go out while the world
-  // steps (the world in another thread, so the agents think meanwhile), then the referee; the sequential loop's
+  // steps (the world on the stepper thread, so the agents think meanwhile), then the referee; the sequential loop's
   // perceptions of the state after it.
   bool RunCycle(const std::function<bool()>& stop) {
     std::string error;
     std::vector<std::string> warnings;
     const rcssservermj::WorldRequests requests = session_->TakeRequests();
     for (int agent : session_->TakeKicked()) DropAgent(agent, "closed by the server");
-    auto stepped = std::async(std::launch::async, [&] {
-      return link_.Cycle(requests, steps_, options_.step_timeout, stop, &error, &warnings);
-    });
-    SendPerceptions();
-    auto world = stepped.get();
+    std::optional<rcssservermj::MjWorldSnapshot> world;
+    stepper_.Start([&] { world = link_.Cycle(requests, steps_, options_.step_timeout, stop, &error, &warnings); });
+    try {
+      SendPerceptions();
+    } catch (...) {
+      stepper_.Wait();  // the job uses this frame's locals
+      throw;
+    }
+    stepper_.Wait();
     for (const std::string& w : warnings) spdlog::warn("turf-sim refused {}", w);
     if (!world) {
       if (stop()) return true;
@@ -240,6 +245,7 @@ class RcssServerMjBridge::Impl {
   mutable std::mutex stats_mutex_;
   mutable std::condition_variable stats_changed_;
   RcssServerMjStats stats_;
+  WorkerThread stepper_;  // steps the world while the perceptions go out; last: stopped before the rest goes
 };
 
 RcssServerMjBridge::RcssServerMjBridge(RcssServerMjOptions options)

@@ -79,16 +79,17 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
   ControlAnswer ApplyStepCommands(const idl::SimControl& req) override {
     if (!req.commands().empty())
       return {idl::CONTROL_NOT_ALLOWED, "legged robots take joint_commands, not SSL commands"};
-    // All of the step's joint commands or none.
-    for (const idl::JointCommand& c : req.joint_commands()) {
-      const JointCommandError e = CheckCommand(c, &checked_);
+    // All of the step's joint commands or none; each converted and checked once.
+    const auto& commands = req.joint_commands();
+    if (step_checked_.size() < commands.size()) step_checked_.resize(commands.size());
+    for (size_t i = 0; i < commands.size(); ++i) {
+      const JointCommandError e = CheckCommand(commands[i], &step_checked_[i]);
       if (e != JointCommandError::kOk)
-        return {ControlErrorOf(e), fmt::format("joint command for '{}': {}", c.robot(), JointCommandErrorName(e))};
+        return {ControlErrorOf(e),
+                fmt::format("joint command for '{}': {}", commands[i].robot(), JointCommandErrorName(e))};
     }
-    for (const idl::JointCommand& c : req.joint_commands()) {
-      CheckCommand(c, &checked_);
-      kernel_.SetJointCommands(kernel_.world().RobotIndex(c.robot()), checked_);
-    }
+    for (size_t i = 0; i < commands.size(); ++i)
+      kernel_.SetJointCommands(kernel_.world().RobotIndex(commands[i].robot()), step_checked_[i]);
     return {};
   }
 
@@ -196,6 +197,7 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
   std::unique_ptr<dds::Reader<idl::JointCommandPubSubType>> command_reader_;
 
   std::vector<JointCommand> checked_;
+  std::vector<std::vector<JointCommand>> step_checked_;  // a STEP's joint commands, checked
   std::vector<idl::JointCommand> command_inbox_;
 };
 

@@ -4,6 +4,9 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
+#include <string>
+#include <vector>
 
 #include "codecs/rcssservermj/perception.h"
 
@@ -48,6 +51,25 @@ TEST(MjNumbers, TruncatedTowardZeroNotRounded) {
 }
 
 // Every cycle's time reads k * 0.02 exactly, although 0.58 * 100 is 57.99999999999999 in binary.
+// AppendNumber's fast path writes what the general one (PythonFloat of Truncate) does, over signs, zeros, magnitudes
+// from 1e-5 to 1e16 and the decimals the perceptions use.
+TEST(MjNumbers, AppendNumberEqualsPythonFloatOfTruncate) {
+  std::mt19937_64 rng(14);
+  std::uniform_real_distribution<double> mantissa(-10.0, 10.0);
+  std::uniform_int_distribution<int> exponent(-6, 16);
+  std::vector<double> values = {0.0,   -0.0,       0.001,    -0.001, 0.0009,     -0.0009, 0.58,  0.29, 1.0, -1.0,
+                                100.0, 123.456789, 999.9995, 1e14,   9.99999e14, 1e15,    -1e15, 1e16, NAN, INFINITY};
+  for (int i = 0; i < 200000; ++i) values.push_back(mantissa(rng) * std::pow(10.0, exponent(rng)));
+  for (int k = 0; k < 5000; ++k) values.push_back(k * 0.02);  // cycle times
+  for (double v : values) {
+    for (int decimals : {0, 1, 2, 3, 4}) {
+      std::string fast;
+      AppendNumber(&fast, v, decimals);
+      ASSERT_EQ(fast, PythonFloat(Truncate(v, decimals))) << v << " with " << decimals << " decimals";
+    }
+  }
+}
+
 TEST(MjNumbers, CycleTimesKeepTheirLastDigit) {
   for (int64_t k = 0; k <= 500000; ++k) {
     const double decimal = static_cast<double>(2 * k) / 100.0;  // the double nearest to k * 0.02

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/legged/legged_mjcf.h"
 #include "core/legged/legged_world.h"
 #include "loader/legged_scene_yaml.h"
 
@@ -34,6 +35,24 @@ TEST(LeggedSceneYamlTest, SimSpark3dSceneLoadsAndBuilds) {
   EXPECT_TRUE(s.has_ball);
   EXPECT_NEAR(s.ball_position[2], 0.042, 1e-9);
   EXPECT_NEAR(s.robots[0].base_position[0], -14.2, 1e-9);
+}
+
+// RCSSServerMJ's world has no outer walls; the SimSpark scenes keep theirs.
+TEST(LeggedSceneYamlTest, WallsCanBeTurnedOffAndTheRcssServerMjSceneHasNone) {
+  LeggedSceneLoadResult mj = LoadLeggedSceneFile(kScenes + "rcssservermj_fifa.yaml");
+  ASSERT_TRUE(mj.scene) << mj.errors.front();
+  EXPECT_FALSE(mj.scene->field.walls);
+  const LeggedMjcf without = ComposeLeggedMjcf(*mj.scene);
+  ASSERT_TRUE(without.errors.empty()) << without.errors.front();
+  EXPECT_EQ(without.xml.find("wall_"), std::string::npos);
+  EXPECT_NE(without.xml.find("goal_left_back"), std::string::npos);
+  LeggedSceneLoadResult ss = LoadLeggedSceneFile(kScenes + "simspark_match.yaml");
+  ASSERT_TRUE(ss.scene) << ss.errors.front();
+  EXPECT_TRUE(ss.scene->field.walls);
+  const LeggedMjcf with = ComposeLeggedMjcf(*ss.scene);
+  ASSERT_TRUE(with.errors.empty()) << with.errors.front();
+  for (const char* wall : {"wall_neg_x", "wall_pos_x", "wall_neg_y", "wall_pos_y"})
+    EXPECT_NE(with.xml.find(wall), std::string::npos) << wall;
 }
 
 TEST(LeggedSceneYamlTest, SimSparkMatchSceneParks22NaosOffTheField) {
