@@ -166,7 +166,14 @@ render_sim_speed() {
   }
   echo "| turf-sim, $SECONDS_SIM s of sim time, free-running (simspark_3d.yaml) | wall s, start-up included |"
   echo "| --- | --- |"
-  echo "| no renderer (cameras off) | $(run_sim) |"
+  echo "| no renderer | $(run_sim) |"
+  "$BUILD_DIR/participants/render/turf-render" --scene "$scene" --domain "$domain" --prefix "$prefix" --cameras off \
+    --status-every 3600 >/dev/null 2>&1 &
+  local off=$!
+  sleep 3  # the renderer's start-up, as below
+  echo "| turf-render --cameras off on the domain | $(run_sim) |"
+  kill -TERM "$off"
+  wait "$off" || true
   "$BUILD_DIR/participants/render/turf-render" --scene "$scene" --domain "$domain" --prefix "$prefix" \
     --status-every 3600 >/tmp/turf_bench_render_$$.log 2>&1 &
   local render=$!
