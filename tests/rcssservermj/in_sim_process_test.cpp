@@ -35,7 +35,7 @@ TEST(RcssServerMjInTurfSim, AnAgentsRoundsStepTurfSimAndItStopsCleanly) {
                std::to_string(monitor_port), "--rcssservermj-no-realtime", "--domain", std::to_string(TestDomain(23)),
                "--prefix", "mjinsim" + std::to_string(getpid())});
   AgentClient agent;
-  const auto end = std::chrono::steady_clock::now() + 30s;
+  const auto end = std::chrono::steady_clock::now() + 60s;  // loading 22 T1s takes seconds on a loaded machine
   while (!agent.Connect(static_cast<uint16_t>(agent_port)) && std::chrono::steady_clock::now() < end)
     std::this_thread::sleep_for(50ms);  // until turf-sim listens
   ASSERT_GE(agent.fd(), 0) << sim.Log();

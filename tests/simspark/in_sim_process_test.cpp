@@ -36,7 +36,7 @@ TEST(SimSparkInTurfSim, AnAgentsSyncCyclesStepTurfSimAndItStopsCleanly) {
                std::to_string(monitor_port), "--simspark-sync", "--domain", std::to_string(TestDomain(17)), "--prefix",
                "simsparkinsim" + std::to_string(getpid())});
   AgentClient agent;
-  const auto end = std::chrono::steady_clock::now() + 20s;
+  const auto end = std::chrono::steady_clock::now() + 60s;  // loading 22 Naos takes seconds on a loaded machine
   while (!agent.Connect(static_cast<uint16_t>(agent_port)) && std::chrono::steady_clock::now() < end)
     std::this_thread::sleep_for(50ms);  // until turf-sim listens
   ASSERT_GE(agent.fd(), 0) << sim.Log();
