@@ -1,6 +1,7 @@
 #include "dds/participant.h"
 
 #include <errno.h>  // program_invocation_short_name (glibc)
+#include <fastrtps/xmlparser/XMLProfileManager.h>
 #include <spdlog/spdlog.h>
 #include <turf/idl/ClockPubSubTypes.h>
 #include <turf/idl/JointsPubSubTypes.h>
@@ -135,6 +136,12 @@ class DdsReader final : public ReaderEndpoint, private fdds::DataReaderListener 
 }  // namespace
 
 // Fast DDS keeps loaded profiles process-wide; load each file once.
+// Intraprocess delivery is switched off, process-wide, before any participant exists (and again after each file,
+// in case one sets it): with it, Fast DDS 2.9 (Debian 12) hands samples and GAPs between participants of one
+// process through pointers to each other's endpoints, and deleting two such participants at once can use a freed
+// reader proxy (a SIGSEGV in StatefulWriter::intraprocess_gap, caught in a soak run of a test with three
+// participants; eProsima/Fast-DDS#2183 is the same class). Participants of one process (a bridge and its writer
+// watch, tests) then talk through shared memory or UDP like any two processes.
 void LoadQosProfiles(const std::string& file) {
   static std::mutex mutex;
   static std::set<std::string> loaded;
@@ -143,6 +150,9 @@ void LoadQosProfiles(const std::string& file) {
   if (!std::filesystem::exists(file)) throw std::runtime_error("QoS profiles file not found: " + file);
   if (fdds::DomainParticipantFactory::get_instance()->load_XML_profiles_file(file) != ReturnCode::RETCODE_OK)
     throw std::runtime_error("QoS profiles file is not valid Fast DDS XML: " + file);
+  eprosima::fastrtps::LibrarySettingsAttributes library;
+  library.intraprocess_delivery = eprosima::fastrtps::INTRAPROCESS_OFF;
+  eprosima::fastrtps::xmlparser::XMLProfileManager::library_settings(library);
   loaded.insert(file);
 }
 
