@@ -119,7 +119,7 @@ bool SendUntil(UdpSocket& team, const std::string& packet, const std::string& ip
 
 std::optional<double> DriveBlueRobot(UdpSocket& team, const std::string& ip, int port, VisionClient& vision, int id,
                                      double x, double y, std::chrono::milliseconds drive) {
-  using std::chrono::seconds;
+  using std::chrono::seconds;         // deadlines, not paces: a loaded machine with DDS Security can take many seconds
   constexpr double kCameraHz = 60.0;  // the SSL scenes' camera rate
   const auto robot = [&] { return vision.Robot(false, static_cast<uint32_t>(id)); };
   // Seen `frames` captures after `since` (simulation time, whatever the pace).
@@ -135,15 +135,15 @@ std::optional<double> DriveBlueRobot(UdpSocket& team, const std::string& ip, int
         const auto now = robot();
         return now && std::hypot(now->x / 1000.0 - x, now->y / 1000.0 - y) < 0.05;
       },
-      seconds(10));
+      seconds(30));
   if (!placed) return std::nullopt;
   const Seen at_place = *robot();
   // Standing still for 0.1 s.
-  if (!SendUntil(team, GrsimMove(false, id, 0.0, 0.0, 0.0), ip, port, vision, later(at_place, 6), seconds(10)))
+  if (!SendUntil(team, GrsimMove(false, id, 0.0, 0.0, 0.0), ip, port, vision, later(at_place, 6), seconds(30)))
     return std::nullopt;
   const Seen before = *robot();
   const auto frames = static_cast<uint32_t>(std::lround(std::chrono::duration<double>(drive).count() * kCameraHz));
-  if (!SendUntil(team, GrsimMove(false, id, 1.0, 0.0, 0.0), ip, port, vision, later(before, frames), seconds(10)))
+  if (!SendUntil(team, GrsimMove(false, id, 1.0, 0.0, 0.0), ip, port, vision, later(before, frames), seconds(30)))
     return std::nullopt;
   const Seen after = *robot();
   KeepSending(team, GrsimMove(false, id, 0.0, 0.0, 0.0), ip, port, vision, std::chrono::milliseconds(50));
