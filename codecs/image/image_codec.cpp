@@ -19,49 +19,47 @@ uint8_t Clamp(double v) { return static_cast<uint8_t>(std::clamp(v + 0.5, 0.0, 2
 
 Encoded Fail(Error e) { return Encoded{e, {}}; }
 
+// Both YUYV conversions: checks an even width within the limits and an input of `in_bytes` a pixel, then calls
+// convert(in, out) for each pair of pixels (two pixels of input, two of output at `out_bytes` a pixel).
+template <class Convert>
+Encoded ConvertPairs(const std::vector<uint8_t>& in, size_t in_bytes, size_t out_bytes, int width, int height,
+                     Convert convert) {
+  if (!SizeOk(width, height) || width % 2 != 0) return Fail(Error::kBadSize);
+  const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
+  if (in.size() != pixels * in_bytes) return Fail(Error::kMalformed);
+  Encoded out;
+  out.bytes.resize(pixels * out_bytes);
+  for (size_t p = 0; p < pixels; p += 2) convert(&in[p * in_bytes], &out.bytes[p * out_bytes]);
+  return out;
+}
+
 }  // namespace
 
 Encoded RgbToYuyv(const std::vector<uint8_t>& rgb, int width, int height) {
-  if (!SizeOk(width, height) || width % 2 != 0) return Fail(Error::kBadSize);
-  const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
-  if (rgb.size() != pixels * 3) return Fail(Error::kMalformed);
-  Encoded out;
-  out.bytes.resize(pixels * 2);
-  for (size_t p = 0; p < pixels; p += 2) {
-    const uint8_t* a = &rgb[3 * p];
+  return ConvertPairs(rgb, 3, 2, width, height, [](const uint8_t* a, uint8_t* o) {
     const uint8_t* b = a + 3;
     auto y = [](const uint8_t* c) { return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]; };
     const double r = 0.5 * (a[0] + b[0]);
     const double g = 0.5 * (a[1] + b[1]);
     const double bl = 0.5 * (a[2] + b[2]);
-    uint8_t* o = &out.bytes[2 * p];
     o[0] = Clamp(y(a));
     o[1] = Clamp(-0.168736 * r - 0.331264 * g + 0.5 * bl + 128.0);
     o[2] = Clamp(y(b));
     o[3] = Clamp(0.5 * r - 0.418688 * g - 0.081312 * bl + 128.0);
-  }
-  return out;
+  });
 }
 
 Encoded YuyvToRgb(const std::vector<uint8_t>& yuyv, int width, int height) {
-  if (!SizeOk(width, height) || width % 2 != 0) return Fail(Error::kBadSize);
-  const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
-  if (yuyv.size() != pixels * 2) return Fail(Error::kMalformed);
-  Encoded out;
-  out.bytes.resize(pixels * 3);
-  for (size_t p = 0; p < pixels; p += 2) {
-    const uint8_t* i = &yuyv[2 * p];
+  return ConvertPairs(yuyv, 2, 3, width, height, [](const uint8_t* i, uint8_t* o) {
     const double u = i[1] - 128.0;
     const double v = i[3] - 128.0;
     for (int k = 0; k < 2; ++k) {
       const double y = i[2 * k];
-      uint8_t* o = &out.bytes[3 * (p + static_cast<size_t>(k))];
-      o[0] = Clamp(y + 1.402 * v);
-      o[1] = Clamp(y - 0.344136 * u - 0.714136 * v);
-      o[2] = Clamp(y + 1.772 * u);
+      o[3 * k] = Clamp(y + 1.402 * v);
+      o[3 * k + 1] = Clamp(y - 0.344136 * u - 0.714136 * v);
+      o[3 * k + 2] = Clamp(y + 1.772 * u);
     }
-  }
-  return out;
+  });
 }
 
 namespace {

@@ -7,16 +7,32 @@
 
 namespace turf::mcap {
 
+namespace {
+
+// Each compression's word on a command line and its Chunk record field, one table for both directions.
+struct CompressionNames {
+  Compression compression;
+  const char* word;
+  const char* field;
+};
+constexpr CompressionNames kCompressionNames[] = {
+    {Compression::kNone, "none", ""},
+    {Compression::kZstd, "zstd", "zstd"},
+    {Compression::kLz4, "lz4", "lz4"},
+};
+
+}  // namespace
+
 const char* CompressionField(Compression c) {
-  switch (c) {
-    case Compression::kZstd:
-      return "zstd";
-    case Compression::kLz4:
-      return "lz4";
-    case Compression::kNone:
-      break;
-  }
+  for (const CompressionNames& n : kCompressionNames)
+    if (n.compression == c) return n.field;
   return "";
+}
+
+std::optional<Compression> CompressionFromWord(std::string_view word) {
+  for (const CompressionNames& n : kCompressionNames)
+    if (word == n.word) return n.compression;
+  return std::nullopt;
 }
 
 namespace {
@@ -60,13 +76,6 @@ ReadError DecompressLz4(std::string_view bytes, std::string* out, std::string* w
 }
 
 }  // namespace
-
-std::optional<Compression> CompressionFromWord(std::string_view word) {
-  if (word == "none") return Compression::kNone;
-  if (word == "zstd") return Compression::kZstd;
-  if (word == "lz4") return Compression::kLz4;
-  return std::nullopt;
-}
 
 std::string Compress(Compression c, std::string_view bytes, int zstd_level) {
   if (c == Compression::kNone) return std::string(bytes);

@@ -18,29 +18,18 @@ void Writer::Emit(std::string_view bytes) {
 }
 
 uint16_t Writer::AddSchema(std::string name, std::string encoding, std::string data) {
-  Schema s;
-  s.id = static_cast<uint16_t>(schemas_.size() + 1);
-  s.name = std::move(name);
-  s.encoding = std::move(encoding);
-  s.data = std::move(data);
-  if (!closed_) Emit(EncodeSchema(s));
-  schemas_.push_back(std::move(s));
+  const uint16_t id = Keep(&schemas_, Schema{0, std::move(name), std::move(encoding), std::move(data)}, EncodeSchema);
   stats_.schema_count = static_cast<uint16_t>(schemas_.size());
-  return schemas_.back().id;
+  return id;
 }
 
 uint16_t Writer::AddChannel(uint16_t schema_id, std::string topic, std::string message_encoding,
                             std::map<std::string, std::string> metadata) {
-  Channel c;
-  c.id = static_cast<uint16_t>(channels_.size() + 1);
-  c.schema_id = schema_id;
-  c.topic = std::move(topic);
-  c.message_encoding = std::move(message_encoding);
-  c.metadata = std::move(metadata);
-  if (!closed_) Emit(EncodeChannel(c));
-  channels_.push_back(std::move(c));
+  const uint16_t id =
+      Keep(&channels_, Channel{0, schema_id, std::move(topic), std::move(message_encoding), std::move(metadata)},
+           EncodeChannel);
   stats_.channel_count = static_cast<uint32_t>(channels_.size());
-  return channels_.back().id;
+  return id;
 }
 
 bool Writer::Write(uint16_t channel_id, uint32_t sequence, uint64_t log_time, uint64_t publish_time,

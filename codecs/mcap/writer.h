@@ -65,6 +65,14 @@ class Writer : Pinned {
 
  private:
   void Emit(std::string_view bytes);
+  // Gives `record` the next id of `list`, writes it with `encode` (unless closed) and keeps it there.
+  template <class Record>
+  uint16_t Keep(std::vector<Record>* list, Record record, std::string (*encode)(const Record&)) {
+    record.id = static_cast<uint16_t>(list->size() + 1);
+    if (!closed_) Emit(encode(record));
+    list->push_back(std::move(record));
+    return list->back().id;
+  }
   void WriteSummary();
   // Writes `records` as one group of the summary and remembers its SummaryOffset.
   void EmitGroup(Op op, const std::vector<std::string>& records, std::vector<SummaryOffset>* offsets);

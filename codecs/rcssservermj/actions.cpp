@@ -71,12 +71,7 @@ turf::Error ParseInit(std::string_view payload, InitAction* out) {
 
 ActionMessage ParseActions(std::string_view payload, const MjRobotModel& model) {
   ActionMessage m;
-  const simspark::SExprParse parse = simspark::ParseSExprs(payload);
-  if (parse.error != turf::Error::kOk) {
-    m.issues.push_back({turf::Error::kParse, fmt::format("{} at byte {}", turf::ErrorName(parse.error), parse.offset)});
-    return m;
-  }
-  for (const SExpr& e : parse.exprs) {
+  for (const SExpr& e : simspark::ParseSExprsOrIssue(payload, &m.issues)) {
     const std::string_view head = e.Head();
     auto refuse = [&](turf::Error error) {
       m.issues.push_back({error, fmt::format("({} ...): {}", head.substr(0, 32), turf::ErrorName(error))});

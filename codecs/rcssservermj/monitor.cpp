@@ -114,12 +114,7 @@ turf::Error Command(const SExpr& e, MonitorCommand* out) {
 
 MonitorMessage ParseMonitorMessage(std::string_view payload) {
   MonitorMessage m;
-  const simspark::SExprParse parse = simspark::ParseSExprs(payload);
-  if (parse.error != turf::Error::kOk) {
-    m.issues.push_back({turf::Error::kParse, fmt::format("{} at byte {}", turf::ErrorName(parse.error), parse.offset)});
-    return m;
-  }
-  for (const SExpr& e : parse.exprs) {
+  for (const SExpr& e : simspark::ParseSExprsOrIssue(payload, &m.issues)) {
     MonitorCommand c;
     const turf::Error error = Command(e, &c);
     if (error == turf::Error::kOk) {

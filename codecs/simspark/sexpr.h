@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/errors.h"
@@ -48,6 +49,17 @@ struct SExprParse {
 };
 
 SExprParse ParseSExprs(std::string_view text, const SExprLimits& limits = {});
+
+// For a decoder whose message keeps a list of issues (any struct of an error and a detail text): the expressions
+// of `text`, or none and one issue kParse, "<the parser's error> at byte <offset>".
+template <class Issue>
+std::vector<SExpr> ParseSExprsOrIssue(std::string_view text, std::vector<Issue>* issues) {
+  SExprParse parse = ParseSExprs(text);
+  if (parse.error != turf::Error::kOk)
+    issues->push_back(
+        {turf::Error::kParse, std::string(turf::ErrorName(parse.error)) + " at byte " + std::to_string(parse.offset)});
+  return std::move(parse.exprs);
+}
 
 // Atom helpers shared by the decoders. Numbers are decimal only ([+-]digits[.digits][e[+-]digits]),
 // the whole atom must be the number: "1.0abc", "0x10", "" and " 1" are bad.

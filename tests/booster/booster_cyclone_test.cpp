@@ -10,11 +10,7 @@
 #include <optional>
 #include <thread>
 
-#include "dds/control_client.h"
-#include "dds/memory_bus.h"
-#include "loader/legged_scene_yaml.h"
-#include "participants/booster_bridge/booster_sdk_bridge.h"
-#include "tests/sim/sim_harness.h"
+#include "tests/booster/booster_rig.h"
 #include "tests/support/process.h"
 #include "tests/test_domain.h"
 
@@ -24,28 +20,17 @@ namespace {
 using namespace std::chrono_literals;
 
 TEST(BoosterCyclone, ACycloneDdsReaderReceivesTurfsLowState) {
-  LeggedSceneLoadResult r = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/t1_stand.yaml");
-  ASSERT_TRUE(r.scene) << r.errors.front();
-  r.scene->realism = {};
-  dds::MemoryBus bus("mem");
-  test::SimUnderTest sim(std::move(*r.scene), bus, TimeMode::kLockstep);
-  dds::ControlClient client(bus, "test");
-  BoosterSdkOptions o;
-  o.domain = test::TestDomain(31);
-  BoosterSdkBridge bridge(o, bus);
-  std::atomic<bool> stop{false};
-  std::thread bridge_thread([&] { bridge.Run([&] { return stop.load(); }); });
+  const int domain = test::TestDomain(31);
+  test::BoosterRig rig(test::IdealT1Stand(), domain);
   // Settle on the feet (1 s), then serve until the reader has one sample.
-  ASSERT_TRUE(client.Call(test::StepRequest(200), 20s).ok());
-  test::Process reader("cyclone_low_state_reader", {TURF_CYCLONE_READER, std::to_string(o.domain), "30"});
+  ASSERT_TRUE(rig.Step(200).ok());
+  test::Process reader("cyclone_low_state_reader", {TURF_CYCLONE_READER, std::to_string(domain), "30"});
   std::optional<int> status;
   const auto deadline = std::chrono::steady_clock::now() + 40s;
   while (!status && std::chrono::steady_clock::now() < deadline) {
-    ASSERT_TRUE(client.Call(test::StepRequest(4), 20s).ok());  // 20 ms: a few sensor frames
+    ASSERT_TRUE(rig.Step(4).ok());  // 20 ms: a few sensor frames
     status = reader.Wait(1ms);
   }
-  stop = true;
-  bridge_thread.join();
   ASSERT_TRUE(status.has_value()) << "the Cyclone DDS reader did not finish: " << reader.Log();
   ASSERT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << reader.Log();
   unsigned serial = 0, parallel = 0;

@@ -17,7 +17,7 @@
 #include "dds/vendor_participant.h"
 #include "loader/legged_scene_yaml.h"
 #include "participants/booster_bridge/booster_sdk_bridge.h"
-#include "tests/sim/sim_harness.h"
+#include "tests/booster/booster_rig.h"
 #include "tests/test_domain.h"
 #include "turf/idl/BoosterLowLevelPubSubTypes.h"
 
@@ -52,15 +52,7 @@ bi::LowCmd_ StandWithHeadDown(size_t joints = 23) {
 
 class BoosterSdkTest : public ::testing::Test {
  protected:
-  BoosterSdkTest() : bus_("mem"), client_(bus_, "test"), program_(domain_, "sdk-program") {
-    LeggedSceneLoadResult r = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/t1_stand.yaml");
-    if (!r.scene) throw std::runtime_error(r.errors.front());
-    r.scene->realism = {};
-    sim_.emplace(std::move(*r.scene), bus_, TimeMode::kLockstep);
-    BoosterSdkOptions o;
-    o.domain = domain_;
-    bridge_ = std::make_unique<BoosterSdkBridge>(o, bus_);
-    bridge_thread_ = std::thread([this] { bridge_->Run([this] { return stop_.load(); }); });
+  BoosterSdkTest() : rig_(test::IdealT1Stand(), domain_), program_(domain_, "sdk-program") {
     low_state_ = program_.MakeReader<bi::LowState_PubSubType>("rt/low_state", [this](const bi::LowState_& s, int64_t) {
       std::lock_guard<std::mutex> lock(mutex_);
       last_ = s;
@@ -69,13 +61,9 @@ class BoosterSdkTest : public ::testing::Test {
     });
     joint_ctrl_ = program_.MakeWriter<bi::LowCmd_PubSubType>("rt/joint_ctrl");
   }
-  ~BoosterSdkTest() override {
-    stop_ = true;
-    bridge_thread_.join();
-  }
 
   void Step(uint32_t frames) {
-    const dds::ControlOutcome o = client_.Call(test::StepRequest(frames), 20s);
+    const dds::ControlOutcome o = rig_.Step(frames);
     ASSERT_TRUE(o.ok()) << o.Describe();
   }
 
@@ -97,7 +85,7 @@ class BoosterSdkTest : public ::testing::Test {
   // Writes `cmd` (best effort, as the SDK does: again each step) until the bridge took it, or, with `refused_as`,
   // until it refused one more under that kind; false at the deadline. Copies still in flight may be counted later.
   bool Send(const bi::LowCmd_& cmd, std::chrono::seconds age = 0s, const std::string& refused_as = "") {
-    const BoosterSdkStats before = bridge_->Stats();
+    const BoosterSdkStats before = rig_.bridge().Stats();
     const auto deadline = Clock::now() + 20s;
     while (Clock::now() < deadline) {
       const int64_t now_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
@@ -105,7 +93,7 @@ class BoosterSdkTest : public ::testing::Test {
                                  .count();
       joint_ctrl_->Write(cmd, now_ns);
       Step(1);
-      BoosterSdkStats now = bridge_->Stats();
+      BoosterSdkStats now = rig_.bridge().Stats();
       if (refused_as.empty() ? now.commands > before.commands || now.refused > before.refused
                              : now.refused_by_kind[refused_as] > Count(before, refused_as))
         return true;
@@ -124,12 +112,7 @@ class BoosterSdkTest : public ::testing::Test {
   }
 
   const int domain_ = test::TestDomain(23);
-  dds::MemoryBus bus_;
-  std::optional<test::SimUnderTest> sim_;
-  dds::ControlClient client_;
-  std::unique_ptr<BoosterSdkBridge> bridge_;
-  std::atomic<bool> stop_{false};
-  std::thread bridge_thread_;
+  test::BoosterRig rig_;
   dds::VendorParticipant program_;
   std::unique_ptr<dds::VendorParticipant::RawReader> low_state_;
   std::unique_ptr<dds::VendorParticipant::Writer<bi::LowCmd_PubSubType>> joint_ctrl_;
@@ -144,8 +127,8 @@ TEST_F(BoosterSdkTest, LowStateCarriesTheT1AndJointCtrlMovesItsHead) {
       << "no rt/low_state with 23 joints";
   Step(200);  // 1 s: the robot settles on its feet
   ASSERT_TRUE(StepUntil([](const bi::LowState_&) { return true; }, 10));
-  ASSERT_EQ(bridge_->Robots().size(), 1u);
-  EXPECT_EQ(bridge_->Robots()[0], "t1 (T1) on domain " + std::to_string(domain_));
+  ASSERT_EQ(rig_.bridge().Robots().size(), 1u);
+  EXPECT_EQ(rig_.bridge().Robots()[0], "t1 (T1) on domain " + std::to_string(domain_));
   {
     std::lock_guard<std::mutex> lock(mutex_);
     EXPECT_EQ(last_->motor_state_parallel().size(), 23u);
@@ -165,12 +148,12 @@ TEST_F(BoosterSdkTest, LowStateCarriesTheT1AndJointCtrlMovesItsHead) {
     return head.q() > 0.6 && std::abs(head.q() - (0.785 - head.tau_est() / 5.0)) < 0.03;
   };
   EXPECT_TRUE(StepUntil(settled, 200)) << "head pitch " << Q(1);
-  EXPECT_GT(bridge_->Stats().commands, 0u);
-  EXPECT_EQ(bridge_->Stats().refused, 0u);
-  EXPECT_EQ(sim_->node().Rejected("joint_command.out_of_range"), 0u);
-  EXPECT_EQ(sim_->node().Rejected("joint_command.unknown_joint"), 0u);
-  EXPECT_EQ(sim_->node().Rejected("joint_command.not_finite"), 0u);
-  EXPECT_EQ(sim_->node().Rejected("joint_command.unknown_robot"), 0u);
+  EXPECT_GT(rig_.bridge().Stats().commands, 0u);
+  EXPECT_EQ(rig_.bridge().Stats().refused, 0u);
+  EXPECT_EQ(rig_.sim().Rejected("joint_command.out_of_range"), 0u);
+  EXPECT_EQ(rig_.sim().Rejected("joint_command.unknown_joint"), 0u);
+  EXPECT_EQ(rig_.sim().Rejected("joint_command.not_finite"), 0u);
+  EXPECT_EQ(rig_.sim().Rejected("joint_command.unknown_robot"), 0u);
 }
 
 TEST_F(BoosterSdkTest, BadCommandsAreRefusedAndTheRobotHoldsItsLastCommand) {
@@ -178,47 +161,38 @@ TEST_F(BoosterSdkTest, BadCommandsAreRefusedAndTheRobotHoldsItsLastCommand) {
   ASSERT_TRUE(Send(StandWithHeadDown()));
   Step(400);
   const double held = Q(1);
-  const uint64_t taken = bridge_->Stats().commands;
+  const uint64_t taken = rig_.bridge().Stats().commands;
   bi::LowCmd_ k1_sized = StandWithHeadDown(22);  // a K1's 22 joints for a T1
   EXPECT_TRUE(Send(k1_sized, 0s, "joint_ctrl.malformed"));
   bi::LowCmd_ nan = StandWithHeadDown();
   nan.motor_cmd()[1].q(std::nanf(""));
   EXPECT_TRUE(Send(nan, 0s, "joint_ctrl.not_finite"));
   EXPECT_TRUE(Send(StandWithHeadDown(), 10s, "joint_ctrl.stale"));  // a command 10 s old
-  EXPECT_EQ(bridge_->Stats().commands, taken);                      // none of them reached turf-sim
+  EXPECT_EQ(rig_.bridge().Stats().commands, taken);                 // none of them reached turf-sim
   bi::LowCmd_ beyond = StandWithHeadDown();
   beyond.motor_cmd()[1].q(3.0f);  // past head pitch's range: turf-sim's validator refuses the whole message
   ASSERT_TRUE(Send(beyond));
   Step(200);
   EXPECT_TRUE(
-      StepUntil([&](const bi::LowState_&) { return sim_->node().Rejected("joint_command.out_of_range") >= 1; }, 200));
+      StepUntil([&](const bi::LowState_&) { return rig_.sim().Rejected("joint_command.out_of_range") >= 1; }, 200));
   EXPECT_NEAR(Q(1), held, 0.02);  // still the last accepted command
 }
 
 // Every T1 and K1 of a scene on a DDS domain of its own, in scene order.
 TEST(BoosterSdkRobots, EachRobotGetsTheNextDomain) {
-  LeggedSceneLoadResult r = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/t1_stand.yaml");
-  ASSERT_TRUE(r.scene) << r.errors.front();
-  LeggedRobot second = r.scene->robots[0];
+  LeggedScene scene = test::LoadScene("t1_stand.yaml");
+  LeggedRobot second = scene.robots[0];
   second.name = "t1_b";
   second.x = 2.0;
-  r.scene->robots.push_back(second);
-  dds::MemoryBus bus("mem");
-  test::SimUnderTest sim(std::move(*r.scene), bus, TimeMode::kLockstep);
-  dds::ControlClient client(bus, "test");
-  BoosterSdkOptions o;
-  o.domain = test::TestDomain(41);
-  BoosterSdkBridge bridge(o, bus);
-  std::atomic<bool> stop{false};
-  std::thread thread([&] { bridge.Run([&] { return stop.load(); }); });
+  scene.robots.push_back(second);
+  const int domain = test::TestDomain(41);
+  test::BoosterRig rig(std::move(scene), domain);
   const auto deadline = Clock::now() + 20s;
-  while (bridge.Robots().size() < 2 && Clock::now() < deadline)
-    ASSERT_TRUE(client.Call(test::StepRequest(4), 20s).ok());
-  stop = true;
-  thread.join();
-  ASSERT_EQ(bridge.Robots().size(), 2u);
-  EXPECT_EQ(bridge.Robots()[0], "t1 (T1) on domain " + std::to_string(o.domain));
-  EXPECT_EQ(bridge.Robots()[1], "t1_b (T1) on domain " + std::to_string(o.domain + 1));
+  while (rig.bridge().Robots().size() < 2 && Clock::now() < deadline) ASSERT_TRUE(rig.Step(4).ok());
+  const std::vector<std::string> robots = rig.bridge().Robots();
+  ASSERT_EQ(robots.size(), 2u);
+  EXPECT_EQ(robots[0], "t1 (T1) on domain " + std::to_string(domain));
+  EXPECT_EQ(robots[1], "t1_b (T1) on domain " + std::to_string(domain + 1));
 }
 
 }  // namespace

@@ -1,7 +1,6 @@
 // The Booster SDK's low-level types as turf generates them from idl/booster/BoosterLowLevel.idl: the names they
 // register on the wire, and their CDR bytes against the layouts of shared/protocols/booster-sdk-dds.md, written out
 // by hand here, so that a wrong member order, type or padding shows up without the vendor's library.
-#include <fastdds/rtps/common/SerializedPayload.h>
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -9,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/cdr.h"
 #include "turf/idl/BoosterLowLevel.h"
 #include "turf/idl/BoosterLowLevelPubSubTypes.h"
 
@@ -33,10 +33,8 @@ struct Cdr {
 
 template <class PubSub, class Sample>
 std::vector<uint8_t> Serialise(const Sample& sample) {
-  PubSub type;
-  eprosima::fastrtps::rtps::SerializedPayload_t payload(type.getSerializedSizeProvider(const_cast<Sample*>(&sample))());
-  EXPECT_TRUE(type.serialize(const_cast<Sample*>(&sample), &payload));
-  return {payload.data, payload.data + payload.length};
+  const std::string cdr = turf::test::Cdr<PubSub>(sample);
+  return {cdr.begin(), cdr.end()};
 }
 
 TEST(BoosterTypes, RegisterTheSdksRos2StyleNames) {

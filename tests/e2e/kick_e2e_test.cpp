@@ -29,7 +29,7 @@ Placement BallFor(int k) {
 }
 
 std::string SimprotoCommand(double kick_speed) {
-  team::simulation::RobotControl rc;
+  wire::simulation::RobotControl rc;
   auto* c = rc.add_robot_commands();
   c->set_id(kRobot);
   auto* v = c->mutable_move_command()->mutable_local_velocity();
@@ -40,8 +40,8 @@ std::string SimprotoCommand(double kick_speed) {
   return rc.SerializeAsString();
 }
 
-team::simulation::SimulatorCommand SimprotoPlace(const Placement& ball) {
-  team::simulation::SimulatorCommand cmd;
+wire::simulation::SimulatorCommand SimprotoPlace(const Placement& ball) {
+  wire::simulation::SimulatorCommand cmd;
   auto* b = cmd.mutable_control()->mutable_teleport_ball();
   b->set_x(static_cast<float>(ball.x));
   b->set_y(static_cast<float>(ball.y));
@@ -51,7 +51,7 @@ team::simulation::SimulatorCommand SimprotoPlace(const Placement& ball) {
   b->set_vz(0);
   auto* r = cmd.mutable_control()->add_teleport_robot();
   r->mutable_id()->set_id(kRobot);
-  r->mutable_id()->set_team(team::simulation::BLUE);
+  r->mutable_id()->set_team(wire::simulation::BLUE);
   r->set_x(static_cast<float>(kRobotX));
   r->set_y(static_cast<float>(kRobotY));
   r->set_orientation(0);

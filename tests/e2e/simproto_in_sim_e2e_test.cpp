@@ -8,8 +8,8 @@ namespace turf::test {
 namespace {
 
 // One sync request of 1/60 s commanding blue 0; the response, or nullopt after 5 s without one.
-std::optional<team::simulation::SimulationSyncResponse> Sync(Udp& team, int port) {
-  team::simulation::SimulationSyncRequest request;
+std::optional<wire::simulation::SimulationSyncResponse> Sync(Udp& team, int port) {
+  wire::simulation::SimulationSyncRequest request;
   request.set_sim_step(1.0f / 60.0f);
   auto* c = request.mutable_robot_control()->add_robot_commands();
   c->set_id(0);
@@ -21,18 +21,18 @@ std::optional<team::simulation::SimulationSyncResponse> Sync(Udp& team, int port
   const auto end = Clock::now() + 5s;
   while (Clock::now() < end)
     if (auto bytes = team.Receive()) {
-      team::simulation::SimulationSyncResponse response;
+      wire::simulation::SimulationSyncResponse response;
       if (response.ParseFromString(*bytes)) return response;
     }
   return std::nullopt;
 }
 
 // Command() once the process listens: a datagram sent before it bound its port is lost, so ask again (20 s at most).
-std::optional<team::simulation::SimulatorResponse> CommandOnceUp(Udp& team,
-                                                                 const team::simulation::SimulatorCommand& cmd,
+std::optional<wire::simulation::SimulatorResponse> CommandOnceUp(Udp& team,
+                                                                 const wire::simulation::SimulatorCommand& cmd,
                                                                  int port) {
   const auto end = Clock::now() + 20s;
-  std::optional<team::simulation::SimulatorResponse> r;
+  std::optional<wire::simulation::SimulatorResponse> r;
   while (!r && Clock::now() < end) r = Command(team, cmd, static_cast<uint16_t>(port));
   return r;
 }
@@ -64,14 +64,14 @@ TEST(SimprotoInTurfSim, TheSyncPortStepsTurfSimAndTheSeparateBridgeStillWorks) {
   Udp team;
 
   // A teleport through the separate bridge, over DDS (asked again until the bridge listens and has seen turf-sim).
-  team::simulation::SimulatorCommand teleport;
+  wire::simulation::SimulatorCommand teleport;
   teleport.mutable_control()->mutable_teleport_ball()->set_x(1.0f);
   teleport.mutable_control()->mutable_teleport_ball()->set_y(-0.5f);
   const auto teleported = CommandOnceUp(team, teleport, bridge_control_port);
   ASSERT_TRUE(teleported.has_value()) << bridge.Log();
   ASSERT_EQ(teleported->errors_size(), 0) << teleported->DebugString();
   // turf-sim's own control port answers too.
-  team::simulation::SimulatorCommand ping;
+  wire::simulation::SimulatorCommand ping;
   ping.mutable_control();
   const auto pong = CommandOnceUp(team, ping, control_port);
   ASSERT_TRUE(pong.has_value()) << sim.Log();
@@ -85,9 +85,7 @@ TEST(SimprotoInTurfSim, TheSyncPortStepsTurfSimAndTheSeparateBridgeStillWorks) {
     const auto response = Sync(team, sync_port);
     ASSERT_TRUE(response.has_value()) << sim.Log();
     ASSERT_EQ(response->robot_control_response().errors_size(), 0) << response->DebugString();
-    for (const std::string& bytes : response->detection()) {
-      team::vision::SSL_DetectionFrame frame;
-      ASSERT_TRUE(frame.ParseFromString(bytes));
+    for (const wire::vision::SSL_DetectionFrame& frame : response->detection()) {
       ++detections;
       if (!ball_x && frame.balls_size() > 0) ball_x = frame.balls(0).x();
     }

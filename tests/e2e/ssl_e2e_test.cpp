@@ -95,7 +95,7 @@ TEST_F(SslEndToEnd, StatusPacketsArriveOnTheTeamsPort) {
   while (Clock::now() < end && !infrared) {
     team.Send(GrsimMove(false, 6, 0.0, 0.0, 0.0), m.grsim_port);
     if (auto bytes = blue_status.Receive()) {
-      team::grsim::Robots_Status status;
+      wire::grsim::Robots_Status status;
       ASSERT_TRUE(status.ParseFromString(*bytes));
       for (const auto& s : status.robots_status()) infrared = infrared || (s.robot_id() == 6 && s.infrared());
     }
@@ -107,8 +107,8 @@ TEST_F(SslEndToEnd, StatusPacketsArriveOnTheTeamsPort) {
 
 TEST_F(SslEndToEnd, SimulationProtocolMovesOnlyItsOwnTeam) {
   // Teleport blue 2 and yellow 2 through the control port.
-  team::simulation::SimulatorCommand cmd;
-  for (auto [team_id, y] : {std::pair{team::simulation::BLUE, 2.0f}, std::pair{team::simulation::YELLOW, -2.0f}}) {
+  wire::simulation::SimulatorCommand cmd;
+  for (auto [team_id, y] : {std::pair{wire::simulation::BLUE, 2.0f}, std::pair{wire::simulation::YELLOW, -2.0f}}) {
     auto* t = cmd.mutable_control()->add_teleport_robot();
     t->mutable_id()->set_id(2);
     t->mutable_id()->set_team(team_id);
@@ -142,7 +142,7 @@ TEST_F(SslEndToEnd, SimulationProtocolMovesOnlyItsOwnTeam) {
   while (Clock::now() < feedback_by && !feedback) {
     team.Send(SimprotoMove(2, 0.0), m.blue_port);
     if (auto bytes = team.Receive()) {
-      team::simulation::RobotControlResponse r;
+      wire::simulation::RobotControlResponse r;
       if (r.ParseFromString(*bytes))
         for (const auto& f : r.feedback()) feedback = feedback || (f.id() == 2 && f.has_dribbler_ball_contact());
     }
@@ -151,16 +151,16 @@ TEST_F(SslEndToEnd, SimulationProtocolMovesOnlyItsOwnTeam) {
 }
 
 TEST_F(SslEndToEnd, ErForceRealismKnobsChangeTheVisionStream) {
-  team::simulation::RealismConfigErForce knobs;
+  wire::simulation::RealismConfigErForce knobs;
   knobs.set_vision_processing_time(20'000'000);  // ns
   knobs.set_stddev_robot_p(0.01f);               // m
-  team::simulation::SimulatorCommand cmd;
+  wire::simulation::SimulatorCommand cmd;
   auto* any = cmd.mutable_config()->mutable_realism_config()->add_custom();
   any->set_type_url("type.googleapis.com/sslsim.RealismConfigErForce");
   any->set_value(knobs.SerializeAsString());
   const auto answer = Command(team, cmd, m.control_port);
   ASSERT_TRUE(answer);
-  const team::simulation::SimulatorResponse& response = *answer;
+  const wire::simulation::SimulatorResponse& response = *answer;
   EXPECT_EQ(response.errors_size(), 0) << response.errors(0).code() << ": " << response.errors(0).message();
   // Now every detection left the vision system 20 ms after its capture, and
   // standing robots jitter by about a centimetre. Frames captured before the

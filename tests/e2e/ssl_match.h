@@ -1,9 +1,10 @@
 // What the SSL end-to-end tests share: turf-sim and the three SSL bridges as
-// real processes on loopback (Match), and a team client that speaks the legacy
-// protocols with its own protos (tests/e2e/proto), as an SSL team's software
-// would. Every Match has its own DDS domain, topic prefix and UDP ports, so
-// tests can run in parallel. Waits are in simulation time (vision stamps with
-// --clock sim) with a wall-clock deadline of at most 20 s.
+// real processes on loopback (Match), and a team client in the test process that
+// speaks the legacy protocols over UDP, as an SSL team's software would (with
+// turf's protos: the wire is pinned by the codecs' golden-byte tests). Every
+// Match has its own DDS domain, topic prefix and UDP ports, so tests can run in
+// parallel. Waits are in simulation time (vision stamps with --clock sim) with a
+// wall-clock deadline of at most 20 s.
 #pragma once
 
 #include <arpa/inet.h>
@@ -23,9 +24,9 @@
 #include <thread>
 #include <vector>
 
-#include "tests/e2e/proto/team_grsim.pb.h"
-#include "tests/e2e/proto/team_simulation.pb.h"
-#include "tests/e2e/proto/team_vision.pb.h"
+#include "codecs/proto/grsim.pb.h"
+#include "codecs/proto/ssl_simulation.pb.h"
+#include "codecs/proto/ssl_vision.pb.h"
 #include "tests/support/process.h"
 #include "tests/support/team_packets.h"
 #include "tests/test_domain.h"
@@ -82,7 +83,7 @@ class VisionClient {
     while (Clock::now() < end) {
       auto bytes = udp_.Receive();
       if (!bytes) continue;
-      team::vision::SSL_WrapperPacket p;
+      wire::vision::SSL_WrapperPacket p;
       if (!p.ParseFromString(*bytes)) {
         ++unparseable;
         continue;
@@ -116,7 +117,7 @@ class VisionClient {
 
   std::map<std::pair<int, uint32_t>, Seen> robots;
   std::map<uint32_t, uint32_t> cameras;  // camera id -> last frame number
-  std::optional<team::vision::SSL_GeometryData> geometry;
+  std::optional<wire::vision::SSL_GeometryData> geometry;
   Seen ball;
   std::vector<Seen> ball_track;
   std::vector<double> send_delays;                    // t_sent - t_capture of every detection
@@ -202,7 +203,7 @@ class Match {
 };
 
 inline std::string SimprotoMove(int id, double forward) {
-  team::simulation::RobotControl rc;
+  wire::simulation::RobotControl rc;
   auto* c = rc.add_robot_commands();
   c->set_id(id);
   auto* v = c->mutable_move_command()->mutable_local_velocity();
@@ -216,13 +217,13 @@ inline std::string SimprotoMove(int id, double forward) {
 // Until the simulation bridge has seen turf-sim (the vision bridge may have
 // been faster) it answers "not available", and when turf-sim's reply is late
 // "did not answer": ask again then.
-inline std::optional<team::simulation::SimulatorResponse> Command(Udp& team,
-                                                                  const team::simulation::SimulatorCommand& cmd,
+inline std::optional<wire::simulation::SimulatorResponse> Command(Udp& team,
+                                                                  const wire::simulation::SimulatorCommand& cmd,
                                                                   uint16_t port) {
   const auto give_up = Clock::now() + 15s;
   while (Clock::now() < give_up) {
     team.Send(cmd.SerializeAsString(), port);
-    team::simulation::SimulatorResponse response;
+    wire::simulation::SimulatorResponse response;
     bool answered = false;
     const auto answer_by = Clock::now() + 5s;  // the bridge's reply timeout is 2 s
     while (Clock::now() < answer_by && !answered)

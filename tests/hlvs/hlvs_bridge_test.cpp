@@ -14,10 +14,13 @@
 
 #include "codecs/hlvs/camera_source.h"
 #include "dds/memory_bus.h"
-#include "loader/legged_scene_yaml.h"
 #include "participants/hlvs_bridge/hlvs_bridge.h"
 #include "participants/sim/sim_node.h"
 #include "tests/hlvs/hlvs_client.h"
+#include "tests/hlvs/hlvs_requests.h"
+#include "tests/sim/sim_harness.h"
+#include "tests/support/in_process.h"
+#include "tests/support/legged_scene.h"
 
 namespace turf {
 namespace {
@@ -29,20 +32,25 @@ namespace pb = hlvs::pb;
 const std::string kWelcome("Welcome\0", 8);
 const std::string kRefused("Refused\0", 8);
 
+// turf-sim's legged node and the bridge on one in-memory bus, each on its own thread.
 class Match {
  public:
   // `max_speed` > 0: every robot's motors.max_speed instead of the scene's.
   // `cameras`: an image source, and real time (images of 230 KB would otherwise outrun a client on a loaded machine).
   explicit Match(double max_speed = 0, hlvs::CameraSource* cameras = nullptr)
-      : bus_("hlvs" + std::to_string(getpid())) {
-    LeggedSceneLoadResult scene = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/hlvs.yaml");
-    if (!scene.scene) throw std::runtime_error(scene.errors.front());
-    for (auto& robot : scene.scene->robots)
+      : bus_("hlvs" + std::to_string(getpid())),
+        sim_(Scene(max_speed), bus_, TimeMode::kLockstep),
+        bridge_(Bridge(cameras, bus_)) {}
+  HlvsBridge& bridge() { return bridge_.node(); }
+
+ private:
+  static LeggedScene Scene(double max_speed) {
+    LeggedScene scene = test::LoadScene("hlvs.yaml");
+    for (auto& robot : scene.robots)
       if (max_speed > 0) robot.motors.max_speed = max_speed;
-    SimNodeOptions sim;
-    sim.mode = TimeMode::kLockstep;
-    sim_ = std::make_unique<SimNode>(std::move(*scene.scene), sim, bus_);
-    sim_thread_ = std::thread([this] { sim_->Run([this] { return stop_.load(); }); });
+    return scene;
+  }
+  static std::unique_ptr<HlvsBridge> Bridge(hlvs::CameraSource* cameras, dds::Bus& bus) {
     HlvsBridgeOptions o;
     o.listen = "127.0.0.1";
     o.red_ports = {0, 0};
@@ -50,42 +58,18 @@ class Match {
     o.red_allow = {"127.0.0.1"};
     o.blue_allow = {"127.0.0.0/8"};
     o.realtime_factor = cameras != nullptr ? 1.0 : 0.0;
-    bridge_ = std::make_unique<HlvsBridge>(o, bus_);
-    bridge_->SetCameraSource(cameras);
-    bridge_thread_ = std::thread([this] { bridge_->Run([this] { return stop_.load(); }); });
+    auto bridge = std::make_unique<HlvsBridge>(o, bus);
+    bridge->SetCameraSource(cameras);
+    return bridge;
   }
-  ~Match() {
-    stop_ = true;
-    bridge_thread_.join();
-    sim_thread_.join();
-  }
-  HlvsBridge& bridge() { return *bridge_; }
 
- private:
   dds::MemoryBus bus_;
-  std::atomic<bool> stop_{false};
-  std::unique_ptr<SimNode> sim_;
-  std::unique_ptr<HlvsBridge> bridge_;
-  std::thread sim_thread_, bridge_thread_;
+  test::SimUnderTest sim_;
+  test::OnThread<HlvsBridge> bridge_;
 };
 
-pb::ActuatorRequests TimeSteps(std::initializer_list<std::pair<const char*, uint32_t>> steps) {
-  pb::ActuatorRequests r;
-  for (const auto& [name, step] : steps) {
-    pb::SensorTimeStep* s = r.add_sensor_time_steps();
-    s->set_name(name);
-    s->set_timestep(step);
-  }
-  return r;
-}
-
-pb::ActuatorRequests Position(const char* motor, double position) {
-  pb::ActuatorRequests r;
-  pb::MotorPosition* p = r.add_motor_positions();
-  p->set_name(motor);
-  p->set_position(position);
-  return r;
-}
+using test::Position;
+using test::TimeSteps;
 
 std::optional<double> Sensor(const pb::SensorMeasurements& m, const std::string& name) {
   for (const pb::PositionSensorMeasurement& p : m.position_sensors())

@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "tests/hlvs/hlvs_client.h"
+#include "tests/hlvs/hlvs_requests.h"
 #include "tests/support/process.h"
 #include "tests/test_domain.h"
 
@@ -27,22 +28,6 @@ using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
 
 const std::string kScene = std::string(TURF_SOURCE_DIR) + "/configs/scenes/hlvs.yaml";
-
-hlvs::pb::ActuatorRequests CameraStep(uint32_t ms) {
-  hlvs::pb::ActuatorRequests r;
-  auto* s = r.add_sensor_time_steps();
-  s->set_name("Camera");
-  s->set_timestep(ms);
-  return r;
-}
-
-hlvs::pb::ActuatorRequests NeckTo(double rad) {
-  hlvs::pb::ActuatorRequests r;
-  auto* p = r.add_motor_positions();
-  p->set_name("Neck");
-  p->set_position(rad);
-  return r;
-}
 
 // Pixels whose G byte (the middle of B, G, R) stands clearly above the other two: the field.
 int GreenPixels(const std::string& bgr) {
@@ -78,7 +63,7 @@ TEST(HlvsCamera, AClientGetsRenderedImagesAtItsStepAndNoneOnceOff) {
   ASSERT_EQ(greeting, std::string("Welcome\0", 8)) << bridge.Log() << sim.Log();
   auto first = client.Receive(20s);
   ASSERT_TRUE(first.has_value()) << bridge.Log();
-  ASSERT_TRUE(client.Send(CameraStep(16)));
+  ASSERT_TRUE(client.Send(TimeSteps({{"Camera", 16}})));
 
   // Images until 5 have come (the renderer may start late, and a frame not rendered in time is left out).
   std::optional<uint32_t> phase;  // the first camera message's time modulo 16
@@ -88,7 +73,7 @@ TEST(HlvsCamera, AClientGetsRenderedImagesAtItsStepAndNoneOnceOff) {
   while (images < 5 && Clock::now() < deadline) {
     auto m = client.Receive(20s);
     ASSERT_TRUE(m.has_value()) << bridge.Log();
-    ASSERT_TRUE(client.Send(NeckTo(0.5 * std::sin(m->time() * 1e-3 * M_PI))));  // the head keeps turning
+    ASSERT_TRUE(client.Send(Position("Neck", 0.5 * std::sin(m->time() * 1e-3 * M_PI))));  // the head keeps turning
     for (const auto& w : m->messages()) ADD_FAILURE() << "a message: " << w.text();
     for (const auto& c : m->cameras()) {
       ++images;
@@ -113,7 +98,7 @@ TEST(HlvsCamera, AClientGetsRenderedImagesAtItsStepAndNoneOnceOff) {
       << render.Log();
 
   // Off: the bridge switches it off in turf-render, and after the step that took the request no camera comes.
-  ASSERT_TRUE(client.Send(CameraStep(0)));
+  ASSERT_TRUE(client.Send(TimeSteps({{"Camera", 0}})));
   const auto off_deadline = Clock::now() + 30s;
   while (render.Log().find("camera red_1/camera off") == std::string::npos && Clock::now() < off_deadline)
     std::this_thread::sleep_for(100ms);

@@ -8,15 +8,13 @@
 
 #include "codecs/hlvs/wire.h"
 #include "codecs/proto/hlvs.pb.h"
+#include "tests/hlvs/hlvs_requests.h"
+#include "tests/support/text.h"
 
 namespace turf::hlvs {
 namespace {
 
-std::string Bytes(std::initializer_list<int> b) {
-  std::string s;
-  for (int x : b) s.push_back(static_cast<char>(x));
-  return s;
-}
+using test::Bytes;
 
 // The facts' sample: motor_positions Neck 1.6, Head 0.8; sensor_time_steps NeckS 8, Camera 16 (57 bytes).
 std::string SampleRequest() {
@@ -49,19 +47,9 @@ TEST(HlvsWire, DecodesTheFactsSampleRequest) {
 }
 
 TEST(HlvsWire, OurProtoWritesTheSampleByteForByte) {
-  pb::ActuatorRequests r;
-  auto* p = r.add_motor_positions();
-  p->set_name("Neck");
-  p->set_position(1.6);
-  p = r.add_motor_positions();
-  p->set_name("Head");
-  p->set_position(0.8);
-  auto* s = r.add_sensor_time_steps();
-  s->set_name("NeckS");
-  s->set_timestep(8);
-  s = r.add_sensor_time_steps();
-  s->set_name("Camera");
-  s->set_timestep(16);
+  pb::ActuatorRequests r = test::Position("Neck", 1.6);
+  r.MergeFrom(test::Position("Head", 0.8));
+  r.MergeFrom(test::TimeSteps({{"NeckS", 8}, {"Camera", 16}}));
   EXPECT_EQ(r.SerializeAsString(), SampleRequest());
 }
 
@@ -111,11 +99,7 @@ TEST(HlvsWire, NeverFramesAnEmptyOrOversizedMessage) {
 }
 
 std::string RequestWith(double position, const std::string& name = "Neck") {
-  pb::ActuatorRequests r;
-  auto* p = r.add_motor_positions();
-  p->set_name(name);
-  p->set_position(position);
-  return r.SerializeAsString();
+  return test::Position(name, position).SerializeAsString();
 }
 
 TEST(HlvsWire, RefusesByName) {

@@ -12,15 +12,10 @@
 #include <string>
 
 #include "codecs/proto/ssl_simulation.pb.h"
+#include "tests/support/text.h"
 
 namespace turf {
 namespace {
-
-size_t Lines(const std::string& text, const std::string& needle) {
-  size_t n = 0;
-  for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
-  return n;
-}
 
 TEST(ProtobufLog, InvalidUtf8FloodIsCountedAndRateLimited) {
   std::ostringstream captured;
@@ -42,7 +37,7 @@ TEST(ProtobufLog, InvalidUtf8FloodIsCountedAndRateLimited) {
 
   EXPECT_EQ(ProtobufLogLines() - before, static_cast<uint64_t>(kDatagrams))
       << "libprotobuf reported every bad datagram to turf's handler";
-  const size_t printed = Lines(captured.str(), "libprotobuf");
+  const size_t printed = test::Occurrences(captured.str(), "libprotobuf");
   EXPECT_GE(printed, 1u) << "the first is told at once: " << captured.str();
   EXPECT_LE(printed, 2u) << "then at most a summary per 5 s: " << captured.str();
   EXPECT_NE(captured.str().find("invalid UTF-8"), std::string::npos) << captured.str();

@@ -20,10 +20,12 @@
 
 #include "codecs/rcssservermj/robots.h"
 #include "dds/memory_bus.h"
-#include "loader/legged_scene_yaml.h"
 #include "participants/rcssservermj_bridge/rcssservermj_bridge.h"
 #include "participants/sim/sim_node.h"
+#include "tests/sim/sim_harness.h"
 #include "tests/simspark/agent_client.h"
+#include "tests/support/in_process.h"
+#include "tests/support/legged_scene.h"
 
 namespace turf {
 namespace {
@@ -34,37 +36,28 @@ using test::AgentClient;
 // turf-sim's legged node and the front-end on one in-memory bus, each on its own thread.
 class Match {
  public:
-  explicit Match(RcssServerMjOptions o) : bus_("mj" + std::to_string(getpid())) {
-    LeggedSceneLoadResult scene = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/rcssservermj_fifa.yaml");
-    if (!scene.scene) throw std::runtime_error(scene.errors.front());
-    SimNodeOptions sim;
-    sim.mode = TimeMode::kLockstep;
-    sim_ = std::make_unique<SimNode>(std::move(*scene.scene), sim, bus_);
-    sim_thread_ = std::thread([this] { sim_->Run([this] { return stop_.load(); }); });
-    o.listen = "127.0.0.1";
-    o.agent_port = 0;
-    o.monitor_port = 0;
-    bridge_ = std::make_unique<RcssServerMjBridge>(o, bus_);
-    bridge_thread_ = std::thread([this] { bridge_->Run([this] { return stop_.load(); }); });
-  }
-  ~Match() {
-    stop_ = true;
-    bridge_thread_.join();
-    sim_thread_.join();
-  }
-  RcssServerMjBridge& bridge() { return *bridge_; }
+  explicit Match(RcssServerMjOptions o)
+      : bus_("mj" + std::to_string(getpid())),
+        sim_(test::LoadScene("rcssservermj_fifa.yaml"), bus_, TimeMode::kLockstep),
+        bridge_(Bridge(std::move(o), bus_)) {}
+  RcssServerMjBridge& bridge() { return bridge_.node(); }
   AgentClient Connect() {
     AgentClient c;
-    EXPECT_TRUE(c.Connect(bridge_->agent_port()));
+    EXPECT_TRUE(c.Connect(bridge().agent_port()));
     return c;
   }
 
  private:
+  static std::unique_ptr<RcssServerMjBridge> Bridge(RcssServerMjOptions o, dds::Bus& bus) {
+    o.listen = "127.0.0.1";
+    o.agent_port = 0;
+    o.monitor_port = 0;
+    return std::make_unique<RcssServerMjBridge>(o, bus);
+  }
+
   dds::MemoryBus bus_;
-  std::atomic<bool> stop_{false};
-  std::unique_ptr<SimNode> sim_;
-  std::unique_ptr<RcssServerMjBridge> bridge_;
-  std::thread sim_thread_, bridge_thread_;
+  test::SimUnderTest sim_;
+  test::OnThread<RcssServerMjBridge> bridge_;
 };
 
 RcssServerMjOptions Fast(bool sequential = false) {

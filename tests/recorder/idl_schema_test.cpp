@@ -4,31 +4,28 @@
 
 #include "dds/topics.h"
 #include "participants/recorder/idl_schema.h"
+#include "tests/support/text.h"
 
 namespace turf::record {
 namespace {
 
-size_t Count(const std::string& text, const std::string& what) {
-  size_t n = 0;
-  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
+using test::Occurrences;
 
 TEST(IdlSchema, EveryTopicTypeHasASelfContainedSchema) {
   for (const dds::TopicInfo& t : dds::kTopics) {
     const std::string schema = IdlSchema(t.type);
     ASSERT_FALSE(schema.empty()) << t.type;
-    EXPECT_EQ(Count(schema, "#include"), 0u) << t.type;
-    EXPECT_EQ(Count(schema, "\n#"), 0u) << t.type << ": a preprocessor line is left\n" << schema;
+    EXPECT_EQ(Occurrences(schema, "#include"), 0u) << t.type;
+    EXPECT_EQ(Occurrences(schema, "\n#"), 0u) << t.type << ": a preprocessor line is left\n" << schema;
     EXPECT_NE(schema[0], '#') << t.type;
-    EXPECT_EQ(Count(schema, std::string("struct ") + t.type + " "), 1u) << t.type << "\n" << schema;
+    EXPECT_EQ(Occurrences(schema, std::string("struct ") + t.type + " "), 1u) << t.type << "\n" << schema;
   }
 }
 
 TEST(IdlSchema, IncludedFilesComeOnceAndFirst) {
   const std::string schema =
       IdlSchema("SimControl");  // includes Common, Clock, SslRobot, Joints (which include Common)
-  EXPECT_EQ(Count(schema, "// ---- Common.idl"), 1u);
+  EXPECT_EQ(Occurrences(schema, "// ---- Common.idl"), 1u);
   EXPECT_LT(schema.find("// ---- Common.idl"), schema.find("// ---- Clock.idl"));
   EXPECT_LT(schema.find("// ---- Joints.idl"), schema.find("// ---- SimControl.idl"));
   EXPECT_NE(schema.find("struct SimControlReply"), std::string::npos);

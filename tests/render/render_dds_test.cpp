@@ -78,6 +78,18 @@ int64_t Stamp(const std_msgs::msg::dds_::Header_& h) {
   return static_cast<int64_t>(h.stamp().sec()) * 1'000'000'000 + h.stamp().nanosec();
 }
 
+// A ROS 2-style subscriber of the images of t1's head `camera` and `chest` camera.
+struct HeadAndChestImages {
+  HeadAndChestImages(int domain, const std::string& head_topic, const std::string& chest_topic)
+      : dds(dds::VendorOptions{domain, "render-test", "", true}),
+        head_reader(Collect<ros::Image_PubSubType>(dds, head_topic, &head, &wait)),
+        chest_reader(Collect<ros::Image_PubSubType>(dds, chest_topic, &chest, &wait)) {}
+  dds::VendorParticipant dds;
+  test::WakeWait wait;
+  Received<ros::Image_> head, chest;
+  std::unique_ptr<dds::VendorParticipant::RawReader> head_reader, chest_reader;
+};
+
 class RenderDds : public ::testing::Test {
  protected:
   int domain_ = test::TestDomain(16);
@@ -100,6 +112,16 @@ class RenderDds : public ::testing::Test {
     for (auto& a : Common()) argv.push_back(a);
     for (auto& a : extra) argv.push_back(a);
     return test::Process("render_render", argv);
+  }
+  // A scene with a head camera and a chest camera (64 x 48 at 20 Hz), and a subscriber of both.
+  std::string HeadAndChestScene(const std::string& name) {
+    return WriteScene(name,
+                      "      - {name: camera, width: 64, height: 48, rate_hz: 20}\n"
+                      "      - {name: chest, body: torso, width: 64, height: 48, rate_hz: 20}\n");
+  }
+  std::unique_ptr<HeadAndChestImages> SubscribeHeadAndChest() {
+    return std::make_unique<HeadAndChestImages>(domain_, Topic("camera", dds::CameraTopic::kImage),
+                                                Topic("chest", dds::CameraTopic::kImage));
   }
 };
 
@@ -161,18 +183,12 @@ TEST_F(RenderDds, ImagesOfTheDeclaredSizeAndEncodingArriveWithCameraInfo) {
 }
 
 TEST_F(RenderDds, CamerasSelectsWhichOnesThisRendererDraws) {
-  const std::string scene = WriteScene("render_select",
-                                       "      - {name: camera, width: 64, height: 48, rate_hz: 20}\n"
-                                       "      - {name: chest, body: torso, width: 64, height: 48, rate_hz: 20}\n");
-  dds::VendorParticipant dds(dds::VendorOptions{domain_, "render-test", "", true});
-  test::WakeWait wait;
-  Received<ros::Image_> head, chest;
-  auto r1 = Collect<ros::Image_PubSubType>(dds, Topic("camera", dds::CameraTopic::kImage), &head, &wait);
-  auto r2 = Collect<ros::Image_PubSubType>(dds, Topic("chest", dds::CameraTopic::kImage), &chest, &wait);
+  const std::string scene = HeadAndChestScene("render_select");
+  const auto cams = SubscribeHeadAndChest();
   test::Process render = Render(scene, {"--cameras", "t1/chest"});
   test::Process sim = Sim(scene);
-  ASSERT_TRUE(wait.Until(Clock::now() + seconds(60), [&] { return chest.Count() >= 5; })) << render.Log();
-  EXPECT_EQ(head.Count(), 0u);
+  ASSERT_TRUE(cams->wait.Until(Clock::now() + seconds(60), [&] { return cams->chest.Count() >= 5; })) << render.Log();
+  EXPECT_EQ(cams->head.Count(), 0u);
   EXPECT_EQ(sim.Stop(), 0);
   EXPECT_EQ(render.Stop(), 0);
   // An unknown camera is a configuration error that names the scene's cameras.
@@ -294,15 +310,9 @@ TEST_F(RenderDds, AStateWithANanPoseIsRefusedAndTheNextOneRendered) {
 // then that camera's images come at that rate of sim time. A control sample with a NaN rate (from this test's own
 // writer) is refused (logged, counted), and off stops it again.
 TEST_F(RenderDds, CamerasOffUntilAControlSampleSwitchesOneOn) {
-  const std::string scene = WriteScene("render_switch",
-                                       "      - {name: camera, width: 64, height: 48, rate_hz: 20}\n"
-                                       "      - {name: chest, body: torso, width: 64, height: 48, rate_hz: 20}\n");
-  dds::VendorParticipant dds(dds::VendorOptions{domain_, "render-test", "", true});
-  test::WakeWait wait;
-  Received<ros::Image_> head, chest;
-  auto r1 = Collect<ros::Image_PubSubType>(dds, Topic("camera", dds::CameraTopic::kImage), &head, &wait);
-  auto r2 = Collect<ros::Image_PubSubType>(dds, Topic("chest", dds::CameraTopic::kImage), &chest, &wait);
-  auto control = dds.MakeWriter<idl::CameraControlPubSubType>(dds::CameraControlTopicName(prefix_));
+  const std::string scene = HeadAndChestScene("render_switch");
+  const auto cams = SubscribeHeadAndChest();
+  auto control = cams->dds.MakeWriter<idl::CameraControlPubSubType>(dds::CameraControlTopicName(prefix_));
   test::Process render = Render(scene, {"--cameras", "off"}, "0.2");
   test::Process sim = Sim(scene);
   // Looks every 100 ms (a log line or a refusal wakes nothing) until `check` or 30 s.
@@ -321,7 +331,7 @@ TEST_F(RenderDds, CamerasOffUntilAControlSampleSwitchesOneOn) {
   const std::regex idle_line(
       R"(status: 0 frames rendered, 0 dropped \(.*\), [1-9]\d* states taken .* 0 camera\(s\) on)");
   ASSERT_TRUE(poll([&] { return std::regex_search(render.Log(), idle_line); })) << render.Log();
-  EXPECT_EQ(head.Count() + chest.Count(), 0u);
+  EXPECT_EQ(cams->head.Count() + cams->chest.Count(), 0u);
   auto send = [&control](bool on, double rate) {
     idl::CameraControl c;
     c.robot("t1");
@@ -345,10 +355,10 @@ TEST_F(RenderDds, CamerasOffUntilAControlSampleSwitchesOneOn) {
     return status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0;
   };
   ASSERT_TRUE(cli_switch("on@5"));
-  ASSERT_TRUE(wait.Until(Clock::now() + seconds(60), [&] { return chest.Count() >= 3; })) << render.Log();
+  ASSERT_TRUE(cams->wait.Until(Clock::now() + seconds(60), [&] { return cams->chest.Count() >= 3; })) << render.Log();
   EXPECT_TRUE(log_has("camera t1/chest on at 5 Hz of sim time (asked by 'turf-render --switch')")) << render.Log();
-  EXPECT_EQ(head.Count(), 0u);
-  const auto images = chest.Copy();
+  EXPECT_EQ(cams->head.Count(), 0u);
+  const auto images = cams->chest.Copy();
   for (size_t i = 1; i < images.size(); ++i)
     EXPECT_GT(Stamp(images[i].header()) - Stamp(images[i - 1].header()), 150'000'000) << "5 Hz of sim time, not 20";
   ASSERT_TRUE(cli_switch("off"));

@@ -74,16 +74,35 @@ std::optional<std::array<double, 2>> OrangeCentroid(const std::vector<uint8_t>& 
   return std::array<double, 2>{su / *count, sv / *count};
 }
 
+// Each GL test skips, saying why, where no EGL display can be made.
+class WithEgl : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string why;
+    egl_ = MakeContextOrNull(&why);
+    if (!egl_) GTEST_SKIP() << "no EGL display: " << why;
+  }
+
+ private:
+  std::unique_ptr<EglContext> egl_;
+};
+
+class RenderPixel : public WithEgl {
+ protected:
+  // A T1 at x = -5 with one head camera of 320 x 240 pixels.
+  static Loaded HeadCamera(int hfov_deg) {
+    return Load(
+        "kind: legged\nfield: {}\nrobots:\n  - name: t1\n    model: ../robots/t1.xml\n    x: -5\n    cameras:\n"
+        "      - {name: camera, width: 320, height: 240, hfov_deg: " +
+        std::to_string(hfov_deg) + "}\n");
+  }
+};
+
 // A T1's head camera, its head placed 1.5 m above the field looking along world +x (yawed), and the ball put 1 m
 // in front of the camera, off the optical axis: the ball's pixels are centred where the pinhole model projects the
 // ball's centre, within 2 px.
-TEST(RenderPixel, TheBallAppearsWhereThePinholeModelPutsIt) {
-  std::string why;
-  auto egl = MakeContextOrNull(&why);
-  if (!egl) GTEST_SKIP() << "no EGL display: " << why;
-  Loaded l = Load(
-      "kind: legged\nfield: {}\nrobots:\n  - name: t1\n    model: ../robots/t1.xml\n    x: -5\n    cameras:\n"
-      "      - {name: camera, width: 320, height: 240, hfov_deg: 70}\n");
+TEST_F(RenderPixel, TheBallAppearsWhereThePinholeModelPutsIt) {
+  Loaded l = HeadCamera(70);
   SceneRenderer renderer(l.scene, l.cameras);
   const double yaw = 0.3;
   ASSERT_TRUE(renderer.SetBodyPose("t1", "H2", Pose{{2.0, 1.0, 1.5}, {std::cos(yaw / 2), 0, 0, std::sin(yaw / 2)}}));
@@ -121,13 +140,8 @@ TEST(RenderPixel, TheBallAppearsWhereThePinholeModelPutsIt) {
 
 // Culling keeps what a camera partly sees: a ball whose centre lies just past the image's right edge still shows
 // its left part there.
-TEST(RenderPixel, ABallHalfOutOfViewIsStillDrawnAtTheEdge) {
-  std::string why;
-  auto egl = MakeContextOrNull(&why);
-  if (!egl) GTEST_SKIP() << "no EGL display: " << why;
-  Loaded l = Load(
-      "kind: legged\nfield: {}\nrobots:\n  - name: t1\n    model: ../robots/t1.xml\n    x: -5\n    cameras:\n"
-      "      - {name: camera, width: 320, height: 240, hfov_deg: 70}\n");
+TEST_F(RenderPixel, ABallHalfOutOfViewIsStillDrawnAtTheEdge) {
+  Loaded l = HeadCamera(70);
   SceneRenderer renderer(l.scene, l.cameras);
   ASSERT_TRUE(renderer.SetBodyPose("t1", "H2", Pose{{2.0, 1.0, 1.5}, {1, 0, 0, 0}}));
   renderer.UpdateFrames();
@@ -149,13 +163,8 @@ TEST(RenderPixel, ABallHalfOutOfViewIsStillDrawnAtTheEdge) {
 
 // Looking down at the field from above the halfway line: green grass and the white line, as wide as the field's
 // markings say (SimSpark field: 0.05 m).
-TEST(RenderPixel, TheFieldIsGreenWithWhiteLinesOfTheirWidth) {
-  std::string why;
-  auto egl = MakeContextOrNull(&why);
-  if (!egl) GTEST_SKIP() << "no EGL display: " << why;
-  Loaded l = Load(
-      "kind: legged\nfield: {}\nrobots:\n  - name: t1\n    model: ../robots/t1.xml\n    x: -5\n    cameras:\n"
-      "      - {name: camera, width: 320, height: 240, hfov_deg: 60}\n");
+TEST_F(RenderPixel, TheFieldIsGreenWithWhiteLinesOfTheirWidth) {
+  Loaded l = HeadCamera(60);
   SceneRenderer renderer(l.scene, l.cameras);
   // The head 2 m above (0, 1): pitched down 90 deg, the camera (looking along the head's +x) looks straight down,
   // image up = world +x, so the halfway line (x = 0) runs across the image's middle row.
@@ -196,7 +205,7 @@ TEST(TeamColours, TheNameSaysTheTeam) {
 
 // red_1's head camera 1.2 m in front of blue_1, level: blue_1's trunk is blue in the image (and not with
 // --no-team-colours); with the lights at half brightness the grass below the horizon is darker.
-class TeamLook : public ::testing::Test {
+class TeamLook : public WithEgl {
  protected:
   std::vector<uint8_t> Render(const RenderLook& look) {
     Loaded l = Load(
@@ -226,9 +235,6 @@ class TeamLook : public ::testing::Test {
 };
 
 TEST_F(TeamLook, ATeamRobotWearsItsColourAndTheLightsDim) {
-  std::string why;
-  auto egl = MakeContextOrNull(&why);
-  if (!egl) GTEST_SKIP() << "no EGL display: " << why;
   const std::vector<uint8_t> team = Render(RenderLook{});
   SaveArtifact("blue_1_from_red_1", team, 160, 120);
   const std::vector<uint8_t> plain = Render(RenderLook{false, 1.0});

@@ -2,7 +2,6 @@
 // samples) is played back; every world state arrives in order and serializes to the recorded bytes, a recorded
 // input (a blue command) is not played, and a message that is no CDR sample is refused and counted. Pause and
 // seek over the control topic while it plays.
-#include <fastdds/rtps/common/SerializedPayload.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <turf/idl/ClockPubSubTypes.h>
@@ -22,6 +21,7 @@
 #include "dds/participant.h"
 #include "participants/common/mcap_file.h"
 #include "participants/recorder/idl_schema.h"
+#include "tests/support/cdr.h"
 #include "tests/support/process.h"
 #include "tests/test_domain.h"
 
@@ -29,14 +29,6 @@ namespace turf::test {
 namespace {
 
 using namespace std::chrono_literals;
-
-template <class PubSub, class Sample>
-std::string Cdr(const Sample& sample) {
-  PubSub type;
-  eprosima::fastrtps::rtps::SerializedPayload_t payload(type.getSerializedSizeProvider(const_cast<Sample*>(&sample))());
-  EXPECT_TRUE(type.serialize(const_cast<Sample*>(&sample), &payload));
-  return std::string(reinterpret_cast<const char*>(payload.data), payload.length);
-}
 
 // 100 world states (sim time 10 ms apart), blue commands between them, and one clock message that is no CDR.
 std::vector<std::string> WriteRecording(const std::string& path) {
@@ -80,6 +72,35 @@ std::vector<idl::WorldState> Collect(dds::Reader<idl::WorldStatePubSubType>& rea
   return got;
 }
 
+// A recording of its own in the log folder, and a world-state reader on a private domain and prefix, for
+// turf-replay to play that recording to.
+struct Rig {
+  Rig(int test_domain, const std::string& name)
+      : domain(TestDomain(test_domain)),
+        prefix(name + std::to_string(getpid())),
+        file(LogDir() + "/" + prefix + ".mcap"),
+        recorded(WriteRecording(file)),
+        participant({domain, "replay-test", prefix, TURF_SOURCE_DIR "/configs/qos/turf_qos.xml"}),
+        world(participant.MakeReader(dds::Topic::kWorldState, [this] { cv.notify_all(); })) {}
+
+  // turf-replay of the file with `flags`, waiting for this reader.
+  Process Replay(const std::vector<std::string>& flags) const {
+    std::vector<std::string> argv = {Built("participants/replay/turf-replay"), file};
+    argv.insert(argv.end(), flags.begin(), flags.end());
+    argv.insert(argv.end(), {"--wait-for-reader", "--domain", std::to_string(domain), "--prefix", prefix});
+    return Process(prefix, argv);
+  }
+  std::vector<idl::WorldState> CollectUntil(int64_t last_ns) { return Collect(*world, mutex, cv, last_ns); }
+
+  const int domain;
+  const std::string prefix, file;
+  const std::vector<std::string> recorded;
+  std::mutex mutex;
+  std::condition_variable cv;
+  dds::Participant participant;
+  std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> world;
+};
+
 // Every sample received is the recorded one of its sim time, byte for byte, in order.
 void ExpectRecordedInOrder(const std::vector<idl::WorldState>& got, const std::vector<std::string>& recorded) {
   int64_t previous = 0;
@@ -105,20 +126,11 @@ std::string Missing(const std::vector<idl::WorldState>& got, size_t first, size_
 }
 
 TEST(ReplayE2e, PlaysOutputsByteForByteAndNoInputs) {
-  const int domain = TestDomain(43);
-  const std::string prefix = "replay" + std::to_string(getpid());
-  const std::string file = LogDir() + "/" + prefix + ".mcap";
-  const std::vector<std::string> recorded = WriteRecording(file);
+  Rig rig(43, "replay");
+  auto blue = rig.participant.MakeReader(dds::Topic::kSslCommandBlue);
 
-  dds::Participant participant({domain, "replay-test", prefix, TURF_SOURCE_DIR "/configs/qos/turf_qos.xml"});
-  std::mutex mutex;
-  std::condition_variable cv;
-  auto world = participant.MakeReader(dds::Topic::kWorldState, [&] { cv.notify_all(); });
-  auto blue = participant.MakeReader(dds::Topic::kSslCommandBlue);
-
-  Process replay(prefix, {Built("participants/replay/turf-replay"), file, "--speed", "1", "--wait-for-reader",
-                          "--domain", std::to_string(domain), "--prefix", prefix});
-  const std::vector<idl::WorldState> got = Collect(*world, mutex, cv, 1'000'000'000);
+  Process replay = rig.Replay({"--speed", "1"});
+  const std::vector<idl::WorldState> got = rig.CollectUntil(1'000'000'000);
   const std::optional<int> status = replay.Wait(30s);
   ASSERT_TRUE(status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << replay.Log();
   EXPECT_NE(replay.Log().find("replayed 100 messages (100 inputs or unknown channels skipped, 1 refused, 0 before"),
@@ -128,25 +140,16 @@ TEST(ReplayE2e, PlaysOutputsByteForByteAndNoInputs) {
   EXPECT_GE(got.size(), 95u) << "missing: " << Missing(got, 0, 100);
   ASSERT_FALSE(got.empty());
   EXPECT_EQ(got.back().sim_time_ns(), 1'000'000'000);
-  ExpectRecordedInOrder(got, recorded);
+  ExpectRecordedInOrder(got, rig.recorded);
   std::vector<idl::SslRobotCommand> commands;
   EXPECT_FALSE(blue->Take(&commands));  // inputs are never played
   EXPECT_EQ(blue->Matched(), 0);
 }
 
 TEST(ReplayE2e, StartSkipsTheRecordedTimeBeforeIt) {
-  const int domain = TestDomain(44);
-  const std::string prefix = "replaystart" + std::to_string(getpid());
-  const std::string file = LogDir() + "/" + prefix + ".mcap";
-  const std::vector<std::string> recorded = WriteRecording(file);
-
-  dds::Participant participant({domain, "replay-test", prefix, TURF_SOURCE_DIR "/configs/qos/turf_qos.xml"});
-  std::mutex mutex;
-  std::condition_variable cv;
-  auto world = participant.MakeReader(dds::Topic::kWorldState, [&] { cv.notify_all(); });
-  Process replay(prefix, {Built("participants/replay/turf-replay"), file, "--start", "0.5", "--wait-for-reader",
-                          "--domain", std::to_string(domain), "--prefix", prefix});
-  const std::vector<idl::WorldState> got = Collect(*world, mutex, cv, 1'000'000'000);
+  Rig rig(44, "replaystart");
+  Process replay = rig.Replay({"--start", "0.5"});
+  const std::vector<idl::WorldState> got = rig.CollectUntil(1'000'000'000);
   const std::optional<int> status = replay.Wait(30s);
   ASSERT_TRUE(status && WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << replay.Log();
   // The recording's world states are 10 ms apart from the first message: 50 lie before 0.5 s (and the clock
@@ -157,7 +160,7 @@ TEST(ReplayE2e, StartSkipsTheRecordedTimeBeforeIt) {
   EXPECT_GE(got.size(), 45u) << "missing: " << Missing(got, 50, 50);
   EXPECT_GE(got.front().sim_time_ns(), 510'000'000);  // none before the start
   EXPECT_EQ(got.back().sim_time_ns(), 1'000'000'000);
-  ExpectRecordedInOrder(got, recorded);
+  ExpectRecordedInOrder(got, rig.recorded);
 }
 
 idl::SimControl Request(idl::ControlOp op, int64_t seek_ns = 0) {
@@ -190,24 +193,15 @@ std::string Show(const std::vector<int64_t>& times) {
 // those runs.
 TEST(ReplayE2e, PausesAndSeeksOverTheControlTopic) {
   constexpr int64_t kMs = 1'000'000;
-  const int domain = TestDomain(47);
-  const std::string prefix = "replayseek" + std::to_string(getpid());
-  const std::string file = LogDir() + "/" + prefix + ".mcap";
-  WriteRecording(file);
-
-  dds::Participant participant({domain, "replay-test", prefix, TURF_SOURCE_DIR "/configs/qos/turf_qos.xml"});
-  std::mutex mutex;
-  std::condition_variable cv;
-  auto world = participant.MakeReader(dds::Topic::kWorldState, [&] { cv.notify_all(); });
-  dds::ControlClient control(participant, "replay-test");
-  Process replay(prefix, {Built("participants/replay/turf-replay"), file, "--speed", "0.1", "--wait-for-reader",
-                          "--domain", std::to_string(domain), "--prefix", prefix});
+  Rig rig(47, "replayseek");
+  dds::ControlClient control(rig.participant, "replay-test");
+  Process replay = rig.Replay({"--speed", "0.1"});
   std::vector<int64_t> seen;  // sim times in arrival order
   const auto wait_for = [&](const std::function<bool()>& done) {
-    std::unique_lock<std::mutex> lock(mutex);
-    return cv.wait_for(lock, 30s, [&] {
+    std::unique_lock<std::mutex> lock(rig.mutex);
+    return rig.cv.wait_for(lock, 30s, [&] {
       std::vector<idl::WorldState> batch;
-      if (world->Take(&batch))
+      if (rig.world->Take(&batch))
         for (const idl::WorldState& s : batch) seen.push_back(s.sim_time_ns());
       return done();
     });

@@ -47,18 +47,12 @@ TEST(ReplayKeys, PauseResumeSeekAndSpeed) {
 }
 
 TEST(ReplayKeys, RefusesAnythingElseWithItsReason) {
-  EXPECT_EQ(Refused(""), idl::CONTROL_EMPTY);
-  EXPECT_EQ(Refused("   "), idl::CONTROL_EMPTY);
-  EXPECT_EQ(Refused("jump 3"), idl::CONTROL_PARSE);
-  EXPECT_EQ(Refused("pause now"), idl::CONTROL_PARSE);
-  EXPECT_EQ(Refused("seek"), idl::CONTROL_PARSE);
-  EXPECT_EQ(Refused("seek nan"), idl::CONTROL_BAD_ARGUMENTS);
-  EXPECT_EQ(Refused("seek inf"), idl::CONTROL_BAD_ARGUMENTS);
-  EXPECT_EQ(Refused("seek 3s"), idl::CONTROL_BAD_ARGUMENTS);
-  EXPECT_EQ(Refused("seek -1"), idl::CONTROL_OUT_OF_RANGE);
-  EXPECT_EQ(Refused("seek 1e10"), idl::CONTROL_OUT_OF_RANGE);
-  EXPECT_EQ(Refused("speed 0"), idl::CONTROL_OUT_OF_RANGE);
-  EXPECT_EQ(Refused("speed 1e7"), idl::CONTROL_OUT_OF_RANGE);
+  for (const char* line : {"", "   "}) EXPECT_EQ(Refused(line), idl::CONTROL_EMPTY) << "'" << line << "'";
+  for (const char* line : {"jump 3", "pause now", "seek"}) EXPECT_EQ(Refused(line), idl::CONTROL_PARSE) << line;
+  for (const char* line : {"seek nan", "seek inf", "seek 3s"})
+    EXPECT_EQ(Refused(line), idl::CONTROL_BAD_ARGUMENTS) << line;
+  for (const char* line : {"seek -1", "seek 1e10", "speed 0", "speed 1e7"})
+    EXPECT_EQ(Refused(line), idl::CONTROL_OUT_OF_RANGE) << line;
   EXPECT_EQ(Refused(std::string(kMaxReplayLine + 1, 'p')), idl::CONTROL_TOO_LARGE);
 }
 

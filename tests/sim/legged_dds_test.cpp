@@ -22,6 +22,7 @@
 #include "loader/realism_yaml.h"
 #include "participants/sim/sim_node.h"
 #include "tests/sim/sim_harness.h"
+#include "tests/support/take.h"
 
 namespace turf {
 namespace {
@@ -49,14 +50,14 @@ class Client {
  public:
   explicit Client(dds::ParticipantOptions o)
       : participant_((o.name = "client", o)),
-        command_(participant_.MakeWriter<idl::JointCommandPubSubType>(dds::Topic::kRobotJointCommand)),
+        command_(participant_.MakeWriter(dds::Topic::kRobotJointCommand)),
         control_(participant_, "test"),
-        joint_reader_(participant_.MakeReader<idl::JointStatePubSubType>(dds::Topic::kRobotJointState)),
-        imu_(participant_.MakeReader<idl::ImuStatePubSubType>(dds::Topic::kRobotImu)),
-        force_(participant_.MakeReader<idl::ForceStatePubSubType>(dds::Topic::kRobotForce)),
-        links_(participant_.MakeReader<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks)),
-        world_(participant_.MakeReader<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
-        scene_(participant_.MakeReader<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene)) {}
+        joint_reader_(participant_.MakeReader(dds::Topic::kRobotJointState)),
+        imu_(participant_.MakeReader(dds::Topic::kRobotImu)),
+        force_(participant_.MakeReader(dds::Topic::kRobotForce)),
+        links_(participant_.MakeReader(dds::Topic::kRobotLinks)),
+        world_(participant_.MakeReader(dds::Topic::kWorldState)),
+        scene_(participant_.MakeReader(dds::Topic::kLeggedScene)) {}
 
   bool WaitMatched() {
     const auto end = Clock::now() + 10s;  // discovery is slower on a busy machine
@@ -75,22 +76,12 @@ class Client {
     return WaitFor([&] { return command_->Matched() > 0 && control_.ServerMatched() && imu_now_.count("nao_1"); });
   }
   void Poll() {
-    std::vector<idl::JointState> js;
-    if (joint_reader_->Take(&js))
-      for (auto& j : js) joints[j.robot()] = j;
-    std::vector<idl::ImuState> imu;
-    if (imu_->Take(&imu))
-      for (auto& i : imu) imu_now_[i.robot()] = i;
-    std::vector<idl::ForceState> f;
-    if (force_->Take(&f))
-      for (auto& x : f) force_now_[x.robot()] = x;
-    std::vector<idl::LinkState> l;
-    if (links_->Take(&l))
-      for (auto& x : l) links[x.robot()] = x;
-    std::vector<idl::WorldState> w;
-    if (world_->Take(&w) && !w.empty()) world = w.back();
-    std::vector<idl::LeggedSceneInfo> info;
-    if (scene_->Take(&info) && !info.empty()) scene = info.back();
+    test::TakeNewestByRobot(*joint_reader_, &joints);
+    test::TakeNewestByRobot(*imu_, &imu_now_);
+    test::TakeNewestByRobot(*force_, &force_now_);
+    test::TakeNewestByRobot(*links_, &links);
+    test::TakeNewest(*world_, &world);
+    test::TakeNewest(*scene_, &scene);
   }
   // Polls until `done` holds, or 5 s.
   bool WaitFor(const std::function<bool()>& done) {

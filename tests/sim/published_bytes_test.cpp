@@ -1,7 +1,6 @@
 // Snapshot and restore reach the wire: the samples turf-sim publishes for a
 // realistic SSL match (world state, camera frames, feedback, statistics),
 // serialized as DDS sends them (CDR), are the same bytes after a restore.
-#include <fastdds/rtps/common/SerializedPayload.h>
 #include <gtest/gtest.h>
 #include <turf/idl/SensorStatsPubSubTypes.h>
 #include <turf/idl/SslRobotPubSubTypes.h>
@@ -14,17 +13,15 @@
 #include "participants/sim/convert.h"
 #include "participants/sim/stats_report.h"
 #include "tests/kernel/kernel_fixtures.h"
+#include "tests/support/cdr.h"
 
 namespace turf {
 namespace {
 
 // The CDR bytes of one sample, appended to `out`.
 template <class PubSubType, class Sample>
-void AppendCdr(Sample sample, std::string* out) {
-  PubSubType type;
-  eprosima::fastrtps::rtps::SerializedPayload_t payload(type.getSerializedSizeProvider(&sample)());
-  ASSERT_TRUE(type.serialize(&sample, &payload));
-  out->append(reinterpret_cast<const char*>(payload.data), payload.length);
+void AppendCdr(const Sample& sample, std::string* out) {
+  out->append(test::Cdr<PubSubType>(sample));
 }
 
 // Every sample the node would publish after each of `steps` steps.

@@ -2,12 +2,12 @@
 
 #include <cstdint>
 
-#include "tests/e2e/proto/team_grsim.pb.h"
+#include "codecs/proto/grsim.pb.h"
 
 namespace turf::test {
 
 std::string GrsimMove(bool yellow, int id, double forward, double left, double angular, double kick) {
-  team::grsim::grSim_Packet p;
+  wire::grsim::grSim_Packet p;
   auto* c = p.mutable_commands();
   c->set_timestamp(0);
   c->set_isteamyellow(yellow);
@@ -25,7 +25,7 @@ std::string GrsimMove(bool yellow, int id, double forward, double left, double a
 
 std::string GrsimPlace(bool yellow, int id, double x, double y, double dir_deg, std::optional<double> ball_x,
                        double ball_y) {
-  team::grsim::grSim_Packet p;
+  wire::grsim::grSim_Packet p;
   auto* rep = p.mutable_replacement();
   auto* r = rep->add_robots();
   r->set_x(x);

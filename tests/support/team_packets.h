@@ -1,6 +1,5 @@
-// The datagrams an SSL team's software sends, built with the test client's own
-// protos (tests/e2e/proto), for the end-to-end, multi-host, fault and launch
-// tests.
+// The datagrams an SSL team's software sends (built with turf's protos,
+// codecs/proto), for the end-to-end, multi-host, fault and launch tests.
 #pragma once
 
 #include <optional>

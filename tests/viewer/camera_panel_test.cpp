@@ -13,6 +13,7 @@
 #include "participants/viewer/viewer_node.h"
 #include "tests/sim/sim_harness.h"
 #include "tests/support/in_process.h"
+#include "tests/viewer/viewer_under_test.h"
 #include "tests/viewer/web_client.h"
 
 namespace turf::test {
@@ -48,20 +49,6 @@ ros::Image_ TestImage() {
   return image;
 }
 
-class ViewerOnDds : public OnThread<ViewerNode> {
- public:
-  explicit ViewerOnDds(const dds::ParticipantOptions& dds) : OnThread(std::make_unique<ViewerNode>(Options(dds))) {}
-  int port() { return node().port(); }
-
- private:
-  static ViewerOptions Options(const dds::ParticipantOptions& dds) {
-    auto o = OnDds<ViewerOptions>(dds);
-    o.port = 0;
-    o.web_root = TURF_SOURCE_DIR "/participants/viewer/web";
-    return o;
-  }
-};
-
 // GETs `target` every 100 ms (each GET keeps the viewer subscribed; images come from `write`, called before each)
 // until it answers 200 or 30 s pass.
 HttpResult GetWhenThere(int port, const std::string& target, const std::function<void()>& write) {
@@ -78,7 +65,7 @@ HttpResult GetWhenThere(int port, const std::string& target, const std::function
 
 TEST(CameraPanel, ServesTheNewestImageAsJpeg) {
   const dds::ParticipantOptions dds = UniqueDds("viewer-camera");
-  ViewerOnDds viewer(dds);
+  ViewerUnderTest viewer(dds);
   dds::VendorParticipant images(dds::VendorOptions{dds.domain, "camera-panel-test", "", true});
   auto raw = images.MakeWriter<ros::Image_PubSubType>(
       dds::CameraTopicName(dds.prefix, "t1", "camera", dds::CameraTopic::kImage));

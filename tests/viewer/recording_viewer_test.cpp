@@ -1,7 +1,6 @@
 // turf-viewer --recording: a recording written here with turf's MCAP writer (what turf-record writes: each
 // sample's CDR with its encapsulation header, publish_time = sim time) is served by the real turf-viewer
 // process; the world state it returns for a slider time is the recorded sample at or before that time.
-#include <fastdds/rtps/common/SerializedPayload.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <turf/idl/ClockPubSubTypes.h>
@@ -23,6 +22,7 @@
 #include "codecs/mcap/reader.h"
 #include "codecs/mcap/writer.h"
 #include "participants/viewer/recording.h"
+#include "tests/support/cdr.h"
 #include "tests/support/process.h"
 #include "tests/viewer/web_client.h"
 #include "tests/viewer/webdriver.h"
@@ -31,18 +31,11 @@ namespace turf {
 namespace {
 
 using nlohmann::json;
+using test::Cdr;
 using SteadyClock = std::chrono::steady_clock;
 
 constexpr int kStates = 200;  // world states, every 10 ms of sim time from 10 ms
 constexpr int64_t kStepNs = 10'000'000;
-
-template <class PubSub, class Sample>
-std::string Cdr(const Sample& sample) {
-  PubSub type;
-  eprosima::fastrtps::rtps::SerializedPayload_t payload(type.getSerializedSizeProvider(const_cast<Sample*>(&sample))());
-  EXPECT_TRUE(type.serialize(const_cast<Sample*>(&sample), &payload));
-  return std::string(reinterpret_cast<const char*>(payload.data), payload.length);
-}
 
 idl::SslField Field() {
   idl::SslField f;

@@ -15,6 +15,7 @@
 
 #include "tests/sim/sim_harness.h"
 #include "tests/support/process.h"
+#include "tests/support/take.h"
 #include "tests/viewer/web_client.h"
 #include "tests/viewer/webdriver.h"
 
@@ -55,13 +56,9 @@ class LeggedClient {
         clock_(participant_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock)),
         control_(participant_, "test") {}
   void Poll() {
-    std::vector<idl::LinkState> l;
-    if (links_->Take(&l))
-      for (auto& x : l) links[x.robot()] = x;
-    std::vector<idl::WorldState> w;
-    if (world_->Take(&w) && !w.empty()) world = w.back();
-    std::vector<idl::Clock> c;
-    if (clock_->Take(&c) && !c.empty()) clock = c.back();
+    TakeNewestByRobot(*links_, &links);
+    TakeNewest(*world_, &world);
+    TakeNewest(*clock_, &clock);
   }
   bool WaitFor(const std::function<bool()>& done, int ms = 10000) {
     return Within(ms, [&] {

@@ -12,6 +12,7 @@
 #include "participants/viewer/viewer_node.h"
 #include "tests/sim/sim_harness.h"
 #include "tests/support/in_process.h"
+#include "tests/viewer/viewer_under_test.h"
 #include "tests/viewer/web_client.h"
 
 namespace turf::test {
@@ -19,21 +20,6 @@ namespace {
 
 using nlohmann::json;
 namespace http = boost::beast::http;
-
-class ViewerUnderTest : public OnThread<ViewerNode> {
- public:
-  explicit ViewerUnderTest(const dds::ParticipantOptions& dds) : OnThread(std::make_unique<ViewerNode>(Options(dds))) {}
-  int port() { return node().port(); }
-  std::string origin() { return "http://127.0.0.1:" + std::to_string(port()); }
-
- private:
-  static ViewerOptions Options(const dds::ParticipantOptions& dds) {
-    auto o = OnDds<ViewerOptions>(dds);
-    o.port = 0;
-    o.web_root = TURF_SOURCE_DIR "/participants/viewer/web";
-    return o;
-  }
-};
 
 // Connects a page's WebSocket to the viewer, as a browser on its page would.
 ::testing::AssertionResult Connected(WsClient& ws, ViewerUnderTest& viewer) {

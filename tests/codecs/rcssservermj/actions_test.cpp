@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "codecs/rcssservermj/actions.h"
 #include "codecs/rcssservermj/robots.h"
+#include "tests/support/issues.h"
 
 namespace turf::rcssservermj {
 namespace {
@@ -59,14 +61,9 @@ TEST(MjActions, RefusesBadMotorCommandsByName) {
       T1());
   ASSERT_EQ(m.motors.size(), 1u);  // only the last
   EXPECT_EQ(m.motors[0].joint, 1);
-  ASSERT_EQ(m.issues.size(), 7u);
-  EXPECT_EQ(m.issues[0].error, Error::kNotFinite);
-  EXPECT_EQ(m.issues[1].error, Error::kNotFinite);
-  EXPECT_EQ(m.issues[2].error, Error::kOutOfRange);
-  EXPECT_EQ(m.issues[3].error, Error::kOutOfRange);
-  EXPECT_EQ(m.issues[4].error, Error::kOutOfRange);
-  EXPECT_EQ(m.issues[5].error, Error::kUnknownEffector);
-  EXPECT_EQ(m.issues[6].error, Error::kBadArguments);
+  EXPECT_EQ(test::ErrorsOf(m.issues),
+            (std::vector<Error>{Error::kNotFinite, Error::kNotFinite, Error::kOutOfRange, Error::kOutOfRange,
+                                Error::kOutOfRange, Error::kUnknownEffector, Error::kBadArguments}));
 }
 
 TEST(MjActions, TheWaistIsAT1EffectorOnly) {

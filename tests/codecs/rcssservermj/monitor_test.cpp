@@ -2,8 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "codecs/rcssservermj/monitor.h"
+#include "tests/support/issues.h"
 
 namespace turf::rcssservermj {
 namespace {
@@ -39,13 +41,9 @@ TEST(MjMonitor, RefusalsAreNamed) {
       "(kickOff Up)(ball (pos nan 0 0))(ball (pos 1 2))(agent (unum 2) (pos 1 2 3))(agent (unum 2) (team a) (move3d 1 "
       "2 3 0 0 0 0))(fly)");
   EXPECT_TRUE(m.commands.empty());
-  ASSERT_EQ(m.issues.size(), 6u);
-  EXPECT_EQ(m.issues[0].error, Error::kBadArguments);
-  EXPECT_EQ(m.issues[1].error, Error::kNotFinite);
-  EXPECT_EQ(m.issues[2].error, Error::kBadArguments);
-  EXPECT_EQ(m.issues[3].error, Error::kBadArguments);
-  EXPECT_EQ(m.issues[4].error, Error::kOutOfRange);
-  EXPECT_EQ(m.issues[5].error, Error::kUnknownOp);
+  EXPECT_EQ(test::ErrorsOf(m.issues),
+            (std::vector<Error>{Error::kBadArguments, Error::kNotFinite, Error::kBadArguments, Error::kBadArguments,
+                                Error::kOutOfRange, Error::kUnknownOp}));
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <string>
+#include <utility>
 
 #include "codecs/rcssservermj/session.h"
 
@@ -67,6 +69,13 @@ std::vector<SceneRobot> Robots(int t1, int k1) {
   return out;
 }
 
+// The sequential loop: no latency, an action acts in the next cycle.
+SessionOptions Sequential() {
+  SessionOptions o;
+  o.sequential = true;
+  return o;
+}
+
 struct Fixture {
   explicit Fixture(SessionOptions o = {}, int t1 = 24, int k1 = 1)
       : robots(Robots(t1, k1)), session(o, robots), world(robots) {}
@@ -74,6 +83,18 @@ struct Fixture {
     const int id = session.Connect();
     session.Receive(id, init);
     return id;
+  }
+  // An agent joined and activated (one cycle), with its init message.
+  int JoinAndCycle(const std::string& init) {
+    const int id = Join(init);
+    world.Cycle(&session);
+    return id;
+  }
+  // Two agents joined and activated (one cycle), with their init messages.
+  std::pair<int, int> JoinTwo(const std::string& init_a, const std::string& init_b) {
+    const std::pair<int, int> ids{Join(init_a), Join(init_b)};
+    world.Cycle(&session);
+    return ids;
   }
   std::map<int, std::string> Outputs() {
     std::map<int, std::string> out;
@@ -153,18 +174,13 @@ TEST(MjSession, RefusalsCloseTheConnection) {
 TEST(MjSession, NoFreeRobotOfTheModelIsARefusal) {
   Fixture f({}, 1, 0);
   f.Join("(init T1 a 1)");
-  const int k1 = f.Join("(init K1 a 2)");
-  f.world.Cycle(&f.session);
+  const int k1 = f.JoinAndCycle("(init K1 a 2)");
   EXPECT_EQ(f.session.TakeKicked(), std::vector<int>{k1});
 }
 
 TEST(MjSession, BeamPerSideOnlyBeforeKickOff) {
-  SessionOptions o;
-  o.sequential = true;  // no latency: the beam acts in the next cycle
-  Fixture f(o);
-  const int l = f.Join("(init T1 L 1)");
-  const int r = f.Join("(init T1 R 1)");
-  f.world.Cycle(&f.session);
+  Fixture f(Sequential());  // the beam acts in the next cycle
+  const auto [l, r] = f.JoinTwo("(init T1 L 1)", "(init T1 R 1)");
   f.session.Receive(l, "(beam 3 1 30)");
   f.session.Receive(r, "(beam -3 1 30)");
   WorldRequests req = f.world.Cycle(&f.session);
@@ -185,9 +201,7 @@ TEST(MjSession, BeamPerSideOnlyBeforeKickOff) {
 }
 
 TEST(MjSession, MotorDefaultsPersistenceAndClamping) {
-  SessionOptions o;
-  o.sequential = true;
-  Fixture f(o);
+  Fixture f(Sequential());
   const int a = f.Join("(init T1 a 1)");
   WorldRequests r = f.world.Cycle(&f.session);
   ASSERT_EQ(r.joints.at("t1_1").size(), 23u);
@@ -274,11 +288,8 @@ TEST(MjSession, SyncModeTakesExactlyOneMessagePerAgentPerCycle) {
 }
 
 TEST(MjSession, SequentialSyncWaitsForTheAnswerToTheLatestPerception) {
-  SessionOptions o;
-  o.sequential = true;
-  Fixture f(o);
-  const int a = f.Join("(init T1 a 1)");
-  f.world.Cycle(&f.session);
+  Fixture f(Sequential());
+  const int a = f.JoinAndCycle("(init T1 a 1)");
   EXPECT_FALSE(f.session.ReadyToStep());
   f.session.Receive(a, "(lle4 30 0 50 1 0)");
   EXPECT_TRUE(f.session.ReadyToStep());
@@ -309,12 +320,8 @@ TEST(MjSession, VisionEverySecondCycle) {
 }
 
 TEST(MjSession, SeesItselfAndTheOthersParts) {
-  SessionOptions o;
-  o.sequential = true;
-  Fixture f(o);
-  const int a = f.Join("(init T1 blue 1)");
-  const int b = f.Join("(init T1 red 1)");
-  f.world.Cycle(&f.session);
+  Fixture f(Sequential());
+  const auto [a, b] = f.JoinTwo("(init T1 blue 1)", "(init T1 red 1)");
   // Face to face on the x axis, 4 m apart, heads 0.9 m high.
   f.session.Receive(a, "(beam 2 0 0)");
   f.session.Receive(b, "(beam 2 0 0)");
@@ -355,11 +362,8 @@ TEST(MjSession, MonitorKickOffAndAgentMove) {
 }
 
 TEST(MjSession, UnknownEffectorIsCountedNotApplied) {
-  SessionOptions o;
-  o.sequential = true;
-  Fixture f(o);
-  const int a = f.Join("(init K1 a 1)");
-  f.world.Cycle(&f.session);
+  Fixture f(Sequential());
+  const int a = f.JoinAndCycle("(init K1 a 1)");
   f.session.TakeIssues();
   f.session.Receive(a, "(te1 30 0 50 1 0)(lle4 nan 0 1 1 0)");
   const WorldRequests r = f.world.Cycle(&f.session);
@@ -374,8 +378,7 @@ TEST(MjSession, FloodingDropsTheAgent) {
   SessionOptions o;
   o.sync_mode = true;
   Fixture f(o);
-  const int a = f.Join("(init T1 a 1)");
-  f.world.Cycle(&f.session);
+  const int a = f.JoinAndCycle("(init T1 a 1)");
   for (int i = 0; i < 17; ++i) f.session.Receive(a, "(syn)");
   EXPECT_EQ(f.session.TakeKicked(), std::vector<int>{a});
 }

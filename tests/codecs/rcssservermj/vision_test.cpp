@@ -6,20 +6,15 @@
 
 #include "kernel/rcssservermj/field.h"
 #include "kernel/rcssservermj/vision.h"
+#include "tests/support/find.h"
 
 namespace turf::rcssservermj {
 namespace {
 
-const FieldMarker* Find(const std::vector<FieldMarker>& markers, const std::string& name) {
-  for (const FieldMarker& m : markers)
-    if (m.name == name) return &m;
-  return nullptr;
-}
-
 TEST(MjField, FifaMarkersAtTheFactsPositions) {
   const std::vector<FieldMarker> m = FieldMarkers(*FindField("fifa"));
   EXPECT_EQ(m.size(), 30u);  // 4 corners, 2 halfway, 2 circle, 2 marks, 4 posts, 8 goalie area, 8 penalty area
-  auto at = [&](const char* name) { return Find(m, name)->position; };
+  auto at = [&](const char* name) { return turf::test::FindBy(m, &FieldMarker::name, name)->position; };
   EXPECT_EQ(at("l_luf"), Eigen::Vector3d(-52.5, 34, 0));
   EXPECT_EQ(at("l_rlf"), Eigen::Vector3d(52.5, -34, 0));
   EXPECT_EQ(at("t_clf"), Eigen::Vector3d(0, -34, 0));

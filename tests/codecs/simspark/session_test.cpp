@@ -10,6 +10,7 @@
 
 #include "codecs/simspark/nao_joints.h"
 #include "tests/codecs/simspark/golden_perception.h"
+#include "tests/support/text.h"
 
 namespace turf::simspark {
 namespace {
@@ -133,6 +134,12 @@ struct Harness {
     session.Receive(id, message);
     return id;
   }
+  // Join(), then one cycle: the agent has its robot.
+  int JoinAndCycle(const std::string& team, int unum, int type = 0) {
+    const int id = Join(team, unum, type);
+    Cycle();
+    return id;
+  }
 
   FakeWorld world;
   Session session;
@@ -169,12 +176,6 @@ double NumberAfter(const std::string& text, const std::string& prefix) {
   const size_t at = text.find(prefix);
   if (at == std::string::npos) return std::nan("");
   return std::stod(text.substr(at + prefix.size()));
-}
-
-int Count(const std::string& text, const std::string& part) {
-  int n = 0;
-  for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
-  return n;
 }
 
 // The GS predicate of a perception.
@@ -346,8 +347,7 @@ WorldRequests TakeAnswered(Session& s) {
 
 TEST(SessionEffectors, AnAnswerMovesTheJointsOneCycleLaterAsTheReference) {
   Harness h(1);
-  const int a = h.Join("Alpha", 1);
-  h.Cycle();
+  const int a = h.JoinAndCycle("Alpha", 1);
   h.session.Receive(a, "(he1 1)");
   WorldRequests now;
   h.Cycle(&now);
@@ -379,8 +379,7 @@ TEST(SessionEffectors, HingeVelocitiesByModelJointNameClampedForType0) {
 
 TEST(SessionEffectors, Type2AnklesHaveTheirOwnLimits) {
   Harness h(1);
-  const int a = h.Join("Alpha", 1, 2);
-  h.Cycle();
+  const int a = h.JoinAndCycle("Alpha", 1, 2);
   h.session.Receive(a, "(rle5 20)(lle5 -20)(rle6 20)(lle6 -1)(rle4 20)");
   const WorldRequests requests = TakeAnswered(h.session);
   ExpectJoints(requests.joints.at("nao_1"),
@@ -389,8 +388,7 @@ TEST(SessionEffectors, Type2AnklesHaveTheirOwnLimits) {
 
 TEST(SessionEffectors, UnknownEffectorIsAnIssueAndRequestsNothing) {
   Harness h(1);
-  const int a = h.Join("Alpha", 1);
-  h.Cycle();
+  const int a = h.JoinAndCycle("Alpha", 1);
   h.session.Receive(a, "(lle7 1)");  // toes: type 4 only
   h.session.Receive(a, "(xyz 1)");   // no robot type has it
   const std::vector<SessionIssue> issues = h.session.TakeIssues();
@@ -407,8 +405,7 @@ TEST(SessionEffectors, UnknownEffectorIsAnIssueAndRequestsNothing) {
 
 TEST(SessionEffectors, Type4ToesAreNotAnIssue) {
   Harness h(1);
-  const int a = h.Join("Alpha", 1, 4);
-  h.Cycle();
+  const int a = h.JoinAndCycle("Alpha", 1, 4);
   h.session.Receive(a, "(lle7 1)(he1 1)");
   EXPECT_TRUE(h.session.TakeIssues().empty());
   const WorldRequests requests = TakeAnswered(h.session);
@@ -425,8 +422,7 @@ TEST(SessionEffectors, HingesWithoutRobotAreDropped) {
 
 TEST(SessionEffectors, ParseErrorIsAnIssue) {
   Harness h(1);
-  const int a = h.Join("Alpha", 1);
-  h.Cycle();
+  const int a = h.JoinAndCycle("Alpha", 1);
   h.session.Receive(a, "(he1 1");
   EXPECT_TRUE(h.OneIssue("parse", a));
   EXPECT_TRUE(h.session.TakeRequests().joints.empty());
@@ -436,8 +432,7 @@ TEST(SessionEffectors, ParseErrorIsAnIssue) {
 
 TEST(SessionPerception, JointsInDegreesGyroInDegPerSecondForcesOnlyInContact) {
   Harness h(1);
-  const int a = h.Join("Alpha", 1);
-  h.Cycle();
+  const int a = h.JoinAndCycle("Alpha", 1);
   FakeWorld::Robot& robot = h.world.robot("nao_1");
   robot.joints[0] = 0.5;    // hj1
   robot.joints[13] = -1.0;  // rlj4
@@ -449,7 +444,7 @@ TEST(SessionPerception, JointsInDegreesGyroInDegPerSecondForcesOnlyInContact) {
   EXPECT_TRUE(Contains(p, "(HJ (n hj1) (ax 28.65))")) << p;
   EXPECT_TRUE(Contains(p, "(HJ (n rlj4) (ax -57.30))")) << p;
   EXPECT_TRUE(Contains(p, "(HJ (n hj2) (ax 0.00))")) << p;
-  EXPECT_EQ(Count(p, "(HJ "), 22);
+  EXPECT_EQ(turf::test::Occurrences(p, "(HJ "), 22u);
   EXPECT_TRUE(Contains(p, "(GYR (n torso) (rt 57.30 0.00 -28.65))")) << p;
   EXPECT_TRUE(Contains(p, "(ACC (n torso) (a 0.10 -0.20 9.81))")) << p;
   EXPECT_TRUE(Contains(p, "(FRP (n lf) (c 0.00 0.00 -0.01) (f 0.00 0.00 22.50))")) << p;
@@ -523,8 +518,7 @@ TEST(SessionPerception, SeeListsBallAndOtherPlayers) {
 
 TEST(SessionBeam, AllowedBeforeKickOffMovesTheRobot) {
   Harness h(1);
-  const int a = h.Join("Alpha", 1);
-  h.Cycle();
+  const int a = h.JoinAndCycle("Alpha", 1);
   h.session.Receive(a, "(beam -2 1 90)");
   const WorldRequests requests = h.session.TakeRequests();
   ASSERT_EQ(requests.moves.size(), 1u);
@@ -541,8 +535,7 @@ TEST(SessionBeam, AllowedBeforeKickOffMovesTheRobot) {
 TEST(SessionBeam, RightTeamIsMirrored) {
   Harness h(2);
   h.Join("Alpha", 1);
-  const int b = h.Join("Beta", 1);
-  h.Cycle();
+  const int b = h.JoinAndCycle("Beta", 1);
   h.session.Receive(b, "(beam -2 1 0)");
   const RobotMove* m = FindMove(h.session.TakeRequests(), "nao_2");
   ASSERT_NE(m, nullptr);
@@ -553,8 +546,7 @@ TEST(SessionBeam, RightTeamIsMirrored) {
 
 TEST(SessionBeam, IgnoredInPlayOn) {
   Harness h(1);
-  const int a = h.Join("Alpha", 1);
-  h.Cycle();
+  const int a = h.JoinAndCycle("Alpha", 1);
   h.session.Trainer("(playMode PlayOn)", TrainerRole::kOperator);
   h.session.Receive(a, "(beam -2 1 90)");
   EXPECT_TRUE(h.session.TakeRequests().moves.empty());
@@ -564,8 +556,7 @@ TEST(SessionBeam, IgnoredInPlayOn) {
 
 TEST(SessionBeam, BeforeInitIsAnIssue) {
   Harness h(1);
-  const int a = h.Join("", 0);
-  h.Cycle();
+  const int a = h.JoinAndCycle("", 0);
   h.session.Receive(a, "(beam -2 1 90)");
   EXPECT_TRUE(h.OneIssue("beam_before_init", a));
   EXPECT_TRUE(h.session.TakeRequests().moves.empty());
@@ -687,8 +678,7 @@ TEST(SessionTrainer, MoveUnknownAgentIsAnIssue) {
 
 TEST(SessionTrainer, KickOffLeftShowsInTheNextGs) {
   Harness h(1);
-  const int a = h.Join("Alpha", 1);
-  h.Cycle();
+  const int a = h.JoinAndCycle("Alpha", 1);
   h.session.Trainer("(kickOff Left)", TrainerRole::kOperator);
   EXPECT_EQ(h.session.game().play_mode(), PlayMode::kKickOffLeft);
   const std::string gs = Gs(OutputFor(h.Cycle(), a));
@@ -737,8 +727,7 @@ TEST(SessionTrainer, MalformedInputIsAnIssue) {
 TEST(SessionDisconnect, ParksTheRobotDropsItsJointsAndFreesTheSlot) {
   Harness h(2);
   const int a = h.Join("Alpha", 1);
-  const int b = h.Join("Alpha", 2);
-  h.Cycle();
+  const int b = h.JoinAndCycle("Alpha", 2);
   h.session.Receive(a, "(he1 1)");
   h.session.Receive(b, "(he1 1)");
   h.session.Disconnect(a);
@@ -775,8 +764,7 @@ TEST(SessionDisconnect, ParksTheRobotDropsItsJointsAndFreesTheSlot) {
 TEST(SessionDisconnect, LastTeamMemberLeavingKeepsOtherAgentsRunning) {
   Harness h(2);
   const int a = h.Join("Alpha", 1);
-  const int b = h.Join("Beta", 1);
-  h.Cycle();
+  const int b = h.JoinAndCycle("Beta", 1);
   h.session.Disconnect(b);
   const auto outputs = h.Cycle();
   ASSERT_EQ(outputs.size(), 1u);
@@ -797,7 +785,7 @@ TEST(SessionRadio, SayIsHeardBySelfTeammateAndOpponent) {
   const std::string pb = OutputFor(outputs, b);
   const std::string pc = OutputFor(outputs, c);
   EXPECT_TRUE(Contains(pa, "(hear Alpha 0.00 self hello)")) << pa;
-  EXPECT_EQ(Count(pa, "(hear"), 1);
+  EXPECT_EQ(turf::test::Occurrences(pa, "(hear"), 1u);
   // Direction: speaker - listener in the listener team's frame, degrees.
   EXPECT_TRUE(Contains(pb, "(hear Alpha 0.00 90.00 hello)")) << pb;
   // Right team: x, y negated, so (28.4, -1.2): atan2 = -2.42 deg.
@@ -809,8 +797,7 @@ TEST(SessionRadio, SayIsHeardBySelfTeammateAndOpponent) {
 TEST(SessionRadio, SayBeforeInitIsNotHeard) {
   Harness h(2);
   const int a = h.Join("", 0);
-  const int b = h.Join("Alpha", 1);
-  h.Cycle();
+  const int b = h.JoinAndCycle("Alpha", 1);
   h.session.Receive(a, "(say hello)");
   const auto outputs = h.Cycle();
   EXPECT_FALSE(Contains(OutputFor(outputs, a), "(hear"));
@@ -1134,8 +1121,7 @@ TEST(SessionTrainer, OutOfRangeValuesChangeNothing) {
 TEST(SessionTeams, ATeamNameIsFreedWhenItsLastAgentDisconnects) {
   Harness h(3);
   const int squat1 = h.Join("Squat1", 1);
-  const int squat2 = h.Join("Squat2", 1);
-  h.Cycle();
+  const int squat2 = h.JoinAndCycle("Squat2", 1);
   h.session.Disconnect(squat1);
   h.session.Disconnect(squat2);
   const int real = h.Join("Real", 0);
@@ -1149,8 +1135,7 @@ TEST(SessionTeams, ATeamNameIsFreedWhenItsLastAgentDisconnects) {
 TEST(SessionTeams, AnOperatorResetsASideWhoseSquattersStayConnected) {
   Harness h(3);
   h.Join("Squat1", 1);
-  const int squat2 = h.Join("Squat2", 1);
-  h.Cycle();
+  const int squat2 = h.JoinAndCycle("Squat2", 1);
   h.session.Trainer("(turfResetTeam Right)", TrainerRole::kOperator);
   EXPECT_EQ(h.session.TakeKicked(), std::vector<int>{squat2});
   // The side is free at once, before the participant has dropped the squatter...

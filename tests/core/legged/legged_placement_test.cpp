@@ -6,6 +6,7 @@
 
 #include "core/legged/legged_world.h"
 #include "tests/core/legged/nao_fixture.h"
+#include "tests/support/find.h"
 
 namespace turf {
 namespace {
@@ -13,9 +14,7 @@ namespace {
 using testing::NaoScene;
 
 const LinkPose* Link(const LeggedRobotState& r, const std::string& name) {
-  for (const LinkPose& l : r.links)
-    if (l.name == name) return &l;
-  return nullptr;
+  return test::FindBy(r.links, &LinkPose::name, name);
 }
 
 double Angle(const LeggedWorld& w, int robot, const std::string& joint) {

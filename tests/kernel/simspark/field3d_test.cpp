@@ -4,13 +4,13 @@
 
 #include <cmath>
 
+#include "tests/support/find.h"
+
 namespace turf::simspark {
 namespace {
 
 const FieldPoint* Find(const std::vector<FieldPoint>& points, const std::string& label) {
-  for (const auto& p : points)
-    if (p.label == label) return &p;
-  return nullptr;
+  return turf::test::FindBy(points, &FieldPoint::label, label);
 }
 
 TEST(Field3d, FlagsAndGoalPostsAtTheSheetsPlaces) {

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "tests/e2e/proto/team_vision.pb.h"
+#include "codecs/proto/ssl_vision.pb.h"
 #include "tests/support/team_packets.h"
 
 namespace turf::test {
@@ -55,7 +55,7 @@ std::optional<std::string> UdpSocket::Receive() {
 bool VisionClient::ReadOne() {
   const auto bytes = socket_.Receive();
   if (!bytes) return false;
-  team::vision::SSL_WrapperPacket p;
+  wire::vision::SSL_WrapperPacket p;
   if (!p.ParseFromString(*bytes)) return true;
   if (p.has_geometry()) geometry = true;
   if (!p.has_detection()) return true;

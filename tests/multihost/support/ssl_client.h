@@ -1,6 +1,6 @@
 // What an SSL team's software does, for the multi-host, fault and launch
-// tests: sends grSim packets and decodes the SSL-Vision stream, with the test
-// client's own protos (tests/e2e/proto), over plain UDP sockets on an address
+// tests: sends grSim packets and decodes the SSL-Vision stream (turf's protos,
+// codecs/proto), over plain UDP sockets on an address
 // of the caller's choice (127.0.0.1: unicast within one host).
 #pragma once
 
