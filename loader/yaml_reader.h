@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <functional>
 #include <optional>
 #include <set>
 #include <string>
@@ -55,6 +56,9 @@ class MapReader {
   MapReader Map(const std::string& key);
   // The raw value of `key` (a null node when absent), for lists.
   YAML::Node Child(const std::string& key);
+  // Each map of the list `key`, handed to `read` as a MapReader at "<path>.<key>[i]"; absent or null: none. Anything
+  // but a list is an error "expected <what>".
+  void EachMap(const std::string& key, const std::string& what, const std::function<void(MapReader)>& read);
 
   const std::string& path() const { return path_; }
   Errors* errors() const { return errors_; }
