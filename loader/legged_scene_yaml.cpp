@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <utility>
 
 #include "loader/realism_yaml.h"
 #include "loader/yaml_reader.h"
@@ -22,14 +23,17 @@ using yaml::MapReader;
 constexpr uintmax_t kMaxSceneBytes = 1 << 20;
 constexpr uintmax_t kMaxModelBytes = 16 << 20;
 
+// Every key of `motors` is a number.
 void ReadMotors(MapReader m, MotorParams* p) {
-  m.Number("max_torque", &p->max_torque);
-  m.Number("max_speed", &p->max_speed);
-  m.Number("velocity_kp", &p->velocity_kp);
-  m.Number("velocity_kd", &p->velocity_kd);
-  m.Number("position_kp", &p->position_kp);
-  m.Number("position_kd", &p->position_kd);
-  m.Number("max_reference_lead", &p->max_reference_lead);
+  static constexpr std::pair<const char*, double MotorParams::*> kKeys[] = {
+      {"max_torque", &MotorParams::max_torque},
+      {"max_speed", &MotorParams::max_speed},
+      {"velocity_kp", &MotorParams::velocity_kp},
+      {"velocity_kd", &MotorParams::velocity_kd},
+      {"position_kp", &MotorParams::position_kp},
+      {"position_kd", &MotorParams::position_kd},
+      {"max_reference_lead", &MotorParams::max_reference_lead}};
+  for (const auto& [key, field] : kKeys) m.Number(key, &(p->*field));
   m.Finish();
 }
 
