@@ -47,11 +47,7 @@ void ReadField(MapReader m, Field3d* f) {
   m.Number("goal_wall", &f->goal_wall);
   m.Number("ball_radius", &f->ball_radius);
   m.Number("ball_mass", &f->ball_mass);
-  double start[2] = {f->ball_x, f->ball_y};
-  if (m.Numbers("ball_start", start, 2)) {
-    f->ball_x = start[0];
-    f->ball_y = start[1];
-  }
+  m.Point("ball_start", &f->ball_x, &f->ball_y);
   m.Number("wall_distance", &f->wall_distance);
   m.Bool("walls", &f->walls);
   m.Finish();

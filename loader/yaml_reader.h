@@ -52,6 +52,8 @@ class MapReader {
   bool Bool(const std::string& key, bool* out);
   bool String(const std::string& key, std::string* out);
   bool Numbers(const std::string& key, double* out, size_t count);
+  // A list of two numbers [x, y]; *x and *y are written only when both are valid.
+  bool Point(const std::string& key, double* x, double* y);
   // A nested map; absent reads as empty.
   MapReader Map(const std::string& key);
   // The raw value of `key` (a null node when absent), for lists.
