@@ -141,6 +141,13 @@ class Reader final : private SampleSink {
   std::unique_ptr<ReaderEndpoint> endpoint_;
 };
 
+// What Bus::MakeWriter and MakeReader return for a topic constant: WriterOf<Topic::kClock> is
+// std::unique_ptr<Writer<idl::ClockPubSubType>>, its type taken from the topic table.
+template <const auto& topic>
+using WriterOf = std::unique_ptr<Writer<typename std::decay_t<decltype(topic)>::PubSubType>>;
+template <const auto& topic>
+using ReaderOf = std::unique_ptr<Reader<typename std::decay_t<decltype(topic)>::PubSubType>>;
+
 class Bus {
  public:
   virtual ~Bus() = default;

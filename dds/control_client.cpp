@@ -28,22 +28,31 @@ bool ValidReply(const idl::SimControlReply& r) {
   return (r.result() == idl::RESULT_OK) == (r.error() == idl::CONTROL_OK);
 }
 
+// Each ControlCallError's name and, but for kRefused (whose words are the reply's), what it means.
+struct CallErrorText {
+  ControlCallError error;
+  const char* name;
+  const char* description;
+};
+constexpr CallErrorText kCallErrorTexts[] = {
+    {ControlCallError::kOk, "ok", "ok"},
+    {ControlCallError::kRefused, "refused", "refused"},
+    {ControlCallError::kNoServer, "no_server", "no turf-sim on the control topic"},
+    {ControlCallError::kTimeout, "timeout", "turf-sim did not answer in time"},
+    {ControlCallError::kStopped, "stopped", "stopped while waiting"},
+};
+
+const CallErrorText* TextOf(ControlCallError error) {
+  for (const CallErrorText& t : kCallErrorTexts)
+    if (t.error == error) return &t;
+  return nullptr;
+}
+
 }  // namespace
 
 const char* ControlCallErrorName(ControlCallError error) {
-  switch (error) {
-    case ControlCallError::kOk:
-      return "ok";
-    case ControlCallError::kRefused:
-      return "refused";
-    case ControlCallError::kNoServer:
-      return "no_server";
-    case ControlCallError::kTimeout:
-      return "timeout";
-    case ControlCallError::kStopped:
-      return "stopped";
-  }
-  return "unknown";
+  const CallErrorText* t = TextOf(error);
+  return t ? t->name : "unknown";
 }
 
 const char* ControlErrorName(idl::ControlError error) {
@@ -59,19 +68,10 @@ const char* ControlErrorName(idl::ControlError error) {
 }
 
 std::string ControlOutcome::Describe() const {
-  switch (error) {
-    case ControlCallError::kOk:
-      return "ok";
-    case ControlCallError::kRefused:
-      return fmt::format("refused ({}): {}", ControlErrorName(code()), reply ? reply->reason() : std::string());
-    case ControlCallError::kNoServer:
-      return "no turf-sim on the control topic";
-    case ControlCallError::kTimeout:
-      return "turf-sim did not answer in time";
-    case ControlCallError::kStopped:
-      return "stopped while waiting";
-  }
-  return "unknown";
+  if (error == ControlCallError::kRefused)
+    return fmt::format("refused ({}): {}", ControlErrorName(code()), reply ? reply->reason() : std::string());
+  const CallErrorText* t = TextOf(error);
+  return t ? t->description : "unknown";
 }
 
 ControlClient::ControlClient(Bus& bus, std::string name, std::function<void()> on_reply)

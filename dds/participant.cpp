@@ -34,6 +34,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "dds/fastdds_endpoint.h"
+
 namespace turf::dds {
 
 namespace fdds = eprosima::fastdds::dds;
@@ -73,17 +75,10 @@ class DdsWriter final : public WriterEndpoint {
     // its front-end in process and no remote camera reader saves ~0.1 ms per sync request.) Samples of durable
     // topics are written regardless: a reader that matches later gets the last of them.
     if (volatile_ && Matched() == 0) return true;
-    void* data = const_cast<void*>(sample);
-    if (!source_ns) return writer_->write(data);
-    eprosima::fastrtps::Time_t t(static_cast<int32_t>(*source_ns / 1000000000),
-                                 static_cast<uint32_t>(*source_ns % 1000000000));
-    return writer_->write_w_timestamp(data, fdds::HANDLE_NIL, t) == ReturnCode::RETCODE_OK;
+    if (!source_ns) return writer_->write(const_cast<void*>(sample));
+    return WriteStamped(writer_, sample, *source_ns);
   }
-  int Matched() const override {
-    fdds::PublicationMatchedStatus status;
-    writer_->get_publication_matched_status(status);
-    return status.current_count;
-  }
+  int Matched() const override { return MatchedReaders(writer_); }
 
  private:
   fdds::Publisher* publisher_;
@@ -102,11 +97,7 @@ class DdsReader final : public ReaderEndpoint, private fdds::DataReaderListener 
   fdds::DataReaderListener* listener() { return this; }
   void Attach(fdds::DataReader* reader) { reader_ = reader; }
 
-  int Matched() const override {
-    fdds::SubscriptionMatchedStatus status;
-    reader_->get_subscription_matched_status(status);
-    return status.current_count;
-  }
+  int Matched() const override { return MatchedWriters(reader_); }
   int DeadlinesMissed() const override {
     fdds::RequestedDeadlineMissedStatus status;
     reader_->get_requested_deadline_missed_status(status);

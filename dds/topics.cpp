@@ -1,5 +1,8 @@
 #include "dds/topics.h"
 
+#include <cstddef>
+#include <iterator>
+
 #include "dds/camera_topics.h"
 
 namespace turf::dds {
@@ -9,15 +12,10 @@ std::string TopicName(const std::string& prefix, Topic topic) {
 }
 
 const char* DirectionName(Direction direction) {
-  switch (direction) {
-    case Direction::kPublished:
-      return "published";
-    case Direction::kLatched:
-      return "published, latched";
-    case Direction::kSubscribed:
-      return "subscribed";
-  }
-  return "?";
+  // By Direction's value.
+  static constexpr const char* kNames[] = {"published", "published, latched", "subscribed"};
+  const auto i = static_cast<size_t>(direction);
+  return i < std::size(kNames) ? kNames[i] : "?";
 }
 
 std::string EndpointLine(const std::string& prefix, Topic topic, Endpoint endpoint) {

@@ -19,6 +19,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "dds/fastdds_endpoint.h"
 #include "dds/participant.h"
 
 namespace turf::dds {
@@ -85,16 +86,8 @@ class DdsVendorWriter final : public VendorParticipant::RawWriter {
   DdsVendorWriter(fdds::Publisher* publisher, fdds::DataWriter* writer) : publisher_(publisher), writer_(writer) {}
   ~DdsVendorWriter() override { publisher_->delete_datawriter(writer_); }
   bool Write(const void* sample) override { return writer_->write(const_cast<void*>(sample)); }
-  bool Write(const void* sample, int64_t source_ns) override {
-    const eprosima::fastrtps::Time_t t(static_cast<int32_t>(source_ns / 1'000'000'000),
-                                       static_cast<uint32_t>(source_ns % 1'000'000'000));
-    return writer_->write_w_timestamp(const_cast<void*>(sample), fdds::HANDLE_NIL, t) == ReturnCode::RETCODE_OK;
-  }
-  int Matched() const override {
-    fdds::PublicationMatchedStatus status;
-    writer_->get_publication_matched_status(status);
-    return status.current_count;
-  }
+  bool Write(const void* sample, int64_t source_ns) override { return WriteStamped(writer_, sample, source_ns); }
+  int Matched() const override { return MatchedReaders(writer_); }
 
  private:
   fdds::Publisher* publisher_;
@@ -110,11 +103,7 @@ class DdsVendorReader final : public VendorParticipant::RawReader, public fdds::
     if (reader_ != nullptr) subscriber_->delete_datareader(reader_);
   }
   void Attach(fdds::DataReader* reader) { reader_ = reader; }
-  int Matched() const override {
-    fdds::SubscriptionMatchedStatus status;
-    reader_->get_subscription_matched_status(status);
-    return status.current_count;
-  }
+  int Matched() const override { return MatchedWriters(reader_); }
 
  private:
   void on_data_available(fdds::DataReader* reader) override {

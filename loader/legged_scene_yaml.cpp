@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <utility>
 
 #include "loader/realism_yaml.h"
 #include "loader/yaml_reader.h"
@@ -22,14 +23,17 @@ using yaml::MapReader;
 constexpr uintmax_t kMaxSceneBytes = 1 << 20;
 constexpr uintmax_t kMaxModelBytes = 16 << 20;
 
+// Every key of `motors` is a number.
 void ReadMotors(MapReader m, MotorParams* p) {
-  m.Number("max_torque", &p->max_torque);
-  m.Number("max_speed", &p->max_speed);
-  m.Number("velocity_kp", &p->velocity_kp);
-  m.Number("velocity_kd", &p->velocity_kd);
-  m.Number("position_kp", &p->position_kp);
-  m.Number("position_kd", &p->position_kd);
-  m.Number("max_reference_lead", &p->max_reference_lead);
+  static constexpr std::pair<const char*, double MotorParams::*> kKeys[] = {
+      {"max_torque", &MotorParams::max_torque},
+      {"max_speed", &MotorParams::max_speed},
+      {"velocity_kp", &MotorParams::velocity_kp},
+      {"velocity_kd", &MotorParams::velocity_kd},
+      {"position_kp", &MotorParams::position_kp},
+      {"position_kd", &MotorParams::position_kd},
+      {"max_reference_lead", &MotorParams::max_reference_lead}};
+  for (const auto& [key, field] : kKeys) m.Number(key, &(p->*field));
   m.Finish();
 }
 
@@ -43,11 +47,7 @@ void ReadField(MapReader m, Field3d* f) {
   m.Number("goal_wall", &f->goal_wall);
   m.Number("ball_radius", &f->ball_radius);
   m.Number("ball_mass", &f->ball_mass);
-  double start[2] = {f->ball_x, f->ball_y};
-  if (m.Numbers("ball_start", start, 2)) {
-    f->ball_x = start[0];
-    f->ball_y = start[1];
-  }
+  m.Point("ball_start", &f->ball_x, &f->ball_y);
   m.Number("wall_distance", &f->wall_distance);
   m.Bool("walls", &f->walls);
   m.Finish();
@@ -56,14 +56,7 @@ void ReadField(MapReader m, Field3d* f) {
 // robots[].joints: a list of {name, q, kp, kd}; whether each names a joint of
 // the model and q lies in its range, the world checks when it compiles.
 void ReadStartJoints(MapReader& m, LeggedRobot* r) {
-  const YAML::Node joints = m.Child("joints");
-  if (!joints.IsDefined() || joints.IsNull()) return;  // absent
-  if (!joints.IsSequence()) {
-    m.Fail("joints", "expected a list of {name, q, kp, kd}");
-    return;
-  }
-  for (size_t i = 0; i < joints.size(); ++i) {
-    MapReader j(joints[i], fmt::format("{}.joints[{}]", m.path(), i), m.errors());
+  m.EachMap("joints", "a list of {name, q, kp, kd}", [r](MapReader j) {
     JointStart start;
     if (!j.String("name", &start.joint)) j.Fail("name", "required");
     j.Number("q", &start.position);
@@ -71,20 +64,14 @@ void ReadStartJoints(MapReader& m, LeggedRobot* r) {
     j.Number("kd", &start.kd);
     j.Finish();
     r->start_joints.push_back(std::move(start));
-  }
+  });
 }
 
 // robots[].cameras: a list of camera declarations (core/legged/legged_scene.h: CameraDecl); whether a body or
 // camera exists and the values' ranges are checked against the model (core/legged/legged_cameras.h).
 void ReadCameras(MapReader& m, LeggedRobot* r) {
-  const YAML::Node cameras = m.Child("cameras");
-  if (!cameras.IsDefined() || cameras.IsNull()) return;
-  if (!cameras.IsSequence()) {
-    m.Fail("cameras", "expected a list of {name, body, pos, xyaxes, width, height, hfov_deg, rate_hz, encoding, ...}");
-    return;
-  }
-  for (size_t i = 0; i < cameras.size(); ++i) {
-    MapReader c(cameras[i], fmt::format("{}.cameras[{}]", m.path(), i), m.errors());
+  const char* what = "a list of {name, body, pos, xyaxes, width, height, hfov_deg, rate_hz, encoding, ...}";
+  m.EachMap("cameras", what, [r](MapReader c) {
     CameraDecl d;
     if (!c.String("name", &d.name)) c.Fail("name", "required");
     std::string text;
@@ -106,7 +93,7 @@ void ReadCameras(MapReader& m, LeggedRobot* r) {
     if (c.Bool("enabled", &on)) d.enabled = on;
     c.Finish();
     r->cameras.push_back(std::move(d));
-  }
+  });
 }
 
 // Model files are read once per path, however many robots use them.

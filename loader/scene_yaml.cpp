@@ -59,11 +59,7 @@ void ReadField(MapReader m, FieldParams* f) {
 
 void ReadBall(MapReader m, Scene* s) {
   BallParams* b = &s->ball;
-  double start[2] = {s->ball_start_x, s->ball_start_y};
-  if (m.Numbers("start", start, 2)) {
-    s->ball_start_x = start[0];
-    s->ball_start_y = start[1];
-  }
+  m.Point("start", &s->ball_start_x, &s->ball_start_y);
   m.Number("radius", &b->radius);
   m.Number("mass", &b->mass);
   m.Number("acc_slide", &b->acc_slide);

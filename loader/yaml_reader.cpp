@@ -263,6 +263,24 @@ YAML::Node MapReader::Child(const std::string& key) {
   return e ? e->value : YAML::Node();
 }
 
+bool MapReader::Point(const std::string& key, double* x, double* y) {
+  double xy[2] = {*x, *y};
+  if (!Numbers(key, xy, 2)) return false;
+  *x = xy[0];
+  *y = xy[1];
+  return true;
+}
+
+void MapReader::EachMap(const std::string& key, const std::string& what, const std::function<void(MapReader)>& read) {
+  const YAML::Node list = Child(key);
+  if (!list.IsDefined() || list.IsNull()) return;
+  if (!list.IsSequence()) {
+    Fail(key, "expected " + what);
+    return;
+  }
+  for (size_t i = 0; i < list.size(); ++i) read(MapReader(list[i], fmt::format("{}[{}]", PathOf(key), i), errors_));
+}
+
 std::string MapReader::PathOf(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
 
 void MapReader::Fail(const std::string& key, const std::string& what) {

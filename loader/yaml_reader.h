@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <functional>
 #include <optional>
 #include <set>
 #include <string>
@@ -51,10 +52,15 @@ class MapReader {
   bool Bool(const std::string& key, bool* out);
   bool String(const std::string& key, std::string* out);
   bool Numbers(const std::string& key, double* out, size_t count);
+  // A list of two numbers [x, y]; *x and *y are written only when both are valid.
+  bool Point(const std::string& key, double* x, double* y);
   // A nested map; absent reads as empty.
   MapReader Map(const std::string& key);
   // The raw value of `key` (a null node when absent), for lists.
   YAML::Node Child(const std::string& key);
+  // Each map of the list `key`, handed to `read` as a MapReader at "<path>.<key>[i]"; absent or null: none. Anything
+  // but a list is an error "expected <what>".
+  void EachMap(const std::string& key, const std::string& what, const std::function<void(MapReader)>& read);
 
   const std::string& path() const { return path_; }
   Errors* errors() const { return errors_; }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 #include "core/rng.h"
 
@@ -29,6 +30,16 @@ Quat Normalized(const Quat& q) {
   return {q[0] / n, q[1] / n, q[2] / n, q[3] / n};
 }
 
+// By ImageEncoding's value: each encoding's name in turf's files and flags, and in a ROS sensor_msgs/Image.
+constexpr size_t kEncodings = 3;
+constexpr const char* kEncodingNames[kEncodings] = {"rgb8", "yuv422", "jpeg"};
+constexpr const char* kRosEncodings[kEncodings] = {"rgb8", "yuv422_yuy2", "jpeg"};
+
+const char* NameIn(const char* const (&names)[kEncodings], ImageEncoding encoding) {
+  const auto i = static_cast<size_t>(encoding);
+  return i < kEncodings ? names[i] : "?";
+}
+
 int64_t CeilToMultiple(int64_t t, int64_t period) {
   const int64_t q = t / period;
   const int64_t m = q * period;
@@ -37,35 +48,15 @@ int64_t CeilToMultiple(int64_t t, int64_t period) {
 
 }  // namespace
 
-const char* EncodingName(ImageEncoding encoding) {
-  switch (encoding) {
-    case ImageEncoding::kRgb8:
-      return "rgb8";
-    case ImageEncoding::kYuv422:
-      return "yuv422";
-    case ImageEncoding::kJpeg:
-      return "jpeg";
-  }
-  return "?";
-}
+const char* EncodingName(ImageEncoding encoding) { return NameIn(kEncodingNames, encoding); }
 
 std::optional<ImageEncoding> EncodingFromName(const std::string& name) {
-  for (ImageEncoding e : {ImageEncoding::kRgb8, ImageEncoding::kYuv422, ImageEncoding::kJpeg})
-    if (name == EncodingName(e)) return e;
+  for (size_t i = 0; i < kEncodings; ++i)
+    if (name == kEncodingNames[i]) return static_cast<ImageEncoding>(i);
   return std::nullopt;
 }
 
-const char* RosEncoding(ImageEncoding encoding) {
-  switch (encoding) {
-    case ImageEncoding::kRgb8:
-      return "rgb8";
-    case ImageEncoding::kYuv422:
-      return "yuv422_yuy2";
-    case ImageEncoding::kJpeg:
-      return "jpeg";
-  }
-  return "?";
-}
+const char* RosEncoding(ImageEncoding encoding) { return NameIn(kRosEncodings, encoding); }
 
 std::string CameraId(const CameraSpec& camera) { return camera.robot + "/" + camera.name; }
 

@@ -13,6 +13,7 @@
 #include "codecs/booster/robots.h"
 #include "dds/bus.h"
 #include "dds/vendor_participant.h"
+#include "participants/common/pd_target.h"
 #include "participants/common/process.h"
 #include "participants/common/wakeup.h"
 
@@ -193,17 +194,8 @@ class BoosterSdkBridge::Impl {
     idl::JointCommand out;
     out.robot(r.name);
     out.joints().reserve(d.commands.size());
-    for (const JointCommand& c : d.commands) {
-      idl::JointTarget t;
-      t.name(c.joint);
-      t.mode(idl::JOINT_PD);
-      t.value(c.value);
-      t.kp(c.kp);
-      t.kd(c.kd);
-      t.dq(c.dq);
-      t.tau(c.tau);
-      out.joints().push_back(std::move(t));
-    }
+    for (const JointCommand& c : d.commands)
+      out.joints().push_back(PdTarget(c.joint, c.value, c.dq, c.kp, c.kd, c.tau));
     std::lock_guard<std::mutex> lock(command_mutex_);
     command_writer_->Write(out);
     ++commands_;

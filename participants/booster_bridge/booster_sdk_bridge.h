@@ -26,10 +26,7 @@
 #include <vector>
 
 #include "core/pinned.h"
-
-namespace turf::dds {
-class Bus;
-}  // namespace turf::dds
+#include "dds/bus_fwd.h"
 
 namespace turf {
 

@@ -12,9 +12,9 @@ LeggedLockstep::LeggedLockstep(std::unique_ptr<dds::Participant> own, dds::Bus& 
       own_(std::move(own)),
       bus_(bus),
       control_(bus_, client, Wake()),
-      scene_(bus_.MakeReader<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene, Wake())),
-      clock_(bus_.MakeReader<idl::ClockPubSubType>(dds::Topic::kClock, Wake())),
-      state_(bus_.MakeReader<idl::LeggedStatePubSubType>(dds::Topic::kRobotsState, Wake())) {}
+      scene_(bus_.MakeReader(dds::Topic::kLeggedScene, Wake())),
+      clock_(bus_.MakeReader(dds::Topic::kClock, Wake())),
+      state_(bus_.MakeReader(dds::Topic::kRobotsState, Wake())) {}
 
 LeggedLockstep::~LeggedLockstep() = default;
 

@@ -79,9 +79,9 @@ class LeggedLockstep : Pinned {
   std::unique_ptr<dds::Participant> own_;
   dds::Bus& bus_;
   dds::ControlClient control_;
-  std::unique_ptr<dds::Reader<idl::LeggedSceneInfoPubSubType>> scene_;
-  std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_;
-  std::unique_ptr<dds::Reader<idl::LeggedStatePubSubType>> state_;
+  dds::ReaderOf<dds::Topic::kLeggedScene> scene_;
+  dds::ReaderOf<dds::Topic::kClock> clock_;
+  dds::ReaderOf<dds::Topic::kRobotsState> state_;
   std::vector<idl::LeggedSceneInfo> scene_in_;
   std::vector<idl::Clock> clock_in_;
   std::vector<idl::LeggedState> state_in_;

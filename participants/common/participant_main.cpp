@@ -15,6 +15,9 @@ namespace turf {
 ParticipantMain::ParticipantMain(std::string process_name, const std::string& description)
     : process_name_(std::move(process_name)), app_(description) {}
 
+ParticipantMain::ParticipantMain(const std::string& description)
+    : ParticipantMain(description.substr(0, description.find(':')), description) {}
+
 void ParticipantMain::AddCommonFlags(ParticipantOptions& options, const CommonFlagHelp& help) {
   app_.add_option("-d,--domain", options.domain, help.domain)->capture_default_str()->check(CLI::Range(0, 232));
   app_.add_option("-p,--prefix", options.prefix, help.prefix)->capture_default_str();

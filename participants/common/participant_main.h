@@ -4,7 +4,7 @@
 // flags on app(), puts the common ones where its --help shows them, and hands
 // its body to Run():
 //
-//   turf::ParticipantMain participant("turf-viewer", "turf-viewer: a live web view ...");
+//   turf::ParticipantMain participant("turf-viewer: a live web view ...");
 //   turf::ViewerOptions options;
 //   participant.app().add_option("--port", options.port, "...");
 //   participant.AddCommonFlags(options);
@@ -43,6 +43,8 @@ class ParticipantMain {
  public:
   // `process_name` tags every log line; `description` heads --help.
   ParticipantMain(std::string process_name, const std::string& description);
+  // The same, the process name being the description's first word: "turf-viewer: a live web view ...".
+  explicit ParticipantMain(const std::string& description);
 
   // The participant's own flags go here, in the order --help lists them.
   CLI::App& app() { return app_; }

@@ -10,7 +10,6 @@
 
 int main(int argc, char** argv) {
   turf::ParticipantMain participant(
-      "turf-grsim-bridge",
       "turf-grsim-bridge: lets team software that speaks grSim's UDP protocol (commands, replacement, robot status) "
       "drive turf-sim over DDS");
   turf::GrsimBridgeOptions options;

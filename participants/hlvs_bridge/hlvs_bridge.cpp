@@ -8,8 +8,6 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
-#include <condition_variable>
-#include <mutex>
 #include <stdexcept>
 
 #include "codecs/hlvs/camera_source.h"
@@ -19,6 +17,7 @@
 #include "participants/common/front_end_server.h"
 #include "participants/common/legged_lockstep.h"
 #include "participants/common/process.h"
+#include "participants/common/watched_stats.h"
 #include "participants/hlvs_bridge/robot_binding.h"
 
 namespace turf {
@@ -135,17 +134,7 @@ class HlvsBridge::Impl {
     return true;
   }
 
-  HlvsBridgeStats Stats() const {
-    std::lock_guard<std::mutex> lock(stats_mutex_);
-    return stats_;
-  }
-
-  HlvsBridgeStats WaitForStats(const std::function<bool(const HlvsBridgeStats&)>& done,
-                               std::chrono::milliseconds timeout) const {
-    std::unique_lock<std::mutex> lock(stats_mutex_);
-    stats_changed_.wait_for(lock, timeout, [&] { return done(stats_); });
-    return stats_;
-  }
+  const WatchedStats<HlvsBridgeStats>& stats() const { return stats_; }
 
  private:
   static Slot MakeSlot(const char* team, size_t player, const AddressAllowlist* allow) {
@@ -262,12 +251,12 @@ class HlvsBridge::Impl {
     const uint64_t real = UnixMs();
     for (Slot& s : slots_) ServeSlot(&s, real);
     server_->FlushDrops();
-    std::lock_guard<std::mutex> lock(stats_mutex_);
-    stats_.steps = steps_done_;
-    stats_.time_ms = time_ms_;
-    stats_.refused = rejects_.Total();
-    stats_.refused_by_kind = rejects_.counts();
-    stats_changed_.notify_all();
+    stats_.Update([&](HlvsBridgeStats& s) {
+      s.steps = steps_done_;
+      s.time_ms = time_ms_;
+      s.refused = rejects_.Total();
+      s.refused_by_kind = rejects_.counts();
+    });
     return true;
   }
 
@@ -322,9 +311,7 @@ class HlvsBridge::Impl {
     std::string error;
     c.peer->Write(std::string(hlvs::kRefused), &error);  // 8 bytes on a fresh socket; closed when c goes
     rejects_.Reject(kind, detail);
-    std::lock_guard<std::mutex> lock(stats_mutex_);
-    ++stats_.refused_clients;
-    stats_changed_.notify_all();
+    stats_.Update([&](HlvsBridgeStats& s) { ++s.refused_clients; });
     return false;
   }
 
@@ -350,10 +337,10 @@ class HlvsBridge::Impl {
       c.agent = i;
       *greeting = std::string(hlvs::kWelcome);
       server_->connections().Reject("client_connected", fmt::format("{} for {}", address, s.robot));
-      std::lock_guard<std::mutex> lock(stats_mutex_);
-      ++stats_.welcomed;
-      ++stats_.clients;
-      stats_changed_.notify_all();
+      stats_.Update([&](HlvsBridgeStats& s) {
+        ++s.welcomed;
+        ++s.clients;
+      });
       return true;
     };
     h.message = [this](FrontEndClient& c, const std::string& payload) {
@@ -376,10 +363,10 @@ class HlvsBridge::Impl {
         s.fd = -1;
         s.queued.clear();
       }
-      std::lock_guard<std::mutex> lock(stats_mutex_);
-      ++stats_.dropped_clients;
-      --stats_.clients;
-      stats_changed_.notify_all();
+      stats_.Update([&](HlvsBridgeStats& s) {
+        ++s.dropped_clients;
+        --s.clients;
+      });
     };
     return h;
   }
@@ -403,9 +390,7 @@ class HlvsBridge::Impl {
   uint32_t steps_ = 1;
   uint32_t time_ms_ = 0;
   uint64_t steps_done_ = 0;
-  mutable std::mutex stats_mutex_;
-  mutable std::condition_variable stats_changed_;
-  HlvsBridgeStats stats_;
+  WatchedStats<HlvsBridgeStats> stats_;
 
   static idl::SimControl FirstStep() {
     idl::SimControl c;
@@ -421,10 +406,10 @@ HlvsBridge::~HlvsBridge() = default;
 void HlvsBridge::SetCameraSource(hlvs::CameraSource* source) { impl_->SetCameraSource(source); }
 uint16_t HlvsBridge::port(const std::string& team, int player) const { return impl_->port(team, player); }
 bool HlvsBridge::Run(const std::function<bool()>& stop) { return impl_->Run(stop); }
-HlvsBridgeStats HlvsBridge::Stats() const { return impl_->Stats(); }
+HlvsBridgeStats HlvsBridge::Stats() const { return impl_->stats().Get(); }
 HlvsBridgeStats HlvsBridge::WaitForStats(const std::function<bool(const HlvsBridgeStats&)>& done,
                                          std::chrono::milliseconds timeout) const {
-  return impl_->WaitForStats(done, timeout);
+  return impl_->stats().WaitFor(done, timeout);
 }
 
 }  // namespace turf

@@ -9,7 +9,6 @@
 
 int main(int argc, char** argv) {
   turf::ParticipantMain participant(
-      "turf-rcssservermj-bridge",
       "turf-rcssservermj-bridge: RCSSServerMJ agents (TCP 60000) and monitor commands (TCP 60001) in front of "
       "turf-sim running a legged scene (configs/scenes/rcssservermj_fifa.yaml)");
   CLI::App& app = participant.app();

@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <condition_variable>
-#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -16,6 +14,7 @@
 #include "participants/common/cycle_loop.h"
 #include "participants/common/front_end_server.h"
 #include "participants/common/process.h"
+#include "participants/common/watched_stats.h"
 #include "participants/common/worker_thread.h"
 #include "participants/rcssservermj_bridge/legged_link.h"
 
@@ -85,17 +84,7 @@ class RcssServerMjBridge::Impl {
     return true;
   }
 
-  RcssServerMjStats Stats() const {
-    std::lock_guard<std::mutex> lock(stats_mutex_);
-    return stats_;
-  }
-
-  RcssServerMjStats WaitForStats(const std::function<bool(const RcssServerMjStats&)>& done,
-                                 std::chrono::milliseconds timeout) const {
-    std::unique_lock<std::mutex> lock(stats_mutex_);
-    stats_changed_.wait_for(lock, timeout, [&] { return done(stats_); });
-    return stats_;
-  }
+  const WatchedStats<RcssServerMjStats>& stats() const { return stats_; }
 
  private:
   bool Attach(const std::function<bool()>& stop) {
@@ -162,12 +151,12 @@ class RcssServerMjBridge::Impl {
     session_->Advance(std::move(*world));
     SendPerceptions();
     ReportIssues();
-    std::lock_guard<std::mutex> lock(stats_mutex_);
-    stats_.cycles = session_->cycle();
-    stats_.sim_time = sim_time;
-    stats_.agents = session_->agents();
-    stats_.active_agents = session_->active_agents();
-    stats_changed_.notify_all();
+    stats_.Update([&](RcssServerMjStats& s) {
+      s.cycles = session_->cycle();
+      s.sim_time = sim_time;
+      s.agents = session_->agents();
+      s.active_agents = session_->active_agents();
+    });
     return true;
   }
 
@@ -181,11 +170,11 @@ class RcssServerMjBridge::Impl {
     for (const rcssservermj::SessionIssue& issue : session_->TakeIssues())
       rejects_.Reject(issue.kind, issue.agent < 0 ? "monitor: " + issue.detail
                                                   : fmt::format("agent {}: {}", issue.agent, issue.detail));
-    std::lock_guard<std::mutex> lock(stats_mutex_);
-    if (stats_.refused == rejects_.Total()) return;
-    stats_.refused = rejects_.Total();
-    stats_.refused_by_kind = rejects_.counts();
-    stats_changed_.notify_all();
+    stats_.Update([&](RcssServerMjStats& s) {
+      if (s.refused == rejects_.Total()) return;
+      s.refused = rejects_.Total();
+      s.refused_by_kind = rejects_.counts();
+    });
   }
 
   void PollSockets(std::chrono::milliseconds timeout) { server_->Poll(timeout); }
@@ -201,9 +190,7 @@ class RcssServerMjBridge::Impl {
       if (!c.monitor) c.agent = session_->Connect();
       server_->connections().Reject(c.monitor ? "monitor_connected" : "agent_connected",
                                     c.monitor ? address : fmt::format("agent {} from {}", c.agent, address));
-      std::lock_guard<std::mutex> lock(stats_mutex_);
-      stats_.agents = session_->agents();
-      stats_changed_.notify_all();
+      stats_.Update([&](RcssServerMjStats& s) { s.agents = session_->agents(); });
       return true;
     };
     h.message = [this](FrontEndClient& c, const std::string& payload) {
@@ -215,11 +202,11 @@ class RcssServerMjBridge::Impl {
     };
     h.left = [this](const FrontEndClient& c) {
       if (!c.monitor) session_->Disconnect(c.agent);
-      std::lock_guard<std::mutex> lock(stats_mutex_);
-      ++stats_.dropped_clients;
-      stats_.agents = session_->agents();
-      stats_.active_agents = session_->active_agents();
-      stats_changed_.notify_all();
+      stats_.Update([&](RcssServerMjStats& s) {
+        ++s.dropped_clients;
+        s.agents = session_->agents();
+        s.active_agents = session_->active_agents();
+      });
     };
     return h;
   }
@@ -242,9 +229,7 @@ class RcssServerMjBridge::Impl {
   uint32_t steps_ = 4;
   RejectLog rejects_;
   std::unique_ptr<FrontEndServer> server_;
-  mutable std::mutex stats_mutex_;
-  mutable std::condition_variable stats_changed_;
-  RcssServerMjStats stats_;
+  WatchedStats<RcssServerMjStats> stats_;
   WorkerThread stepper_;  // steps the world while the perceptions go out; last: stopped before the rest goes
 };
 
@@ -256,10 +241,10 @@ RcssServerMjBridge::~RcssServerMjBridge() = default;
 uint16_t RcssServerMjBridge::agent_port() const { return impl_->agent_port(); }
 uint16_t RcssServerMjBridge::monitor_port() const { return impl_->monitor_port(); }
 bool RcssServerMjBridge::Run(const std::function<bool()>& stop) { return impl_->Run(stop); }
-RcssServerMjStats RcssServerMjBridge::Stats() const { return impl_->Stats(); }
+RcssServerMjStats RcssServerMjBridge::Stats() const { return impl_->stats().Get(); }
 RcssServerMjStats RcssServerMjBridge::WaitForStats(const std::function<bool(const RcssServerMjStats&)>& done,
                                                    std::chrono::milliseconds timeout) const {
-  return impl_->WaitForStats(done, timeout);
+  return impl_->stats().WaitFor(done, timeout);
 }
 
 }  // namespace turf

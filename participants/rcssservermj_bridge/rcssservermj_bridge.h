@@ -29,11 +29,8 @@
 #include <vector>
 
 #include "core/pinned.h"
+#include "dds/bus_fwd.h"
 #include "participants/common/participant_options.h"
-
-namespace turf::dds {
-class Bus;
-}  // namespace turf::dds
 
 namespace turf {
 

@@ -3,20 +3,13 @@
 // torque = kp (q - θ) + kd (dq - θ') + tau clamped to the joint's effort limit, as RCSSServerMJ's actuators.
 #include <turf/idl/JointsPubSubTypes.h>
 
+#include "participants/common/pd_target.h"
 #include "participants/rcssservermj_bridge/legged_link.h"
 
 namespace turf {
 
 idl::JointTarget ToJointTarget(const rcssservermj::PdCommand& c) {
-  idl::JointTarget t;
-  t.name(c.joint);
-  t.mode(idl::JOINT_PD);
-  t.value(c.q);
-  t.dq(c.dq);
-  t.kp(c.kp);
-  t.kd(c.kd);
-  t.tau(c.tau);
-  return t;
+  return PdTarget(c.joint, c.q, c.dq, c.kp, c.kd, c.tau);
 }
 
 }  // namespace turf

@@ -10,7 +10,6 @@
 
 int main(int argc, char** argv) {
   turf::ParticipantMain participant(
-      "turf-record",
       "turf-record: records a match's DDS topics (turf-sim's outputs and every input) into an MCAP file that "
       "Foxglove and `turf log info` open");
   turf::RecorderOptions options;

@@ -12,6 +12,7 @@
 #include "loader/legged_scene_yaml.h"
 #include "participants/common/participant_main.h"
 #include "participants/common/process.h"
+#include "participants/render/render_flags.h"
 #include "participants/render/render_node.h"
 #include "participants/render/switch_command.h"
 
@@ -50,42 +51,15 @@ std::pair<turf::LeggedScene, std::vector<turf::CameraSpec>> LoadScene(const std:
 
 int main(int argc, char** argv) {
   turf::ParticipantMain participant(
-      "turf-render",
       "turf-render: renders the robots' cameras of a legged scene (offscreen, EGL) from the body poses turf-sim "
       "publishes, and publishes ROS 2 images (rt/<prefix>/<robot>/<camera>/image_raw, camera_info)");
-  CLI::App& app = participant.app();
-  turf::RenderOptions options;
-  std::vector<std::string> cameras;
-  app.add_option("--scene", options.scene_file,
-                 "the legged scene turf-sim runs (its robots' cameras); required but with --switch");
-  std::vector<std::string> switches;
-  app.add_option(
-         "--switch", switches,
-         "switch a camera of the running renderers and exit, no --scene needed: ROBOT/CAMERA=on, "
-         "ROBOT/CAMERA=on@HZ (Hz of sim time) or ROBOT/CAMERA=off; repeatable (writes <prefix>/cameras/control)")
-      ->type_name("ID=STATE");
-  app.add_option("--cameras", cameras,
-                 "cameras to render, as <robot>/<camera>, comma-separated or repeated (default: every camera of the "
-                 "scene, on as declared); `off`: every camera starts off, to be switched on at run time "
-                 "(<prefix>/cameras/control); several turf-render processes can split a scene's "
-                 "cameras");
-  app.add_flag("--list-cameras", options.list_cameras, "print the scene's cameras and exit");
-  bool no_team_colours = false;
-  app.add_flag("--no-team-colours", no_team_colours,
-               "robots keep their files' colours (by default a robot named red_*, blue_* or yellow_* has its trunk "
-               "in that team's colour)");
-  app.add_option("--brightness", options.brightness,
-                 "every light this many times as bright (a simple lighting change: 0.5 dim, 1.5 bright)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 4.0));
-  app.add_option("--status-every", options.status_every, "seconds between status lines")
-      ->capture_default_str()
-      ->check(CLI::Range(0.1, 3600.0));
-  participant.AddCommonFlags(options);
+  turf::RenderCommandLine command_line;
+  turf::AddRenderFlags(participant, command_line);
+  turf::RenderOptions& options = command_line.options;
   return participant.Run(argc, argv, [&] {
-    if (!switches.empty()) {
+    if (!command_line.switches.empty()) {
       std::vector<turf::CameraControlRequest> requests;
-      for (const std::string& text : switches) {
+      for (const std::string& text : command_line.switches) {
         std::string why;
         auto r = turf::ParseCameraSwitch(text, &why);
         if (!r) throw std::invalid_argument("--switch " + why);
@@ -102,8 +76,8 @@ int main(int argc, char** argv) {
                     c.enabled ? "" : " (disabled)");
       return turf::kExitClean;
     }
-    options.team_colours = !no_team_colours;
-    options.cameras = SplitIds(cameras);
+    options.team_colours = !command_line.no_team_colours;
+    options.cameras = SplitIds(command_line.cameras);
     options.cameras_off = options.cameras.size() == 1 && options.cameras[0] == "off";
     if (options.cameras_off) options.cameras.clear();
     std::vector<turf::CameraSpec> selected = turf::RenderSet(all, options.cameras, options.cameras_off);

@@ -23,7 +23,6 @@ extern "C" void TogglePause(int /*signal*/) { g_paused.store(!g_paused.load()); 
 
 int main(int argc, char** argv) {
   turf::ParticipantMain participant(
-      "turf-replay",
       "turf-replay: plays the outputs of a turf-record MCAP file (world state, clock, cameras, ...) back onto a DDS "
       "domain, for the viewer and team software; or, with --resimulate, re-runs the match from its recorded inputs "
       "in this process and checks that every recorded output is reproduced byte for byte");

@@ -1,7 +1,10 @@
 #include "participants/sim/convert.h"
 
 #include <cmath>
+#include <utility>
+
 #include "idl/values.h"
+#include "participants/sim/enum_table.h"
 
 namespace turf {
 
@@ -19,17 +22,14 @@ idl::Vec3 V3(const Vec3& v) {
 
 Vec3 FromV3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
-idl::KickKind ToIdl(KickKind kind) {
-  switch (kind) {
-    case KickKind::kFlat:
-      return idl::KICK_FLAT;
-    case KickKind::kChip:
-      return idl::KICK_CHIP;
-    case KickKind::kNone:
-      break;
-  }
-  return idl::KICK_NONE;
-}
+constexpr std::pair<idl::MoveKind, MoveKind> kMoveKinds[] = {{idl::MOVE_NONE, MoveKind::kNone},
+                                                             {idl::MOVE_LOCAL_VELOCITY, MoveKind::kLocalVelocity},
+                                                             {idl::MOVE_GLOBAL_VELOCITY, MoveKind::kGlobalVelocity},
+                                                             {idl::MOVE_WHEEL_VELOCITY, MoveKind::kWheelVelocity}};
+constexpr std::pair<idl::KickKind, KickKind> kKickKinds[] = {
+    {idl::KICK_NONE, KickKind::kNone}, {idl::KICK_FLAT, KickKind::kFlat}, {idl::KICK_CHIP, KickKind::kChip}};
+
+idl::KickKind ToIdl(KickKind kind) { return ToIdlEnum(kKickKinds, kind, idl::KICK_NONE); }
 
 }  // namespace
 
@@ -159,35 +159,8 @@ idl::SslRobotFeedback FeedbackToIdl(const RobotSnapshot& r, int64_t time_ns) {
 InputError FromIdl(const idl::SslRobotCommand& in, RobotCommand* out) {
   if (!FromIdl(in.team(), &out->team)) return InputError::kOutOfRange;
   out->id = in.id();
-  switch (in.move()) {
-    case idl::MOVE_NONE:
-      out->move = MoveKind::kNone;
-      break;
-    case idl::MOVE_LOCAL_VELOCITY:
-      out->move = MoveKind::kLocalVelocity;
-      break;
-    case idl::MOVE_GLOBAL_VELOCITY:
-      out->move = MoveKind::kGlobalVelocity;
-      break;
-    case idl::MOVE_WHEEL_VELOCITY:
-      out->move = MoveKind::kWheelVelocity;
-      break;
-    default:
-      return InputError::kOutOfRange;
-  }
-  switch (in.kick()) {
-    case idl::KICK_NONE:
-      out->kick = KickKind::kNone;
-      break;
-    case idl::KICK_FLAT:
-      out->kick = KickKind::kFlat;
-      break;
-    case idl::KICK_CHIP:
-      out->kick = KickKind::kChip;
-      break;
-    default:
-      return InputError::kOutOfRange;
-  }
+  if (!FromIdlEnum(kMoveKinds, in.move(), &out->move)) return InputError::kOutOfRange;
+  if (!FromIdlEnum(kKickKinds, in.kick(), &out->kick)) return InputError::kOutOfRange;
   out->velocity = FromV3(in.velocity());
   out->wheel_velocity = in.wheel_velocity();
   out->kick_speed = in.kick_speed();

@@ -1,5 +1,9 @@
 #include "participants/sim/legged_convert.h"
 
+#include <utility>
+
+#include "participants/sim/enum_table.h"
+
 namespace turf {
 
 idl::GeomShape ToIdl(LeggedGeom::Shape shape) {
@@ -90,22 +94,11 @@ void FillState(const LeggedWorldState& state, idl::LeggedState* out) {
 
 bool FromIdl(const idl::JointTarget& in, JointCommand* out) {
   out->joint = in.name();
-  switch (in.mode()) {
-    case idl::JOINT_VELOCITY:
-      out->mode = JointMode::kVelocity;
-      break;
-    case idl::JOINT_POSITION:
-      out->mode = JointMode::kPosition;
-      break;
-    case idl::JOINT_TORQUE:
-      out->mode = JointMode::kTorque;
-      break;
-    case idl::JOINT_PD:
-      out->mode = JointMode::kPd;
-      break;
-    default:
-      return false;
-  }
+  static constexpr std::pair<idl::JointMode, JointMode> kModes[] = {{idl::JOINT_VELOCITY, JointMode::kVelocity},
+                                                                    {idl::JOINT_POSITION, JointMode::kPosition},
+                                                                    {idl::JOINT_TORQUE, JointMode::kTorque},
+                                                                    {idl::JOINT_PD, JointMode::kPd}};
+  if (!FromIdlEnum(kModes, in.mode(), &out->mode)) return false;
   out->value = in.value();
   out->kp = in.kp();
   out->kd = in.kd();

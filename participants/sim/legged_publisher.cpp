@@ -6,14 +6,14 @@
 namespace turf {
 
 LeggedPublisher::LeggedPublisher(dds::Bus& bus)
-    : joint_writer_(bus.MakeWriter<idl::JointStatePubSubType>(dds::Topic::kRobotJointState)),
-      imu_writer_(bus.MakeWriter<idl::ImuStatePubSubType>(dds::Topic::kRobotImu)),
-      force_writer_(bus.MakeWriter<idl::ForceStatePubSubType>(dds::Topic::kRobotForce)),
-      links_writer_(bus.MakeWriter<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks)),
-      state_writer_(bus.MakeWriter<idl::LeggedStatePubSubType>(dds::Topic::kRobotsState)),
-      world_writer_(bus.MakeWriter<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
-      scene_writer_(bus.MakeWriter<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene)),
-      stats_writer_(bus.MakeWriter<idl::SensorStatsPubSubType>(dds::Topic::kStats)) {}
+    : joint_writer_(bus.MakeWriter(dds::Topic::kRobotJointState)),
+      imu_writer_(bus.MakeWriter(dds::Topic::kRobotImu)),
+      force_writer_(bus.MakeWriter(dds::Topic::kRobotForce)),
+      links_writer_(bus.MakeWriter(dds::Topic::kRobotLinks)),
+      state_writer_(bus.MakeWriter(dds::Topic::kRobotsState)),
+      world_writer_(bus.MakeWriter(dds::Topic::kWorldState)),
+      scene_writer_(bus.MakeWriter(dds::Topic::kLeggedScene)),
+      stats_writer_(bus.MakeWriter(dds::Topic::kStats)) {}
 
 void LeggedPublisher::AfterStep(const LeggedKernel& kernel) {
   PublishReleased(kernel);

@@ -40,14 +40,14 @@ class LeggedPublisher : Pinned {
   int StateReaders() const { return state_writer_->Matched(); }
 
  private:
-  std::unique_ptr<dds::Writer<idl::JointStatePubSubType>> joint_writer_;
-  std::unique_ptr<dds::Writer<idl::ImuStatePubSubType>> imu_writer_;
-  std::unique_ptr<dds::Writer<idl::ForceStatePubSubType>> force_writer_;
-  std::unique_ptr<dds::Writer<idl::LinkStatePubSubType>> links_writer_;
-  std::unique_ptr<dds::Writer<idl::LeggedStatePubSubType>> state_writer_;
-  std::unique_ptr<dds::Writer<idl::WorldStatePubSubType>> world_writer_;
-  std::unique_ptr<dds::Writer<idl::LeggedSceneInfoPubSubType>> scene_writer_;
-  std::unique_ptr<dds::Writer<idl::SensorStatsPubSubType>> stats_writer_;
+  dds::WriterOf<dds::Topic::kRobotJointState> joint_writer_;
+  dds::WriterOf<dds::Topic::kRobotImu> imu_writer_;
+  dds::WriterOf<dds::Topic::kRobotForce> force_writer_;
+  dds::WriterOf<dds::Topic::kRobotLinks> links_writer_;
+  dds::WriterOf<dds::Topic::kRobotsState> state_writer_;
+  dds::WriterOf<dds::Topic::kWorldState> world_writer_;
+  dds::WriterOf<dds::Topic::kLeggedScene> scene_writer_;
+  dds::WriterOf<dds::Topic::kStats> stats_writer_;
 
   LeggedWorldState state_;
   idl::LeggedState frame_sample_;

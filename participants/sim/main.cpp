@@ -6,7 +6,7 @@
 
 int main(int argc, char** argv) {
   turf::ParticipantMain participant(
-      "turf-sim", "turf-sim: the MuJoCo physics participant of turf (SSL and legged scenes), publishing on DDS");
+      "turf-sim: the MuJoCo physics participant of turf (SSL and legged scenes), publishing on DDS");
   turf::SimCommandLine command_line;
   turf::AddSimFlags(participant, command_line);
   return participant.Run(argc, argv, [&] { return turf::RunSim(command_line); });

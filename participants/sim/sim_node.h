@@ -52,11 +52,8 @@
 #include "core/legged/legged_scene.h"
 #include "core/pinned.h"
 #include "core/scene.h"
+#include "dds/bus_fwd.h"
 #include "participants/sim/node_options.h"
-
-namespace turf::dds {
-class Bus;
-}  // namespace turf::dds
 
 namespace turf {
 

@@ -8,12 +8,11 @@
 namespace turf {
 
 SslPublisher::SslPublisher(dds::Bus& bus)
-    : state_writer_(bus.MakeWriter<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
-      field_writer_(bus.MakeWriter<idl::SslFieldPubSubType>(dds::Topic::kSslField)),
-      camera_writer_(bus.MakeWriter<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)),
-      feedback_writers_{bus.MakeWriter<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackBlue),
-                        bus.MakeWriter<idl::SslRobotFeedbackPubSubType>(dds::Topic::kSslFeedbackYellow)},
-      stats_writer_(bus.MakeWriter<idl::SensorStatsPubSubType>(dds::Topic::kStats)) {}
+    : state_writer_(bus.MakeWriter(dds::Topic::kWorldState)),
+      field_writer_(bus.MakeWriter(dds::Topic::kSslField)),
+      camera_writer_(bus.MakeWriter(dds::Topic::kSslCamera)),
+      feedback_writers_{bus.MakeWriter(dds::Topic::kSslFeedbackBlue), bus.MakeWriter(dds::Topic::kSslFeedbackYellow)},
+      stats_writer_(bus.MakeWriter(dds::Topic::kStats)) {}
 
 void SslPublisher::PublishField(const SslKernel& kernel) {
   field_writer_->Write(FieldToIdl(kernel.scene(), kernel.cameras()));

@@ -41,11 +41,11 @@ class SslPublisher : Pinned {
   int StateReaders() const { return state_writer_->Matched(); }
 
  private:
-  std::unique_ptr<dds::Writer<idl::WorldStatePubSubType>> state_writer_;
-  std::unique_ptr<dds::Writer<idl::SslFieldPubSubType>> field_writer_;
-  std::unique_ptr<dds::Writer<idl::CameraFramePubSubType>> camera_writer_;
+  dds::WriterOf<dds::Topic::kWorldState> state_writer_;
+  dds::WriterOf<dds::Topic::kSslField> field_writer_;
+  dds::WriterOf<dds::Topic::kSslCamera> camera_writer_;
   std::unique_ptr<dds::Writer<idl::SslRobotFeedbackPubSubType>> feedback_writers_[kTeamCount];
-  std::unique_ptr<dds::Writer<idl::SensorStatsPubSubType>> stats_writer_;
+  dds::WriterOf<dds::Topic::kStats> stats_writer_;
   StreamReport last_stats_;
   idl::WorldState state_sample_;
   idl::CameraFrame camera_sample_;

@@ -11,7 +11,7 @@
 
 int main(int argc, char** argv) {
   turf::ParticipantMain participant(
-      "turf-simproto-bridge", "turf-simproto-bridge: the SSL simulation protocol (UDP) in front of turf-sim (DDS)");
+      "turf-simproto-bridge: the SSL simulation protocol (UDP) in front of turf-sim (DDS)");
   CLI::App& app = participant.app();
   turf::SimprotoBridgeOptions options;
   int reply_timeout_ms = static_cast<int>(options.reply_timeout.count());

@@ -52,12 +52,9 @@
 #include <string>
 
 #include "core/pinned.h"
+#include "dds/bus_fwd.h"
 #include "participants/common/participant_options.h"
 #include "participants/common/source_gate.h"
-
-namespace turf::dds {
-class Bus;
-}  // namespace turf::dds
 
 namespace turf {
 

@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <condition_variable>
-#include <mutex>
 #include <stdexcept>
 #include <vector>
 
@@ -15,6 +13,7 @@
 #include "participants/common/cycle_loop.h"
 #include "participants/common/front_end_server.h"
 #include "participants/common/process.h"
+#include "participants/common/watched_stats.h"
 #include "participants/simspark_bridge/world_link.h"
 
 namespace turf {
@@ -94,17 +93,7 @@ class SimSparkBridge::Impl {
     return true;
   }
 
-  SimSparkBridgeStats Stats() const {
-    std::lock_guard<std::mutex> lock(stats_mutex_);
-    return stats_;
-  }
-
-  SimSparkBridgeStats WaitForStats(const std::function<bool(const SimSparkBridgeStats&)>& done,
-                                   std::chrono::milliseconds timeout) const {
-    std::unique_lock<std::mutex> lock(stats_mutex_);
-    stats_changed_.wait_for(lock, timeout, [&] { return done(stats_); });
-    return stats_;
-  }
+  const WatchedStats<SimSparkBridgeStats>& stats() const { return stats_; }
 
  private:
   bool Attach(const std::function<bool()>& stop) {
@@ -163,11 +152,11 @@ class SimSparkBridge::Impl {
     server_.FlushDrops();
     split_.bridge += Clock::now() - stepped;
     ReportIssues();
-    std::lock_guard<std::mutex> lock(stats_mutex_);
-    stats_.cycles = session_->cycle();
-    stats_.sim_time = sim_time;
-    stats_.agents = session_->agents();
-    stats_changed_.notify_all();
+    stats_.Update([&](SimSparkBridgeStats& s) {
+      s.cycles = session_->cycle();
+      s.sim_time = sim_time;
+      s.agents = session_->agents();
+    });
     return true;
   }
 
@@ -179,11 +168,11 @@ class SimSparkBridge::Impl {
       rejects_.Reject(issue.kind, issue.agent < 0 ? "trainer: " + issue.detail
                                                   : fmt::format("agent {}: {}", issue.agent, issue.detail));
     }
-    std::lock_guard<std::mutex> lock(stats_mutex_);
-    if (stats_.refused == rejects_.Total()) return;
-    stats_.refused = rejects_.Total();
-    stats_.refused_by_kind = rejects_.counts();
-    stats_changed_.notify_all();
+    stats_.Update([&](SimSparkBridgeStats& s) {
+      if (s.refused == rejects_.Total()) return;
+      s.refused = rejects_.Total();
+      s.refused_by_kind = rejects_.counts();
+    });
   }
 
   void PollSockets(std::chrono::milliseconds timeout) {
@@ -201,9 +190,7 @@ class SimSparkBridge::Impl {
       }
       c.agent = session_->Connect();
       server_.connections().Reject("agent_connected", fmt::format("agent {} from {}", c.agent, address));
-      std::lock_guard<std::mutex> lock(stats_mutex_);
-      stats_.agents = session_->agents();
-      stats_changed_.notify_all();
+      stats_.Update([&](SimSparkBridgeStats& s) { s.agents = session_->agents(); });
       return true;
     };
     h.message = [this](FrontEndClient& c, const std::string& payload) {
@@ -215,10 +202,10 @@ class SimSparkBridge::Impl {
     };
     h.left = [this](const FrontEndClient& c) {
       if (!c.monitor) session_->Disconnect(c.agent);
-      std::lock_guard<std::mutex> lock(stats_mutex_);
-      ++stats_.dropped_clients;
-      stats_.agents = session_->agents();
-      stats_changed_.notify_all();
+      stats_.Update([&](SimSparkBridgeStats& s) {
+        ++s.dropped_clients;
+        s.agents = session_->agents();
+      });
     };
     return h;
   }
@@ -254,9 +241,7 @@ class SimSparkBridge::Impl {
   } split_;
   RejectLog rejects_;
   FrontEndServer server_;
-  mutable std::mutex stats_mutex_;
-  mutable std::condition_variable stats_changed_;
-  SimSparkBridgeStats stats_;
+  WatchedStats<SimSparkBridgeStats> stats_;
 };
 
 SimSparkBridge::SimSparkBridge(SimSparkBridgeOptions options)
@@ -267,10 +252,10 @@ SimSparkBridge::~SimSparkBridge() = default;
 uint16_t SimSparkBridge::agent_port() const { return impl_->agent_port(); }
 uint16_t SimSparkBridge::monitor_port() const { return impl_->monitor_port(); }
 bool SimSparkBridge::Run(const std::function<bool()>& stop) { return impl_->Run(stop); }
-SimSparkBridgeStats SimSparkBridge::Stats() const { return impl_->Stats(); }
+SimSparkBridgeStats SimSparkBridge::Stats() const { return impl_->stats().Get(); }
 SimSparkBridgeStats SimSparkBridge::WaitForStats(const std::function<bool(const SimSparkBridgeStats&)>& done,
                                                  std::chrono::milliseconds timeout) const {
-  return impl_->WaitForStats(done, timeout);
+  return impl_->stats().WaitFor(done, timeout);
 }
 
 }  // namespace turf

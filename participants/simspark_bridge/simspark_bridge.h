@@ -34,12 +34,9 @@
 #include <vector>
 
 #include "core/pinned.h"
+#include "dds/bus_fwd.h"
 #include "participants/common/address_allowlist.h"
 #include "participants/common/participant_options.h"
-
-namespace turf::dds {
-class Bus;
-}  // namespace turf::dds
 
 namespace turf {
 

@@ -1,5 +1,6 @@
 // The SimSpark front-end's operator flag, one definition for its two homes: turf-simspark-bridge
-// (`--operator-allow`) and turf-sim's in-process front-end (`--simspark-operator-allow`). Header-only (CLI11).
+// (`--operator-allow`) and turf-sim's in-process front-end (`--simspark-operator-allow`); and the bridge's other
+// flags. Header-only (CLI11).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -7,6 +8,7 @@
 #include <string>
 
 #include "participants/common/cli_checks.h"
+#include "participants/common/participant_main.h"
 #include "participants/simspark_bridge/simspark_bridge.h"
 
 namespace turf {
@@ -23,6 +25,28 @@ inline void AddSimSparkOperatorFlag(CLI::App& app, SimSparkBridgeOptions& o, con
       ->type_name("ADDR[/PREFIX]")
       ->check(AddressRangeCheck(/*ipv4_only=*/false))
       ->capture_default_str();
+}
+
+// turf-simspark-bridge's flags (main.cpp): the common ones, ports, sync mode, seed, duration and the operator flag.
+// `sync_timeout_ms`: --sync-timeout-ms, into options.sync_timeout once parsed.
+inline void AddSimSparkBridgeFlags(ParticipantMain& participant, SimSparkBridgeOptions& options, int& sync_timeout_ms) {
+  CLI::App& app = participant.app();
+  participant.AddCommonFlags(options);
+  app.add_option("--listen", options.listen, "IPv4 address both TCP ports bind to")->capture_default_str();
+  participant.AddPort("--agent-port", options.agent_port, "TCP port for agents (0: any free port)", true);
+  participant.AddPort("--monitor-port", options.monitor_port, "TCP port for monitors and trainers (0: any free port)",
+                      true);
+  app.add_flag("--sync", options.sync_mode,
+               "sync mode: a cycle as soon as every agent sent (syn), as fast as they answer (rcssserver3d's "
+               "agentSyncMode); default: real time, one cycle per 20 ms");
+  app.add_option("--sync-timeout-ms", sync_timeout_ms,
+                 "sync mode: drop an agent that sends no (syn) for this long (0: wait forever)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 3600000));
+  app.add_option("--seed", options.seed, "seed of beam noise and each agent's vision noise")->capture_default_str();
+  app.add_option("--duration", options.duration, "stop after this many simulated seconds (0: run until Ctrl-C)")
+      ->check(FiniteAtLeastZero());
+  AddSimSparkOperatorFlag(app, options);
 }
 
 }  // namespace turf

@@ -9,7 +9,7 @@
 
 int main(int argc, char** argv) {
   turf::ParticipantMain participant(
-      "turf-viewer", "turf-viewer: a live web view of a turf match (DDS in, HTTP and WebSocket out) with controls");
+      "turf-viewer: a live web view of a turf match (DDS in, HTTP and WebSocket out) with controls");
   CLI::App& app = participant.app();
   turf::ViewerOptions options;
   options.web_root = TURF_VIEWER_WEB_ROOT;

@@ -51,16 +51,9 @@ class Fields {
 
   // A finite number in [lo, hi]; `fallback` if absent and not required.
   double Number(const char* key, double lo, double hi, std::optional<double> fallback = std::nullopt) {
-    const auto it = object_.find(key);
-    if (it == object_.end()) {
-      if (fallback) return *fallback;
-      Fail(PageError::kMissingField, fmt::format("'{}' needs '{}'", out_->op, key));
-      return 0.0;
-    }
-    if (!it->is_number()) {
-      Fail(PageError::kWrongType, fmt::format("'{}' must be a number", key));
-      return 0.0;
-    }
+    const json* it = Field(key, fallback.has_value());
+    if (it == nullptr) return fallback.value_or(0.0);
+    if (!Typed(it->is_number(), key, "a number")) return 0.0;
     const double v = it->get<double>();
     if (!std::isfinite(v)) {
       Fail(PageError::kNotFinite, fmt::format("'{}' is not finite", key));
@@ -74,16 +67,9 @@ class Fields {
   }
   // A whole number in [lo, hi].
   int64_t Integer(const char* key, int64_t lo, int64_t hi, std::optional<int64_t> fallback = std::nullopt) {
-    const auto it = object_.find(key);
-    if (it == object_.end()) {
-      if (fallback) return *fallback;
-      Fail(PageError::kMissingField, fmt::format("'{}' needs '{}'", out_->op, key));
-      return 0;
-    }
-    if (!it->is_number_integer()) {
-      Fail(PageError::kWrongType, fmt::format("'{}' must be a whole number", key));
-      return 0;
-    }
+    const json* it = Field(key, fallback.has_value());
+    if (it == nullptr) return fallback.value_or(0);
+    if (!Typed(it->is_number_integer(), key, "a whole number")) return 0;
     // Unsigned first: 2^64-1 must not wrap to -1.
     const bool in_range = it->is_number_unsigned() ? it->get<uint64_t>() <= static_cast<uint64_t>(hi)
                                                    : it->get<int64_t>() >= lo && it->get<int64_t>() <= hi;
@@ -96,21 +82,13 @@ class Fields {
     return v;
   }
   std::string String(const char* key) {
-    const auto it = object_.find(key);
-    if (it == object_.end()) {
-      Fail(PageError::kMissingField, fmt::format("'{}' needs '{}'", out_->op, key));
-      return "";
-    }
-    if (!it->is_string()) {
-      Fail(PageError::kWrongType, fmt::format("'{}' must be a string", key));
-      return "";
-    }
+    const json* it = Field(key, false);
+    if (it == nullptr || !Typed(it->is_string(), key, "a string")) return "";
     return it->get<std::string>();
   }
   bool Bool(const char* key) {
-    const auto it = object_.find(key);
-    if (it == object_.end()) return Fail(PageError::kMissingField, fmt::format("'{}' needs '{}'", out_->op, key));
-    if (!it->is_boolean()) return Fail(PageError::kWrongType, fmt::format("'{}' must be true or false", key));
+    const json* it = Field(key, false);
+    if (it == nullptr || !Typed(it->is_boolean(), key, "true or false")) return false;
     return it->get<bool>();
   }
 
@@ -122,6 +100,19 @@ class Fields {
   }
 
  private:
+  // The field `key`, or null when the message has none (a kMissingField failure unless `optional`).
+  const json* Field(const char* key, bool optional) {
+    const auto it = object_.find(key);
+    if (it != object_.end()) return &*it;
+    if (!optional) Fail(PageError::kMissingField, fmt::format("'{}' needs '{}'", out_->op, key));
+    return nullptr;
+  }
+  // `ok`, failing kWrongType ("'key' must be <what>") when not.
+  bool Typed(bool ok, const char* key, const char* what) {
+    if (!ok) Fail(PageError::kWrongType, fmt::format("'{}' must be {}", key, what));
+    return ok;
+  }
+
   const json& object_;
   PageRequest* out_;
 };

@@ -61,13 +61,13 @@ class ViewerNode::Impl {
         client_(fmt::format("{}-{}", options_.name, getpid())),
         model_(client_, options_.prefix),
         participant_(DdsOptions(options_)),
-        state_reader_(Reader<idl::WorldStatePubSubType>(dds::Topic::kWorldState)),
-        clock_reader_(Reader<idl::ClockPubSubType>(dds::Topic::kClock)),
-        field_reader_(Reader<idl::SslFieldPubSubType>(dds::Topic::kSslField)),
-        camera_reader_(Reader<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)),
-        stats_reader_(Reader<idl::SensorStatsPubSubType>(dds::Topic::kStats)),
-        legged_reader_(Reader<idl::LeggedSceneInfoPubSubType>(dds::Topic::kLeggedScene)),
-        links_reader_(Reader<idl::LinkStatePubSubType>(dds::Topic::kRobotLinks)),
+        state_reader_(Reader(dds::Topic::kWorldState)),
+        clock_reader_(Reader(dds::Topic::kClock)),
+        field_reader_(Reader(dds::Topic::kSslField)),
+        camera_reader_(Reader(dds::Topic::kSslCamera)),
+        stats_reader_(Reader(dds::Topic::kStats)),
+        legged_reader_(Reader(dds::Topic::kLeggedScene)),
+        links_reader_(Reader(dds::Topic::kRobotLinks)),
         control_(participant_, client_, [this] { wakeup_.Notify(); }),
         rejects_("input") {
     viewer::WebServerOptions web;
@@ -330,13 +330,13 @@ class ViewerNode::Impl {
   viewer::ViewerModel model_;  // loop thread only
   Wakeup wakeup_;
   dds::Participant participant_;
-  std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> state_reader_;
-  std::unique_ptr<dds::Reader<idl::ClockPubSubType>> clock_reader_;
-  std::unique_ptr<dds::Reader<idl::SslFieldPubSubType>> field_reader_;
-  std::unique_ptr<dds::Reader<idl::CameraFramePubSubType>> camera_reader_;
-  std::unique_ptr<dds::Reader<idl::SensorStatsPubSubType>> stats_reader_;
-  std::unique_ptr<dds::Reader<idl::LeggedSceneInfoPubSubType>> legged_reader_;
-  std::unique_ptr<dds::Reader<idl::LinkStatePubSubType>> links_reader_;
+  dds::ReaderOf<dds::Topic::kWorldState> state_reader_;
+  dds::ReaderOf<dds::Topic::kClock> clock_reader_;
+  dds::ReaderOf<dds::Topic::kSslField> field_reader_;
+  dds::ReaderOf<dds::Topic::kSslCamera> camera_reader_;
+  dds::ReaderOf<dds::Topic::kStats> stats_reader_;
+  dds::ReaderOf<dds::Topic::kLeggedScene> legged_reader_;
+  dds::ReaderOf<dds::Topic::kRobotLinks> links_reader_;
   dds::ControlClient control_;
 
   std::vector<idl::WorldState> state_inbox_;

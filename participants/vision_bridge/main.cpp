@@ -13,7 +13,6 @@
 
 int main(int argc, char** argv) {
   turf::ParticipantMain participant(
-      "turf-vision-bridge",
       "turf-vision-bridge: turf's SSL cameras (DDS) out as SSL-Vision UDP packets (SSL_WrapperPacket)");
   turf::VisionBridgeOptions options;
   std::string clock = "run";

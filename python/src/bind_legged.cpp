@@ -1,6 +1,7 @@
 // turf._turf.LeggedSim: the legged kernel for Python (legged_sim.h).
 #include <pybind11/stl.h>
 
+#include "python/src/bind_kernel.h"
 #include "python/src/bind_publish.h"
 #include "python/src/bind_util.h"
 #include "python/src/legged_sim.h"
@@ -93,34 +94,21 @@ JointMode ModeOf(const std::string& mode) {
 
 void BindLegged(pyb::module_& m) {
   pyb::class_<LeggedSim> cls(m, "LeggedSim", "A legged world stepped in this process (see turf.Sim).");
-  cls.def(pyb::init([](const std::string& scene, std::optional<uint64_t> seed, const std::string& realism,
-                       std::optional<double> physics_step, std::optional<int> robots_per_team,
-                       std::optional<int> wall_segments) {
-            return std::make_unique<LeggedSim>(
-                SceneRequest{scene, seed, realism, physics_step, robots_per_team, wall_segments});
-          }),
-          arg("scene"), arg("seed") = pyb::none(), arg("realism") = "", arg("physics_step") = pyb::none(),
-          arg("robots_per_team") = pyb::none(), arg("wall_segments") = pyb::none())
-      .def(
-          "step",
-          [](LeggedSim& sim, const pyb::object& commands, int64_t n) {
-            std::vector<LeggedSim::RobotCommands> robots;
-            const std::vector<pyb::array_t<double>> keep = RobotArrays(sim, commands, &robots);
-            {
-              pyb::gil_scoped_release release;
-              sim.Step(robots, n);
-            }
-            return Observation(sim);
-          },
-          arg("commands") = pyb::none(), arg("n") = 1)
-      .def(
-          "check_commands",
-          [](LeggedSim& sim, const pyb::object& commands) {
-            std::vector<LeggedSim::RobotCommands> robots;
-            const std::vector<pyb::array_t<double>> keep = RobotArrays(sim, commands, &robots);
-            sim.CheckCommands(robots);
-          },
-          arg("commands"), "Raises TurfError for what step(commands) would refuse; changes nothing.")
+  BindConstructor(cls, arg("scene"));
+  BindCheckCommands<LeggedSim, LeggedSim::RobotCommands>(cls, RobotArrays);
+  BindKernelCommon(cls);
+  cls.def(
+         "step",
+         [](LeggedSim& sim, const pyb::object& commands, int64_t n) {
+           std::vector<LeggedSim::RobotCommands> robots;
+           const std::vector<pyb::array_t<double>> keep = RobotArrays(sim, commands, &robots);
+           {
+             pyb::gil_scoped_release release;
+             sim.Step(robots, n);
+           }
+           return Observation(sim);
+         },
+         arg("commands") = pyb::none(), arg("n") = 1)
       .def("observation", &Observation)
       .def(
           "joint_command",
@@ -151,19 +139,12 @@ void BindLegged(pyb::module_& m) {
           },
           arg("position"), arg("velocity") = std::array<double, 3>{0, 0, 0})
       .def(
-          "set_realism",
-          [](LeggedSim& sim, const std::string& preset, const pyb::object& values) {
-            sim.SetRealism(preset, RealismValues(values));
-          },
-          arg("preset") = "", arg("values") = pyb::none())
-      .def(
           "reset",
           [](LeggedSim& sim, std::optional<uint64_t> seed) {
             sim.Reset(seed);
             return Observation(sim);
           },
           arg("seed") = pyb::none())
-      .def("save", [](const LeggedSim& sim) { return pyb::bytes(sim.Save()); })
       .def(
           "restore",
           [](LeggedSim& sim, const pyb::bytes& snapshot) {
@@ -200,19 +181,12 @@ void BindLegged(pyb::module_& m) {
           },
           arg("robot"))
       .def_property_readonly("kind", [](const LeggedSim&) { return "legged"; })
-      .def_property_readonly("scene_name", [](const LeggedSim& s) { return s.kernel().scene().name; })
-      .def_property_readonly("seed", [](const LeggedSim& s) { return s.kernel().scene().seed; })
-      .def_property_readonly("step_seconds", [](const LeggedSim& s) { return s.kernel().world().step_ns() * 1e-9; })
-      .def_property_readonly("time", [](const LeggedSim& s) { return s.kernel().time_ns() * 1e-9; })
-      .def_property_readonly("frame", [](const LeggedSim& s) { return s.kernel().frame(); })
       .def_property_readonly("robot_count", &LeggedSim::robot_count)
-      .def_property_readonly("robot_names",
-                             [](const LeggedSim& s) {
-                               std::vector<std::string> names;
-                               for (const LeggedRobot& r : s.kernel().scene().robots) names.push_back(r.name);
-                               return names;
-                             })
-      .def_property_readonly("realism", [](const LeggedSim& s) { return RealismDict(s.kernel().realism()); });
+      .def_property_readonly("robot_names", [](const LeggedSim& s) {
+        std::vector<std::string> names;
+        for (const LeggedRobot& r : s.kernel().scene().robots) names.push_back(r.name);
+        return names;
+      });
   BindPublish(cls);
   m.attr("LEGGED_JOINT_COLUMNS") = pyb::make_tuple("q", "dq", "kp", "kd", "tau");
 }

@@ -1,6 +1,7 @@
 // turf._turf.SslSim: the SSL kernel for Python (ssl_sim.h).
 #include <pybind11/stl.h>
 
+#include "python/src/bind_kernel.h"
 #include "python/src/bind_publish.h"
 #include "python/src/bind_util.h"
 #include "python/src/sim_error.h"
@@ -90,35 +91,22 @@ pyb::dict FieldDict(const Scene& s) {
 
 void BindSsl(pyb::module_& m) {
   pyb::class_<SslSim> cls(m, "SslSim", "An SSL world stepped in this process (see turf.Sim).");
-  cls.def(pyb::init([](const std::string& scene, std::optional<uint64_t> seed, const std::string& realism,
-                       std::optional<double> physics_step, std::optional<int> robots_per_team,
-                       std::optional<int> wall_segments) {
-            return std::make_unique<SslSim>(
-                SceneRequest{scene, seed, realism, physics_step, robots_per_team, wall_segments});
-          }),
-          arg("scene") = "ssl_div_a", arg("seed") = pyb::none(), arg("realism") = "", arg("physics_step") = pyb::none(),
-          arg("robots_per_team") = pyb::none(), arg("wall_segments") = pyb::none())
-      .def(
-          "step",
-          [](pyb::object self, const pyb::object& commands, int64_t n) {
-            SslSim& sim = self.cast<SslSim&>();
-            std::vector<SslSim::TeamCommands> teams;
-            const std::vector<pyb::array_t<double>> keep = TeamArrays(sim, commands, &teams);
-            {
-              pyb::gil_scoped_release release;
-              sim.Step(teams, n);
-            }
-            return Observation(sim, self);
-          },
-          arg("commands") = pyb::none(), arg("n") = 1)
-      .def(
-          "check_commands",
-          [](SslSim& sim, const pyb::object& commands) {
-            std::vector<SslSim::TeamCommands> teams;
-            const std::vector<pyb::array_t<double>> keep = TeamArrays(sim, commands, &teams);
-            sim.CheckCommands(teams);
-          },
-          arg("commands"), "Raises TurfError for what step(commands) would refuse; changes nothing.")
+  BindConstructor(cls, arg("scene") = "ssl_div_a");
+  BindCheckCommands<SslSim, SslSim::TeamCommands>(cls, TeamArrays);
+  BindKernelCommon(cls);
+  cls.def(
+         "step",
+         [](pyb::object self, const pyb::object& commands, int64_t n) {
+           SslSim& sim = self.cast<SslSim&>();
+           std::vector<SslSim::TeamCommands> teams;
+           const std::vector<pyb::array_t<double>> keep = TeamArrays(sim, commands, &teams);
+           {
+             pyb::gil_scoped_release release;
+             sim.Step(teams, n);
+           }
+           return Observation(sim, self);
+         },
+         arg("commands") = pyb::none(), arg("n") = 1)
       .def("observation", [](pyb::object self) { return Observation(self.cast<SslSim&>(), self); })
       .def(
           "command",
@@ -162,12 +150,6 @@ void BindSsl(pyb::module_& m) {
           arg("team"), arg("id"), arg("x") = 0.0, arg("y") = 0.0, arg("orientation") = 0.0, arg("vx") = 0.0,
           arg("vy") = 0.0, arg("omega") = 0.0, arg("on_field") = true)
       .def(
-          "set_realism",
-          [](SslSim& sim, const std::string& preset, const pyb::object& values) {
-            sim.SetRealism(preset, RealismValues(values));
-          },
-          arg("preset") = "", arg("values") = pyb::none())
-      .def(
           "reset",
           [](pyb::object self, std::optional<uint64_t> seed) {
             SslSim& sim = self.cast<SslSim&>();
@@ -175,7 +157,6 @@ void BindSsl(pyb::module_& m) {
             return Observation(sim, self);
           },
           arg("seed") = pyb::none())
-      .def("save", [](const SslSim& sim) { return pyb::bytes(sim.Save()); })
       .def(
           "restore",
           [](pyb::object self, const pyb::bytes& snapshot) {
@@ -185,11 +166,6 @@ void BindSsl(pyb::module_& m) {
           },
           arg("snapshot"))
       .def_property_readonly("kind", [](const SslSim&) { return "ssl"; })
-      .def_property_readonly("scene_name", [](const SslSim& s) { return s.kernel().scene().name; })
-      .def_property_readonly("seed", [](const SslSim& s) { return s.kernel().scene().seed; })
-      .def_property_readonly("step_seconds", [](const SslSim& s) { return s.kernel().world().step_ns() * 1e-9; })
-      .def_property_readonly("time", [](const SslSim& s) { return s.kernel().time_ns() * 1e-9; })
-      .def_property_readonly("frame", [](const SslSim& s) { return s.kernel().frame(); })
       .def_property_readonly("robots_per_team", &SslSim::robots_per_team)
       .def_property_readonly("robot_count", &SslSim::robot_count)
       .def_property_readonly("robot_ids",
@@ -197,8 +173,7 @@ void BindSsl(pyb::module_& m) {
                                pyb::array_t<int32_t> a({s.robot_count(), 2}, s.robot_ids().data());
                                return a;
                              })
-      .def_property_readonly("field", [](const SslSim& s) { return FieldDict(s.kernel().scene()); })
-      .def_property_readonly("realism", [](const SslSim& s) { return RealismDict(s.kernel().realism()); });
+      .def_property_readonly("field", [](const SslSim& s) { return FieldDict(s.kernel().scene()); });
   BindPublish(cls);
   m.attr("SSL_COMMAND_COLUMNS") = pyb::make_tuple("vx", "vy", "omega", "kick_speed", "chip", "dribbler");
   m.attr("SSL_BALL_COLUMNS") = pyb::make_tuple("x", "y", "z", "vx", "vy", "vz");

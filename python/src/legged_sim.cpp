@@ -5,7 +5,7 @@
 
 namespace turf::py {
 
-LeggedSim::LeggedSim(const SceneRequest& request) : kernel_(std::make_unique<LeggedKernel>(LoadLegged(request))) {
+LeggedSim::LeggedSim(const SceneRequest& request) : KernelHost(std::make_unique<LeggedKernel>(LoadLegged(request))) {
   Refresh();
   for (const LeggedRobotState& r : truth_.robots) joint_names_.push_back(r.joint_names);
 }
@@ -77,25 +77,17 @@ void LeggedSim::PlaceBall(const std::array<double, 3>& position, const std::arra
 }
 
 void LeggedSim::SetRealism(const std::string& preset, const std::vector<std::pair<std::string, double>>& values) {
-  const SensorRealism realism = ChangedRealism(kernel_->realism(), preset, values);
-  if (std::string e = kernel_->SetRealism(realism); !e.empty()) Check(Error::kInvalidRealism, e);
+  ChangeRealism(preset, values);
   Refresh();
 }
 
 void LeggedSim::Reset(std::optional<uint64_t> seed) {
-  if (seed && *seed != kernel_->scene().seed) {
-    LeggedScene scene = kernel_->scene();
-    scene.seed = *seed;
-    scene.realism = kernel_->realism();
-    kernel_ = std::make_unique<LeggedKernel>(std::move(scene));
-  } else {
-    kernel_->Reset();
-  }
+  ResetKernel(seed);
   StateChanged(/*released=*/true);
 }
 
 void LeggedSim::Restore(const std::string& snapshot) {
-  if (std::string e = kernel_->Restore(snapshot); !e.empty()) Check(Error::kMalformed, "snapshot (" + e + ")");
+  RestoreKernel(snapshot);
   StateChanged();
 }
 

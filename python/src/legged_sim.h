@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "kernel/legged_kernel.h"
+#include "python/src/kernel_host.h"
 #include "python/src/publication.h"
 #include "python/src/scene_source.h"
 
@@ -25,11 +26,10 @@ namespace turf::py {
 
 inline constexpr int kJointColumns = 5;
 
-class LeggedSim {
+class LeggedSim : public KernelHost<LeggedKernel, LeggedPublication> {
  public:
   explicit LeggedSim(const SceneRequest& request);
 
-  const LeggedKernel& kernel() const { return *kernel_; }
   int robot_count() const { return kernel_->world().RobotCount(); }
   const std::vector<std::string>& joint_names(int robot) const;
   // The robot's index; throws SimError (unknown_robot).
@@ -47,16 +47,7 @@ class LeggedSim {
   void PlaceBall(const std::array<double, 3>& position, const std::array<double, 3>& velocity);
   void SetRealism(const std::string& preset, const std::vector<std::pair<std::string, double>>& values);
   void Reset(std::optional<uint64_t> seed);
-  std::string Save() const { return kernel_->Save(); }
   void Restore(const std::string& snapshot);
-
-  // The world's topics on a DDS domain (publication.h), as SslSim's.
-  void Publish(const PublishOptions& options) {
-    publication_.reset();
-    publication_ = std::make_unique<LeggedPublication>(options, *kernel_);
-  }
-  void Unpublish() { publication_.reset(); }
-  const LeggedPublication* publication() const { return publication_.get(); }
 
   const LeggedWorldState& measured() const { return measured_; }
   const LeggedWorldState& truth() const { return truth_; }
@@ -67,11 +58,9 @@ class LeggedSim {
   // After an input that changed the state outside a step (teleport, reset, restore).
   void StateChanged(bool released = false);
 
-  std::unique_ptr<LeggedKernel> kernel_;
   LeggedWorldState measured_, truth_;
   std::vector<std::vector<std::string>> joint_names_;
   std::vector<std::vector<JointCommand>> batch_;
-  std::unique_ptr<LeggedPublication> publication_;
 };
 
 }  // namespace turf::py

@@ -14,7 +14,7 @@ std::string RobotName(Team team, int id) { return std::string(TeamName(team)) + 
 }  // namespace
 
 SslSim::SslSim(const SceneRequest& request)
-    : request_(request), kernel_(std::make_unique<SslKernel>(LoadSsl(request))) {
+    : KernelHost(std::make_unique<SslKernel>(LoadSsl(request))), request_(request) {
   robots_.resize(static_cast<size_t>(robot_count()) * kRobotColumns);
   for (const RobotSnapshot& r : kernel_->state().robots) {
     robot_ids_.push_back(static_cast<int32_t>(r.team));
@@ -77,25 +77,17 @@ void SslSim::TeleportRobot(const RobotTeleport& teleport) {
 }
 
 void SslSim::SetRealism(const std::string& preset, const std::vector<std::pair<std::string, double>>& values) {
-  const SensorRealism realism = ChangedRealism(kernel_->realism(), preset, values);
-  if (std::string e = kernel_->SetRealism(realism); !e.empty()) Check(Error::kInvalidRealism, e);
+  ChangeRealism(preset, values);
 }
 
 void SslSim::Reset(std::optional<uint64_t> seed) {
-  if (seed && *seed != kernel_->scene().seed) {
-    Scene scene = kernel_->scene();
-    scene.seed = *seed;
-    scene.realism = kernel_->realism();
-    kernel_ = std::make_unique<SslKernel>(std::move(scene));
-  } else {
-    kernel_->Reset();
-  }
+  ResetKernel(seed);
   ClearCameras();
   StateChanged();
 }
 
 void SslSim::Restore(const std::string& snapshot) {
-  if (std::string e = kernel_->Restore(snapshot); !e.empty()) Check(Error::kMalformed, "snapshot (" + e + ")");
+  RestoreKernel(snapshot);
   ClearCameras();
   StateChanged();
 }

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "kernel/ssl_kernel.h"
+#include "python/src/kernel_host.h"
 #include "python/src/publication.h"
 #include "python/src/scene_source.h"
 
@@ -32,11 +33,10 @@ inline constexpr int kRobotDetectionColumns =
     9;                                   // camera, frame, capture_time, team, id, x, y, orientation, confidence
 inline constexpr int kFrameColumns = 4;  // camera, frame, capture_time, sent_time
 
-class SslSim {
+class SslSim : public KernelHost<SslKernel, SslPublication> {
  public:
   explicit SslSim(const SceneRequest& request);
 
-  const SslKernel& kernel() const { return *kernel_; }
   int robots_per_team() const { return kernel_->scene().robots_per_team; }
   int robot_count() const { return static_cast<int>(kernel_->state().robots.size()); }
 
@@ -57,17 +57,7 @@ class SslSim {
   void SetRealism(const std::string& preset, const std::vector<std::pair<std::string, double>>& values);
   // Back to the scene's start; a new seed rebuilds the kernel (the realism is kept).
   void Reset(std::optional<uint64_t> seed);
-  std::string Save() const { return kernel_->Save(); }
   void Restore(const std::string& snapshot);
-
-  // The world's topics on a DDS domain from now on (publication.h), replacing an earlier publication; Unpublish
-  // ends it. publication() is null while not publishing.
-  void Publish(const PublishOptions& options) {
-    publication_.reset();
-    publication_ = std::make_unique<SslPublication>(options, *kernel_);
-  }
-  void Unpublish() { publication_.reset(); }
-  const SslPublication* publication() const { return publication_.get(); }
 
   // Outputs, refreshed by every input and step. ball/robots have a fixed size (views stay valid).
   const double* ball() const { return ball_.data(); }
@@ -87,13 +77,11 @@ class SslSim {
   void StateChanged();
 
   SceneRequest request_;
-  std::unique_ptr<SslKernel> kernel_;
   std::array<double, kBallColumns> ball_{};
   std::vector<double> robots_;
   std::vector<int32_t> robot_ids_;
   std::vector<double> ball_detections_, robot_detections_, frames_;
   std::vector<RobotCommand> batch_;
-  std::unique_ptr<SslPublication> publication_;
 };
 
 }  // namespace turf::py

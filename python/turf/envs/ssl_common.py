@@ -2,12 +2,27 @@
 
 import numpy as np
 
-from .. import _turf
+from .. import Sim, _turf
 from ..errors import TurfError
+from .sim_env import SimEnv
+from .timing import StepClock
 
 ROBOT_FEATURES = 7  # x, y, cos(yaw), sin(yaw), vx, vy, omega
 POSITION_LIMIT = 8.0  # m: beyond any division's walls
 SPEED_LIMIT = 40.0  # m/s, rad/s: beyond any robot's or ball's (observations are clipped to the bounds)
+
+
+class SslEnv(SimEnv):
+    """An SSL environment: its Sim, an environment step of 1/60 s (self.clock) and the field (self.field)."""
+    metadata = {"render_modes": [], "render_fps": 60}
+
+    def _attach_ssl(self, scene, seed, realism, physics_step, robots_per_team, wall_segments, max_episode_steps,
+                    render_mode):
+        sim = Sim(scene, seed=seed, realism=realism, physics_step=physics_step, robots_per_team=robots_per_team,
+                  wall_segments=wall_segments)
+        self._attach(sim, max_episode_steps, render_mode)
+        self.clock = StepClock(1 / 60, self.sim.step_seconds)
+        self.field = Field(self.sim)
 
 
 def robot_rows(sim, team, on_field_only=True):

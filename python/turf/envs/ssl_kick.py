@@ -12,25 +12,17 @@ ball leaves the field. Terminated on a goal or the ball out; truncated after max
 
 import numpy as np
 
-from .. import FAST_SSL_STEP, Sim
+from .. import FAST_SSL_STEP
 from . import ssl_common as c
-from .spaces import Box, EnvBase
-from .timing import StepClock
+from .spaces import Box
 
 
-class SslGoToBallKickEnv(EnvBase):
-    metadata = {"render_modes": [], "render_fps": 60}
-
+class SslGoToBallKickEnv(c.SslEnv):
     def __init__(self, scene="ssl_div_a", realism="ideal", seed=1, max_episode_steps=600, render_mode=None,
                  physics_step=FAST_SSL_STEP, wall_segments=0, robots_per_team=1):
-        self.render_mode = render_mode
-        self.max_episode_steps = max_episode_steps
-        self.sim = Sim(scene, seed=seed, realism=realism, physics_step=physics_step, robots_per_team=robots_per_team,
-                       wall_segments=wall_segments)
-        self._prepare()
-        self.clock = StepClock(1 / 60, self.sim.step_seconds)
+        self._attach_ssl(scene, seed, realism, physics_step, robots_per_team, wall_segments, max_episode_steps,
+                         render_mode)
         self.commands = c.Commands(self.sim, [0])
-        self.field = c.Field(self.sim)
         limit = np.array([c.POSITION_LIMIT] * 2 + [1, 1] + [c.SPEED_LIMIT] * 3 + [c.POSITION_LIMIT] * 2
                          + [c.SPEED_LIMIT] * 2 + [1], dtype=np.float32)
         low = -limit
@@ -38,7 +30,7 @@ class SslGoToBallKickEnv(EnvBase):
         self.observation_space = Box(low, limit, dtype=np.float32)
         self.action_space = Box(-1.0, 1.0, (4,), dtype=np.float32)
 
-    def _prepare(self):
+    def _take_start(self):
         """Every robot but blue 0 off the field, kept as the snapshot each reset starts from."""
         self.sim.reset()
         for team, id_ in self.sim.robot_ids:
@@ -62,10 +54,7 @@ class SslGoToBallKickEnv(EnvBase):
 
     def reset(self, *, seed=None, options=None):
         super().reset(seed=seed)
-        if seed is not None and seed != self.sim.seed:
-            self.sim.reset(seed=seed)
-            self._prepare()
-        self.sim.restore(self.start)
+        self._restart(seed)
         f = self.sim.field
         rng = self.np_random
         hx, hy = f["length"] / 2 - 0.5, f["width"] / 2 - 0.5

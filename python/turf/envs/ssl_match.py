@@ -11,29 +11,21 @@ goal; truncated after max_episode_steps (default 60 s of play)."""
 
 import numpy as np
 
-from .. import FAST_SSL_STEP, Sim
+from .. import FAST_SSL_STEP
 from . import ssl_common as c
-from .spaces import Box, Dict, EnvBase
-from .timing import StepClock
+from .spaces import Box, Dict
 
 TEAMS = ("blue", "yellow")
 
 
-class SslMatchEnv(EnvBase):
-    metadata = {"render_modes": [], "render_fps": 60}
-
+class SslMatchEnv(c.SslEnv):
     def __init__(self, scene="ssl_div_a", realism="realistic", seed=1, max_episode_steps=3600, render_mode=None,
                  physics_step=FAST_SSL_STEP, wall_segments=0, robots_per_team=11):
-        self.render_mode = render_mode
-        self.max_episode_steps = max_episode_steps
-        self.sim = Sim(scene, seed=seed, realism=realism, physics_step=physics_step, robots_per_team=robots_per_team,
-                       wall_segments=wall_segments)
-        self.start = self.sim.save()
+        self._attach_ssl(scene, seed, realism, physics_step, robots_per_team, wall_segments, max_episode_steps,
+                         render_mode)
         self.rows = {t: c.robot_rows(self.sim, t) for t in TEAMS}
         self.ids = {t: self.sim.robot_ids[self.rows[t], 1] for t in TEAMS}
-        self.clock = StepClock(1 / 60, self.sim.step_seconds)
         self.commands = {t: c.Commands(self.sim, self.ids[t]) for t in TEAMS}
-        self.field = c.Field(self.sim)
         ball_high = np.full(6, c.SPEED_LIMIT, dtype=np.float32)
         spaces = {"ball": Box(-ball_high, ball_high, dtype=np.float32)}
         for t in TEAMS:
@@ -50,10 +42,7 @@ class SslMatchEnv(EnvBase):
 
     def reset(self, *, seed=None, options=None):
         super().reset(seed=seed)
-        if seed is not None and seed != self.sim.seed:
-            self.sim.reset(seed=seed)
-            self.start = self.sim.save()
-        o = self.sim.restore(self.start)
+        o = self._restart(seed)
         self.clock.reset()
         self.steps = 0
         return self._obs(o), {"time": o["time"]}

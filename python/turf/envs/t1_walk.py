@@ -17,14 +17,15 @@ import numpy as np
 
 from .. import Sim
 from .ssl_common import as_action
-from .spaces import Box, EnvBase
+from .sim_env import SimEnv
+from .spaces import Box
 
 ACTION_SCALE = 0.5  # rad
 FALLEN_HEIGHT = 0.45  # m
 LIMIT = 100.0  # observation bound (velocities are clipped to it)
 
 
-class T1WalkEnv(EnvBase):
+class T1WalkEnv(SimEnv):
     metadata = {"render_modes": [], "render_fps": 50}
 
     def __init__(self, task="walk", scene="t1_stand", realism=None, seed=1, max_episode_steps=1000,
@@ -32,12 +33,9 @@ class T1WalkEnv(EnvBase):
         if task not in ("stand", "walk"):
             raise ValueError("task: 'stand' or 'walk'")
         self.task = task
-        self.render_mode = render_mode
-        self.max_episode_steps = max_episode_steps
         self.physics_steps = physics_steps
-        self.sim = Sim(scene, seed=seed, realism=realism)
+        self._attach(Sim(scene, seed=seed, realism=realism), max_episode_steps, render_mode)
         self.robot = 0
-        self.start = self.sim.save()
         start = self.sim.start_joints(self.robot)
         self.q0 = np.nan_to_num(start[:, 0])
         self.kp = np.nan_to_num(start[:, 1], nan=50.0)
@@ -70,10 +68,7 @@ class T1WalkEnv(EnvBase):
 
     def reset(self, *, seed=None, options=None):
         super().reset(seed=seed)
-        if seed is not None and seed != self.sim.seed:
-            self.sim.reset(seed=seed)
-            self.start = self.sim.save()
-        o = self.sim.restore(self.start)
+        o = self._restart(seed)
         pos = self._base(o)[0]
         self.target = pos[:2].copy()
         if self.task == "walk":
