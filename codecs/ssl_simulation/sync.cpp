@@ -27,17 +27,9 @@ void CheckSimStep(const ws::SimulationSyncRequest& in, double step_s, Problems* 
   *sim_step_ns = FloatSecondsToNanoseconds(in.sim_step());
 }
 
-}  // namespace
-
-SyncDecode DecodeSyncRequest(const uint8_t* data, size_t size, const ControlContext& context, double step_s) {
+// A request that parsed.
+SyncDecode ConvertSyncRequest(const ws::SimulationSyncRequest& message, const ControlContext& context, double step_s) {
   SyncDecode out;
-  ws::SimulationSyncRequest message;
-  std::string why;
-  out.error = Parse(data, size, &message, &why);
-  if (out.error != DecodeError::kOk) {
-    out.errors.push_back(MakeError(out.error, why));
-    return out;
-  }
   Problems p;
   CheckSimStep(message, step_s, &p, &out.sim_step_ns);
   ControlContext sync_context = context;
@@ -67,6 +59,16 @@ SyncDecode DecodeSyncRequest(const uint8_t* data, size_t size, const ControlCont
     out.robots.wire_ids.clear();
   }
   return out;
+}
+
+}  // namespace
+
+// On ParseThen's stack arena, as the team and control ports: the request's dozens of nested messages cost no heap
+// allocation each.
+SyncDecode DecodeSyncRequest(const uint8_t* data, size_t size, const ControlContext& context, double step_s) {
+  return ParseThen<ws::SimulationSyncRequest, SyncDecode>(data, size, [&](const ws::SimulationSyncRequest& message) {
+    return ConvertSyncRequest(message, context, step_s);
+  });
 }
 
 void FillSyncResponse(const std::vector<idl::CameraFrame>& frames, const idl::SslField& field,
