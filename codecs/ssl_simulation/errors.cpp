@@ -100,8 +100,9 @@ void PushPresent(const pb::Message& message, std::vector<const pb::Message*>* to
   }
   for (int i = 0; i < d->field_count(); ++i) {
     const pb::FieldDescriptor* f = d->field(i);
-    if (f->cpp_type() != pb::FieldDescriptor::CPPTYPE_MESSAGE || IsAny(f)) continue;
-    if (f->is_repeated() || reflection->HasField(message, f)) push(f);
+    if (f->cpp_type() != pb::FieldDescriptor::CPPTYPE_MESSAGE) continue;
+    if (f->is_repeated() ? reflection->FieldSize(message, f) == 0 : !reflection->HasField(message, f)) continue;
+    if (!IsAny(f)) push(f);  // the name is compared only for a field that is there
   }
 }
 

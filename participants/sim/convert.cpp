@@ -96,7 +96,8 @@ void ToIdl(const CameraFrame& f, idl::CameraFrame* out) {
     idl::DetectedRobot& o = out->robots()[i];
     o.team(ToIdl(r.team));
     o.id(static_cast<uint8_t>(r.id));
-    o.position(V2(r.x, r.y));
+    o.position().x(r.x);  // in place, as SetV3
+    o.position().y(r.y);
     o.orientation(r.orientation);
     o.height(r.height);
     o.confidence(r.confidence);
