@@ -107,7 +107,8 @@ std::vector<uint8_t> EncodeSyncResponse(const std::vector<idl::CameraFrame>& fra
   pb::Arena arena(ArenaOnStack(block, sizeof block));
   ws::SimulationSyncResponse& response = *pb::Arena::CreateMessage<ws::SimulationSyncResponse>(&arena);
   FillSyncResponse(frames, field, request, contacts, extra, &response);
-  if (response.ByteSizeLong() > kMaxResponseBytes) {
+  size_t size = response.ByteSizeLong();  // also caches every nested message's size for the serialisation below
+  if (size > kMaxResponseBytes) {
     // Leave out the oldest detections; the error itself needs room too.
     int dropped = 0;
     auto* detections = response.mutable_detection();
@@ -118,9 +119,11 @@ std::vector<uint8_t> EncodeSyncResponse(const std::vector<idl::CameraFrame>& fra
     ToWire({kSyncResponseTooLarge, std::to_string(dropped) + " oldest detection frames left out: the response must "
                                                              "fit one UDP datagram (use a shorter sim_step)"},
            response.mutable_robot_control_response()->add_errors());
+    size = response.ByteSizeLong();
   }
-  std::vector<uint8_t> bytes(response.ByteSizeLong());
-  response.SerializeToArray(bytes.data(), static_cast<int>(bytes.size()));
+  // One pass over the detections for the sizes above, one to write (SerializeToArray would size them again).
+  std::vector<uint8_t> bytes(size);
+  response.SerializeWithCachedSizesToArray(bytes.data());
   return bytes;
 }
 
