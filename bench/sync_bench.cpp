@@ -14,7 +14,8 @@
 //        wake-ups cost on this machine, whoever serves them).
 // All run side by side and take one request each in turn, so load from elsewhere falls on every row alike.
 // Prints mean, p50 and p99 per request, the overhead beyond physics (each row minus (c)) and beyond the UDP floor
-// (each row minus (u)). bench/run.sh sync.
+// (each row minus (u)), then the 10th and 25th percentiles and the medians of the per-round differences to (c) and
+// (u), which load from elsewhere disturbs less. bench/run.sh sync.
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
@@ -63,6 +64,13 @@ struct Result {
     std::vector<double> v = us;
     std::sort(v.begin(), v.end());
     return v[std::min(v.size() - 1, static_cast<size_t>(p * v.size()))];
+  }
+  // The median over rounds of (this row's request - `other`'s in the same round): the rows of a round run back to
+  // back, so load that comes and goes on a shared machine falls on both sides of most differences.
+  double PairedMedian(const Result& other) const {
+    Result d;
+    for (size_t i = 0; i < std::min(us.size(), other.us.size()); ++i) d.us.push_back(us[i] - other.us[i]);
+    return d.Percentile(0.5);
   }
 };
 
@@ -375,5 +383,19 @@ int main(int argc, char** argv) {
   row("(b') node and front-end on one MemoryBus, no DDS at all", memory, true);
   row("(c) physics alone (SslKernel::Step)", physics, false);
   row("(u) UDP floor: (c) served over UDP by a bare thread", udp, true);
+  // On a loaded machine the means and medians above carry other processes' time slices; the lower quantiles and
+  // the paired differences much less so.
+  std::printf(
+      "\n| path | p10 us | p25 us | beyond physics (c), median of paired differences us | beyond (u), same us |\n");
+  std::printf("| --- | --- | --- | --- | --- |\n");
+  auto low = [&](const char* name, const Result& r) {
+    std::printf("| %s | %.0f | %.0f | %.0f | %.0f |\n", name, r.Percentile(0.1), r.Percentile(0.25),
+                r.PairedMedian(physics), r.PairedMedian(udp));
+  };
+  low("(a)", dds);
+  low("(b)", local);
+  low("(b')", memory);
+  low("(c)", physics);
+  low("(u)", udp);
   return 0;
 }

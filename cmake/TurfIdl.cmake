@@ -21,7 +21,11 @@ function(turf_idl_library target)
   endforeach()
   add_custom_command(
     OUTPUT ${sources}
-    COMMAND ${FASTDDSGEN} -replace -d ${out_dir} -I ${CMAKE_CURRENT_SOURCE_DIR} ${abs_idls}
+    # fastddsgen preprocesses each IDL into java.io.tmpdir under the IDL's name: a directory per library keeps two
+    # builds on one machine (or two libraries of one build) from overwriting each other's files.
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_CURRENT_BINARY_DIR}/fastddsgen_tmp_${target}
+    COMMAND ${CMAKE_COMMAND} -E env JAVA_TOOL_OPTIONS=-Djava.io.tmpdir=${CMAKE_CURRENT_BINARY_DIR}/fastddsgen_tmp_${target}
+            ${FASTDDSGEN} -replace -d ${out_dir} -I ${CMAKE_CURRENT_SOURCE_DIR} ${abs_idls}
     DEPENDS ${abs_idls}
     COMMENT "fastddsgen ${ARG_IDLS}"
     VERBATIM)

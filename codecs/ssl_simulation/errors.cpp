@@ -78,28 +78,45 @@ void CollectUnknown(const pb::Message& message, const std::string& path, std::ve
   }
 }
 
+bool IsAny(const pb::FieldDescriptor* f) { return f->message_type()->full_name() == "google.protobuf.Any"; }
+
+// Pushes the sub-messages of `message` that are present, as ListFields would find them, without ListFields' list
+// and sort: a message field is present if repeated (each element) or set. A message with extension ranges takes
+// ListFields, which also lists the extensions set.
+void PushPresent(const pb::Message& message, std::vector<const pb::Message*>* todo) {
+  const pb::Descriptor* d = message.GetDescriptor();
+  const pb::Reflection* reflection = message.GetReflection();
+  auto push = [&](const pb::FieldDescriptor* f) {
+    if (!f->is_repeated()) return todo->push_back(&reflection->GetMessage(message, f));
+    for (int i = 0; i < reflection->FieldSize(message, f); ++i)
+      todo->push_back(&reflection->GetRepeatedMessage(message, f, i));
+  };
+  if (d->extension_range_count() > 0) {
+    std::vector<const pb::FieldDescriptor*> fields;
+    reflection->ListFields(message, &fields);
+    for (const pb::FieldDescriptor* f : fields)
+      if (f->cpp_type() == pb::FieldDescriptor::CPPTYPE_MESSAGE && !IsAny(f)) push(f);
+    return;
+  }
+  for (int i = 0; i < d->field_count(); ++i) {
+    const pb::FieldDescriptor* f = d->field(i);
+    if (f->cpp_type() != pb::FieldDescriptor::CPPTYPE_MESSAGE) continue;
+    if (f->is_repeated() ? reflection->FieldSize(message, f) == 0 : !reflection->HasField(message, f)) continue;
+    if (!IsAny(f)) push(f);  // the name is compared only for a field that is there
+  }
+}
+
 // CollectUnknown's walk without building paths: unknown fields are rare, and the paths of every nested message
-// cost more than the rest of decoding a sync request. Iterative, with one field list reused for every message.
+// cost more than the rest of decoding a sync request. Iterative, with one list per thread reused for every call.
 bool AnyUnknown(const pb::Message& root) {
-  std::vector<const pb::Message*> todo{&root};
-  std::vector<const pb::FieldDescriptor*> fields;
+  thread_local std::vector<const pb::Message*> todo;
+  todo.clear();
+  todo.push_back(&root);
   while (!todo.empty()) {
     const pb::Message& message = *todo.back();
     todo.pop_back();
-    const pb::Reflection* reflection = message.GetReflection();
-    if (reflection->GetUnknownFields(message).field_count() > 0) return true;
-    fields.clear();
-    reflection->ListFields(message, &fields);
-    for (const pb::FieldDescriptor* f : fields) {
-      if (f->cpp_type() != pb::FieldDescriptor::CPPTYPE_MESSAGE) continue;
-      if (f->message_type()->full_name() == "google.protobuf.Any") continue;
-      if (!f->is_repeated()) {
-        todo.push_back(&reflection->GetMessage(message, f));
-        continue;
-      }
-      for (int i = 0; i < reflection->FieldSize(message, f); ++i)
-        todo.push_back(&reflection->GetRepeatedMessage(message, f, i));
-    }
+    if (message.GetReflection()->GetUnknownFields(message).field_count() > 0) return true;
+    PushPresent(message, &todo);
   }
   return false;
 }

@@ -27,17 +27,9 @@ void CheckSimStep(const ws::SimulationSyncRequest& in, double step_s, Problems* 
   *sim_step_ns = FloatSecondsToNanoseconds(in.sim_step());
 }
 
-}  // namespace
-
-SyncDecode DecodeSyncRequest(const uint8_t* data, size_t size, const ControlContext& context, double step_s) {
+// A request that parsed.
+SyncDecode ConvertSyncRequest(const ws::SimulationSyncRequest& message, const ControlContext& context, double step_s) {
   SyncDecode out;
-  ws::SimulationSyncRequest message;
-  std::string why;
-  out.error = Parse(data, size, &message, &why);
-  if (out.error != DecodeError::kOk) {
-    out.errors.push_back(MakeError(out.error, why));
-    return out;
-  }
   Problems p;
   CheckSimStep(message, step_s, &p, &out.sim_step_ns);
   ControlContext sync_context = context;
@@ -67,6 +59,16 @@ SyncDecode DecodeSyncRequest(const uint8_t* data, size_t size, const ControlCont
     out.robots.wire_ids.clear();
   }
   return out;
+}
+
+}  // namespace
+
+// On ParseThen's stack arena, as the team and control ports: the request's dozens of nested messages cost no heap
+// allocation each.
+SyncDecode DecodeSyncRequest(const uint8_t* data, size_t size, const ControlContext& context, double step_s) {
+  return ParseThen<ws::SimulationSyncRequest, SyncDecode>(data, size, [&](const ws::SimulationSyncRequest& message) {
+    return ConvertSyncRequest(message, context, step_s);
+  });
 }
 
 void FillSyncResponse(const std::vector<idl::CameraFrame>& frames, const idl::SslField& field,
@@ -105,7 +107,8 @@ std::vector<uint8_t> EncodeSyncResponse(const std::vector<idl::CameraFrame>& fra
   pb::Arena arena(ArenaOnStack(block, sizeof block));
   ws::SimulationSyncResponse& response = *pb::Arena::CreateMessage<ws::SimulationSyncResponse>(&arena);
   FillSyncResponse(frames, field, request, contacts, extra, &response);
-  if (response.ByteSizeLong() > kMaxResponseBytes) {
+  size_t size = response.ByteSizeLong();  // also caches every nested message's size for the serialisation below
+  if (size > kMaxResponseBytes) {
     // Leave out the oldest detections; the error itself needs room too.
     int dropped = 0;
     auto* detections = response.mutable_detection();
@@ -116,9 +119,11 @@ std::vector<uint8_t> EncodeSyncResponse(const std::vector<idl::CameraFrame>& fra
     ToWire({kSyncResponseTooLarge, std::to_string(dropped) + " oldest detection frames left out: the response must "
                                                              "fit one UDP datagram (use a shorter sim_step)"},
            response.mutable_robot_control_response()->add_errors());
+    size = response.ByteSizeLong();
   }
-  std::vector<uint8_t> bytes(response.ByteSizeLong());
-  response.SerializeToArray(bytes.data(), static_cast<int>(bytes.size()));
+  // One pass over the detections for the sizes above, one to write (SerializeToArray would size them again).
+  std::vector<uint8_t> bytes(size);
+  response.SerializeWithCachedSizesToArray(bytes.data());
   return bytes;
 }
 

@@ -29,9 +29,12 @@ class AppliedInputsLog {
  public:
   explicit AppliedInputsLog(dds::Bus& bus);
 
-  // One sample taken, before it is applied.
+  // One sample taken, before it is applied. With no reader of the topic matched (on any bus) the sample is not
+  // serialised and the poll's record not written: it would reach no one (the topic is volatile), and a sync request
+  // saves the work. The record's number is counted all the same.
   template <class PubSub>
   void Took(const dds::TopicDef<PubSub>& topic, const dds::SampleOf<PubSub>& sample) {
+    if (!Read()) return;
     std::vector<uint8_t> cdr;
     if (ToCdr<PubSub>(sample, &cdr)) Took(topic.info().suffix, std::move(cdr));
   }
@@ -40,9 +43,13 @@ class AppliedInputsLog {
   void Flush(uint64_t step, int64_t sim_time_ns);
 
  private:
+  // True if a reader is matched; else the poll's record is left out.
+  bool Read();
+
   std::unique_ptr<dds::Writer<idl::AppliedInputsPubSubType>> writer_;
   idl::AppliedInputs pending_;
   uint64_t number_ = 0;
+  bool unread_ = false;  // this poll took a sample while no reader was matched
 };
 
 // The reading side: a recording's AppliedInputs samples, in sequence order, handed out at their steps.

@@ -22,6 +22,15 @@ idl::Vec3 V3(const Vec3& v) {
 
 Vec3 FromV3(const idl::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
+// In place: the generated types' constructors, assignments and destructors are calls of their own (a world state at
+// 100 Hz has ~100 of these vectors).
+void SetV3(double x, double y, double z, idl::Vec3* out) {
+  out->x(x);
+  out->y(y);
+  out->z(z);
+}
+void SetV3(const Vec3& v, idl::Vec3* out) { SetV3(v.x, v.y, v.z, out); }
+
 constexpr std::pair<idl::MoveKind, MoveKind> kMoveKinds[] = {{idl::MOVE_NONE, MoveKind::kNone},
                                                              {idl::MOVE_LOCAL_VELOCITY, MoveKind::kLocalVelocity},
                                                              {idl::MOVE_GLOBAL_VELOCITY, MoveKind::kGlobalVelocity},
@@ -49,9 +58,9 @@ bool FromIdl(idl::Team in, Team* out) {
 void ToIdl(const WorldSnapshot& s, idl::WorldState* out) {
   out->sim_time_ns(s.time_ns);
   out->frame(s.frame);
-  out->ball().position(V3(s.ball.position));
-  out->ball().velocity(V3(s.ball.velocity));
-  out->ball().angular_velocity(V3(s.ball.angular_velocity));
+  SetV3(s.ball.position, &out->ball().position());
+  SetV3(s.ball.velocity, &out->ball().velocity());
+  SetV3(s.ball.angular_velocity, &out->ball().angular_velocity());
   out->robots().resize(s.robots.size());
   for (size_t i = 0; i < s.robots.size(); ++i) {
     const RobotSnapshot& r = s.robots[i];
@@ -59,16 +68,15 @@ void ToIdl(const WorldSnapshot& s, idl::WorldState* out) {
     o.team(ToIdl(r.team));
     o.id(static_cast<uint8_t>(r.id));
     o.on_field(r.on_field);
-    o.position(V3({r.x, r.y, 0.0}));
-    idl::Quat q;
+    SetV3(r.x, r.y, 0.0, &o.position());
+    idl::Quat& q = o.orientation();
     q.w(std::cos(r.yaw / 2));
     q.x(0.0);
     q.y(0.0);
     q.z(std::sin(r.yaw / 2));
-    o.orientation(q);
     o.yaw(r.yaw);
-    o.linear_velocity(V3({r.vx, r.vy, 0.0}));
-    o.angular_velocity(V3({0.0, 0.0, r.omega}));
+    SetV3(r.vx, r.vy, 0.0, &o.linear_velocity());
+    SetV3(0.0, 0.0, r.omega, &o.angular_velocity());
   }
 }
 
@@ -79,7 +87,7 @@ void ToIdl(const CameraFrame& f, idl::CameraFrame* out) {
   out->sent_time_ns(f.sent_time_ns);
   out->balls().resize(f.balls.size());
   for (size_t i = 0; i < f.balls.size(); ++i) {
-    out->balls()[i].position(V3(f.balls[i].position));
+    SetV3(f.balls[i].position, &out->balls()[i].position());
     out->balls()[i].confidence(f.balls[i].confidence);
   }
   out->robots().resize(f.robots.size());
@@ -88,7 +96,8 @@ void ToIdl(const CameraFrame& f, idl::CameraFrame* out) {
     idl::DetectedRobot& o = out->robots()[i];
     o.team(ToIdl(r.team));
     o.id(static_cast<uint8_t>(r.id));
-    o.position(V2(r.x, r.y));
+    o.position().x(r.x);  // in place, as SetV3
+    o.position().y(r.y);
     o.orientation(r.orientation);
     o.height(r.height);
     o.confidence(r.confidence);

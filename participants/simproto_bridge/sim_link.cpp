@@ -60,7 +60,9 @@ class SimLink::Impl {
     PumpLocked();
     const uint64_t first = frames_received_ - frames_.size();  // arrival number of frames_.front()
     std::vector<idl::CameraFrame> out;
-    for (uint64_t i = std::max(cursor, first); i < frames_received_; ++i) out.push_back(frames_[i - first]);
+    const uint64_t from = std::max(cursor, first);
+    out.reserve(frames_received_ > from ? frames_received_ - from : 0);
+    for (uint64_t i = from; i < frames_received_; ++i) out.push_back(frames_[i - first]);
     return out;
   }
 

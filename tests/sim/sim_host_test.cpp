@@ -4,6 +4,7 @@
 // process would. Waits are for conditions, with deadlines.
 #include <gtest/gtest.h>
 #include <turf/idl/ClockPubSubTypes.h>
+#include <turf/idl/SslVisionPubSubTypes.h>
 #include <turf/idl/WorldStatePubSubTypes.h>
 
 #include <chrono>
@@ -27,6 +28,7 @@
 #include "tests/simspark/agent_client.h"
 #include "tests/support/in_process.h"
 #include "tests/support/process.h"
+#include "tests/support/wake_wait.h"
 #include "tests/support/world_observer.h"
 
 namespace turf {
@@ -154,6 +156,40 @@ TEST(SimHost, SyncRequestsOverUdpStepTheInProcessNodeAndARemoteParticipantSeesIt
   const SimprotoBridgeStats stats = h.host.node().simproto()->Stats();
   EXPECT_EQ(stats.rejected, 0u);
   EXPECT_EQ(stats.commands, 2u * kRequests);
+}
+
+// turf-sim holds back its durable DDS samples (world state, clock, replies) while no DDS reader is matched
+// (dds/participant.cpp: a sync request does not pay for serialising them); a participant that joins afterwards, with
+// the simulation standing still in lockstep, still gets the state and clock the last step reached and the field.
+TEST(SimHost, ARemoteParticipantJoiningAfterSyncRequestsGetsTheLastStateClockAndField) {
+  const dds::ParticipantOptions domain = test::UniqueDds("late", "host", 42);
+  Host h(domain);
+  Team team;
+  ASSERT_TRUE(WaitReady(team, h.control));
+  constexpr int kRequests = 6;  // 100 ms: 50 physics steps of 2 ms
+  for (int i = 0; i < kRequests; ++i) {
+    ws::SimulationSyncRequest request;
+    request.set_sim_step(1.0f / 60.0f);
+    simproto::test::AddLocal(request.mutable_robot_control(), 0, 0.5f);
+    ws::SimulationSyncResponse response;
+    ASSERT_TRUE(team.Ask(h.sync, request, &response));
+    ASSERT_EQ(response.robot_control_response().errors_size(), 0) << response.DebugString();
+  }
+  ASSERT_EQ(h.host.node().node().Stats().frame, 50u);
+
+  test::WorldObserver late(domain);
+  EXPECT_TRUE(late.Wait([](const idl::WorldState& s, const idl::Clock& c) {
+    return s.frame() == 50u && c.frame() == 50u;
+  })) << "state frame "
+      << late.state().frame() << ", clock frame " << late.clock().frame();
+  EXPECT_EQ(late.clock().mode(), idl::TIME_LOCKSTEP);
+  dds::Participant field_reader(domain);
+  test::WakeWait woken;
+  auto field = field_reader.MakeReader(dds::Topic::kSslField, [&] { woken.Wake(); });
+  std::vector<idl::SslField> fields;
+  EXPECT_TRUE(woken.Until(SteadyClock::now() + 15s, [&] { return field->Take(&fields); }));
+  ASSERT_FALSE(fields.empty());
+  EXPECT_EQ(fields.back().robots_per_team(), 2);
 }
 
 // A legged scene with SimSpark agents served in turf-sim's process (turf-sim --simspark): an agent in sync mode
