@@ -588,10 +588,10 @@ bool LeggedWorld::StagePhysics() {
 // At the start of each ODE step every limited joint's stop is tested. An ODE
 // step starts with the first physics step after joint commands came in (a
 // SimSpark cycle: the bridge applies the agents' commands, then steps 20 ms),
-// else `step` after the last one. Until the next test
-// the next test MuJoCo instantiates the joint's limit row exactly while a stop
-// holds (its margin: half the range, so only the stop's side), and StopRow
-// gives the row ODE's target.
+// else `step` after the last one. Until the next test MuJoCo instantiates a
+// joint's limit row exactly while its stop holds (the joint's margin: half
+// the range, so only the stop's side; else no row at all), and StopRow gives
+// the row ODE's target.
 void LeggedWorld::StageStops() {
   mjModel* m = model_.get();
   const bool test = commanded_ || steps_since_stop_test_ >= stop_steps_;
