@@ -154,6 +154,21 @@ void ReadContacts(MapReader m, OdeContactLaw* c) {
   m.Finish();
 }
 
+// `joint_stops: {law: ode, ...}`: rcssserver3d's hinge stops (core/legged/legged_scene.h: OdeJointStops);
+// `law: mujoco` or no block: MuJoCo's limits.
+void ReadJointStops(MapReader m, OdeJointStops* j) {
+  std::string law = "mujoco";
+  m.String("law", &law);
+  if (law != "ode" && law != "mujoco") m.Fail("law", "must be \"ode\" or \"mujoco\"");
+  j->enabled = law == "ode";
+  m.Number("step", &j->step);
+  m.Number("erp", &j->erp);
+  m.Number("bounce", &j->bounce);
+  m.Number("fudge", &j->fudge);
+  m.Bool("hold_commands_at_stop", &j->hold_commands_at_stop);
+  m.Finish();
+}
+
 void ReadScene(MapReader m, const std::string& base_dir, LeggedScene* s, Errors* errors) {
   std::string kind;
   if (!m.String("kind", &kind) || kind != "legged") m.Fail("kind", "must be \"legged\"");
@@ -168,6 +183,7 @@ void ReadScene(MapReader m, const std::string& base_dir, LeggedScene* s, Errors*
   }
   if (m.Has("field")) ReadField(m.Map("field"), &s->field);
   if (m.Has("contacts")) ReadContacts(m.Map("contacts"), &s->contacts);
+  if (m.Has("joint_stops")) ReadJointStops(m.Map("joint_stops"), &s->joint_stops);
   ReadSceneRealism(m, &s->realism, errors);  // encoder and imu apply to legged robots
   const YAML::Node robots = m.Child("robots");
   if (robots && !robots.IsSequence()) {

@@ -34,6 +34,12 @@ std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
         e.push_back("contacts: a surface's erp must be in (0, 1], cfm positive, slip >= 0 (or left out)");
     }
   }
+  if (s.joint_stops.enabled) {
+    const OdeJointStops& j = s.joint_stops;
+    if (!Positive(j.step) || j.step > 1.0 || !Positive(j.erp) || j.erp > 1 || !NonNegative(j.bounce) || j.bounce > 1 ||
+        !NonNegative(j.fudge) || j.fudge > 1)
+      e.push_back("joint_stops: step in (0, 1] s, erp in (0, 1], bounce and fudge in [0, 1]");
+  }
   if (s.field.enabled) {
     const Field3d& f = s.field;
     for (double v : {f.length, f.width, f.goal_width, f.goal_depth, f.goal_height, f.goal_wall, f.ball_radius,

@@ -126,6 +126,23 @@ struct OdeContactLaw {
   OdeSurface ground;  // the floor
 };
 
+// rcssserver3d's hinge stops (ODE's joint limit with the Nao's parameters, rsg/agent/nao/hingejoint.rsg), in
+// place of MuJoCo's limit for every limited joint. ODE tests a limit only at the start of its step: a joint
+// inside its range moves freely for the whole step (a full step beyond the stop at speed); a joint at or beyond
+// it gets a one-sided row for the whole step with the target velocity -erp * depth / step, or -bounce times its
+// incoming velocity if that is faster (bounce 1 throws it back as fast as it came). During such a step the
+// joint's motor is no velocity row but its full torque in the commanded direction, or fudge times it when the
+// command points away from the stop (ODE's addLimot). hold_commands_at_stop: a velocity command is taken only
+// while the joint is strictly inside its range, else the old one stays (rcssserver3d's HingeEffector).
+struct OdeJointStops {
+  bool enabled = false;
+  double step = 0.02;  // s: ODE's step (the stop is tested every step / physics.step physics steps)
+  double erp = 0.8;
+  double bounce = 1.0;
+  double fudge = 1e-5;
+  bool hold_commands_at_stop = true;
+};
+
 struct LeggedScene {
   std::string name = "legged";
   uint64_t seed = 1;
@@ -134,6 +151,7 @@ struct LeggedScene {
   Field3d field;
   double ground_friction = 1.0;
   OdeContactLaw contacts;
+  OdeJointStops joint_stops;
   // Encoders and IMU (realism.encoder, realism.imu); the camera and radio
   // parts are the SSL world's and unused here. Ideal by default.
   SensorRealism realism;

@@ -23,6 +23,10 @@ namespace {
 constexpr double kStiffCompliance = 1e-4;
 constexpr double kCreepTime = 0.1;   // s
 constexpr double kCreepLead = 0.01;  // rad
+// A joint margin no joint reaches: MuJoCo instantiates no limit row (ODE stops between their tests).
+constexpr double kNoLimitRow = -1e9;
+// A reference acceleration no joint reaches: the row stays inactive.
+constexpr double kInactiveRow = -1e10;
 
 bool StartsWith(const char* s, const std::string& prefix) {
   return s != nullptr && std::string(s).compare(0, prefix.size(), prefix) == 0;
@@ -32,6 +36,7 @@ bool StartsWith(const char* s, const std::string& prefix) {
 
 struct LeggedWorld::JointSlot {
   std::string name;  // without the robot prefix
+  int id = 0;        // the model's joint id
   int qpos = 0;
   int dof = 0;
   bool limited = false;
@@ -45,6 +50,11 @@ struct LeggedWorld::JointSlot {
   double reference = 0.0;       // velocity mode: integrated target angle
   double effort = 0.0;          // the motor row's force in the last step
   int row = -1;                 // its motor's constraint row in this step, -1 if none
+  // ODE stops (scene joint_stops): the stop found at the start of the last ODE step (0 none, 1 low, 2 high) and
+  // the target velocity of its row (rad/s).
+  int stop = 0;
+  double stop_target = 0.0;
+  int stop_row = -1;  // its limit row in this step, -1 if none
 };
 
 struct LeggedWorld::SensorRef {
@@ -105,6 +115,7 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
       if (m->jnt_type[j] != mjJNT_HINGE && m->jnt_type[j] != mjJNT_SLIDE) continue;
       JointSlot js;
       js.name = std::string(name).substr(prefix.size());
+      js.id = j;
       js.qpos = m->jnt_qposadr[j];
       js.dof = m->jnt_dofadr[j];
       js.limited = m->jnt_limited[j] != 0;
@@ -151,6 +162,8 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
     for (size_t j = 0; j < robots_[r].joints.size(); ++j)
       motor_of_dof_[robots_[r].joints[j].dof] = {static_cast<int>(r), static_cast<int>(j)};
   }
+  if (scene_.joint_stops.enabled)
+    stop_steps_ = static_cast<int>(std::max<long>(1, std::lround(scene_.joint_stops.step / m->opt.timestep)));
   if (scene_.contacts.enabled) {
     std::vector<int> roots;
     for (const RobotSlot& r : robots_) roots.push_back(r.base_body);
@@ -190,6 +203,7 @@ void LeggedWorld::ResetCommands(RobotSlot* r) {
     j.reference = data_->qpos[j.qpos];
     j.effort = 0.0;
     j.row = -1;
+    LatchStop(&j);
   }
 }
 
@@ -215,6 +229,7 @@ PlacementError LeggedWorld::PlaceRobot(int robot, const RobotPlacement& p) {
     if (p.reset_joints) d->qpos[j.qpos] = j.start_position;
     d->qvel[j.dof] = 0.0;
     j.reference = d->qpos[j.qpos];
+    LatchStop(&j);
   }
   if (p.reset_joints) ResetCommands(&r);
   mj_forward(m, d);
@@ -284,6 +299,8 @@ void LeggedWorld::Save(StateWriter& out) const {
   out.Put(frame_);
   last_good_.Save(out);
   out.Put(health_.instability_recoveries);
+  out.Put(steps_since_stop_test_);
+  out.Put<uint8_t>(commanded_ ? 1 : 0);
   for (const RobotSlot& r : robots_) {
     for (const JointSlot& j : r.joints) {
       out.Put(j.command.mode);
@@ -295,6 +312,8 @@ void LeggedWorld::Save(StateWriter& out) const {
       out.Put(j.reference);
       out.Put(j.effort);
       out.Put(j.row);
+      out.Put(j.stop);
+      out.Put(j.stop_target);
     }
   }
 }
@@ -309,6 +328,12 @@ void LeggedWorld::Restore(StateReader& in) {
   }
   last_good_.Restore(in);
   health_.instability_recoveries = in.Get<uint64_t>();
+  steps_since_stop_test_ = in.Get<int>();
+  commanded_ = in.Bool();
+  if (steps_since_stop_test_ < 0 || steps_since_stop_test_ > 1'000'000) {
+    in.Fail("stop step counter out of range");
+    steps_since_stop_test_ = 0;
+  }
   for (RobotSlot& r : robots_) {
     for (JointSlot& j : r.joints) {
       j.command.mode = in.Enum(static_cast<JointMode>(kJointModeCount));
@@ -321,6 +346,12 @@ void LeggedWorld::Restore(StateReader& in) {
       j.effort = in.Get<double>();
       j.row = in.Get<int>();
       if (j.row < -1 || j.row >= model_->njmax) in.Fail("motor row out of range");
+      j.stop = in.Get<int>();
+      j.stop_target = in.Get<double>();
+      if (j.stop < 0 || j.stop > 2 || !std::isfinite(j.stop_target)) {
+        in.Fail("joint stop out of range");
+        j.stop = 0;
+      }
     }
   }
 }
@@ -331,6 +362,8 @@ void LeggedWorld::Reset() {
     for (const JointSlot& j : r.joints) data_->qpos[j.qpos] = j.start_position;
   }
   frame_ = 0;
+  steps_since_stop_test_ = 0;
+  commanded_ = false;
   mj_forward(model_.get(), data_.get());
   ResetCommands();
   AcceptState();
@@ -419,6 +452,13 @@ JointCommandError LeggedWorld::SetJointCommand(int robot, const JointCommand& c)
   const JointCommandError error = CheckJointCommand(robot, c);
   if (error != JointCommandError::kOk) return error;
   JointSlot& j = robots_[robot].joints[JointIndex(robot, c.joint)];
+  commanded_ = true;
+  // rcssserver3d's HingeEffector: at or beyond a stop a velocity command is ignored (the old one stays).
+  if (stop_steps_ > 0 && scene_.joint_stops.hold_commands_at_stop && j.limited && c.mode == JointMode::kVelocity &&
+      j.command.mode == JointMode::kVelocity) {
+    const double q = data_->qpos[j.qpos];
+    if (!(q > j.lo && q < j.hi)) return JointCommandError::kOk;
+  }
   // A switch into velocity mode starts holding from where the joint is.
   if (c.mode == JointMode::kVelocity && j.command.mode != JointMode::kVelocity) j.reference = data_->qpos[j.qpos];
   j.command = c;
@@ -440,10 +480,16 @@ void LeggedWorld::StageServos() {
   for (RobotSlot& r : robots_) {
     for (JointSlot& j : r.joints) {
       j.row = -1;
+      j.stop_row = -1;
       d->qfrc_applied[j.dof] = 0.0;
     }
   }
   for (int i = 0; i < d->nefc; ++i) {
+    if (d->efc_type[i] == mjCNSTR_LIMIT_JOINT && stop_steps_ > 0) {
+      const auto [robot, joint] = motor_of_dof_[m->jnt_dofadr[d->efc_id[i]]];
+      if (robot >= 0) robots_[robot].joints[joint].stop_row = i;
+      continue;
+    }
     if (d->efc_type[i] != mjCNSTR_FRICTION_DOF) continue;
     const auto [robot, joint] = motor_of_dof_[d->efc_id[i]];
     if (robot >= 0) robots_[robot].joints[joint].row = i;
@@ -464,7 +510,8 @@ void LeggedWorld::StageServos() {
           const double creep = std::clamp(j.reference - q, -kCreepLead, kCreepLead);
           target = j.command.value + creep / kCreepTime;
           j.reference = q + creep + j.command.value * dt;
-          if (j.limited) j.reference = std::clamp(j.reference, j.lo, j.hi);
+          // ODE's motor knows no stops: with them (scene joint_stops) the reference is not held inside either.
+          if (j.limited && stop_steps_ == 0) j.reference = std::clamp(j.reference, j.lo, j.hi);
           break;
         }
         case JointMode::kPosition: {
@@ -488,6 +535,10 @@ void LeggedWorld::StageServos() {
           break;
       }
       j.effort = 0.0;
+      if (j.stop != 0) {
+        StopMotor(&j, j.command.mode == JointMode::kVelocity ? j.command.value : target, bound);
+        bound = 0.0;
+      }
       if (j.row < 0) continue;
       const int i = j.row;
       d->efc_frictionloss[i] = bound;
@@ -497,6 +548,11 @@ void LeggedWorld::StageServos() {
       // impedance (mjMAXIMP).
       d->efc_R[i] = gain > 0 ? 1.0 / (dt * gain) : d->efc_diagApprox[i] * kStiffCompliance;
       d->efc_D[i] = 1.0 / d->efc_R[i];
+    }
+  }
+  for (const RobotSlot& r : robots_) {
+    for (const JointSlot& j : r.joints) {
+      if (j.stop_row >= 0) StopRow(j, j.stop_row);
     }
   }
 }
@@ -521,13 +577,88 @@ bool LeggedWorld::StagePhysics() {
   mj_step2(model_.get(), data_.get());
   for (RobotSlot& r : robots_) {
     for (JointSlot& j : r.joints) {
-      if (j.command.mode != JointMode::kPd) j.effort = j.row >= 0 ? data_->efc_force[j.row] : 0.0;
+      if (j.command.mode == JointMode::kPd) continue;
+      j.effort = j.stop != 0 ? data_->qfrc_applied[j.dof] : j.row >= 0 ? data_->efc_force[j.row] : 0.0;
     }
   }
   return StateFinite(model_.get(), data_.get(), INFINITY);
 }
 
+// Stage 0 (before mj_step1): rcssserver3d's hinge stops (scene joint_stops).
+// At the start of each ODE step every limited joint's stop is tested. An ODE
+// step starts with the first physics step after joint commands came in (a
+// SimSpark cycle: the bridge applies the agents' commands, then steps 20 ms),
+// else `step` after the last one. Until the next test MuJoCo instantiates a
+// joint's limit row exactly while its stop holds (the joint's margin: half
+// the range, so only the stop's side; else no row at all), and StopRow gives
+// the row ODE's target.
+void LeggedWorld::StageStops() {
+  mjModel* m = model_.get();
+  const bool test = commanded_ || steps_since_stop_test_ >= stop_steps_;
+  if (test) steps_since_stop_test_ = 0;
+  ++steps_since_stop_test_;
+  commanded_ = false;
+  for (RobotSlot& r : robots_) {
+    for (JointSlot& j : r.joints) {
+      if (!j.limited) continue;
+      if (test) LatchStop(&j);
+      m->jnt_margin[j.id] = j.stop != 0 ? 0.5 * (j.hi - j.lo) : kNoLimitRow;
+    }
+  }
+}
+
+// ODE's limit test (dxJointLimitMotor::testRotationalLimit) and its row's
+// target (addLimot): -erp depth / step, or the incoming velocity reversed and
+// scaled by bounce if that is faster.
+void LeggedWorld::LatchStop(JointSlot* j) const {
+  const int before = j->stop;
+  j->stop = 0;
+  if (stop_steps_ == 0 || !j->limited || j->lo >= j->hi) return;
+  const OdeJointStops& s = scene_.joint_stops;
+  const double q = data_->qpos[j->qpos];
+  const double v = data_->qvel[j->dof];
+  j->stop = q <= j->lo ? 1 : q >= j->hi ? 2 : 0;
+  if (before != 0 || j->stop != 0) j->reference = q;  // the motor starts from here (no creep across a stop)
+  if (j->stop == 0) return;
+  double target = -s.erp * (q - (j->stop == 1 ? j->lo : j->hi)) / s.step;
+  if (j->stop == 1 && v < 0) target = std::max(target, -s.bounce * v);
+  if (j->stop == 2 && v > 0) target = std::min(target, -s.bounce * v);
+  j->stop_target = target;
+}
+
+// A limit row of a joint with ODE stops: a stiff one-sided row towards the
+// latched target velocity (lower side: the row's Jacobian is +1, upper: -1).
+// The motor's torque into the stop would creep through the row's compliance
+// (dt R f per step, 0.04 rad/s for an elbow); the reference acceleration
+// makes up for it, as ODE's stop CFM of 1e-8 lets nothing through.
+// A row on the other side than the latched stop stays inactive.
+void LeggedWorld::StopRow(const JointSlot& j, int i) {
+  mjData* d = data_.get();
+  const double q = d->qpos[j.qpos];
+  const int side = q - j.lo < j.hi - q ? 1 : 2;
+  if (side != j.stop) {
+    d->efc_aref[i] = kInactiveRow;
+    return;
+  }
+  const double jacobian = side == 1 ? 1.0 : -1.0;
+  d->efc_R[i] = d->efc_diagApprox[i] * kStiffCompliance;
+  const double load = std::max(0.0, -jacobian * d->qfrc_applied[j.dof]);
+  d->efc_aref[i] = (jacobian * j.stop_target - d->efc_vel[i]) / model_->opt.timestep + d->efc_R[i] * load;
+  d->efc_D[i] = 1.0 / d->efc_R[i];
+}
+
+// ODE's motor during a stop step (addLimot): no velocity row, its full torque
+// in the commanded direction (into the stop when the command is 0), or fudge
+// times it when the command points away from the stop.
+void LeggedWorld::StopMotor(JointSlot* j, double command, double torque) {
+  const bool away = (j->stop == 1 && command > 0) || (j->stop == 2 && command < 0);
+  const double direction = command > 0 ? 1.0 : command < 0 ? -1.0 : (j->stop == 2 ? 1.0 : -1.0);
+  data_->qfrc_applied[j->dof] = direction * torque * (away ? scene_.joint_stops.fudge : 1.0);
+  j->reference = data_->qpos[j->qpos];
+}
+
 void LeggedWorld::Step() {
+  if (stop_steps_ > 0) StageStops();
   mj_step1(model_.get(), data_.get());
   if (ode_contacts_) ode_contacts_->Apply(model_.get(), data_.get());
   StageServos();

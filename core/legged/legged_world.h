@@ -4,7 +4,9 @@
 //
 // A step runs in named stages; inputs enter only between steps:
 //   inputs   SetJointCommand / Reset (validated; a refused input changes nothing)
-//   Step():  mj_step1 (positions, velocities, constraint rows)
+//   Step():  stops (rcssserver3d's hinge stops when the scene asks: which joint
+//            limit rows the next mj_step1 makes, ODE's stop test)
+//            mj_step1 (positions, velocities, constraint rows)
 //            0 contacts (the scene's contact law on the contact rows: ode_contacts.h)
 //            1 servos (commands -> each joint's motor row: target velocity and
 //              force bound, as ODE's hinge motor; or, in PD mode, an explicit
@@ -196,6 +198,10 @@ class LeggedWorld : Pinned {
   struct SensorRef;
   struct RobotSlot;
 
+  void StageStops();
+  void LatchStop(JointSlot* joint) const;
+  void StopRow(const JointSlot& joint, int row);
+  void StopMotor(JointSlot* joint, double command, double torque);
   void StageServos();
   void ServoPd(JointSlot* joint);
   static void ApplyStartJoints(const LeggedRobot& spec, std::vector<JointSlot>* joints);
@@ -212,6 +218,9 @@ class LeggedWorld : Pinned {
   std::vector<RobotSlot> robots_;
   std::vector<std::pair<int, int>> motor_of_dof_;  // dof -> (robot, joint), -1 for none
   std::unique_ptr<OdeContacts> ode_contacts_;      // the scene's contact law, when it asks for rcssserver3d's
+  int stop_steps_ = 0;  // physics steps per ODE step with the scene's joint_stops, 0 = MuJoCo's limits
+  int steps_since_stop_test_ = 0;
+  bool commanded_ = false;  // a joint command came in since the last step
   int ball_body_ = -1;
   int ball_qvel_ = -1;
   int64_t step_ns_ = 0;

@@ -101,6 +101,42 @@ TEST(LeggedSceneYamlTest, ContactLawBlockLoadsAndIsChecked) {
                        "contacts"));
 }
 
+// rcssserver3d's hinge stops (core/legged/legged_scene.h: OdeJointStops): off unless asked for (the match scene
+// keeps MuJoCo's limits: with them UT agents fell more often, nao-findings 2026-11-26), the reference's values by
+// default, checked.
+TEST(LeggedSceneYamlTest, JointStopsBlockLoadsAndIsChecked) {
+  LeggedSceneLoadResult r = LoadLeggedSceneFile(kScenes + "simspark_match.yaml");
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_FALSE(r.scene->joint_stops.enabled);
+  const std::string dir = std::string(TURF_SOURCE_DIR) + "/configs/scenes";
+  const std::string nao = "robots:\n  - {name: a, model: ../robots/nao.xml}\n";
+  r = ParseLeggedSceneYaml("kind: legged\njoint_stops: {law: ode}\n" + nao, dir);
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  const OdeJointStops& j = r.scene->joint_stops;
+  EXPECT_TRUE(j.enabled);
+  EXPECT_EQ(j.step, 0.02);
+  EXPECT_EQ(j.erp, 0.8);
+  EXPECT_EQ(j.bounce, 1.0);
+  EXPECT_EQ(j.fudge, 1e-5);
+  EXPECT_TRUE(j.hold_commands_at_stop);
+  r = ParseLeggedSceneYaml(
+      "kind: legged\njoint_stops: {law: ode, step: 0.01, bounce: 0.5, hold_commands_at_stop: false}\n" + nao, dir);
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_EQ(r.scene->joint_stops.step, 0.01);
+  EXPECT_EQ(r.scene->joint_stops.bounce, 0.5);
+  EXPECT_FALSE(r.scene->joint_stops.hold_commands_at_stop);
+  r = ParseLeggedSceneYaml("kind: legged\njoint_stops: {law: mujoco}\n" + nao, dir);
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_FALSE(r.scene->joint_stops.enabled);
+  EXPECT_TRUE(HasError(ParseLeggedSceneYaml("kind: legged\njoint_stops: {law: bullet}\n" + nao, dir), "law"));
+  EXPECT_TRUE(
+      HasError(ParseLeggedSceneYaml("kind: legged\njoint_stops: {law: ode, erp: 2}\n" + nao, dir), "joint_stops"));
+  EXPECT_TRUE(
+      HasError(ParseLeggedSceneYaml("kind: legged\njoint_stops: {law: ode, step: .nan}\n" + nao, dir), "joint_stops"));
+  EXPECT_TRUE(
+      HasError(ParseLeggedSceneYaml("kind: legged\njoint_stops: {law: ode, spring: 1}\n" + nao, dir), "spring"));
+}
+
 TEST(LeggedSceneYamlTest, RealismPresetOrMapSetsEncodersAndImu) {
   const std::string dir = std::string(TURF_SOURCE_DIR) + "/configs/scenes";
   LeggedSceneLoadResult r =
