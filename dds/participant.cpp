@@ -16,7 +16,6 @@
 #include <fastdds/dds/domain/DomainParticipantFactory.hpp>
 #include <fastdds/dds/domain/DomainParticipantListener.hpp>
 #include <fastdds/dds/publisher/DataWriter.hpp>
-#include <fastdds/dds/publisher/DataWriterListener.hpp>
 #include <fastdds/dds/publisher/Publisher.hpp>
 #include <fastdds/dds/subscriber/DataReader.hpp>
 #include <fastdds/dds/subscriber/DataReaderListener.hpp>
@@ -26,12 +25,9 @@
 #include <fastdds/dds/topic/TypeSupport.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
-#include <functional>
-#include <mutex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -66,132 +62,31 @@ fdds::TypeSupport TypeOf(Topic topic) {
   throw std::logic_error("topic without a type");
 }
 
-// Holds the samples a durable writer (TRANSIENT_LOCAL, unkeyed, KEEP_LAST) is given while no reader is matched,
-// instead of serialising each into the DDS history: the last `depth` of them, as the history would have kept, with
-// the wall-clock time of each write as its source timestamp. When a reader matches (the writer's listener) or at the
-// next write with one matched, they are written in order, so a late joiner still ends with the samples it got
-// before, and the writer's history with the same last `depth`. (A reader that matches may see the older history
-// first, then these.) All of the writer's DDS writes are made under `mutex`: the order stays the order given.
-class Deferred {
+class DdsWriter final : public WriterEndpoint {
  public:
-  using WriteFn = std::function<void(const void* sample, int64_t source_ns)>;
-  virtual ~Deferred() = default;
-  std::mutex& mutex() { return mutex_; }
-  // Under mutex().
-  virtual void Hold(const void* sample, std::optional<int64_t> source_ns) = 0;
-  // Under mutex(): writes the held samples, oldest first, and forgets them.
-  virtual void Flush(const WriteFn& write) = 0;
-
- protected:
-  static int64_t WallNs() {
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
-        .count();
-  }
-
- private:
-  std::mutex mutex_;
-};
-
-// A ring of `depth` samples of the topic's type, copied into by assignment: a held world state reuses the robots'
-// storage of the one it replaces (no allocation per write once the ring is full).
-template <class Sample>
-class DeferredOf final : public Deferred {
- public:
-  explicit DeferredOf(size_t depth) : slots_(depth) {}
-  void Hold(const void* sample, std::optional<int64_t> source_ns) override {
-    if (count_ == slots_.size()) {
-      first_ = (first_ + 1) % slots_.size();
-      --count_;
-    }
-    Slot& slot = slots_[(first_ + count_++) % slots_.size()];
-    slot.sample = *static_cast<const Sample*>(sample);
-    slot.source_ns = source_ns ? *source_ns : WallNs();
-  }
-  void Flush(const WriteFn& write) override {
-    for (; count_ > 0; --count_, first_ = (first_ + 1) % slots_.size())
-      write(&slots_[first_].sample, slots_[first_].source_ns);
-  }
-
- private:
-  struct Slot {
-    Sample sample;
-    int64_t source_ns = 0;
-  };
-  std::vector<Slot> slots_;
-  size_t first_ = 0;  // the oldest held
-  size_t count_ = 0;
-};
-
-std::unique_ptr<Deferred> MakeDeferred(Topic topic, size_t depth) {
-  switch (topic.id()) {
-#define TURF_TOPIC_DEFERRED_CASE(constant, type, ...) \
-  case TopicId::constant:                             \
-    return std::make_unique<DeferredOf<idl::type>>(depth);
-    TURF_DDS_TOPICS(TURF_TOPIC_DEFERRED_CASE)
-#undef TURF_TOPIC_DEFERRED_CASE
-  }
-  return nullptr;
-}
-
-class DdsWriter final : public WriterEndpoint, private fdds::DataWriterListener {
- public:
-  DdsWriter(fdds::Publisher* publisher, fdds::DataWriter* writer, Topic topic)
+  DdsWriter(fdds::Publisher* publisher, fdds::DataWriter* writer)
       : publisher_(publisher),
         writer_(writer),
-        volatile_(writer->get_qos().durability().kind == fdds::VOLATILE_DURABILITY_QOS),
-        deferred_(Deferrable(*writer, topic)) {
-    if (deferred_) writer_->set_listener(this, fdds::StatusMask::publication_matched());
-  }
-  ~DdsWriter() override {
-    // Deleting the writer waits for a discovery callback that is running (and may be flushing): deferred_ lives on.
-    if (deferred_) writer_->set_listener(nullptr);
-    publisher_->delete_datawriter(writer_);
-  }
+        volatile_(writer->get_qos().durability().kind == fdds::VOLATILE_DURABILITY_QOS) {}
+  ~DdsWriter() override { publisher_->delete_datawriter(writer_); }
 
   bool Write(const void* sample, std::optional<int64_t> source_ns) override {
     // A volatile sample with no reader matched reaches no one, now or later: skip serialising it. (turf-sim with
-    // its front-end in process and no remote camera reader saves ~0.1 ms per sync request.) A durable one is held
-    // (Deferred) until a reader matches: turf-sim's world states, clocks and replies cost ~15 us per sync request
-    // otherwise.
+    // its front-end in process and no remote camera reader saves ~0.1 ms per sync request.) Samples of durable
+    // topics are written regardless: a reader that matches later gets the last of them from the writer's history.
+    // (Holding them until a reader matched, and writing them from the match callback, saved ~10 us per sync request;
+    // taken out on 2026-11-26: in one of six loaded runs of MultiHost.*SecurityOn a late joiner never got the
+    // latched field. The cause was not found.)
     if (volatile_ && Matched() == 0) return true;
-    if (!deferred_) return WriteNow(sample, source_ns);
-    std::lock_guard<std::mutex> lock(deferred_->mutex());
-    if (Matched() == 0) {
-      deferred_->Hold(sample, source_ns);
-      return true;
-    }
-    deferred_->Flush([this](const void* held, int64_t ns) { WriteNow(held, ns); });
-    return WriteNow(sample, source_ns);
+    if (!source_ns) return writer_->write(const_cast<void*>(sample));
+    return WriteStamped(writer_, sample, *source_ns);
   }
   int Matched() const override { return MatchedReaders(writer_); }
 
  private:
-  // Durable writers of unkeyed topics that keep the last few samples (every turf profile but the volatile ones).
-  static std::unique_ptr<Deferred> Deferrable(fdds::DataWriter& writer, Topic topic) {
-    const fdds::DataWriterQos qos = writer.get_qos();
-    if (qos.durability().kind != fdds::TRANSIENT_LOCAL_DURABILITY_QOS) return nullptr;
-    if (qos.history().kind != fdds::KEEP_LAST_HISTORY_QOS || qos.history().depth <= 0) return nullptr;
-    if (writer.get_type()->m_isGetKeyDefined) return nullptr;
-    return MakeDeferred(topic, static_cast<size_t>(qos.history().depth));
-  }
-
-  bool WriteNow(const void* sample, std::optional<int64_t> source_ns) {
-    if (!source_ns) return writer_->write(const_cast<void*>(sample));
-    return WriteStamped(writer_, sample, *source_ns);
-  }
-
-  // On Fast DDS's discovery thread: a reader matched, so the held samples go out now (a late joiner of a paused
-  // simulation gets its last state without waiting for another write).
-  void on_publication_matched(fdds::DataWriter* /*writer*/, const fdds::PublicationMatchedStatus& status) override {
-    if (status.current_count <= 0) return;
-    std::lock_guard<std::mutex> lock(deferred_->mutex());
-    deferred_->Flush([this](const void* held, int64_t ns) { WriteNow(held, ns); });
-  }
-
   fdds::Publisher* publisher_;
   fdds::DataWriter* writer_;
   const bool volatile_;
-  const std::unique_ptr<Deferred> deferred_;  // durable writers only
 };
 
 // Takes samples on Fast DDS's thread into a buffer of the topic's type and hands them to the typed queue.
@@ -573,7 +468,7 @@ std::unique_ptr<WriterEndpoint> Participant::OpenWriter(Topic topic, const Sampl
     spdlog::warn("QoS file has no data_writer profile '{}'; using Fast DDS defaults", topic.info().profile);
   fdds::DataWriter* w = publisher_->create_datawriter(t, qos);
   if (w == nullptr) Fail("data writer", topic);
-  return std::make_unique<DdsWriter>(publisher_, w, topic);
+  return std::make_unique<DdsWriter>(publisher_, w);
 }
 
 // Samples are buffers of the topic's DDS type (TypeOf), which the sink copies: `ops` is not needed here.
