@@ -22,24 +22,17 @@
 
 namespace turf::test {
 
-class HlvsClient {
+class HlvsClient : public LoopbackClient {
  public:
   using Clock = std::chrono::steady_clock;
-
-  HlvsClient() = default;
-  ~HlvsClient() { Close(); }
-  HlvsClient(const HlvsClient&) = delete;
-  HlvsClient& operator=(const HlvsClient&) = delete;
 
   // To 127.0.0.1:port, from `source` when given (tests/support/tcp_connect.h).
   bool Connect(uint16_t port, const char* source = nullptr) {
     Close();
-    fd_ = ConnectLoopback(port, source);
-    return fd_ >= 0;
+    return OpenSocket(port, source);
   }
   void Close() {
-    if (fd_ >= 0) close(fd_);
-    fd_ = -1;
+    CloseSocket();
     in_.clear();
     closed_ = false;
   }
@@ -54,19 +47,6 @@ class HlvsClient {
     return g;
   }
 
-  bool SendRaw(const std::string& bytes) {
-    size_t sent = 0;
-    while (sent < bytes.size()) {
-      const ssize_t n = send(fd_, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
-      if (n <= 0) return false;
-      sent += static_cast<size_t>(n);
-    }
-    return true;
-  }
-  static std::string Framed(const std::string& payload) {
-    const uint32_t n = htonl(static_cast<uint32_t>(payload.size()));
-    return std::string(reinterpret_cast<const char*>(&n), 4) + payload;
-  }
   bool Send(const hlvs::pb::ActuatorRequests& r) { return SendRaw(Framed(r.SerializeAsString())); }
 
   // The next SensorMeasurements; nullopt on timeout, a close, or bytes that do not parse (then bad() is true).
@@ -120,7 +100,6 @@ class HlvsClient {
     }
   }
 
-  int fd_ = -1;
   std::string in_;
   bool closed_ = false;
   bool bad_ = false;

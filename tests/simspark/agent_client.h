@@ -20,39 +20,15 @@
 
 namespace turf::test {
 
-class AgentClient {
+class AgentClient : public LoopbackClient {
  public:
   AgentClient() = default;
-  ~AgentClient() { Close(); }
-  AgentClient(const AgentClient&) = delete;
-  AgentClient& operator=(const AgentClient&) = delete;
-  AgentClient(AgentClient&& o) noexcept : fd_(o.fd_), in_(std::move(o.in_)) { o.fd_ = -1; }
+  AgentClient(AgentClient&& o) noexcept : LoopbackClient(std::move(o)), in_(std::move(o.in_)) {}
 
   // To 127.0.0.1:port, from `source` when given (tests/support/tcp_connect.h).
-  bool Connect(uint16_t port, const char* source = nullptr) {
-    Close();
-    fd_ = ConnectLoopback(port, source);
-    return fd_ >= 0;
-  }
-  void Close() {
-    if (fd_ >= 0) close(fd_);
-    fd_ = -1;
-  }
-  int fd() const { return fd_; }
-
-  bool SendRaw(const std::string& bytes) {
-    size_t sent = 0;
-    while (sent < bytes.size()) {
-      const ssize_t n = send(fd_, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
-      if (n <= 0) return false;
-      sent += static_cast<size_t>(n);
-    }
-    return true;
-  }
-  bool Send(const std::string& payload) {
-    const uint32_t n = htonl(static_cast<uint32_t>(payload.size()));
-    return SendRaw(std::string(reinterpret_cast<const char*>(&n), 4) + payload);
-  }
+  bool Connect(uint16_t port, const char* source = nullptr) { return OpenSocket(port, source); }
+  void Close() { CloseSocket(); }
+  bool Send(const std::string& payload) { return SendRaw(Framed(payload)); }
   // The next message, or nullopt on timeout or a closed connection.
   std::optional<std::string> Receive(std::chrono::milliseconds timeout = std::chrono::milliseconds(5000)) {
     const auto deadline = std::chrono::steady_clock::now() + timeout;
@@ -86,7 +62,6 @@ class AgentClient {
   }
 
  private:
-  int fd_ = -1;
   std::string in_;
 };
 

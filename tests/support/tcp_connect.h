@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <cstdint>
+#include <string>
 
 namespace turf::test {
 
@@ -36,5 +37,45 @@ inline int ConnectLoopback(uint16_t port, const char* source = nullptr) {
   setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof(one));
   return fd;
 }
+
+// A test client's connection (ConnectLoopback) and what the framed protocols' clients (SimSpark, RCSSServerMJ, HLVS)
+// send alike: whole writes and the 4-byte big-endian length framing.
+class LoopbackClient {
+ public:
+  LoopbackClient() = default;
+  ~LoopbackClient() { CloseSocket(); }
+  LoopbackClient(const LoopbackClient&) = delete;
+  LoopbackClient& operator=(const LoopbackClient&) = delete;
+  LoopbackClient(LoopbackClient&& o) noexcept : fd_(o.fd_) { o.fd_ = -1; }
+
+  int fd() const { return fd_; }
+  bool SendRaw(const std::string& bytes) {
+    size_t sent = 0;
+    while (sent < bytes.size()) {
+      const ssize_t n = send(fd_, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
+      if (n <= 0) return false;
+      sent += static_cast<size_t>(n);
+    }
+    return true;
+  }
+  static std::string Framed(const std::string& payload) {
+    const uint32_t n = htonl(static_cast<uint32_t>(payload.size()));
+    return std::string(reinterpret_cast<const char*>(&n), 4) + payload;
+  }
+
+ protected:
+  // To 127.0.0.1:port, from `source` when given.
+  bool OpenSocket(uint16_t port, const char* source) {
+    CloseSocket();
+    fd_ = ConnectLoopback(port, source);
+    return fd_ >= 0;
+  }
+  void CloseSocket() {
+    if (fd_ >= 0) close(fd_);
+    fd_ = -1;
+  }
+
+  int fd_ = -1;
+};
 
 }  // namespace turf::test
