@@ -52,13 +52,17 @@ struct CameraFrames::Impl {
     std::string jpeg;  // empty until encoded (or a compressed frame's bytes)
   };
   struct Camera {
+    bool followed = false;  // readers made or being made
     std::unique_ptr<dds::VendorParticipant::RawReader> raw, compressed;
     std::optional<Frame> newest;
   };
 
   CameraFramesOptions options;
-  std::mutex mutex;  // guards everything below
-  std::unique_ptr<dds::VendorParticipant> participant;
+  // Readers are made under follow_mutex and never under `mutex`: the readers' callbacks take `mutex` on Fast DDS's
+  // threads, and making a reader waits for Fast DDS's own locks (both under one lock deadlocked, once in a soak).
+  std::mutex follow_mutex;
+  std::unique_ptr<dds::VendorParticipant> participant;  // under follow_mutex
+  std::mutex mutex;                                     // guards everything below
   std::map<std::string, Camera> cameras;
   std::atomic<uint64_t> refused{0}, served{0};
 
@@ -89,18 +93,23 @@ struct CameraFrames::Impl {
     cameras[key].newest = std::move(f);
   }
 
-  // Under the lock: the camera's readers, made at its first request.
-  void Follow(const CameraTarget& t, const std::string& key, Camera& c) {
+  // The camera's readers, made at its first request (under follow_mutex, not `mutex`), then kept in its slot.
+  void Follow(const CameraTarget& t, const std::string& key) {
+    std::lock_guard<std::mutex> follow(follow_mutex);
     if (!participant)
       participant = std::make_unique<dds::VendorParticipant>(
           dds::VendorOptions{options.domain, options.name + "-cameras", options.security, /*large_samples=*/true});
     const std::string raw = dds::CameraTopicName(options.prefix, t.robot, t.camera, dds::CameraTopic::kImage);
     const std::string jpeg = dds::CameraTopicName(options.prefix, t.robot, t.camera, dds::CameraTopic::kCompressed);
-    c.raw = participant->MakeReader<ros::Image_PubSubType>(
+    auto raw_reader = participant->MakeReader<ros::Image_PubSubType>(
         raw, [this, key](const ros::Image_& image, int64_t) { OnRaw(key, image); });
-    c.compressed = participant->MakeReader<ros::CompressedImage_PubSubType>(
+    auto compressed_reader = participant->MakeReader<ros::CompressedImage_PubSubType>(
         jpeg, [this, key](const ros::CompressedImage_& image, int64_t) { OnCompressed(key, image); });
     spdlog::info("camera panel: reading {} and {}", raw, jpeg);
+    std::lock_guard<std::mutex> lock(mutex);
+    Camera& c = cameras[key];
+    c.raw = std::move(raw_reader);
+    c.compressed = std::move(compressed_reader);
   }
 };
 
@@ -109,6 +118,7 @@ CameraFrames::CameraFrames(CameraFramesOptions options) : impl_(std::make_unique
 }
 
 CameraFrames::~CameraFrames() {
+  std::lock_guard<std::mutex> follow(impl_->follow_mutex);  // no reader being made
   std::map<std::string, Impl::Camera> cameras;
   {
     std::lock_guard<std::mutex> lock(impl_->mutex);
@@ -124,17 +134,18 @@ std::optional<std::string> CameraFrames::Jpeg(std::string_view target) {
     return std::nullopt;
   }
   const std::string key = t->robot + "/" + t->camera;
-  std::lock_guard<std::mutex> lock(impl_->mutex);
+  std::unique_lock<std::mutex> lock(impl_->mutex);
   auto it = impl_->cameras.find(key);
-  if (it == impl_->cameras.end() || (!it->second.raw && !it->second.compressed)) {
+  if (it == impl_->cameras.end() || !it->second.followed) {
     size_t followed = 0;
-    for (const auto& [k, c] : impl_->cameras) followed += c.raw != nullptr;
+    for (const auto& [k, c] : impl_->cameras) followed += c.followed;
     if (followed >= kMaxCameras) {
       impl_->Refuse(key + ": already following " + std::to_string(followed) + " cameras");
       return std::nullopt;
     }
-    Impl::Camera& c = impl_->cameras[key];
-    impl_->Follow(*t, key, c);
+    impl_->cameras[key].followed = true;
+    lock.unlock();
+    impl_->Follow(*t, key);
     return std::nullopt;
   }
   std::optional<Impl::Frame>& f = it->second.newest;
