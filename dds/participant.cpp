@@ -35,6 +35,7 @@
 #include <utility>
 
 #include "dds/fastdds_endpoint.h"
+#include "dds/held_samples.h"
 
 namespace turf::dds {
 
@@ -62,31 +63,70 @@ fdds::TypeSupport TypeOf(Topic topic) {
   throw std::logic_error("topic without a type");
 }
 
-class DdsWriter final : public WriterEndpoint {
+// The held samples of a writer that may hold them (held_samples.h): a topic turf-sim publishes again and again
+// (not a latched one), durable, unkeyed, keeping the last few.
+std::unique_ptr<HeldSamples> MakeHeld(Topic topic, const fdds::DataWriterQos& qos) {
+  if (topic.info().direction != Direction::kPublished) return nullptr;
+  if (qos.durability().kind != fdds::TRANSIENT_LOCAL_DURABILITY_QOS) return nullptr;
+  if (qos.history().kind != fdds::KEEP_LAST_HISTORY_QOS || qos.history().depth <= 0) return nullptr;
+  if (TypeOf(topic)->m_isGetKeyDefined) return nullptr;
+  const auto depth = static_cast<size_t>(qos.history().depth);
+  switch (topic.id()) {
+#define TURF_TOPIC_HELD_CASE(constant, type, ...) \
+  case TopicId::constant:                         \
+    return std::make_unique<HeldSamplesOf<idl::type>>(depth);
+    TURF_DDS_TOPICS(TURF_TOPIC_HELD_CASE)
+#undef TURF_TOPIC_HELD_CASE
+  }
+  return nullptr;
+}
+
+// Makes its DataWriter itself, with its listener from the start, so that no match goes unseen.
+class DdsWriter final : public WriterEndpoint, private fdds::DataWriterListener {
  public:
-  DdsWriter(fdds::Publisher* publisher, fdds::DataWriter* writer)
+  DdsWriter(fdds::Publisher* publisher, fdds::Topic* topic_dds, const fdds::DataWriterQos& qos, Topic topic)
       : publisher_(publisher),
-        writer_(writer),
-        volatile_(writer->get_qos().durability().kind == fdds::VOLATILE_DURABILITY_QOS) {}
-  ~DdsWriter() override { publisher_->delete_datawriter(writer_); }
+        volatile_(qos.durability().kind == fdds::VOLATILE_DURABILITY_QOS),
+        held_(MakeHeld(topic, qos)) {
+    writer_ = held_ ? publisher->create_datawriter(topic_dds, qos, this, fdds::StatusMask::publication_matched())
+                    : publisher->create_datawriter(topic_dds, qos);
+  }
+  ~DdsWriter() override {
+    if (writer_ == nullptr) return;
+    // Deleting the writer waits for a discovery callback that is running (and may be flushing): held_ lives on.
+    if (held_) writer_->set_listener(nullptr);
+    publisher_->delete_datawriter(writer_);
+  }
+  bool ok() const { return writer_ != nullptr; }
 
   bool Write(const void* sample, std::optional<int64_t> source_ns) override {
     // A volatile sample with no reader matched reaches no one, now or later: skip serialising it. (turf-sim with
-    // its front-end in process and no remote camera reader saves ~0.1 ms per sync request.) Samples of durable
-    // topics are written regardless: a reader that matches later gets the last of them from the writer's history.
-    // (Holding them until a reader matched, and writing them from the match callback, saved ~10 us per sync request;
-    // taken out on 2026-11-26: in one of six loaded runs of MultiHost.*SecurityOn a late joiner never got the
-    // latched field. The cause was not found.)
+    // its front-end in process and no remote camera reader saves ~0.1 ms per sync request.) A durable sample of a
+    // topic published over and over is held while no reader is matched (held_samples.h): turf-sim's world states,
+    // clocks and replies cost ~15-40 us per sync request otherwise.
     if (volatile_ && Matched() == 0) return true;
-    if (!source_ns) return writer_->write(const_cast<void*>(sample));
-    return WriteStamped(writer_, sample, *source_ns);
+    if (!held_) return WriteNow(sample, source_ns);
+    bool ok = true;
+    held_->Write(sample, source_ns, [&](const void* s, std::optional<int64_t> ns) { ok = WriteNow(s, ns) && ok; });
+    return ok;
   }
   int Matched() const override { return MatchedReaders(writer_); }
 
  private:
+  bool WriteNow(const void* sample, std::optional<int64_t> source_ns) {
+    if (!source_ns) return writer_->write(const_cast<void*>(sample));
+    return WriteStamped(writer_, sample, *source_ns);
+  }
+  // On Fast DDS's discovery thread: with a reader matched, the held samples go out now (a late joiner of a paused
+  // simulation gets its last state without waiting for another write).
+  void on_publication_matched(fdds::DataWriter* /*writer*/, const fdds::PublicationMatchedStatus& status) override {
+    held_->SetMatched(status.current_count, [this](const void* s, std::optional<int64_t> ns) { WriteNow(s, ns); });
+  }
+
   fdds::Publisher* publisher_;
-  fdds::DataWriter* writer_;
   const bool volatile_;
+  const std::unique_ptr<HeldSamples> held_;  // topics published over and over, durable, unkeyed
+  fdds::DataWriter* writer_ = nullptr;
 };
 
 // Takes samples on Fast DDS's thread into a buffer of the topic's type and hands them to the typed queue.
@@ -466,9 +506,9 @@ std::unique_ptr<WriterEndpoint> Participant::OpenWriter(Topic topic, const Sampl
   fdds::DataWriterQos qos = fdds::DATAWRITER_QOS_DEFAULT;
   if (publisher_->get_datawriter_qos_from_profile(topic.info().profile, qos) != ReturnCode::RETCODE_OK)
     spdlog::warn("QoS file has no data_writer profile '{}'; using Fast DDS defaults", topic.info().profile);
-  fdds::DataWriter* w = publisher_->create_datawriter(t, qos);
-  if (w == nullptr) Fail("data writer", topic);
-  return std::make_unique<DdsWriter>(publisher_, w);
+  auto writer = std::make_unique<DdsWriter>(publisher_, t, qos, topic);
+  if (!writer->ok()) Fail("data writer", topic);
+  return writer;
 }
 
 // Samples are buffers of the topic's DDS type (TypeOf), which the sink copies: `ops` is not needed here.
