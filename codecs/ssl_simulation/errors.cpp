@@ -6,6 +6,8 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <unordered_map>
+#include <vector>
 
 namespace turf::simproto {
 
@@ -80,6 +82,18 @@ void CollectUnknown(const pb::Message& message, const std::string& path, std::ve
 
 bool IsAny(const pb::FieldDescriptor* f) { return f->message_type()->full_name() == "google.protobuf.Any"; }
 
+// The message-typed fields of `d` a walk for unknown fields enters (not google.protobuf.Any), found once per
+// message type and thread: the walk then looks only at those.
+const std::vector<const pb::FieldDescriptor*>& MessageFields(const pb::Descriptor* d) {
+  thread_local std::unordered_map<const pb::Descriptor*, std::vector<const pb::FieldDescriptor*>> cache;
+  auto [it, added] = cache.try_emplace(d);
+  if (added)
+    for (int i = 0; i < d->field_count(); ++i)
+      if (d->field(i)->cpp_type() == pb::FieldDescriptor::CPPTYPE_MESSAGE && !IsAny(d->field(i)))
+        it->second.push_back(d->field(i));
+  return it->second;
+}
+
 // Pushes the sub-messages of `message` that are present, as ListFields would find them, without ListFields' list
 // and sort: a message field is present if repeated (each element) or set. A message with extension ranges takes
 // ListFields, which also lists the extensions set.
@@ -98,12 +112,8 @@ void PushPresent(const pb::Message& message, std::vector<const pb::Message*>* to
       if (f->cpp_type() == pb::FieldDescriptor::CPPTYPE_MESSAGE && !IsAny(f)) push(f);
     return;
   }
-  for (int i = 0; i < d->field_count(); ++i) {
-    const pb::FieldDescriptor* f = d->field(i);
-    if (f->cpp_type() != pb::FieldDescriptor::CPPTYPE_MESSAGE) continue;
-    if (f->is_repeated() ? reflection->FieldSize(message, f) == 0 : !reflection->HasField(message, f)) continue;
-    if (!IsAny(f)) push(f);  // the name is compared only for a field that is there
-  }
+  for (const pb::FieldDescriptor* f : MessageFields(d))
+    if (f->is_repeated() || reflection->HasField(message, f)) push(f);
 }
 
 // CollectUnknown's walk without building paths: unknown fields are rare, and the paths of every nested message

@@ -71,11 +71,19 @@ SyncDecode DecodeSyncRequest(const uint8_t* data, size_t size, const ControlCont
   });
 }
 
-void FillSyncResponse(const std::vector<idl::CameraFrame>& frames, const idl::SslField& field,
-                      const SyncDecode& request, const ContactMap& contacts, const std::vector<SimError>& extra,
-                      ws::SimulationSyncResponse* out) {
-  std::vector<const idl::CameraFrame*> sorted;
-  for (const idl::CameraFrame& f : frames) sorted.push_back(&f);
+SyncFrames::SyncFrames(const std::vector<idl::CameraFrame>& frames) {
+  refs.reserve(frames.size());
+  for (const idl::CameraFrame& f : frames) refs.push_back(&f);
+}
+
+SyncFrames::SyncFrames(const std::vector<std::shared_ptr<const idl::CameraFrame>>& frames) {
+  refs.reserve(frames.size());
+  for (const auto& f : frames) refs.push_back(f.get());
+}
+
+void FillSyncResponse(const SyncFrames& frames, const idl::SslField& field, const SyncDecode& request,
+                      const ContactMap& contacts, const std::vector<SimError>& extra, ws::SimulationSyncResponse* out) {
+  std::vector<const idl::CameraFrame*> sorted = frames.refs;
   std::sort(sorted.begin(), sorted.end(), [](const idl::CameraFrame* a, const idl::CameraFrame* b) {
     return a->capture_time_ns() != b->capture_time_ns() ? a->capture_time_ns() < b->capture_time_ns()
                                                         : a->camera_id() < b->camera_id();
@@ -100,9 +108,8 @@ void FillSyncResponse(const std::vector<idl::CameraFrame>& frames, const idl::Ss
   FillRobotControlResponse(answered, contacts, extra, out->mutable_robot_control_response());
 }
 
-std::vector<uint8_t> EncodeSyncResponse(const std::vector<idl::CameraFrame>& frames, const idl::SslField& field,
-                                        const SyncDecode& request, const ContactMap& contacts,
-                                        const std::vector<SimError>& extra) {
+std::vector<uint8_t> EncodeSyncResponse(const SyncFrames& frames, const idl::SslField& field, const SyncDecode& request,
+                                        const ContactMap& contacts, const std::vector<SimError>& extra) {
   alignas(16) char block[kArenaBlockBytes];  // as ParseThen: no heap allocation per detection
   pb::Arena arena(ArenaOnStack(block, sizeof block));
   ws::SimulationSyncResponse& response = *pb::Arena::CreateMessage<ws::SimulationSyncResponse>(&arena);

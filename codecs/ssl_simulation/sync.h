@@ -37,6 +37,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "codecs/proto/ssl_simulation.pb.h"
@@ -61,14 +62,22 @@ struct SyncDecode {
 // `step_s`: turf-sim's physics step (Clock.step_s). `context.sync` is forced on.
 SyncDecode DecodeSyncRequest(const uint8_t* data, size_t size, const ControlContext& context, double step_s);
 
+// The camera frames a response carries, by reference: a sync request's frames are kept once by whoever received
+// them (participants/simproto_bridge/sim_link.h shares them), not copied for each response.
+struct SyncFrames {
+  std::vector<const idl::CameraFrame*> refs;
+  SyncFrames() = default;
+  SyncFrames(const std::vector<idl::CameraFrame>& frames);                         // NOLINT: implicit on purpose
+  SyncFrames(const std::vector<std::shared_ptr<const idl::CameraFrame>>& frames);  // NOLINT
+};
+
 // Detections of `frames` (sorted by capture time, then camera), feedback for
 // every robot `request` commanded, and `request.errors` plus `extra` errors.
 // A frame the vision codec refuses is left out and named in the errors.
-void FillSyncResponse(const std::vector<idl::CameraFrame>& frames, const idl::SslField& field,
-                      const SyncDecode& request, const ContactMap& contacts, const std::vector<SimError>& extra,
+void FillSyncResponse(const SyncFrames& frames, const idl::SslField& field, const SyncDecode& request,
+                      const ContactMap& contacts, const std::vector<SimError>& extra,
                       wire::simulation::SimulationSyncResponse* out);
-std::vector<uint8_t> EncodeSyncResponse(const std::vector<idl::CameraFrame>& frames, const idl::SslField& field,
-                                        const SyncDecode& request, const ContactMap& contacts,
-                                        const std::vector<SimError>& extra);
+std::vector<uint8_t> EncodeSyncResponse(const SyncFrames& frames, const idl::SslField& field, const SyncDecode& request,
+                                        const ContactMap& contacts, const std::vector<SimError>& extra);
 
 }  // namespace turf::simproto

@@ -55,11 +55,11 @@ class SimLink::Impl {
     return frames_received_;
   }
 
-  std::vector<idl::CameraFrame> FramesSince(uint64_t cursor) {
+  std::vector<std::shared_ptr<const idl::CameraFrame>> FramesSince(uint64_t cursor) {
     std::lock_guard<std::mutex> lock(mutex_);
     PumpLocked();
     const uint64_t first = frames_received_ - frames_.size();  // arrival number of frames_.front()
-    std::vector<idl::CameraFrame> out;
+    std::vector<std::shared_ptr<const idl::CameraFrame>> out;
     const uint64_t from = std::max(cursor, first);
     out.reserve(frames_received_ > from ? frames_received_ - from : 0);
     for (uint64_t i = from; i < frames_received_; ++i) out.push_back(frames_[i - first]);
@@ -101,7 +101,8 @@ class SimLink::Impl {
     }
     if (contacts_changed) view_.contacts = std::make_shared<const simproto::ContactMap>(contacts_);
     if (camera_reader_->Take(&camera_inbox_)) {
-      for (idl::CameraFrame& f : camera_inbox_) frames_.push_back(std::move(f));
+      for (idl::CameraFrame& f : camera_inbox_)
+        frames_.push_back(std::make_shared<const idl::CameraFrame>(std::move(f)));
       frames_received_ += camera_inbox_.size();
       while (frames_.size() > kMaxBufferedFrames) frames_.pop_front();
     }
@@ -111,8 +112,9 @@ class SimLink::Impl {
   std::atomic<bool> ready_{false};
   std::mutex mutex_;
   View view_;
-  simproto::ContactMap contacts_;        // view_.contacts' source
-  std::deque<idl::CameraFrame> frames_;  // the newest received, in arrival order
+  simproto::ContactMap contacts_;                               // view_.contacts' source
+  std::deque<std::shared_ptr<const idl::CameraFrame>> frames_;  // the newest received, in arrival order (shared
+                                                                // with the responses that carry them, not copied)
   uint64_t frames_received_ = 0;
   std::vector<idl::SslField> fields_;
   std::vector<idl::Clock> clocks_;
@@ -148,7 +150,9 @@ std::vector<dds::ControlOutcome> SimLink::Control(std::vector<idl::SimControl> r
   return impl_->Control(std::move(requests), timeout, stop);
 }
 uint64_t SimLink::FrameCursor() { return impl_->FrameCursor(); }
-std::vector<idl::CameraFrame> SimLink::FramesSince(uint64_t cursor) { return impl_->FramesSince(cursor); }
+std::vector<std::shared_ptr<const idl::CameraFrame>> SimLink::FramesSince(uint64_t cursor) {
+  return impl_->FramesSince(cursor);
+}
 uint64_t SimLink::Overflowed() const { return impl_->Overflowed(); }
 
 }  // namespace turf

@@ -62,7 +62,7 @@ class SimLink : Pinned {
   // received so far; FramesSince(c) returns those received after cursor `c`
   // (the newest kMaxBufferedFrames at most).
   uint64_t FrameCursor();
-  std::vector<idl::CameraFrame> FramesSince(uint64_t cursor);
+  std::vector<std::shared_ptr<const idl::CameraFrame>> FramesSince(uint64_t cursor);
   // DDS samples turf-sim's writers could not hand over in time (reader queues full).
   uint64_t Overflowed() const;
 

@@ -213,7 +213,7 @@ class SimprotoBridge::Impl {
       return sp::EncodeSyncResponse({}, field, request, {}, {});
 
     std::vector<sp::SimError> errors;
-    auto answer = [&](const std::vector<idl::CameraFrame>& frames) {
+    auto answer = [&](const sp::SyncFrames& frames) {
       return sp::EncodeSyncResponse(frames, field, request, *link_.Now().contacts, errors);
     };
     if (view.clock->mode() != idl::TIME_LOCKSTEP) {
