@@ -1,5 +1,7 @@
 #include "dds/memory_bus.h"
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <condition_variable>
 #include <utility>
@@ -117,12 +119,11 @@ std::unique_ptr<ReaderEndpoint> MemoryBus::OpenReader(Topic topic, const SampleO
 }
 
 bool MemoryBus::Write(Topic topic, MemoryWriter& writer, const void* sample) {
-  std::vector<std::shared_ptr<Slot>> woken;
+  boost::container::small_vector<std::shared_ptr<Slot>, 4> woken;  // no allocation for a few readers
   {
     std::lock_guard<std::mutex> lock(mutex_);
     TopicEndpoints& t = topics_[static_cast<size_t>(topic.id())];
     if (topic.info().direction == Direction::kLatched) writer.Keep(sample);
-    woken.reserve(t.readers.size());
     for (const std::shared_ptr<Slot>& slot : t.readers)
       if (slot->sink.Push(sample)) woken.push_back(slot);
   }
