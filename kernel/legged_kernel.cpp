@@ -1,13 +1,14 @@
 #include "kernel/legged_kernel.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "core/state_fields.h"
-#include "kernel/snapshot_envelope.h"
 
 namespace turf {
 
@@ -31,68 +32,59 @@ std::string StreamName(const LeggedScene& scene, int robot, LeggedStream s) {
   return "legged/" + scene.robots[robot].name + "/" + LeggedStreamName(s);
 }
 
-void SaveArray(const double* v, size_t n, StateWriter& out) {
-  for (size_t i = 0; i < n; ++i) out.Put(v[i]);
-}
-
-void RestoreArray(double* v, size_t n, StateReader& in) {
-  for (size_t i = 0; i < n; ++i) v[i] = in.Get<double>();
-}
-
-// The stream's fields of a sample (legged_kernel.h says which).
-void SaveSampleFields(const LeggedSample& s, StateWriter& out) {
-  const LeggedRobotState& r = s.robot_state;
-  switch (s.stream) {
+// The stream's fields of a sample (legged_kernel.h says which), in one order
+// for saving and restoring: `io` is a SampleWriter (State: const) or a
+// SampleReader, whose robot_state already has the robot's structure.
+template <class State, class Io>
+void SampleFields(LeggedStream stream, State& r, Io& io) {
+  switch (stream) {
     case LeggedStream::kJoints:
-      out.Doubles(r.joint_positions);
-      out.Doubles(r.joint_velocities);
-      out.Doubles(r.joint_efforts);
+      io.Joints(r.joint_positions, r.joint_names.size());
+      io.Joints(r.joint_velocities, r.joint_names.size());
+      io.Joints(r.joint_efforts, r.joint_names.size());
       break;
     case LeggedStream::kImu:
-      SaveArray(r.orientation.data(), 4, out);
-      SaveArray(r.gyro.data(), 3, out);
-      SaveArray(r.accelerometer.data(), 3, out);
-      SaveArray(r.base_position.data(), 3, out);
-      SaveArray(r.base_orientation.data(), 4, out);
+      io.Array(r.orientation);
+      io.Array(r.gyro);
+      io.Array(r.accelerometer);
+      io.Array(r.base_position);
+      io.Array(r.base_orientation);
       break;
     default:
-      for (const ForceReading& f : r.forces) {
-        out.Doubles(f.values);
-        out.Put(f.contact);
-        SaveArray(f.force.data(), 3, out);
-        SaveArray(f.point.data(), 3, out);
+      for (auto& f : r.forces) {
+        io.Values(f.values);
+        io.Flag(f.contact);
+        io.Array(f.force);
+        io.Array(f.point);
       }
       break;
   }
 }
 
-// Reads into `s`, whose robot_state already has the robot's structure.
-void RestoreSampleFields(StateReader& in, LeggedSample* s) {
-  LeggedRobotState& r = s->robot_state;
-  switch (s->stream) {
-    case LeggedStream::kJoints:
-      in.Doubles(&r.joint_positions, r.joint_names.size());
-      in.Doubles(&r.joint_velocities, r.joint_names.size());
-      in.Doubles(&r.joint_efforts, r.joint_names.size());
-      break;
-    case LeggedStream::kImu:
-      RestoreArray(r.orientation.data(), 4, in);
-      RestoreArray(r.gyro.data(), 3, in);
-      RestoreArray(r.accelerometer.data(), 3, in);
-      RestoreArray(r.base_position.data(), 3, in);
-      RestoreArray(r.base_orientation.data(), 4, in);
-      break;
-    default:
-      for (ForceReading& f : r.forces) {
-        f.values.resize(in.Count(kMaxValues));
-        in.Bytes(f.values.data(), f.values.size() * sizeof(double));
-        f.contact = in.Bool();
-        RestoreArray(f.force.data(), 3, in);
-        RestoreArray(f.point.data(), 3, in);
-      }
-      break;
+struct SampleWriter {
+  StateWriter& out;
+  void Joints(const std::vector<double>& v, size_t) { out.Doubles(v); }
+  void Values(const std::vector<double>& v) { out.Doubles(v); }
+  void Flag(bool b) { out.Put(b); }
+  template <size_t N>
+  void Array(const std::array<double, N>& a) {
+    for (double v : a) out.Put(v);
   }
-}
+};
+
+struct SampleReader {
+  StateReader& in;
+  void Joints(std::vector<double>& v, size_t n) { in.Doubles(&v, n); }
+  void Values(std::vector<double>& v) {
+    v.resize(in.Count(kMaxValues));
+    in.Bytes(v.data(), v.size() * sizeof(double));
+  }
+  void Flag(bool& b) { b = in.Bool(); }
+  template <size_t N>
+  void Array(std::array<double, N>& a) {
+    for (double& v : a) v = in.Get<double>();
+  }
+};
 
 // The sample of one stream: the robot's name, id and has_imu and that stream's fields, nothing else (the joint
 // stream carries no links, the IMU no joints): three whole copies of every robot at every frame cost more than the
@@ -187,9 +179,8 @@ void LeggedKernel::Reset() {
     }
   }
   in_flight_.clear();
-  next_stats_ns_ = kStatsWindowNs;
+  stats_.Reset();
   released_.clear();
-  stats_.reset();
   SendSensorFrame();
   Release();
 }
@@ -238,27 +229,14 @@ void LeggedKernel::Release() {
 }
 
 void LeggedKernel::CollectStats() {
-  stats_.reset();
-  if (time_ns() < next_stats_ns_) return;
-  StreamReport report;
-  report.time_ns = time_ns();
-  for (int r = 0; r < world_.RobotCount(); ++r) {
-    for (int k = 0; k < kStreamsPerRobot; ++k) {
-      const auto s = static_cast<LeggedStream>(k);
-      report.streams.emplace_back(StreamName(scene(), r, s), StreamOf(r, s).stats.Take());
+  stats_.Collect(time_ns(), [this](StreamReport& report) {
+    for (int r = 0; r < world_.RobotCount(); ++r) {
+      for (int k = 0; k < kStreamsPerRobot; ++k) {
+        const auto s = static_cast<LeggedStream>(k);
+        report.streams.emplace_back(StreamName(scene(), r, s), StreamOf(r, s).stats.Take());
+      }
     }
-  }
-  stats_ = std::move(report);
-  next_stats_ns_ = time_ns() + kStatsWindowNs;
-}
-
-std::string LeggedKernel::Save() const {
-  return SaveSnapshot(KernelKind::kLegged, [this](StateWriter& out) { SaveTo(out); });
-}
-
-std::string LeggedKernel::Restore(std::string_view snapshot) {
-  return RestoreSnapshot(
-      KernelKind::kLegged, snapshot, [this](StateReader& in) { RestoreFrom(in); }, [this] { return Save(); });
+  });
 }
 
 void LeggedKernel::SaveTo(StateWriter& out) const {
@@ -276,9 +254,10 @@ void LeggedKernel::SaveTo(StateWriter& out) const {
     out.Put(f.sample.robot);
     out.Put(f.sample.time_ns);
     out.Put(f.sample.frame);
-    SaveSampleFields(f.sample, out);
+    SampleWriter writer{out};
+    SampleFields(f.sample.stream, f.sample.robot_state, writer);
   }
-  out.Put(next_stats_ns_);
+  stats_.Save(out);
 }
 
 void LeggedKernel::RestoreFrom(StateReader& in) {
@@ -302,11 +281,11 @@ void LeggedKernel::RestoreFrom(StateReader& in) {
       return;
     }
     f.sample.robot_state = StreamFields(scratch_.robots[f.sample.robot], f.sample.stream);
-    RestoreSampleFields(in, &f.sample);
+    SampleReader reader{in};
+    SampleFields(f.sample.stream, f.sample.robot_state, reader);
   }
-  next_stats_ns_ = in.Get<int64_t>();
+  stats_.Restore(in);
   released_.clear();
-  stats_.reset();
 }
 
 }  // namespace turf

@@ -26,6 +26,8 @@
 #include "core/legged/legged_sensors.h"
 #include "core/legged/legged_world.h"
 #include "core/link_model.h"
+#include "kernel/snapshots.h"
+#include "kernel/stats_window.h"
 #include "kernel/stream_report.h"
 
 namespace turf {
@@ -49,7 +51,7 @@ struct LeggedSample {
 inline constexpr double kMaxLeggedPlacement = 100.0;  // m from the origin, any axis
 inline constexpr double kMaxLeggedBallSpeed = 50.0;   // m/s
 
-class LeggedKernel {
+class LeggedKernel : public Snapshots<LeggedKernel, KernelKind::kLegged> {
  public:
   // Throws std::invalid_argument for an invalid scene.
   explicit LeggedKernel(LeggedScene scene);
@@ -77,13 +79,12 @@ class LeggedKernel {
   // --- Outputs ---
   void Measure(LeggedWorldState* out) const;
   const std::vector<LeggedSample>& released() const { return released_; }
-  const std::optional<StreamReport>& stats() const { return stats_; }
+  const std::optional<StreamReport>& stats() const { return stats_.report(); }
 
-  // --- Snapshot (as SslKernel's) ---
-  std::string Save() const;
-  std::string Restore(std::string_view snapshot);
+  // --- Snapshot: Save(), Restore() (snapshots.h) ---
 
  private:
+  friend class Snapshots<LeggedKernel, KernelKind::kLegged>;
   struct Stream {
     Link link;
     StreamStats stats;
@@ -108,11 +109,10 @@ class LeggedKernel {
   int64_t sensor_every_ = 1;
   std::vector<Stream> streams_;  // robot-major
   std::deque<InFlight> in_flight_;
-  int64_t next_stats_ns_ = 0;
 
   mutable LeggedWorldState scratch_;
   std::vector<LeggedSample> released_;
-  std::optional<StreamReport> stats_;
+  StatsWindow stats_;
 };
 
 }  // namespace turf

@@ -3,7 +3,6 @@
 #include "core/input_limits.h"
 #include "core/rng.h"
 #include "core/state_fields.h"
-#include "kernel/snapshot_envelope.h"
 
 namespace turf {
 
@@ -79,12 +78,11 @@ void SslKernel::Reset() {
     pending_[t].clear();
     command_stats_[t] = StreamStats{};
   }
-  next_stats_ns_ = kStatsWindowNs;
+  stats_.Reset();
   world_.Snapshot(&state_);
   last_feedback_ = state_.robots;
   camera_frames_.clear();
   feedback_.clear();
-  stats_.reset();
 }
 
 void SslKernel::Step() {
@@ -125,24 +123,11 @@ void SslKernel::CollectFeedback() {
 }
 
 void SslKernel::CollectStats() {
-  stats_.reset();
-  if (time_ns() < next_stats_ns_) return;
-  StreamReport report;
-  report.time_ns = time_ns();
-  for (size_t c = 0; c < cameras_.cameras().size(); ++c)
-    report.streams.emplace_back("ssl/camera/" + std::to_string(c), cameras_.TakeStats(static_cast<int>(c)));
-  for (int t = 0; t < kTeamCount; ++t) report.streams.emplace_back(CommandStreamName(t), command_stats_[t].Take());
-  stats_ = std::move(report);
-  next_stats_ns_ = time_ns() + kStatsWindowNs;
-}
-
-std::string SslKernel::Save() const {
-  return SaveSnapshot(KernelKind::kSsl, [this](StateWriter& out) { SaveTo(out); });
-}
-
-std::string SslKernel::Restore(std::string_view snapshot) {
-  return RestoreSnapshot(
-      KernelKind::kSsl, snapshot, [this](StateReader& in) { RestoreFrom(in); }, [this] { return Save(); });
+  stats_.Collect(time_ns(), [this](StreamReport& report) {
+    for (size_t c = 0; c < cameras_.cameras().size(); ++c)
+      report.streams.emplace_back("ssl/camera/" + std::to_string(c), cameras_.TakeStats(static_cast<int>(c)));
+    for (int t = 0; t < kTeamCount; ++t) report.streams.emplace_back(CommandStreamName(t), command_stats_[t].Take());
+  });
 }
 
 void SslKernel::SaveTo(StateWriter& out) const {
@@ -160,7 +145,7 @@ void SslKernel::SaveTo(StateWriter& out) const {
       SaveCommand(p.command, out);
     }
   }
-  out.Put(next_stats_ns_);
+  stats_.Save(out);
   for (const RobotSnapshot& r : last_feedback_) {
     out.Put(r.ball_contact);
     out.Put(r.kick_count);
@@ -183,7 +168,7 @@ void SslKernel::RestoreFrom(StateReader& in) {
       if (in.ok() && CheckCommand(p.command) != InputError::kOk) in.Fail("invalid pending command");
     }
   }
-  next_stats_ns_ = in.Get<int64_t>();
+  stats_.Restore(in);
   world_.Snapshot(&state_);
   last_feedback_ = state_.robots;
   for (RobotSnapshot& r : last_feedback_) {
@@ -192,7 +177,6 @@ void SslKernel::RestoreFrom(StateReader& in) {
   }
   camera_frames_.clear();
   feedback_.clear();
-  stats_.reset();
 }
 
 }  // namespace turf

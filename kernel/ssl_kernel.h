@@ -29,11 +29,13 @@
 #include "core/ssl_cameras.h"
 #include "core/stream_stats.h"
 #include "core/world.h"
+#include "kernel/snapshots.h"
+#include "kernel/stats_window.h"
 #include "kernel/stream_report.h"
 
 namespace turf {
 
-class SslKernel {
+class SslKernel : public Snapshots<SslKernel, KernelKind::kSsl> {
  public:
   // Throws std::invalid_argument for an invalid scene.
   explicit SslKernel(Scene scene);
@@ -68,14 +70,12 @@ class SslKernel {
   // Robots whose ball contact or kick count changed in the last step.
   const std::vector<RobotSnapshot>& feedback() const { return feedback_; }
   // Set in the step that closes a one-second window of sim time.
-  const std::optional<StreamReport>& stats() const { return stats_; }
+  const std::optional<StreamReport>& stats() const { return stats_.report(); }
 
-  // --- Snapshot ---
-  std::string Save() const;
-  // Empty on success; else why, and the kernel is as before the call.
-  std::string Restore(std::string_view snapshot);
+  // --- Snapshot: Save(), Restore() (snapshots.h) ---
 
  private:
+  friend class Snapshots<SslKernel, KernelKind::kSsl>;
   struct PendingCommand {
     int64_t due_ns;
     int64_t sent_ns;
@@ -95,13 +95,12 @@ class SslKernel {
   std::vector<Link> command_links_;
   std::deque<PendingCommand> pending_[kTeamCount];
   StreamStats command_stats_[kTeamCount];
-  int64_t next_stats_ns_ = 0;
   std::vector<RobotSnapshot> last_feedback_;
 
   WorldSnapshot state_;
   std::vector<CameraFrame> camera_frames_;
   std::vector<RobotSnapshot> feedback_;
-  std::optional<StreamReport> stats_;
+  StatsWindow stats_;
 };
 
 }  // namespace turf

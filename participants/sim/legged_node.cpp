@@ -11,6 +11,7 @@
 #include "kernel/legged_kernel.h"
 #include "loader/realism_yaml.h"
 #include "participants/sim/control_loop.h"
+#include "participants/sim/kernel_node.h"
 #include "participants/sim/legged_convert.h"
 #include "participants/sim/legged_publisher.h"
 #include "participants/sim/stats_report.h"
@@ -19,15 +20,10 @@ namespace turf {
 
 namespace {
 
-class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
+class LeggedNode final : public KernelNode<LeggedKernel, LeggedPublisher> {
  public:
   LeggedNode(LeggedScene scene, SimNodeOptions options, dds::Bus* bus)
-      : options_(std::move(options)),
-        kernel_(std::move(scene)),
-        own_bus_(bus != nullptr ? nullptr : MakeNodeParticipant(options_)),
-        bus_(bus != nullptr ? *bus : *own_bus_),
-        loop_(bus_, options_, LoopTiming(kernel_), *this),
-        publisher_(bus_),
+      : KernelNode("legged", std::move(scene), std::move(options), bus, LoopTiming),
         command_reader_(
             bus_.MakeReader<idl::JointCommandPubSubType>(dds::Topic::kRobotJointCommand, [this] { loop_.Wake(); })) {}
 
@@ -38,9 +34,6 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
     loop_.Run(stop);
   }
 
-  SimNodeStats Stats() const override { return loop_.Stats(); }
-  uint64_t Rejected(const std::string& kind) const override { return loop_.Rejected(kind); }
-
  private:
   // The loop publishes the whole frame at every sensor frame.
   static ControlLoop::Timing LoopTiming(const LeggedKernel& k) {
@@ -49,9 +42,6 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
   }
 
   // --- ControlLoop::Node ---
-
-  int64_t TimeNs() const override { return kernel_.time_ns(); }
-  uint64_t Frame() const override { return kernel_.frame(); }
 
   void TakeCommands() override {
     if (command_reader_->Take(&command_inbox_)) {
@@ -72,8 +62,6 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
   }
 
   uint64_t CommandsOverflowed() const override { return command_reader_->Overflowed(); }
-  void Step() override { kernel_.Step(); }
-
   void AfterStep() override { publisher_.AfterStep(kernel_); }
 
   ControlAnswer ApplyStepCommands(const idl::SimControl& req) override {
@@ -111,22 +99,9 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
     return {ControlErrorOf(e), fmt::format("robot '{}': {}", t.robot(), ErrorName(e))};
   }
 
-  ControlAnswer ChangeRealism(const RealismChange& change) override {
-    const RealismChangeResult changed = ApplyRealismChange(kernel_.realism(), change, DefaultRealismDir());
-    if (!changed.ok()) return {ControlErrorOf(changed.error), changed.reason};
-    if (std::string e = kernel_.SetRealism(changed.realism); !e.empty()) return {idl::CONTROL_INVALID_REALISM, e};
-    spdlog::info("sensor realism changed ({})", DescribeRealismChange(change));
-    return {};
-  }
-
   void ResetWorld() override {
     kernel_.Reset();
     publisher_.PublishReleased(kernel_);
-  }
-  std::string SaveKernel() const override { return kernel_.Save(); }
-  std::string RestoreKernel(std::string_view snapshot) override { return kernel_.Restore(snapshot); }
-  std::string SceneIdentity() const override {
-    return fmt::format("legged scene '{}' seed {}", kernel_.scene().name, kernel_.scene().seed);
   }
 
   // --- Inputs ---
@@ -153,8 +128,6 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
   }
 
   // --- Outputs ---
-
-  void PublishState() override { publisher_.PublishState(kernel_); }
 
   void ReportStartup() const {
     const LeggedScene& s = kernel_.scene();
@@ -184,16 +157,9 @@ class LeggedNode final : public SimNode::Impl, private ControlLoop::Node {
   }
 
   void ReportStatus() const override {
-    loop_.ReportStatusLine(fmt::format("recoveries={}", kernel_.world().health().instability_recoveries));
-    ReportStreams(publisher_.last_stats());
+    ReportStatusWith(fmt::format("recoveries={}", kernel_.world().health().instability_recoveries));
   }
 
-  SimNodeOptions options_;
-  LeggedKernel kernel_;
-  std::unique_ptr<dds::Bus> own_bus_;  // when the node makes its own participant
-  dds::Bus& bus_;
-  ControlLoop loop_;  // before the readers: their callbacks wake it
-  LeggedPublisher publisher_;
   std::unique_ptr<dds::Reader<idl::JointCommandPubSubType>> command_reader_;
 
   std::vector<JointCommand> checked_;

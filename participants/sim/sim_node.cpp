@@ -14,6 +14,7 @@
 #include "loader/realism_yaml.h"
 #include "participants/sim/control_loop.h"
 #include "participants/sim/convert.h"
+#include "participants/sim/kernel_node.h"
 #include "participants/sim/ssl_publisher.h"
 #include "participants/sim/stats_report.h"
 
@@ -26,18 +27,13 @@ int64_t UnixNowNs() {
       .count();
 }
 
-class SslNode final : public SimNode::Impl, private ControlLoop::Node {
+class SslNode final : public KernelNode<SslKernel, SslPublisher> {
   static constexpr dds::TopicDef<idl::SslRobotCommandPubSubType> kCommandTopics[kTeamCount] = {
       dds::Topic::kSslCommandBlue, dds::Topic::kSslCommandYellow};
 
  public:
   SslNode(Scene scene, SimNodeOptions options, dds::Bus* bus)
-      : options_(std::move(options)),
-        kernel_(std::move(scene)),
-        own_bus_(bus != nullptr ? nullptr : MakeNodeParticipant(options_)),
-        bus_(bus != nullptr ? *bus : *own_bus_),
-        loop_(bus_, options_, LoopTiming(kernel_.scene(), kernel_.world().step_ns()), *this),
-        publisher_(bus_),
+      : KernelNode("ssl", std::move(scene), std::move(options), bus, LoopTiming),
         command_readers_{
             bus_.MakeReader<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue, [this] { loop_.Wake(); }),
             bus_.MakeReader<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow, [this] { loop_.Wake(); })} {}
@@ -48,18 +44,13 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
     loop_.Run(stop);
   }
 
-  SimNodeStats Stats() const override { return loop_.Stats(); }
-  uint64_t Rejected(const std::string& kind) const override { return loop_.Rejected(kind); }
-
  private:
-  static ControlLoop::Timing LoopTiming(const Scene& s, int64_t step_ns) {
-    return {s.physics.step, step_ns, s.rates.world_state_hz};
+  static ControlLoop::Timing LoopTiming(const SslKernel& k) {
+    const Scene& s = k.scene();
+    return {s.physics.step, k.world().step_ns(), s.rates.world_state_hz};
   }
 
   // --- ControlLoop::Node ---
-
-  int64_t TimeNs() const override { return kernel_.time_ns(); }
-  uint64_t Frame() const override { return kernel_.frame(); }
 
   void TakeCommands() override {
     for (int t = 0; t < kTeamCount; ++t) {
@@ -86,8 +77,6 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
   uint64_t CommandsOverflowed() const override {
     return command_readers_[0]->Overflowed() + command_readers_[1]->Overflowed();
   }
-
-  void Step() override { kernel_.Step(); }
 
   ControlAnswer ApplyStepCommands(const idl::SimControl& req) override {
     for (const idl::SslRobotCommand& c : req.commands()) {
@@ -130,20 +119,7 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
     }
   }
 
-  ControlAnswer ChangeRealism(const RealismChange& change) override {
-    const RealismChangeResult changed = ApplyRealismChange(kernel_.realism(), change, realism_dir_);
-    if (!changed.ok()) return {ControlErrorOf(changed.error), changed.reason};
-    if (std::string e = kernel_.SetRealism(changed.realism); !e.empty()) return {idl::CONTROL_INVALID_REALISM, e};
-    spdlog::info("sensor realism changed ({})", DescribeRealismChange(change));
-    return {};
-  }
-
   void ResetWorld() override { kernel_.Reset(); }
-  std::string SaveKernel() const override { return kernel_.Save(); }
-  std::string RestoreKernel(std::string_view snapshot) override { return kernel_.Restore(snapshot); }
-  std::string SceneIdentity() const override {
-    return fmt::format("ssl scene '{}' seed {}", kernel_.scene().name, kernel_.scene().seed);
-  }
 
   // --- Outputs ---
 
@@ -154,8 +130,6 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
     const double per_sim_ns = (mode == TimeMode::kRealtime || mode == TimeMode::kScaled) ? 1.0 / loop_.speed() : 0.0;
     publisher_.AfterStep(kernel_, frames ? UnixNowNs() : 0, per_sim_ns);
   }
-
-  void PublishState() override { publisher_.PublishState(kernel_); }
 
   void ReportStartup() const {
     const Scene& s = kernel_.scene();
@@ -189,20 +163,11 @@ class SslNode final : public SimNode::Impl, private ControlLoop::Node {
 
   void ReportStatus() const override {
     const WorldHealth& h = kernel_.world().health();
-    loop_.ReportStatusLine(
-        fmt::format("containment={} recoveries={}", h.containment_corrections, h.instability_recoveries));
-    ReportStreams(publisher_.last_stats());
+    ReportStatusWith(fmt::format("containment={} recoveries={}", h.containment_corrections, h.instability_recoveries));
   }
 
-  SimNodeOptions options_;
-  SslKernel kernel_;
-  std::unique_ptr<dds::Bus> own_bus_;  // when the node makes its own participant
-  dds::Bus& bus_;
-  ControlLoop loop_;  // before the readers: their callbacks wake it
-  SslPublisher publisher_;
   std::unique_ptr<dds::Reader<idl::SslRobotCommandPubSubType>> command_readers_[kTeamCount];
 
-  std::string realism_dir_ = DefaultRealismDir();
   std::vector<idl::SslRobotCommand> command_inbox_;
 };
 

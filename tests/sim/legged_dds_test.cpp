@@ -22,7 +22,7 @@
 #include "loader/realism_yaml.h"
 #include "participants/sim/sim_node.h"
 #include "tests/sim/sim_harness.h"
-#include "tests/support/take.h"
+#include "tests/support/newest.h"
 
 namespace turf {
 namespace {
@@ -51,13 +51,7 @@ class Client {
   explicit Client(dds::ParticipantOptions o)
       : participant_((o.name = "client", o)),
         command_(participant_.MakeWriter(dds::Topic::kRobotJointCommand)),
-        control_(participant_, "test"),
-        joint_reader_(participant_.MakeReader(dds::Topic::kRobotJointState)),
-        imu_(participant_.MakeReader(dds::Topic::kRobotImu)),
-        force_(participant_.MakeReader(dds::Topic::kRobotForce)),
-        links_(participant_.MakeReader(dds::Topic::kRobotLinks)),
-        world_(participant_.MakeReader(dds::Topic::kWorldState)),
-        scene_(participant_.MakeReader(dds::Topic::kLeggedScene)) {}
+        control_(participant_, "test") {}
 
   bool WaitMatched() {
     const auto end = Clock::now() + 10s;  // discovery is slower on a busy machine
@@ -75,14 +69,7 @@ class Client {
   bool WaitControlMatched() {
     return WaitFor([&] { return command_->Matched() > 0 && control_.ServerMatched() && imu_now_.count("nao_1"); });
   }
-  void Poll() {
-    test::TakeNewestByRobot(*joint_reader_, &joints);
-    test::TakeNewestByRobot(*imu_, &imu_now_);
-    test::TakeNewestByRobot(*force_, &force_now_);
-    test::TakeNewestByRobot(*links_, &links);
-    test::TakeNewest(*world_, &world);
-    test::TakeNewest(*scene_, &scene);
-  }
+  void Poll() { test::PollAll(joints, imu_now_, force_now_, links, world, scene); }
   // Polls until `done` holds, or 5 s.
   bool WaitFor(const std::function<bool()>& done) {
     const auto end = Clock::now() + 5s;
@@ -122,115 +109,115 @@ class Client {
       if (s.name()[i] == joint) return s.position()[i];
     return NAN;
   }
-  std::map<std::string, idl::JointState> joints;
-  std::map<std::string, idl::ImuState> imu_now_;
-  std::map<std::string, idl::ForceState> force_now_;
-  std::map<std::string, idl::LinkState> links;
-  std::optional<idl::WorldState> world;
-  std::optional<idl::LeggedSceneInfo> scene;
 
  private:
   dds::Participant participant_;
   std::unique_ptr<dds::Writer<idl::JointCommandPubSubType>> command_;
   dds::ControlClient control_;
-  std::unique_ptr<dds::Reader<idl::JointStatePubSubType>> joint_reader_;
-  std::unique_ptr<dds::Reader<idl::ImuStatePubSubType>> imu_;
-  std::unique_ptr<dds::Reader<idl::ForceStatePubSubType>> force_;
-  std::unique_ptr<dds::Reader<idl::LinkStatePubSubType>> links_;
-  std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> world_;
-  std::unique_ptr<dds::Reader<idl::LeggedSceneInfoPubSubType>> scene_;
+
+ public:
+  // The newest sample of each topic (of each robot), as of the last Poll.
+  test::NewestByRobot<idl::JointStatePubSubType> joints{participant_, dds::Topic::kRobotJointState};
+  test::NewestByRobot<idl::ImuStatePubSubType> imu_now_{participant_, dds::Topic::kRobotImu};
+  test::NewestByRobot<idl::ForceStatePubSubType> force_now_{participant_, dds::Topic::kRobotForce};
+  test::NewestByRobot<idl::LinkStatePubSubType> links{participant_, dds::Topic::kRobotLinks};
+  test::Newest<idl::WorldStatePubSubType> world{participant_, dds::Topic::kWorldState};
+  test::Newest<idl::LeggedSceneInfoPubSubType> scene{participant_, dds::Topic::kLeggedScene};
 };
 
-TEST(LeggedDdsTest, PublishesEveryRobotsJointsImuAndForces) {
-  const auto dds = UniqueDds("sim");
-  NodeUnderTest sim(dds, TimeMode::kFreeRunning);
-  Client client(dds);
-  ASSERT_TRUE(client.WaitMatched());
-  ASSERT_TRUE(client.WaitFor([&] {
-    return client.joints.count("nao_2") && client.joints["nao_1"].sim_time_ns() > 500'000'000 &&
-           client.force_now_.count("nao_1") && client.force_now_["nao_1"].sensors().size() == 2 &&
-           client.force_now_["nao_1"].sensors()[0].values()[0] > 10.0;
+// turf-sim on the SimSpark scene and a client of it, on the test's own domain
+// and prefix (made by Start, in this order; the client goes first at the end).
+class LeggedDdsTest : public ::testing::Test {
+ protected:
+  // True once the client has matched turf-sim (see Client::WaitMatched).
+  bool Start(TimeMode mode) {
+    sim.emplace(dds, mode);
+    client.emplace(dds);
+    return client->WaitMatched();
+  }
+  const dds::ParticipantOptions dds = UniqueDds("sim");
+  std::optional<NodeUnderTest> sim;
+  std::optional<Client> client;
+};
+
+TEST_F(LeggedDdsTest, PublishesEveryRobotsJointsImuAndForces) {
+  ASSERT_TRUE(Start(TimeMode::kFreeRunning));
+  ASSERT_TRUE(client->WaitFor([&] {
+    return client->joints.count("nao_2") && client->joints["nao_1"].sim_time_ns() > 500'000'000 &&
+           client->force_now_.count("nao_1") && client->force_now_["nao_1"].sensors().size() == 2 &&
+           client->force_now_["nao_1"].sensors()[0].values()[0] > 10.0;
   }));
-  const idl::JointState& j = client.joints["nao_1"];
+  const idl::JointState& j = client->joints["nao_1"];
   EXPECT_EQ(j.name().size(), 22u);
   EXPECT_EQ(j.position().size(), 22u);
   EXPECT_EQ(j.id(), 1);
-  const idl::ImuState& imu = client.imu_now_["nao_1"];
+  const idl::ImuState& imu = client->imu_now_["nao_1"];
   EXPECT_TRUE(imu.valid());
   EXPECT_NEAR(imu.linear_acceleration().z(), 9.81, 0.5);
   EXPECT_NEAR(imu.base_position().x(), -14.2, 0.05);
-  const idl::ForceReading& rf = client.force_now_["nao_1"].sensors()[0];
+  const idl::ForceReading& rf = client->force_now_["nao_1"].sensors()[0];
   EXPECT_EQ(rf.name(), "rf");
   EXPECT_TRUE(rf.contact());
   EXPECT_NEAR(rf.force().z(), 4.6071 * 9.81 / 2, 5.0);
   EXPECT_NEAR(rf.point().z(), -0.01, 0.003);
 }
 
-TEST(LeggedDdsTest, JointCommandMovesTheJointAndBadOnesAreCounted) {
-  const auto dds = UniqueDds("sim");
-  NodeUnderTest sim(dds, TimeMode::kFreeRunning);
-  Client client(dds);
-  ASSERT_TRUE(client.WaitMatched());
-  client.Command("nao_2", "hj1", idl::JOINT_POSITION, 0.8);
-  ASSERT_TRUE(client.WaitFor([&] { return std::abs(client.Angle("nao_2", "hj1") - 0.8) < 0.02; }));
-  EXPECT_NEAR(client.Angle("nao_1", "hj1"), 0.0, 0.01);  // the other robot is untouched
-  client.Command("nao_9", "hj1", idl::JOINT_VELOCITY, 1.0);
-  client.Command("nao_1", "he1", idl::JOINT_VELOCITY, 1.0);
-  client.Command("nao_1", "hj1", idl::JOINT_VELOCITY, NAN);
-  client.Command("nao_1", "hj1", idl::JOINT_VELOCITY, 7.0);
-  ASSERT_TRUE(client.WaitFor([&] { return sim.node().Stats().rejected >= 4; }));
+TEST_F(LeggedDdsTest, JointCommandMovesTheJointAndBadOnesAreCounted) {
+  ASSERT_TRUE(Start(TimeMode::kFreeRunning));
+  client->Command("nao_2", "hj1", idl::JOINT_POSITION, 0.8);
+  ASSERT_TRUE(client->WaitFor([&] { return std::abs(client->Angle("nao_2", "hj1") - 0.8) < 0.02; }));
+  EXPECT_NEAR(client->Angle("nao_1", "hj1"), 0.0, 0.01);  // the other robot is untouched
+  client->Command("nao_9", "hj1", idl::JOINT_VELOCITY, 1.0);
+  client->Command("nao_1", "he1", idl::JOINT_VELOCITY, 1.0);
+  client->Command("nao_1", "hj1", idl::JOINT_VELOCITY, NAN);
+  client->Command("nao_1", "hj1", idl::JOINT_VELOCITY, 7.0);
+  ASSERT_TRUE(client->WaitFor([&] { return sim->node().Stats().rejected >= 4; }));
   for (const char* kind : {"joint_command.unknown_robot", "joint_command.unknown_joint", "joint_command.not_finite",
                            "joint_command.out_of_range"})
-    EXPECT_EQ(sim.node().Rejected(kind), 1u) << kind;
+    EXPECT_EQ(sim->node().Rejected(kind), 1u) << kind;
 }
 
-TEST(LeggedDdsTest, LockstepStepsExactlyAndResetRestarts) {
-  const auto dds = UniqueDds("sim");
-  NodeUnderTest sim(dds, TimeMode::kLockstep);
-  Client client(dds);
-  ASSERT_TRUE(client.WaitMatched());
-  EXPECT_EQ(client.joints["nao_1"].frame(), 0u);
-  client.Command("nao_1", "hj1", idl::JOINT_VELOCITY, 1.0);
+TEST_F(LeggedDdsTest, LockstepStepsExactlyAndResetRestarts) {
+  ASSERT_TRUE(Start(TimeMode::kLockstep));
+  EXPECT_EQ(client->joints["nao_1"].frame(), 0u);
+  client->Command("nao_1", "hj1", idl::JOINT_VELOCITY, 1.0);
   // The command is taken before the step request: a refused one written after
   // it on the same writer is counted only once both have been taken.
-  client.Command("nao_1", "no_such_joint", idl::JOINT_VELOCITY, 1.0);
-  ASSERT_TRUE(client.WaitFor([&] { return sim.node().Rejected("joint_command.unknown_joint") == 1; }));
-  EXPECT_EQ(sim.node().Stats().rejected, 1u);
-  EXPECT_EQ(sim.node().Stats().frame, 0u);
-  const auto reply = client.Control(idl::OP_STEP, 250);  // 0.5 s
+  client->Command("nao_1", "no_such_joint", idl::JOINT_VELOCITY, 1.0);
+  ASSERT_TRUE(client->WaitFor([&] { return sim->node().Rejected("joint_command.unknown_joint") == 1; }));
+  EXPECT_EQ(sim->node().Stats().rejected, 1u);
+  EXPECT_EQ(sim->node().Stats().frame, 0u);
+  const auto reply = client->Control(idl::OP_STEP, 250);  // 0.5 s
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_OK);
   EXPECT_EQ(reply->frame(), 250u);
-  ASSERT_TRUE(client.WaitFor([&] { return client.joints["nao_1"].frame() == 250u; }));
-  EXPECT_NEAR(client.Angle("nao_1", "hj1"), 0.5, 0.03);
+  ASSERT_TRUE(client->WaitFor([&] { return client->joints["nao_1"].frame() == 250u; }));
+  EXPECT_NEAR(client->Angle("nao_1", "hj1"), 0.5, 0.03);
   // Lockstep: nothing moves without STEP. Later requests, each handled in a
   // turn of turf-sim's loop, are answered at the same frame.
   for (int i = 0; i < 5; ++i) {
-    const auto probe = client.Control(idl::OP_RESUME);
+    const auto probe = client->Control(idl::OP_RESUME);
     ASSERT_TRUE(probe);
     EXPECT_EQ(probe->result(), idl::RESULT_OK);
     EXPECT_EQ(probe->frame(), 250u);
   }
-  EXPECT_EQ(sim.node().Stats().frame, 250u);
-  const auto reset = client.Control(idl::OP_RESET);
+  EXPECT_EQ(sim->node().Stats().frame, 250u);
+  const auto reset = client->Control(idl::OP_RESET);
   ASSERT_TRUE(reset);
   EXPECT_EQ(reset->frame(), 0u);
-  ASSERT_TRUE(client.WaitFor([&] { return client.joints["nao_1"].frame() == 0u; }));
-  EXPECT_NEAR(client.Angle("nao_1", "hj1"), 0.0, 1e-9);
+  ASSERT_TRUE(client->WaitFor([&] { return client->joints["nao_1"].frame() == 0u; }));
+  EXPECT_NEAR(client->Angle("nao_1", "hj1"), 0.0, 1e-9);
 }
 
 // What the SimSpark bridge needs: joint commands inside STEP (atomic with the
 // step), robots and ball moved by control requests, body poses, the scene.
-TEST(LeggedDdsTest, StepCarriesJointCommandsAndTeleportsMoveRobotsAndBall) {
-  const auto dds = UniqueDds("sim");
-  NodeUnderTest sim(dds, TimeMode::kLockstep);
-  Client client(dds);
-  ASSERT_TRUE(client.WaitMatched());
-  ASSERT_TRUE(client.WaitFor([&] { return client.scene.has_value() && client.links.count("nao_2"); }));
-  ASSERT_EQ(client.scene->robots().size(), 2u);
-  EXPECT_TRUE(client.scene->has_field());
-  EXPECT_EQ(client.scene->field_length(), 30.0);
-  EXPECT_GT(client.scene->robots()[0].geoms().size(), 10u);
+TEST_F(LeggedDdsTest, StepCarriesJointCommandsAndTeleportsMoveRobotsAndBall) {
+  ASSERT_TRUE(Start(TimeMode::kLockstep));
+  ASSERT_TRUE(client->WaitFor([&] { return client->scene.has_value() && client->links.count("nao_2"); }));
+  ASSERT_EQ(client->scene->robots().size(), 2u);
+  EXPECT_TRUE(client->scene->has_field());
+  EXPECT_EQ(client->scene->field_length(), 30.0);
+  EXPECT_GT(client->scene->robots()[0].geoms().size(), 10u);
 
   idl::SimControl step;
   step.op(idl::OP_STEP);
@@ -243,15 +230,15 @@ TEST(LeggedDdsTest, StepCarriesJointCommandsAndTeleportsMoveRobotsAndBall) {
   t.value(1.0);
   c.joints().push_back(t);
   step.joint_commands().push_back(c);
-  auto reply = client.Control(step);
+  auto reply = client->Control(step);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_OK) << reply->reason();
-  ASSERT_TRUE(client.WaitFor([&] { return client.joints["nao_1"].frame() == 250u; }));
-  EXPECT_NEAR(client.Angle("nao_1", "hj1"), 0.5, 0.03);
+  ASSERT_TRUE(client->WaitFor([&] { return client->joints["nao_1"].frame() == 250u; }));
+  EXPECT_NEAR(client->Angle("nao_1", "hj1"), 0.5, 0.03);
 
   // A refused joint command refuses the whole step: no time passes.
   step.joint_commands()[0].joints()[0].value(NAN);
-  reply = client.Control(step);
+  reply = client->Control(step);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
   EXPECT_EQ(reply->frame(), 250u);
@@ -261,97 +248,91 @@ TEST(LeggedDdsTest, StepCarriesJointCommandsAndTeleportsMoveRobotsAndBall) {
   move.legged().robot("nao_2");
   move.legged().position(idl::V3(2.0, 3.0, 0.4));
   move.legged().orientation().w(1.0);
-  reply = client.Control(move);
+  reply = client->Control(move);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_OK) << reply->reason();
   idl::SimControl ball;
   ball.op(idl::OP_TELEPORT_BALL);
   ball.ball().position(idl::V3(1.0, -1.0, 0.042));
-  reply = client.Control(ball);
+  reply = client->Control(ball);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_OK) << reply->reason();
-  ASSERT_TRUE(client.WaitFor([&] {
-    const auto& links = client.links["nao_2"].links();
-    return !links.empty() && std::abs(links[0].position().x() - 2.0) < 1e-6 && client.world &&
-           std::abs(client.world->ball().position().x() - 1.0) < 1e-6;
+  ASSERT_TRUE(client->WaitFor([&] {
+    const auto& links = client->links["nao_2"].links();
+    return !links.empty() && std::abs(links[0].position().x() - 2.0) < 1e-6 && client->world &&
+           std::abs(client->world->ball().position().x() - 1.0) < 1e-6;
   }));
-  EXPECT_EQ(client.links["nao_2"].links()[0].name(), "torso");
-  EXPECT_NEAR(client.world->ball().position().y(), -1.0, 1e-6);
+  EXPECT_EQ(client->links["nao_2"].links()[0].name(), "torso");
+  EXPECT_NEAR(client->world->ball().position().y(), -1.0, 1e-6);
 
   move.legged().robot("nao_7");
-  reply = client.Control(move);
+  reply = client->Control(move);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
   move.legged().robot("nao_2");
   move.legged().position(idl::V3(1e6, 0, 0));
-  reply = client.Control(move);
+  reply = client->Control(move);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
   ball.ball().velocity(idl::V3(NAN, 0, 0));
-  reply = client.Control(ball);
+  reply = client->Control(ball);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
 }
 
 // Encoder realism changed at run time: published joint angles are quantised.
-TEST(LeggedDdsTest, SetRealismModelsTheEncoders) {
-  const auto dds = UniqueDds("sim");
-  NodeUnderTest sim(dds, TimeMode::kFreeRunning);
-  Client client(dds);
-  ASSERT_TRUE(client.WaitMatched());
-  client.Command("nao_1", "hj1", idl::JOINT_VELOCITY, 0.37);
+TEST_F(LeggedDdsTest, SetRealismModelsTheEncoders) {
+  ASSERT_TRUE(Start(TimeMode::kFreeRunning));
+  client->Command("nao_1", "hj1", idl::JOINT_VELOCITY, 0.37);
   idl::SimControl req;
   req.op(idl::OP_SET_REALISM);
   idl::RealismValue resolution;
   resolution.parameter(idl::REALISM_ENCODER_RESOLUTION);
   resolution.value(0.05);
   req.realism_values({resolution});
-  auto reply = client.Control(req);
+  auto reply = client->Control(req);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_OK) << reply->reason();
   const uint64_t after = reply->frame();
-  ASSERT_TRUE(client.WaitFor([&] { return client.joints["nao_1"].frame() > after + 10; }));
-  for (double q : client.joints["nao_1"].position()) EXPECT_NEAR(q / 0.05, std::round(q / 0.05), 1e-9);
+  ASSERT_TRUE(client->WaitFor([&] { return client->joints["nao_1"].frame() > after + 10; }));
+  for (double q : client->joints["nao_1"].position()) EXPECT_NEAR(q / 0.05, std::round(q / 0.05), 1e-9);
   req.realism_preset("/etc/passwd");  // never a path from the network
-  reply = client.Control(req);
+  reply = client->Control(req);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
   EXPECT_EQ(reply->error(), idl::CONTROL_UNKNOWN_PRESET);
   req.realism_preset("");
   resolution.value(-1);
   req.realism_values({resolution});
-  reply = client.Control(req);
+  reply = client->Control(req);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
   EXPECT_EQ(reply->error(), idl::CONTROL_OUT_OF_RANGE);
   EXPECT_NE(reply->reason().find("encoder.resolution"), std::string::npos) << reply->reason();
 }
 
-TEST(LeggedDdsTest, PauseStopsTimeAndStepAdvancesIt) {
-  const auto dds = UniqueDds("sim");
-  NodeUnderTest sim(dds, TimeMode::kRealtime);
-  Client client(dds);
-  ASSERT_TRUE(client.WaitMatched());
-  const auto pause = client.Control(idl::OP_PAUSE);
+TEST_F(LeggedDdsTest, PauseStopsTimeAndStepAdvancesIt) {
+  ASSERT_TRUE(Start(TimeMode::kRealtime));
+  const auto pause = client->Control(idl::OP_PAUSE);
   ASSERT_TRUE(pause);
   ASSERT_EQ(pause->result(), idl::RESULT_OK);
   const uint64_t frame = pause->frame();
   // Later requests, each handled in a turn of turf-sim's loop that would have
   // stepped if it could, are answered at the same frame.
   for (int i = 0; i < 5; ++i) {
-    const auto probe = client.Control(idl::OP_PAUSE);
+    const auto probe = client->Control(idl::OP_PAUSE);
     ASSERT_TRUE(probe);
     EXPECT_EQ(probe->frame(), frame);
   }
-  EXPECT_EQ(sim.node().Stats().frame, frame);
-  const auto reply = client.Control(idl::OP_STEP, 10);
+  EXPECT_EQ(sim->node().Stats().frame, frame);
+  const auto reply = client->Control(idl::OP_STEP, 10);
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->result(), idl::RESULT_OK);
   EXPECT_EQ(reply->frame(), frame + 10);
-  const auto resume = client.Control(idl::OP_RESUME);
+  const auto resume = client->Control(idl::OP_RESUME);
   ASSERT_TRUE(resume);
   EXPECT_EQ(resume->result(), idl::RESULT_OK);
-  ASSERT_TRUE(client.WaitFor([&] { return sim.node().Stats().frame > frame + 50; }));
+  ASSERT_TRUE(client->WaitFor([&] { return sim->node().Stats().frame > frame + 50; }));
 }
 
 // The realistic preset's encoder and IMU noise, with ideal links (one joint
@@ -394,7 +375,7 @@ std::vector<std::vector<double>> NoisyAngles(int frames, bool chatter) {
 
 // The determinism leak of the old node: it drew encoder noise at every state
 // publication, so a viewer's requests changed every later reading.
-TEST(LeggedDdsTest, ControlRequestsDoNotChangeTheSensorNoise) {
+TEST_F(LeggedDdsTest, ControlRequestsDoNotChangeTheSensorNoise) {
   const auto quiet = NoisyAngles(20, false);
   const auto chatty = NoisyAngles(20, true);
   ASSERT_EQ(quiet.size(), 20u);
@@ -406,29 +387,28 @@ TEST(LeggedDdsTest, ControlRequestsDoNotChangeTheSensorNoise) {
 // A joint-state link with 20 ms latency and 10 % loss, seen by a subscriber
 // in lockstep: no sample arrives before the step that is 20 ms after its
 // measurement, about a tenth never arrive, and the stats topic reports both.
-TEST(LeggedDdsTest, JointStatesArriveWithTheirLinksLatencyAndLoss) {
+TEST_F(LeggedDdsTest, JointStatesArriveWithTheirLinksLatencyAndLoss) {
   SensorRealism realism;
   realism.encoder.link.latency = 0.020;
   realism.encoder.link.loss = 0.10;
-  const auto dds = UniqueDds("sim");
-  NodeUnderTest sim(dds, TimeMode::kLockstep, realism);
+  sim.emplace(dds, TimeMode::kLockstep, realism);
   dds::ParticipantOptions o = dds;
   o.name = "stats";
   dds::Participant stats_participant(o);
   auto stats_reader = stats_participant.MakeReader<idl::SensorStatsPubSubType>(dds::Topic::kStats);
-  Client client(dds);
-  ASSERT_TRUE(client.WaitControlMatched());
-  ASSERT_TRUE(client.WaitFor([&] { return stats_reader->Matched() > 0; }));
+  client.emplace(dds);
+  ASSERT_TRUE(client->WaitControlMatched());
+  ASSERT_TRUE(client->WaitFor([&] { return stats_reader->Matched() > 0; }));
 
   constexpr int64_t kStepNs = 2'000'000;
   constexpr int kSteps = 2500;  // 5 s: 250 sensor frames of each robot
   std::set<std::pair<std::string, uint64_t>> received;
   for (int step = 1; step <= kSteps; ++step) {
-    const auto reply = client.Control(idl::OP_STEP, 1);
+    const auto reply = client->Control(idl::OP_STEP, 1);
     ASSERT_TRUE(reply && reply->result() == idl::RESULT_OK);
     // Whatever has arrived by now was released at or before this step.
-    client.Poll();
-    for (const auto& [robot, j] : client.joints) {
+    client->Poll();
+    for (const auto& [robot, j] : client->joints) {
       if (!received.insert({robot, j.frame()}).second) continue;
       ASSERT_LE(j.sim_time_ns() + 20'000'000, static_cast<int64_t>(reply->sim_time_ns()))
           << robot << " frame " << j.frame() << " arrived early";
@@ -436,7 +416,7 @@ TEST(LeggedDdsTest, JointStatesArriveWithTheirLinksLatencyAndLoss) {
   }
   // Every delivered sample arrives (reliable): wait for the last second's stats.
   std::vector<idl::SensorStats> windows;
-  ASSERT_TRUE(client.WaitFor([&] {
+  ASSERT_TRUE(client->WaitFor([&] {
     std::vector<idl::SensorStats> more;
     if (stats_reader->Take(&more)) windows.insert(windows.end(), more.begin(), more.end());
     return !windows.empty() && windows.back().sim_time_ns() >= 5'000'000'000 - kStepNs;

@@ -23,6 +23,7 @@
 #include "tests/codecs/grsim/grsim_messages.h"
 #include "tests/core/test_scenes.h"
 #include "tests/support/in_process.h"
+#include "tests/support/sim_and_bridge.h"
 
 namespace turf {
 namespace {
@@ -38,14 +39,12 @@ constexpr double kFace = 0.08;          // robot centre to its flat front
 constexpr double kBallRadius = 0.0215;  // m
 
 // turf-sim (scaled x2) and the bridge, each on its thread.
-class Stack {
+class Stack : public test::SimAndBridge<GrsimBridge> {
  public:
   Stack(Scene scene, const dds::ParticipantOptions& dds, uint16_t blue_status_port, uint16_t yellow_status_port,
         const SourceAllowlists& allow)
-      : sim_(std::move(scene), dds, TimeMode::kScaled, 2.0),
-        bridge_(MakeBridge(dds, blue_status_port, yellow_status_port, allow)) {}
-  SimNode& sim() { return sim_.node(); }
-  GrsimBridge& bridge() { return bridge_.node(); }
+      : SimAndBridge(std::move(scene), dds, TimeMode::kScaled, 2.0,
+                     MakeBridge(dds, blue_status_port, yellow_status_port, allow)) {}
 
  private:
   static std::unique_ptr<GrsimBridge> MakeBridge(const dds::ParticipantOptions& dds, uint16_t blue_status_port,
@@ -58,15 +57,13 @@ class Stack {
     b.allow = allow;
     return std::make_unique<GrsimBridge>(b);
   }
-  test::SimUnderTest sim_;
-  test::OnThread<GrsimBridge> bridge_;
 };
 
 // A grSim client: sends packets to the bridge (from `ip`, a loopback address), receives robot status.
 class Team {
  public:
   explicit Team(const std::string& ip = "127.0.0.1")
-      : out_(Bind(ip)), blue_status_(test::BindLoopback()), yellow_status_(test::BindLoopback()) {}
+      : out_(test::BindUdp(ip)), blue_status_(test::BindLoopback()), yellow_status_(test::BindLoopback()) {}
   uint16_t blue_status_port() const { return blue_status_.LocalPort(); }
   uint16_t yellow_status_port() const { return yellow_status_.LocalPort(); }
   void Connect(uint16_t bridge_port) { to_ = *MakeEndpoint("127.0.0.1", bridge_port); }
@@ -89,12 +86,6 @@ class Team {
   }
 
  private:
-  static UdpSocket Bind(const std::string& ip) {
-    std::string error;
-    std::optional<UdpSocket> s = UdpSocket::Bind(ip, 0, false, &error);
-    if (!s) throw std::runtime_error(error);
-    return std::move(*s);
-  }
   UdpSocket out_, blue_status_, yellow_status_;
   UdpEndpoint to_;
 };

@@ -154,6 +154,20 @@ struct Harness {
     if (issues[0].detail.empty()) return ::testing::AssertionFailure() << "issue " << kind << " without a detail";
     return ::testing::AssertionSuccess();
   }
+  // The agents an operator's trainer `command` kicks.
+  std::vector<int> KickedBy(const std::string& command) {
+    session.Trainer(command, TrainerRole::kOperator);
+    return session.TakeKicked();
+  }
+  // `message` from `agent` raises one issue of `kind` (as OneIssue) and asks the world for no joint or move.
+  ::testing::AssertionResult OnlyAnIssue(int agent, const std::string& message, const std::string& kind) {
+    session.Receive(agent, message);
+    if (::testing::AssertionResult one = OneIssue(kind, agent); !one) return one;
+    const WorldRequests requests = session.TakeRequests();
+    if (!requests.joints.empty() || !requests.moves.empty())
+      return ::testing::AssertionFailure() << "joints or moves requested";
+    return ::testing::AssertionSuccess();
+  }
 };
 
 // The one output for `agent` ("" when none; a failure when more than one).
@@ -422,10 +436,7 @@ TEST(SessionEffectors, HingesWithoutRobotAreDropped) {
 
 TEST(SessionEffectors, ParseErrorIsAnIssue) {
   Harness h(1);
-  const int a = h.JoinAndCycle("Alpha", 1);
-  h.session.Receive(a, "(he1 1");
-  EXPECT_TRUE(h.OneIssue("parse", a));
-  EXPECT_TRUE(h.session.TakeRequests().joints.empty());
+  EXPECT_TRUE(h.OnlyAnIssue(h.JoinAndCycle("Alpha", 1), "(he1 1", "parse"));
 }
 
 // --- perception ---
@@ -556,10 +567,7 @@ TEST(SessionBeam, IgnoredInPlayOn) {
 
 TEST(SessionBeam, BeforeInitIsAnIssue) {
   Harness h(1);
-  const int a = h.JoinAndCycle("", 0);
-  h.session.Receive(a, "(beam -2 1 90)");
-  EXPECT_TRUE(h.OneIssue("beam_before_init", a));
-  EXPECT_TRUE(h.session.TakeRequests().moves.empty());
+  EXPECT_TRUE(h.OnlyAnIssue(h.JoinAndCycle("", 0), "(beam -2 1 90)", "beam_before_init"));
 }
 
 // --- sync mode ---
@@ -690,11 +698,9 @@ TEST(SessionTrainer, KillKicksTheAgentAndKillsimQuits) {
   Harness h(2);
   h.Join("Alpha", 1);
   const int b = h.Join("Alpha", 2);
-  h.session.Trainer("(kill (unum 2) (team Left))", TrainerRole::kOperator);
-  EXPECT_EQ(h.session.TakeKicked(), std::vector<int>{b});
+  EXPECT_EQ(h.KickedBy("(kill (unum 2) (team Left))"), std::vector<int>{b});
   EXPECT_TRUE(h.session.TakeKicked().empty());
-  h.session.Trainer("(kill (unum 3) (team Left))", TrainerRole::kOperator);
-  EXPECT_TRUE(h.session.TakeKicked().empty());
+  EXPECT_TRUE(h.KickedBy("(kill (unum 3) (team Left))").empty());
   EXPECT_FALSE(h.session.quit_requested());
   h.session.Trainer("(killsim)", TrainerRole::kOperator);
   EXPECT_TRUE(h.session.quit_requested());
@@ -917,6 +923,11 @@ struct LeagueMatch {
     for (int i = from; i < to; ++i) log += Step(i);
     return log;
   }
+  // The league saved after cycles [0, cycles).
+  std::string SaveAfter(int cycles) {
+    Run(0, cycles);
+    return h.session.SaveLeague();
+  }
   std::string Name(int id) const {
     const std::pair<int, const char*> names[] = {{a, "a"}, {b, "b"}, {c, "c"}, {d, "d"}};
     for (const auto& [agent, name] : names)
@@ -930,8 +941,7 @@ struct LeagueMatch {
 
 TEST(SessionLeagueSnapshot, RestoredMatchSendsTheSameBytes) {
   LeagueMatch m;
-  m.Run(0, 10);
-  const std::string snapshot = m.h.session.SaveLeague();
+  const std::string snapshot = m.SaveAfter(10);
   const FakeWorld world = m.h.world;  // the kernel's snapshot, in a real run
   const std::string first = m.Run(10, 30);
   for (const char* part :
@@ -968,8 +978,7 @@ TEST(SessionLeagueSnapshot, SavedWithInputsPendingGoesOnTheSame) {
 // vision lists the other players in connection order.)
 TEST(SessionLeagueSnapshot, ReconnectedPlayerTakesTheSavedState) {
   LeagueMatch m;
-  m.Run(0, 10);
-  const std::string snapshot = m.h.session.SaveLeague();
+  const std::string snapshot = m.SaveAfter(10);
   m.Run(10, 20);
   m.h.session.Disconnect(m.d);
   m.h.session.Disconnect(m.a);
@@ -982,16 +991,14 @@ TEST(SessionLeagueSnapshot, ReconnectedPlayerTakesTheSavedState) {
 
 TEST(SessionLeagueSnapshot, SnapshotOfTheSameStateIsTheSameBytes) {
   LeagueMatch m;
-  m.Run(0, 12);
-  const std::string snapshot = m.h.session.SaveLeague();
+  const std::string snapshot = m.SaveAfter(12);
   ASSERT_EQ(m.h.session.RestoreLeague(snapshot), "");
   EXPECT_EQ(m.h.session.SaveLeague(), snapshot);
 }
 
 TEST(SessionLeagueSnapshot, TruncatedOrCorruptedIsRefusedAndChangesNothing) {
   LeagueMatch m;
-  m.Run(0, 8);
-  const std::string snapshot = m.h.session.SaveLeague();
+  const std::string snapshot = m.SaveAfter(8);
   m.Run(8, 12);
   const std::string now = m.h.session.SaveLeague();
   for (size_t cut = 0; cut < snapshot.size(); ++cut) {
@@ -1022,8 +1029,7 @@ TEST(SessionLeagueSnapshot, TruncatedOrCorruptedIsRefusedAndChangesNothing) {
 // noise wait forever for a non-zero draw.
 TEST(SessionLeagueSnapshot, AllZeroNoiseGeneratorIsRefused) {
   LeagueMatch m;
-  m.Run(0, 4);
-  std::string snapshot = m.h.session.SaveLeague();
+  std::string snapshot = m.SaveAfter(4);
   const std::string now = snapshot;
   // The last player's generator ends the snapshot: four state words, has_spare, spare.
   const size_t state_at = snapshot.size() - (4 * 8 + 1 + 8);
@@ -1034,8 +1040,7 @@ TEST(SessionLeagueSnapshot, AllZeroNoiseGeneratorIsRefused) {
 
 TEST(SessionLeagueSnapshot, PlayerNotConnectedIsRefused) {
   LeagueMatch m;
-  m.Run(0, 6);
-  const std::string snapshot = m.h.session.SaveLeague();
+  const std::string snapshot = m.SaveAfter(6);
   m.h.session.Disconnect(m.d);
   m.Step(6);
   const std::string now = m.h.session.SaveLeague();
@@ -1050,8 +1055,7 @@ TEST(SessionLeagueSnapshot, PlayerNotConnectedIsRefused) {
 
 TEST(SessionLeagueSnapshot, PlayerNotInTheSnapshotIsRefused) {
   LeagueMatch m;
-  m.Run(0, 4);
-  const std::string snapshot = m.h.session.SaveLeague();
+  const std::string snapshot = m.SaveAfter(4);
   const int e = m.h.Join("Beta", 5);
   m.h.Cycle();
   const std::string now = m.h.session.SaveLeague();
@@ -1065,8 +1069,7 @@ TEST(SessionLeagueSnapshot, PlayerNotInTheSnapshotIsRefused) {
 
 TEST(SessionLeagueSnapshot, PlayerInAnotherRobotIsRefused) {
   LeagueMatch m;
-  m.Run(0, 4);
-  const std::string snapshot = m.h.session.SaveLeague();
+  const std::string snapshot = m.SaveAfter(4);
   m.h.session.Disconnect(m.a);
   m.h.Join("", 0);  // takes nao_1
   m.a = m.h.Join("Alpha", 1);
@@ -1136,8 +1139,7 @@ TEST(SessionTeams, AnOperatorResetsASideWhoseSquattersStayConnected) {
   Harness h(3);
   h.Join("Squat1", 1);
   const int squat2 = h.JoinAndCycle("Squat2", 1);
-  h.session.Trainer("(turfResetTeam Right)", TrainerRole::kOperator);
-  EXPECT_EQ(h.session.TakeKicked(), std::vector<int>{squat2});
+  EXPECT_EQ(h.KickedBy("(turfResetTeam Right)"), std::vector<int>{squat2});
   // The side is free at once, before the participant has dropped the squatter...
   const int real = h.Join("Real", 1);
   EXPECT_TRUE(h.session.TakeIssues().empty());

@@ -24,6 +24,7 @@
 #include "tests/core/test_scenes.h"
 #include "tests/support/in_process.h"
 #include "tests/support/process.h"
+#include "tests/support/sim_and_bridge.h"
 #include "tests/support/world_observer.h"
 
 namespace turf {
@@ -46,10 +47,10 @@ class Stack {
  public:
   Stack(Scene scene, const dds::ParticipantOptions& dds, TimeMode mode, double speed = 1.0, bool allow_sync = true,
         const SourceAllowlists& allow = {})
-      : sim_(std::move(scene), dds, mode, speed), bridge_(MakeBridge(dds, allow_sync, allow)) {}
-  SimNode& sim() { return sim_.node(); }
-  SimprotoBridge& bridge() { return bridge_.node(); }
-  uint16_t control = 0, blue = 0, yellow = 0, sync = 0;
+      : run_(std::move(scene), dds, mode, speed, MakeBridge(dds, allow_sync, allow)) {}
+  SimNode& sim() { return run_.sim(); }
+  SimprotoBridge& bridge() { return run_.bridge(); }
+  uint16_t control = 0, blue = 0, yellow = 0, sync = 0;  // set before run_ starts
 
  private:
   std::unique_ptr<SimprotoBridge> MakeBridge(const dds::ParticipantOptions& dds, bool allow_sync,
@@ -64,14 +65,13 @@ class Stack {
     bo.allow = allow;
     return std::make_unique<SimprotoBridge>(bo);
   }
-  test::SimUnderTest sim_;
-  test::OnThread<SimprotoBridge> bridge_;
+  test::SimAndBridge<SimprotoBridge> run_;
 };
 
 // A team (or training loop) on UDP: one socket (on `ip`, a loopback address), request and answer.
 class Team {
  public:
-  explicit Team(const std::string& ip = "127.0.0.1") : socket_(Bind(ip)) {}
+  explicit Team(const std::string& ip = "127.0.0.1") : socket_(test::BindUdp(ip)) {}
   // nullopt (and a failure) if there is no answer within `timeout`.
   std::optional<std::vector<uint8_t>> Ask(uint16_t port, const std::vector<uint8_t>& bytes,
                                           std::chrono::milliseconds timeout = 3s) {
@@ -109,12 +109,6 @@ class Team {
   }
 
  private:
-  static UdpSocket Bind(const std::string& ip) {
-    std::string error;
-    std::optional<UdpSocket> s = UdpSocket::Bind(ip, 0, false, &error);
-    if (!s) throw std::runtime_error(error);
-    return std::move(*s);
-  }
   UdpSocket socket_;
 };
 

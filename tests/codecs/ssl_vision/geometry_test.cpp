@@ -43,6 +43,27 @@ struct Line {
   float x1, y1, x2, y2;  // mm
 };
 
+// The 12 lines SSL-Vision's field.cpp draws (x along the length, "Left" = -x,
+// "Top" = +y), for a field of half length `l` and half width `w` whose penalty
+// areas reach from the goal lines to |x| = `px`, `pw` to each side of the x axis.
+std::map<std::string, Line> StandardLines(float l, float w, float px, float pw) {
+  namespace v = wire::vision;
+  return {
+      {"TopTouchLine", {v::TopTouchLine, -l, w, l, w}},
+      {"BottomTouchLine", {v::BottomTouchLine, -l, -w, l, -w}},
+      {"LeftGoalLine", {v::LeftGoalLine, -l, -w, -l, w}},
+      {"RightGoalLine", {v::RightGoalLine, l, -w, l, w}},
+      {"HalfwayLine", {v::HalfwayLine, 0, -w, 0, w}},
+      {"CenterLine", {v::CenterLine, -l, 0, l, 0}},
+      {"LeftPenaltyStretch", {v::LeftPenaltyStretch, -px, -pw, -px, pw}},
+      {"RightPenaltyStretch", {v::RightPenaltyStretch, px, -pw, px, pw}},
+      {"LeftFieldLeftPenaltyStretch", {v::LeftFieldLeftPenaltyStretch, -l, -pw, -px, -pw}},
+      {"LeftFieldRightPenaltyStretch", {v::LeftFieldRightPenaltyStretch, -l, pw, -px, pw}},
+      {"RightFieldRightPenaltyStretch", {v::RightFieldRightPenaltyStretch, l, -pw, px, -pw}},
+      {"RightFieldLeftPenaltyStretch", {v::RightFieldLeftPenaltyStretch, l, pw, px, pw}},
+  };
+}
+
 void ExpectLines(const wire::vision::SSL_GeometryFieldSize& field, const std::map<std::string, Line>& expected) {
   ASSERT_EQ(field.field_lines_size(), 12);
   std::map<std::string, int> seen;
@@ -71,68 +92,42 @@ void ExpectLines(const wire::vision::SSL_GeometryFieldSize& field, const std::ma
   EXPECT_FLOAT_EQ(arc.thickness(), 10.0f);
 }
 
+// A division's sizes, mm (the SSL rules).
+struct FieldFacts {
+  int length, width, goal_width, boundary_width, boundary_width_goal_line;
+  int penalty_area_depth, penalty_area_width, goal_center_to_penalty_mark;
+};
+
+// The field's sizes, and its lines drawn from them.
+void ExpectSizesAndLines(const wire::vision::SSL_GeometryFieldSize& f, const FieldFacts& e) {
+  EXPECT_EQ(f.field_length(), e.length);
+  EXPECT_EQ(f.field_width(), e.width);
+  EXPECT_EQ(f.goal_width(), e.goal_width);
+  EXPECT_EQ(f.boundary_width(), e.boundary_width);
+  EXPECT_EQ(f.boundary_width_goal_line(), e.boundary_width_goal_line);
+  EXPECT_EQ(f.penalty_area_depth(), e.penalty_area_depth);
+  EXPECT_EQ(f.penalty_area_width(), e.penalty_area_width);
+  EXPECT_EQ(f.goal_center_to_penalty_mark(), e.goal_center_to_penalty_mark);
+  const float l = e.length / 2.0f, w = e.width / 2.0f;
+  ExpectLines(f, StandardLines(l, w, l - e.penalty_area_depth, e.penalty_area_width / 2.0f));
+}
+
 TEST(SslVisionGeometry, DivisionASizesAndLines) {
   const wire::vision::SSL_GeometryData g = Decode(PublishedField(Division::kA));
   const auto& f = g.field();
-  EXPECT_EQ(f.field_length(), 12000);
-  EXPECT_EQ(f.field_width(), 9000);
-  EXPECT_EQ(f.goal_width(), 1800);
+  ExpectSizesAndLines(f, {12000, 9000, 1800, 300, 600, 1800, 3600, 8000});
   EXPECT_EQ(f.goal_depth(), 180);
-  EXPECT_EQ(f.boundary_width(), 300);
-  EXPECT_EQ(f.boundary_width_goal_line(), 600);
-  EXPECT_EQ(f.penalty_area_depth(), 1800);
-  EXPECT_EQ(f.penalty_area_width(), 3600);
   EXPECT_EQ(f.center_circle_radius(), 500);
   EXPECT_EQ(f.line_thickness(), 10);
-  EXPECT_EQ(f.goal_center_to_penalty_mark(), 8000);
   EXPECT_EQ(f.goal_height(), 160);
   EXPECT_FLOAT_EQ(f.ball_radius(), 21.5f);
   EXPECT_FLOAT_EQ(f.max_robot_radius(), 90.0f);
   EXPECT_FALSE(f.has_goal_substitution_area_width());
-  // x along the length, "Left" = -x, "Top" = +y; as SSL-Vision's field.cpp.
-  ExpectLines(
-      f, {
-             {"TopTouchLine", {wire::vision::TopTouchLine, -6000, 4500, 6000, 4500}},
-             {"BottomTouchLine", {wire::vision::BottomTouchLine, -6000, -4500, 6000, -4500}},
-             {"LeftGoalLine", {wire::vision::LeftGoalLine, -6000, -4500, -6000, 4500}},
-             {"RightGoalLine", {wire::vision::RightGoalLine, 6000, -4500, 6000, 4500}},
-             {"HalfwayLine", {wire::vision::HalfwayLine, 0, -4500, 0, 4500}},
-             {"CenterLine", {wire::vision::CenterLine, -6000, 0, 6000, 0}},
-             {"LeftPenaltyStretch", {wire::vision::LeftPenaltyStretch, -4200, -1800, -4200, 1800}},
-             {"RightPenaltyStretch", {wire::vision::RightPenaltyStretch, 4200, -1800, 4200, 1800}},
-             {"LeftFieldLeftPenaltyStretch", {wire::vision::LeftFieldLeftPenaltyStretch, -6000, -1800, -4200, -1800}},
-             {"LeftFieldRightPenaltyStretch", {wire::vision::LeftFieldRightPenaltyStretch, -6000, 1800, -4200, 1800}},
-             {"RightFieldRightPenaltyStretch", {wire::vision::RightFieldRightPenaltyStretch, 6000, -1800, 4200, -1800}},
-             {"RightFieldLeftPenaltyStretch", {wire::vision::RightFieldLeftPenaltyStretch, 6000, 1800, 4200, 1800}},
-         });
 }
 
 TEST(SslVisionGeometry, DivisionBSizesAndLines) {
   const wire::vision::SSL_GeometryData g = Decode(PublishedField(Division::kB));
-  const auto& f = g.field();
-  EXPECT_EQ(f.field_length(), 9000);
-  EXPECT_EQ(f.field_width(), 6000);
-  EXPECT_EQ(f.goal_width(), 1000);
-  EXPECT_EQ(f.boundary_width(), 300);
-  EXPECT_EQ(f.boundary_width_goal_line(), 300);
-  EXPECT_EQ(f.penalty_area_depth(), 1000);
-  EXPECT_EQ(f.penalty_area_width(), 2000);
-  EXPECT_EQ(f.goal_center_to_penalty_mark(), 6000);
-  ExpectLines(
-      f, {
-             {"TopTouchLine", {wire::vision::TopTouchLine, -4500, 3000, 4500, 3000}},
-             {"BottomTouchLine", {wire::vision::BottomTouchLine, -4500, -3000, 4500, -3000}},
-             {"LeftGoalLine", {wire::vision::LeftGoalLine, -4500, -3000, -4500, 3000}},
-             {"RightGoalLine", {wire::vision::RightGoalLine, 4500, -3000, 4500, 3000}},
-             {"HalfwayLine", {wire::vision::HalfwayLine, 0, -3000, 0, 3000}},
-             {"CenterLine", {wire::vision::CenterLine, -4500, 0, 4500, 0}},
-             {"LeftPenaltyStretch", {wire::vision::LeftPenaltyStretch, -3500, -1000, -3500, 1000}},
-             {"RightPenaltyStretch", {wire::vision::RightPenaltyStretch, 3500, -1000, 3500, 1000}},
-             {"LeftFieldLeftPenaltyStretch", {wire::vision::LeftFieldLeftPenaltyStretch, -4500, -1000, -3500, -1000}},
-             {"LeftFieldRightPenaltyStretch", {wire::vision::LeftFieldRightPenaltyStretch, -4500, 1000, -3500, 1000}},
-             {"RightFieldRightPenaltyStretch", {wire::vision::RightFieldRightPenaltyStretch, 4500, -1000, 3500, -1000}},
-             {"RightFieldLeftPenaltyStretch", {wire::vision::RightFieldLeftPenaltyStretch, 4500, 1000, 3500, 1000}},
-         });
+  ExpectSizesAndLines(g.field(), {9000, 6000, 1000, 300, 300, 1000, 2000, 6000});
   EXPECT_EQ(g.calib_size(), 2);
 }
 

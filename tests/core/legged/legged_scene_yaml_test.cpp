@@ -23,6 +23,23 @@ bool HasError(const LeggedSceneLoadResult& r, const std::string& part) {
   return false;
 }
 
+// A scene of one Nao with `settings` (YAML lines, each ending in a newline) before its robot list, read as if
+// from configs/scenes.
+LeggedSceneLoadResult ParseNaoScene(const std::string& settings) {
+  return ParseLeggedSceneYaml("kind: legged\n" + settings + "robots:\n  - {name: a, model: ../robots/nao.xml}\n",
+                              std::string(TURF_SOURCE_DIR) + "/configs/scenes");
+}
+
+// The `law` switch of an ODE block (`key`, read into scene.*block): `law: mujoco` leaves the block off, and an
+// unknown law is an error naming "law".
+template <class Block>
+void ExpectLawSwitch(const std::string& key, Block LeggedScene::*block) {
+  const LeggedSceneLoadResult r = ParseNaoScene(key + ": {law: mujoco}\n");
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_FALSE(((*r.scene).*block).enabled) << key;
+  EXPECT_TRUE(HasError(ParseNaoScene(key + ": {law: bullet}\n"), "law")) << key;
+}
+
 TEST(LeggedSceneYamlTest, SimSpark3dSceneLoadsAndBuilds) {
   ASSERT_TRUE(IsLeggedSceneFile(kScenes + "simspark_3d.yaml"));
   EXPECT_FALSE(IsLeggedSceneFile(kScenes + "ssl_div_a.yaml"));
@@ -81,24 +98,16 @@ TEST(LeggedSceneYamlTest, ContactLawBlockLoadsAndIsChecked) {
   EXPECT_EQ(c.robot.erp, 0.6);
   EXPECT_EQ(c.robot.cfm, 1e-4);
   EXPECT_EQ(c.ground.cfm, -1.0);  // not set
-  const std::string dir = std::string(TURF_SOURCE_DIR) + "/configs/scenes";
-  const std::string nao = "robots:\n  - {name: a, model: ../robots/nao.xml}\n";
-  r = ParseLeggedSceneYaml("kind: legged\ncontacts: {law: ode, robot: {erp: 0.6, cfm: 1.0e-4, slip: 5.0e-3}}\n" + nao,
-                           dir);
+  r = ParseNaoScene("contacts: {law: ode, robot: {erp: 0.6, cfm: 1.0e-4, slip: 5.0e-3}}\n");
   ASSERT_TRUE(r.scene) << r.errors.front();
   EXPECT_TRUE(r.scene->contacts.enabled);
   EXPECT_TRUE(r.scene->contacts.ode_normal);
   LeggedWorld w(std::move(*r.scene));
   for (int i = 0; w.time_ns() < 2'000'000'000; ++i) w.Step();
   EXPECT_NEAR(w.State().robots[0].base_position[2], 0.385, 0.005);  // standing
-  r = ParseLeggedSceneYaml("kind: legged\ncontacts: {law: mujoco}\n" + nao, dir);
-  ASSERT_TRUE(r.scene) << r.errors.front();
-  EXPECT_FALSE(r.scene->contacts.enabled);
-  EXPECT_TRUE(HasError(ParseLeggedSceneYaml("kind: legged\ncontacts: {law: bullet}\n" + nao, dir), "law"));
-  EXPECT_TRUE(
-      HasError(ParseLeggedSceneYaml("kind: legged\ncontacts: {law: ode, robot: {erp: 2}}\n" + nao, dir), "contacts"));
-  EXPECT_TRUE(HasError(ParseLeggedSceneYaml("kind: legged\ncontacts: {law: ode, robot: {cfm: .nan}}\n" + nao, dir),
-                       "contacts"));
+  ASSERT_NO_FATAL_FAILURE(ExpectLawSwitch("contacts", &LeggedScene::contacts));
+  EXPECT_TRUE(HasError(ParseNaoScene("contacts: {law: ode, robot: {erp: 2}}\n"), "contacts"));
+  EXPECT_TRUE(HasError(ParseNaoScene("contacts: {law: ode, robot: {cfm: .nan}}\n"), "contacts"));
 }
 
 // rcssserver3d's hinge stops (core/legged/legged_scene.h: OdeJointStops): off unless asked for (the match scene
@@ -108,9 +117,7 @@ TEST(LeggedSceneYamlTest, JointStopsBlockLoadsAndIsChecked) {
   LeggedSceneLoadResult r = LoadLeggedSceneFile(kScenes + "simspark_match.yaml");
   ASSERT_TRUE(r.scene) << r.errors.front();
   EXPECT_FALSE(r.scene->joint_stops.enabled);
-  const std::string dir = std::string(TURF_SOURCE_DIR) + "/configs/scenes";
-  const std::string nao = "robots:\n  - {name: a, model: ../robots/nao.xml}\n";
-  r = ParseLeggedSceneYaml("kind: legged\njoint_stops: {law: ode}\n" + nao, dir);
+  r = ParseNaoScene("joint_stops: {law: ode}\n");
   ASSERT_TRUE(r.scene) << r.errors.front();
   const OdeJointStops& j = r.scene->joint_stops;
   EXPECT_TRUE(j.enabled);
@@ -119,40 +126,26 @@ TEST(LeggedSceneYamlTest, JointStopsBlockLoadsAndIsChecked) {
   EXPECT_EQ(j.bounce, 1.0);
   EXPECT_EQ(j.fudge, 1e-5);
   EXPECT_TRUE(j.hold_commands_at_stop);
-  r = ParseLeggedSceneYaml(
-      "kind: legged\njoint_stops: {law: ode, step: 0.01, bounce: 0.5, hold_commands_at_stop: false}\n" + nao, dir);
+  r = ParseNaoScene("joint_stops: {law: ode, step: 0.01, bounce: 0.5, hold_commands_at_stop: false}\n");
   ASSERT_TRUE(r.scene) << r.errors.front();
   EXPECT_EQ(r.scene->joint_stops.step, 0.01);
   EXPECT_EQ(r.scene->joint_stops.bounce, 0.5);
   EXPECT_FALSE(r.scene->joint_stops.hold_commands_at_stop);
-  r = ParseLeggedSceneYaml("kind: legged\njoint_stops: {law: mujoco}\n" + nao, dir);
-  ASSERT_TRUE(r.scene) << r.errors.front();
-  EXPECT_FALSE(r.scene->joint_stops.enabled);
-  EXPECT_TRUE(HasError(ParseLeggedSceneYaml("kind: legged\njoint_stops: {law: bullet}\n" + nao, dir), "law"));
-  EXPECT_TRUE(
-      HasError(ParseLeggedSceneYaml("kind: legged\njoint_stops: {law: ode, erp: 2}\n" + nao, dir), "joint_stops"));
-  EXPECT_TRUE(
-      HasError(ParseLeggedSceneYaml("kind: legged\njoint_stops: {law: ode, step: .nan}\n" + nao, dir), "joint_stops"));
-  EXPECT_TRUE(
-      HasError(ParseLeggedSceneYaml("kind: legged\njoint_stops: {law: ode, spring: 1}\n" + nao, dir), "spring"));
+  ASSERT_NO_FATAL_FAILURE(ExpectLawSwitch("joint_stops", &LeggedScene::joint_stops));
+  EXPECT_TRUE(HasError(ParseNaoScene("joint_stops: {law: ode, erp: 2}\n"), "joint_stops"));
+  EXPECT_TRUE(HasError(ParseNaoScene("joint_stops: {law: ode, step: .nan}\n"), "joint_stops"));
+  EXPECT_TRUE(HasError(ParseNaoScene("joint_stops: {law: ode, spring: 1}\n"), "spring"));
 }
 
 TEST(LeggedSceneYamlTest, RealismPresetOrMapSetsEncodersAndImu) {
-  const std::string dir = std::string(TURF_SOURCE_DIR) + "/configs/scenes";
-  LeggedSceneLoadResult r =
-      ParseLeggedSceneYaml("kind: legged\nrealism: realistic\nrobots:\n  - {name: a, model: ../robots/nao.xml}\n", dir);
+  LeggedSceneLoadResult r = ParseNaoScene("realism: realistic\n");
   ASSERT_TRUE(r.scene) << r.errors.front();
   EXPECT_GT(r.scene->realism.encoder.resolution, 0.0);
   EXPECT_GT(r.scene->realism.imu.gyro_noise_stddev, 0.0);
-  r = ParseLeggedSceneYaml(
-      "kind: legged\nrealism: {encoder: {noise_stddev: 0.01}}\nrobots:\n  - {name: a, model: ../robots/nao.xml}\n",
-      dir);
+  r = ParseNaoScene("realism: {encoder: {noise_stddev: 0.01}}\n");
   ASSERT_TRUE(r.scene) << r.errors.front();
   EXPECT_EQ(r.scene->realism.encoder.noise_stddev, 0.01);
-  EXPECT_TRUE(HasError(ParseLeggedSceneYaml("kind: legged\nrealism: nosuchpreset\nrobots:\n  - {name: a, model: "
-                                            "../robots/nao.xml}\n",
-                                            dir),
-                       "realism"));
+  EXPECT_TRUE(HasError(ParseNaoScene("realism: nosuchpreset\n"), "realism"));
 }
 
 TEST(LeggedSceneYamlTest, ExampleSceneLoads) {

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "core/legged/legged_world.h"
 #include "tests/core/legged/nao_fixture.h"
@@ -13,6 +15,10 @@ namespace turf {
 namespace {
 
 using testing::NaoScene;
+
+double JointAngle(const LeggedWorld& w, int robot, const std::string& joint) {
+  return w.State().robots[robot].joint_positions[w.JointIndex(robot, joint)];
+}
 
 // Every test runs at the default 2 ms step, at 5 ms, and at the 6.67 ms step
 // of the SimSpark match scene (configs/scenes/simspark_match.yaml: 3 steps per
@@ -26,11 +32,21 @@ class NaoPhysicsTest : public ::testing::TestWithParam<double> {
     s.physics.step = step();
     return s;
   }
+  struct Phase {
+    JointCommand command;  // robot 0's
+    int steps;             // physics steps it runs for
+  };
+  // One robot, from its start, runs each phase in turn: then the angle of the
+  // last phase's joint, or NaN if a command is refused.
+  double AngleAfter(const std::vector<Phase>& phases) const {
+    LeggedWorld w(Scene());
+    for (const Phase& p : phases) {
+      if (w.SetJointCommand(0, p.command) != JointCommandError::kOk) return NAN;
+      for (int i = 0; i < p.steps; ++i) w.Step();
+    }
+    return JointAngle(w, 0, phases.back().command.joint);
+  }
 };
-
-double JointAngle(const LeggedWorld& w, int robot, const std::string& joint) {
-  return w.State().robots[robot].joint_positions[w.JointIndex(robot, joint)];
-}
 
 TEST_P(NaoPhysicsTest, ModelHasTheSheetsJointsMassAndSensors) {
   LeggedWorld w(Scene());
@@ -101,30 +117,21 @@ TEST_P(NaoPhysicsTest, VelocityCommandReachesExpectedAngle) {
 
 // A knee bent by a velocity command (knee bends negative) and held.
 TEST_P(NaoPhysicsTest, KneeFollowsVelocityAndHolds) {
-  LeggedWorld w(Scene());
-  ASSERT_EQ(w.SetJointCommand(0, {"rlj4", JointMode::kVelocity, -1.0}), JointCommandError::kOk);
-  for (int i = 0; i < steps_per_second() / 5; ++i) w.Step();
-  ASSERT_EQ(w.SetJointCommand(0, {"rlj4", JointMode::kVelocity, 0.0}), JointCommandError::kOk);
-  for (int i = 0; i < steps_per_second(); ++i) w.Step();
-  const double knee = JointAngle(w, 0, "rlj4");
+  const double knee = AngleAfter({{{"rlj4", JointMode::kVelocity, -1.0}, steps_per_second() / 5},
+                                  {{"rlj4", JointMode::kVelocity, 0.0}, steps_per_second()}});
   std::printf("rlj4 at -1 rad/s for 0.2 s, held 1 s: %.4f rad\n", knee);
   EXPECT_NEAR(knee, -0.2, 0.03);
 }
 
 TEST_P(NaoPhysicsTest, PositionCommandReachesTarget) {
-  LeggedWorld w(Scene());
-  ASSERT_EQ(w.SetJointCommand(0, {"laj1", JointMode::kPosition, -1.0}), JointCommandError::kOk);
-  for (int i = 0; i < steps_per_second(); ++i) w.Step();
-  const double a = JointAngle(w, 0, "laj1");
+  const double a = AngleAfter({{{"laj1", JointMode::kPosition, -1.0}, steps_per_second()}});
   std::printf("laj1 position target -1.0 rad after 1 s: %.4f rad\n", a);
   EXPECT_NEAR(a, -1.0, 0.05);
 }
 
+// hj2's range is -45..45 deg.
 TEST_P(NaoPhysicsTest, JointsStopAtTheirLimits) {
-  LeggedWorld w(Scene());
-  ASSERT_EQ(w.SetJointCommand(0, {"hj2", JointMode::kVelocity, 6.0}), JointCommandError::kOk);
-  for (int i = 0; i < steps_per_second(); ++i) w.Step();
-  EXPECT_NEAR(JointAngle(w, 0, "hj2"), M_PI / 4, 0.02);  // range -45..45 deg
+  EXPECT_NEAR(AngleAfter({{{"hj2", JointMode::kVelocity, 6.0}, steps_per_second()}}), M_PI / 4, 0.02);
 }
 
 TEST_P(NaoPhysicsTest, RefusesBadCommands) {
