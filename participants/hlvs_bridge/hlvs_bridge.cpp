@@ -19,6 +19,8 @@
 #include "participants/common/process.h"
 #include "participants/common/watched_stats.h"
 #include "participants/hlvs_bridge/robot_binding.h"
+#include "participants/lockstep_front_end/front_end_handle_impl.h"
+#include "participants/lockstep_front_end/lockstep_world.h"
 
 namespace turf {
 
@@ -56,13 +58,6 @@ FrontEndServer::Options ServerOptions(const HlvsBridgeOptions& o) {
   return s;
 }
 
-std::unique_ptr<LeggedLockstep> MakeLink(const HlvsBridgeOptions& o, dds::Bus* bus) {
-  if (bus != nullptr) return std::make_unique<LeggedLockstep>(nullptr, *bus, kClient, false);
-  auto own = std::make_unique<dds::Participant>(DdsOptions(o, kClient));
-  dds::Bus& b = *own;
-  return std::make_unique<LeggedLockstep>(std::move(own), b, kClient, false);
-}
-
 uint64_t UnixMs() {
   return static_cast<uint64_t>(
       std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch())
@@ -87,14 +82,14 @@ std::string ModelOf(const std::string& label) {
 
 }  // namespace
 
-class HlvsBridge::Impl {
+class HlvsBridgeImpl {
  public:
-  Impl(HlvsBridgeOptions options, dds::Bus* bus)
+  HlvsBridgeImpl(HlvsBridgeOptions options, dds::Bus* bus)
       : options_(std::move(options)),
         red_allow_(options_.red_allow),
         blue_allow_(options_.blue_allow),
         rejects_("HLVS input"),
-        link_(MakeLink(options_, bus)) {
+        link_(MakeLockstep(options_, bus, kClient, false)) {
     for (size_t i = 0; i < options_.red_ports.size(); ++i) slots_.push_back(MakeSlot("red", i + 1, &red_allow_));
     for (size_t i = 0; i < options_.blue_ports.size(); ++i) slots_.push_back(MakeSlot("blue", i + 1, &blue_allow_));
     server_ = std::make_unique<FrontEndServer>(ServerOptions(options_), "HLVS client", &rejects_, MakeHooks());
@@ -399,17 +394,9 @@ class HlvsBridge::Impl {
   }
 };
 
-HlvsBridge::HlvsBridge(HlvsBridgeOptions options) : impl_(std::make_unique<Impl>(std::move(options), nullptr)) {}
-HlvsBridge::HlvsBridge(HlvsBridgeOptions options, dds::Bus& bus)
-    : impl_(std::make_unique<Impl>(std::move(options), &bus)) {}
-HlvsBridge::~HlvsBridge() = default;
+template class FrontEndHandle<HlvsBridgeImpl, HlvsBridgeOptions, HlvsBridgeStats>;
+
 void HlvsBridge::SetCameraSource(hlvs::CameraSource* source) { impl_->SetCameraSource(source); }
 uint16_t HlvsBridge::port(const std::string& team, int player) const { return impl_->port(team, player); }
-bool HlvsBridge::Run(const std::function<bool()>& stop) { return impl_->Run(stop); }
-HlvsBridgeStats HlvsBridge::Stats() const { return impl_->stats().Get(); }
-HlvsBridgeStats HlvsBridge::WaitForStats(const std::function<bool(const HlvsBridgeStats&)>& done,
-                                         std::chrono::milliseconds timeout) const {
-  return impl_->stats().WaitFor(done, timeout);
-}
 
 }  // namespace turf

@@ -31,15 +31,12 @@
 
 #include <chrono>
 #include <cstdint>
-#include <functional>
 #include <map>
-#include <memory>
 #include <string>
 #include <vector>
 
-#include "core/pinned.h"
-#include "dds/bus_fwd.h"
 #include "participants/common/participant_options.h"
+#include "participants/lockstep_front_end/front_end_handle.h"
 
 namespace turf::hlvs {
 class CameraSource;
@@ -75,26 +72,17 @@ struct HlvsBridgeStats {
   std::map<std::string, uint64_t> refused_by_kind;
 };
 
-class HlvsBridge : Pinned {
- public:
-  // Binds every robot port; throws std::runtime_error if it cannot, std::invalid_argument for a bad allowlist.
-  explicit HlvsBridge(HlvsBridgeOptions options);
-  // On `bus` (a dds::MemoryBus shared with turf-sim's node, which outlives the bridge).
-  HlvsBridge(HlvsBridgeOptions options, dds::Bus& bus);
-  ~HlvsBridge();
+class HlvsBridgeImpl;  // hlvs_bridge.cpp
 
+// Binds every robot port on construction (std::invalid_argument for a bad allowlist); Run until stop() (polled) or a
+// fatal DDS error (front_end_handle.h).
+class HlvsBridge : public FrontEndHandle<HlvsBridgeImpl, HlvsBridgeOptions, HlvsBridgeStats> {
+ public:
+  using FrontEndHandle::FrontEndHandle;
   // Where images come from (owned by the caller, outliving the bridge); none by default. Call before Run.
   void SetCameraSource(hlvs::CameraSource* source);
   // The bound port of player n (1-based) of "red" or "blue"; 0 if none.
   uint16_t port(const std::string& team, int player) const;
-  bool Run(const std::function<bool()>& stop);
-  HlvsBridgeStats Stats() const;
-  HlvsBridgeStats WaitForStats(const std::function<bool(const HlvsBridgeStats&)>& done,
-                               std::chrono::milliseconds timeout) const;
-
- private:
-  class Impl;
-  std::unique_ptr<Impl> impl_;
 };
 
 }  // namespace turf

@@ -2,249 +2,131 @@
 
 #include <spdlog/spdlog.h>
 
-#include <algorithm>
+#include <chrono>
 #include <cmath>
-#include <optional>
-#include <stdexcept>
 #include <vector>
 
 #include "codecs/rcssservermj/session.h"
-#include "codecs/simspark/framing.h"
-#include "participants/common/address_allowlist.h"
-#include "participants/common/cycle_loop.h"
-#include "participants/common/front_end_server.h"
-#include "participants/common/process.h"
-#include "participants/common/watched_stats.h"
 #include "participants/common/worker_thread.h"
-#include "participants/rcssservermj_bridge/legged_link.h"
+#include "participants/lockstep_front_end/front_end_handle_impl.h"
+#include "participants/lockstep_front_end/league_front_end.h"
+#include "participants/rcssservermj_bridge/legged_snapshot.h"
 
 namespace turf {
 
 namespace {
 
-// RCSSServerMJ frames exactly as SimSpark does (FrontEndServer's framing).
-FrontEndServer::Options ServerOptions(const RcssServerMjOptions& o) {
-  return {o.listen, o.agent_port, o.monitor_port, o.max_clients, o.max_unsent, {}, true};
-}
-
-MjLeggedLink MakeLink(const RcssServerMjOptions& o, dds::Bus* bus) {
-  if (bus != nullptr) return MjLeggedLink(*bus);
-  return MjLeggedLink(DdsOptions(o, "turf-rcssservermj-bridge"));
+// The options as the front-end runs them: the sequential loop and as fast as possible imply sync mode. Throws
+// std::invalid_argument for a bad rule book or field (before any port is bound).
+RcssServerMjOptions Checked(RcssServerMjOptions o) {
+  if (o.sequential || !o.realtime) o.sync_mode = true;
+  rcssservermj::SessionOptions check;
+  check.rules = o.rules;
+  check.field = o.field;
+  rcssservermj::Session probe(check, {});
+  return o;
 }
 
 }  // namespace
 
-class RcssServerMjBridge::Impl {
+// The RCSSServerMJ league over the shared engine (league_front_end.h): monitor clients from allowed addresses only,
+// init and per-cycle sync, PD joint commands, and perceptions sent while the world steps.
+class RcssServerMjBridgeImpl : public LeagueFrontEnd<RcssServerMjBridgeImpl, RcssServerMjWorld, rcssservermj::Session,
+                                                     RcssServerMjOptions, RcssServerMjStats> {
  public:
-  Impl(RcssServerMjOptions options, dds::Bus* bus)
-      : options_(std::move(options)),
-        link_(MakeLink(options_, bus)),
-        monitor_allow_(options_.monitor_allow),
-        rejects_("RCSSServerMJ input") {
-    if (options_.sequential || !options_.realtime) options_.sync_mode = true;
-    rcssservermj::SessionOptions check;
-    check.rules = options_.rules;
-    check.field = options_.field;
-    rcssservermj::Session probe(check, {});  // throws std::invalid_argument for a bad rule book or field
-    server_ = std::make_unique<FrontEndServer>(ServerOptions(options_), "RCSSServerMJ client", &rejects_, MakeHooks());
-  }
+  static constexpr LeagueNames kNames = {"RCSSServerMJ", "turf-rcssservermj-bridge", "monitor", "closed by the server",
+                                         "sent no message within the agent timeout"};
 
-  uint16_t agent_port() const { return server_->agent_port(); }
-  uint16_t monitor_port() const { return server_->monitor_port(); }
+  // The robots have no force sensors; the monitor allowlist refuses other addresses.
+  RcssServerMjBridgeImpl(RcssServerMjOptions options, dds::Bus* bus)
+      : LeagueFrontEnd(Checked(std::move(options)), bus, false, &RcssServerMjOptions::monitor_allow) {}
 
-  bool Run(const std::function<bool()>& stop) {
-    if (!Attach(stop)) return stop();
+  void LogStart() {
     spdlog::info("RCSSServerMJ agents: TCP {}:{}; monitor commands: TCP {}:{}; {}{}{}", options_.listen, agent_port(),
                  options_.listen, monitor_port(), options_.realtime ? "real time" : "as fast as possible",
                  options_.sync_mode ? ", sync mode" : "", options_.sequential ? ", sequential loop" : "");
     spdlog::info("monitor-port clients allowed from: {}", monitor_allow_.Describe());
-    CycleLoopOptions loop;
-    loop.paced = options_.realtime;
-    loop.sync = options_.sync_mode;
-    loop.agent_timeout = options_.agent_timeout;
-    loop.end_cycles = options_.duration > 0 ? std::llround(options_.duration / rcssservermj::kCycleSeconds) : -1;
-    CycleLoopHooks hooks;
-    hooks.poll = [&](std::chrono::milliseconds timeout) {
-      PollSockets(timeout);
-      for (int agent : session_->TakeKicked()) DropAgent(agent, "closed by the server");
-      ReportIssues();
-    };
-    hooks.idle = [&] { return session_->active_agents() == 0 && !session_->HasPendingInit(); };
-    hooks.ready = [&] { return session_->ReadyToStep(); };
-    hooks.drop_waiting = [&] {
-      for (int agent : session_->Waiting()) DropAgent(agent, "sent no message within the agent timeout");
-    };
-    hooks.cycle = [&] { return RunCycle(stop); };
-    hooks.cycles = [&] { return session_->cycle(); };
-    hooks.quit = [&] { return session_->quit_requested(); };
-    hooks.status = [&] { ReportStatus(); };
-    if (!RunCycleLoop(loop, hooks, stop)) return false;
-    if (session_->quit_requested()) spdlog::info("a monitor sent (killsim): stopping");
-    ReportStatus();
-    return true;
   }
+  bool Paced() const { return options_.realtime; }
+  std::chrono::milliseconds AgentTimeout() const { return options_.agent_timeout; }
+  bool Idle() const { return session_->active_agents() == 0 && !session_->HasPendingInit(); }
 
-  const WatchedStats<RcssServerMjStats>& stats() const { return stats_; }
-
- private:
-  bool Attach(const std::function<bool()>& stop) {
-    if (session_) {
-      for (auto& [fd, c] : server_->clients())
-        if (!c.monitor) server_->MarkDrop(fd, "turf-sim stopped answering; reconnect when it is back");
-      server_->FlushDrops();
-    }
-    spdlog::info("waiting for turf-sim's legged scene on {} ({})", link_.DescribeBus(),
-                 link_.TopicName(dds::Topic::kLeggedScene));
-    std::string error;
-    auto scene = link_.Attach(options_.attach_timeout, stop, &error);
-    if (!scene) {
-      if (!stop()) spdlog::error("{}", error);
-      return false;
-    }
-    steps_ = static_cast<uint32_t>(std::max<long>(1, std::lround(rcssservermj::kCycleSeconds / link_.step_s())));
+  std::unique_ptr<rcssservermj::Session> Start() {
+    const std::vector<rcssservermj::SceneRobot> robots = RcssServerMjWorld::SceneRobots(*link_);
     int t1 = 0, k1 = 0;
-    for (const rcssservermj::SceneRobot& r : scene->robots) {
+    for (const rcssservermj::SceneRobot& r : robots) {
       t1 += r.model == "T1";
       k1 += r.model == "K1";
     }
     spdlog::info("scene '{}': {} T1 and {} K1 robots for agents, {} physics steps of {} ms per 20 ms cycle; rules {}",
-                 scene->name, t1, k1, steps_, link_.step_s() * 1e3, options_.rules);
-    if (std::abs(steps_ * link_.step_s() - rcssservermj::kCycleSeconds) > 1e-9)
-      spdlog::warn("the scene's physics step does not divide 20 ms: a cycle is {} ms", steps_ * link_.step_s() * 1e3);
+                 link_->scene_info().name(), t1, k1, steps_, link_->step_s() * 1e3, options_.rules);
+    if (std::abs(steps_ * link_->step_s() - kCycleSeconds) > 1e-9)
+      spdlog::warn("the scene's physics step does not divide 20 ms: a cycle is {} ms", steps_ * link_->step_s() * 1e3);
     spdlog::info("publishing {} (steps, moves, PD joint commands); subscribing {}, {}",
-                 link_.TopicName(dds::Topic::kControl), link_.TopicName(dds::Topic::kRobotsState),
-                 link_.TopicName(dds::Topic::kControlReply));
+                 link_->TopicName(dds::Topic::kControl), link_->TopicName(dds::Topic::kRobotsState),
+                 link_->TopicName(dds::Topic::kControlReply));
     rcssservermj::SessionOptions o;
     o.sync_mode = options_.sync_mode;
     o.sequential = options_.sequential;
     o.rules = options_.rules;
     o.field = options_.field;
     o.seed = options_.seed;
-    session_ = std::make_unique<rcssservermj::Session>(o, scene->robots);
-    return true;
+    return std::make_unique<rcssservermj::Session>(o, robots);
   }
 
   // The reference's order: the actions, then the perceptions of the state before this step go out while the world
   // steps (the world on the stepper thread, so the agents think meanwhile), then the referee; the sequential loop's
-  // perceptions of the state after it.
-  bool RunCycle(const std::function<bool()>& stop) {
-    std::string error;
-    std::vector<std::string> warnings;
-    const rcssservermj::WorldRequests requests = session_->TakeRequests();
-    for (int agent : session_->TakeKicked()) DropAgent(agent, "closed by the server");
-    std::optional<rcssservermj::MjWorldSnapshot> world;
-    stepper_.Start([&] { world = link_.Cycle(requests, steps_, options_.step_timeout, stop, &error, &warnings); });
+  // perceptions of the state after it (SendOutputs).
+  template <class Step>
+  bool WhileStepping(Step&& step) {
+    for (int agent : session_->TakeKicked()) DropAgent(agent, kNames.kicked);
+    bool stepped = false;
+    stepper_.Start([&] { stepped = step(); });
     try {
-      SendPerceptions();
+      SendOutputs();
     } catch (...) {
       stepper_.Wait();  // the job uses this frame's locals
       throw;
     }
     stepper_.Wait();
-    for (const std::string& w : warnings) spdlog::warn("turf-sim refused {}", w);
-    if (!world) {
-      if (stop()) return true;
-      spdlog::error("{}; attaching again", error);
-      return Attach(stop) || stop();
-    }
-    const double sim_time = world->time;
-    session_->Advance(std::move(*world));
-    SendPerceptions();
-    ReportIssues();
-    stats_.Update([&](RcssServerMjStats& s) {
-      s.cycles = session_->cycle();
-      s.sim_time = sim_time;
-      s.agents = session_->agents();
-      s.active_agents = session_->active_agents();
-    });
-    return true;
+    return stepped;
   }
 
-  void SendPerceptions() {
+  void SendOutputs() {
     for (const auto& [agent, perception] : session_->TakePerceptions())
-      server_->SendToAgent(agent, simspark::Frame(rcssservermj::FormatPerception(perception)));
+      SendToAgent(agent, rcssservermj::FormatPerception(perception));
     server_->FlushDrops();
   }
 
-  void ReportIssues() {
-    for (const rcssservermj::SessionIssue& issue : session_->TakeIssues())
-      rejects_.Reject(issue.kind, issue.agent < 0 ? "monitor: " + issue.detail
-                                                  : fmt::format("agent {}: {}", issue.agent, issue.detail));
-    stats_.Update([&](RcssServerMjStats& s) {
-      if (s.refused == rejects_.Total()) return;
-      s.refused = rejects_.Total();
-      s.refused_by_kind = rejects_.counts();
-    });
+  void CountAgents(RcssServerMjStats& s) const {
+    s.agents = session_->agents();
+    s.active_agents = session_->active_agents();
   }
 
-  void PollSockets(std::chrono::milliseconds timeout) { server_->Poll(timeout); }
-
-  FrontEndServer::Hooks MakeHooks() {
-    FrontEndServer::Hooks h;
-    h.admit = [this](FrontEndClient& c, const std::string& address, std::string*) {
-      if (c.monitor && !monitor_allow_.Allows(address)) {
-        rejects_.Reject("monitor_not_allowed", fmt::format("{} refused: not in the monitor allowlist ({})", address,
-                                                           monitor_allow_.Describe()));
-        return false;  // the peer's destructor closes it
-      }
-      if (!c.monitor) c.agent = session_->Connect();
-      server_->connections().Reject(c.monitor ? "monitor_connected" : "agent_connected",
-                                    c.monitor ? address : fmt::format("agent {} from {}", c.agent, address));
-      stats_.Update([&](RcssServerMjStats& s) { s.agents = session_->agents(); });
-      return true;
-    };
-    h.message = [this](FrontEndClient& c, const std::string& payload) {
-      if (c.monitor) {
-        session_->Monitor(payload);
-      } else {
-        session_->Receive(c.agent, payload);
-      }
-    };
-    h.left = [this](const FrontEndClient& c) {
-      if (!c.monitor) session_->Disconnect(c.agent);
-      stats_.Update([&](RcssServerMjStats& s) {
-        ++s.dropped_clients;
-        s.agents = session_->agents();
-        s.active_agents = session_->active_agents();
-      });
-    };
-    return h;
+  bool AdmitMonitor(FrontEndClient&, const std::string& address, std::string*) {
+    if (!monitor_allow_.Allows(address)) {
+      rejects_.Reject("monitor_not_allowed",
+                      fmt::format("{} refused: not in the monitor allowlist ({})", address, monitor_allow_.Describe()));
+      return false;  // the peer's destructor closes it
+    }
+    server_->connections().Reject("monitor_connected", address);
+    return true;
   }
 
-  void DropAgent(int agent, const std::string& why) { server_->DropAgent(agent, why); }
+  void FromMonitor(FrontEndClient&, const std::string& payload) { session_->Monitor(payload); }
 
-  void ReportStatus() {
-    if (!session_) return;
+  std::string MatchStatus() const {
     const rcssservermj::Referee& r = session_->referee();
-    spdlog::info("cycle {} agents {} ({} active) play mode {} play time {:.2f} score {}:{} refused {}",
-                 session_->cycle(), session_->agents(), session_->active_agents(),
-                 rcssservermj::PlayModeName(r.play_mode()), r.play_time(), r.score(rcssservermj::Side::kLeft),
-                 r.score(rcssservermj::Side::kRight), rejects_.Total());
+    return fmt::format("({} active) play mode {} play time {:.2f} score {}:{}", session_->active_agents(),
+                       rcssservermj::PlayModeName(r.play_mode()), r.play_time(), r.score(rcssservermj::Side::kLeft),
+                       r.score(rcssservermj::Side::kRight));
   }
 
-  RcssServerMjOptions options_;
-  MjLeggedLink link_;
-  AddressAllowlist monitor_allow_;
-  std::unique_ptr<rcssservermj::Session> session_;
-  uint32_t steps_ = 4;
-  RejectLog rejects_;
-  std::unique_ptr<FrontEndServer> server_;
-  WatchedStats<RcssServerMjStats> stats_;
+ private:
   WorkerThread stepper_;  // steps the world while the perceptions go out; last: stopped before the rest goes
 };
 
-RcssServerMjBridge::RcssServerMjBridge(RcssServerMjOptions options)
-    : impl_(std::make_unique<Impl>(std::move(options), nullptr)) {}
-RcssServerMjBridge::RcssServerMjBridge(RcssServerMjOptions options, dds::Bus& bus)
-    : impl_(std::make_unique<Impl>(std::move(options), &bus)) {}
-RcssServerMjBridge::~RcssServerMjBridge() = default;
-uint16_t RcssServerMjBridge::agent_port() const { return impl_->agent_port(); }
-uint16_t RcssServerMjBridge::monitor_port() const { return impl_->monitor_port(); }
-bool RcssServerMjBridge::Run(const std::function<bool()>& stop) { return impl_->Run(stop); }
-RcssServerMjStats RcssServerMjBridge::Stats() const { return impl_->stats().Get(); }
-RcssServerMjStats RcssServerMjBridge::WaitForStats(const std::function<bool(const RcssServerMjStats&)>& done,
-                                                   std::chrono::milliseconds timeout) const {
-  return impl_->stats().WaitFor(done, timeout);
-}
+template class FrontEndHandle<RcssServerMjBridgeImpl, RcssServerMjOptions, RcssServerMjStats>;
+template class LeagueHandle<RcssServerMjBridgeImpl, RcssServerMjOptions, RcssServerMjStats>;
 
 }  // namespace turf

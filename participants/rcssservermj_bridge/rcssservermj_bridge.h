@@ -22,15 +22,11 @@
 
 #include <chrono>
 #include <cstdint>
-#include <functional>
-#include <map>
-#include <memory>
 #include <string>
 #include <vector>
 
-#include "core/pinned.h"
-#include "dds/bus_fwd.h"
 #include "participants/common/participant_options.h"
+#include "participants/lockstep_front_end/front_end_handle.h"
 
 namespace turf {
 
@@ -56,34 +52,17 @@ struct RcssServerMjOptions : ParticipantOptions {
   double duration = 0.0;  // simulated seconds, then Run returns (0: until stopped)
 };
 
-struct RcssServerMjStats {
-  uint64_t cycles = 0;
-  double sim_time = 0.0;
-  int agents = 0;         // connected
+struct RcssServerMjStats : LeagueStats {
   int active_agents = 0;  // with a robot
-  uint64_t dropped_clients = 0;
-  uint64_t refused = 0;
-  std::map<std::string, uint64_t> refused_by_kind;
 };
 
-class RcssServerMjBridge : Pinned {
+class RcssServerMjBridgeImpl;  // rcssservermj_bridge.cpp
+
+// Binds the ports on construction (std::invalid_argument for a bad rule book or field); Run until stop() (polled), a
+// monitor's (killsim) or a fatal DDS error (front_end_handle.h).
+class RcssServerMjBridge : public LeagueHandle<RcssServerMjBridgeImpl, RcssServerMjOptions, RcssServerMjStats> {
  public:
-  // Binds the ports; throws std::runtime_error if it cannot, std::invalid_argument for a bad rule book or field.
-  explicit RcssServerMjBridge(RcssServerMjOptions options);
-  // On `bus` (a dds::MemoryBus shared with turf-sim's node, which outlives the bridge).
-  RcssServerMjBridge(RcssServerMjOptions options, dds::Bus& bus);
-  ~RcssServerMjBridge();
-
-  uint16_t agent_port() const;
-  uint16_t monitor_port() const;
-  bool Run(const std::function<bool()>& stop);
-  RcssServerMjStats Stats() const;
-  RcssServerMjStats WaitForStats(const std::function<bool(const RcssServerMjStats&)>& done,
-                                 std::chrono::milliseconds timeout) const;
-
- private:
-  class Impl;
-  std::unique_ptr<Impl> impl_;
+  using LeagueHandle::LeagueHandle;
 };
 
 }  // namespace turf

@@ -4,11 +4,11 @@
 #include <turf/idl/JointsPubSubTypes.h>
 
 #include "participants/common/pd_target.h"
-#include "participants/rcssservermj_bridge/legged_link.h"
+#include "participants/rcssservermj_bridge/legged_snapshot.h"
 
 namespace turf {
 
-idl::JointTarget ToJointTarget(const rcssservermj::PdCommand& c) {
+idl::JointTarget RcssServerMjWorld::Target(const rcssservermj::PdCommand& c) {
   return PdTarget(c.joint, c.q, c.dq, c.kp, c.kd, c.tau);
 }
 

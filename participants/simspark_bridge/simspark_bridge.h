@@ -27,16 +27,12 @@
 
 #include <chrono>
 #include <cstdint>
-#include <functional>
-#include <map>
-#include <memory>
 #include <string>
 #include <vector>
 
-#include "core/pinned.h"
-#include "dds/bus_fwd.h"
 #include "participants/common/address_allowlist.h"
 #include "participants/common/participant_options.h"
+#include "participants/lockstep_front_end/front_end_handle.h"
 
 namespace turf {
 
@@ -61,38 +57,15 @@ struct SimSparkBridgeOptions : ParticipantOptions {
   std::vector<std::string> operator_allow = kDefaultOperatorAllow;
 };
 
-struct SimSparkBridgeStats {
-  uint64_t cycles = 0;
-  double sim_time = 0.0;
-  int agents = 0;  // connected agents
-  uint64_t dropped_clients = 0;
-  uint64_t refused = 0;  // refused input of every kind
-  std::map<std::string, uint64_t> refused_by_kind;
-};
+struct SimSparkBridgeStats : LeagueStats {};
 
-class SimSparkBridge : Pinned {
+class SimSparkBridgeImpl;  // simspark_bridge.cpp
+
+// Binds the ports on construction (std::invalid_argument for a bad operator_allow entry); Run until stop() (polled),
+// a trainer's (killsim) or a fatal DDS error (front_end_handle.h).
+class SimSparkBridge : public LeagueHandle<SimSparkBridgeImpl, SimSparkBridgeOptions, SimSparkBridgeStats> {
  public:
-  // Binds the ports; throws std::runtime_error if it cannot, std::invalid_argument for a bad operator_allow entry.
-  explicit SimSparkBridge(SimSparkBridgeOptions options);
-  // On `bus` instead of a participant of its own (the options' domain, prefix and QoS file are not used): a
-  // dds::MemoryBus shared with turf-sim's node, for a front-end in turf-sim's process. The bus must outlive the
-  // bridge.
-  SimSparkBridge(SimSparkBridgeOptions options, dds::Bus& bus);
-  ~SimSparkBridge();
-
-  uint16_t agent_port() const;
-  uint16_t monitor_port() const;
-  // Until stop() (polled), a trainer's (killsim) or a fatal DDS error; false on an error.
-  bool Run(const std::function<bool()>& stop);
-  SimSparkBridgeStats Stats() const;
-  // Waits until `done` holds for the stats (they change after each cycle and
-  // when a client comes or goes) or the timeout passes; the stats then.
-  SimSparkBridgeStats WaitForStats(const std::function<bool(const SimSparkBridgeStats&)>& done,
-                                   std::chrono::milliseconds timeout) const;
-
- private:
-  class Impl;
-  std::unique_ptr<Impl> impl_;
+  using LeagueHandle::LeagueHandle;
 };
 
 }  // namespace turf

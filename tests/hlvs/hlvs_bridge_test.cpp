@@ -13,13 +13,10 @@
 #include <thread>
 
 #include "codecs/hlvs/camera_source.h"
-#include "dds/memory_bus.h"
 #include "participants/hlvs_bridge/hlvs_bridge.h"
-#include "participants/sim/sim_node.h"
 #include "tests/hlvs/hlvs_client.h"
 #include "tests/hlvs/hlvs_requests.h"
-#include "tests/sim/sim_harness.h"
-#include "tests/support/in_process.h"
+#include "tests/support/front_end_on_bus.h"
 #include "tests/support/legged_scene.h"
 
 namespace turf {
@@ -32,16 +29,14 @@ namespace pb = hlvs::pb;
 const std::string kWelcome("Welcome\0", 8);
 const std::string kRefused("Refused\0", 8);
 
-// turf-sim's legged node and the bridge on one in-memory bus, each on its own thread.
-class Match {
+// turf-sim's legged node (the HLVS scene) and the bridge: red players 1 and 2 and blue player 1 on ports the kernel
+// picks, from this machine.
+class Match : public test::FrontEndOnBus<HlvsBridge> {
  public:
   // `max_speed` > 0: every robot's motors.max_speed instead of the scene's.
   // `cameras`: an image source, and real time (images of 230 KB would otherwise outrun a client on a loaded machine).
   explicit Match(double max_speed = 0, hlvs::CameraSource* cameras = nullptr)
-      : bus_("hlvs" + std::to_string(getpid())),
-        sim_(Scene(max_speed), bus_, TimeMode::kLockstep),
-        bridge_(Bridge(cameras, bus_)) {}
-  HlvsBridge& bridge() { return bridge_.node(); }
+      : FrontEndOnBus("hlvs", Scene(max_speed), [cameras](dds::Bus& bus) { return Bridge(cameras, bus); }) {}
 
  private:
   static LeggedScene Scene(double max_speed) {
@@ -62,10 +57,6 @@ class Match {
     bridge->SetCameraSource(cameras);
     return bridge;
   }
-
-  dds::MemoryBus bus_;
-  test::SimUnderTest sim_;
-  test::OnThread<HlvsBridge> bridge_;
 };
 
 using test::Position;

@@ -19,12 +19,9 @@
 #include <vector>
 
 #include "codecs/rcssservermj/robots.h"
-#include "dds/memory_bus.h"
 #include "participants/rcssservermj_bridge/rcssservermj_bridge.h"
-#include "participants/sim/sim_node.h"
-#include "tests/sim/sim_harness.h"
 #include "tests/simspark/agent_client.h"
-#include "tests/support/in_process.h"
+#include "tests/support/front_end_on_bus.h"
 #include "tests/support/legged_scene.h"
 
 namespace turf {
@@ -33,31 +30,21 @@ namespace {
 using namespace std::chrono_literals;
 using test::AgentClient;
 
-// turf-sim's legged node and the front-end on one in-memory bus, each on its own thread.
-class Match {
+// turf-sim's legged node (the FIFA scene) and the front-end on ports the kernel picks, and agents connecting to it.
+class Match : public test::FrontEndOnBus<RcssServerMjBridge> {
  public:
   explicit Match(RcssServerMjOptions o)
-      : bus_("mj" + std::to_string(getpid())),
-        sim_(test::LoadScene("rcssservermj_fifa.yaml"), bus_, TimeMode::kLockstep),
-        bridge_(Bridge(std::move(o), bus_)) {}
-  RcssServerMjBridge& bridge() { return bridge_.node(); }
+      : FrontEndOnBus("mj", test::LoadScene("rcssservermj_fifa.yaml"), [&o](dds::Bus& bus) {
+          o.listen = "127.0.0.1";
+          o.agent_port = 0;
+          o.monitor_port = 0;
+          return std::make_unique<RcssServerMjBridge>(o, bus);
+        }) {}
   AgentClient Connect() {
     AgentClient c;
     EXPECT_TRUE(c.Connect(bridge().agent_port()));
     return c;
   }
-
- private:
-  static std::unique_ptr<RcssServerMjBridge> Bridge(RcssServerMjOptions o, dds::Bus& bus) {
-    o.listen = "127.0.0.1";
-    o.agent_port = 0;
-    o.monitor_port = 0;
-    return std::make_unique<RcssServerMjBridge>(o, bus);
-  }
-
-  dds::MemoryBus bus_;
-  test::SimUnderTest sim_;
-  test::OnThread<RcssServerMjBridge> bridge_;
 };
 
 RcssServerMjOptions Fast(bool sequential = false) {

@@ -1,12 +1,15 @@
 // turf-sim with a 3D-league front-end (SimSpark's or RCSSServerMJ's ports) in its own process, as a real process on
-// free ports and a private domain, and an agent connecting to it: the set-up of the in-process tests.
+// free ports and a private domain, and an agent connecting to it: the set-up and checks of the in-process tests.
 #pragma once
 
+#include <gtest/gtest.h>
 #include <sys/socket.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <regex>
 #include <string>
 #include <thread>
@@ -38,17 +41,52 @@ struct FrontEndInSim {
              "--domain", std::to_string(TestDomain(domain_offset)), "--prefix",
              front_end + "insim" + std::to_string(getpid())}) {}
 
-  // Connects `agent` once turf-sim listens: loading 22 robots takes seconds on a loaded machine.
-  bool Connect(AgentClient& agent) const {
+  // Connects the agent once turf-sim listens (loading 22 robots takes seconds on a loaded machine) and sends
+  // `hello`; the first answer within `timeout`, or nullopt (a failure, with turf-sim's log).
+  std::optional<std::string> Hello(const std::string& hello, std::chrono::milliseconds timeout) {
     const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     while (!agent.Connect(static_cast<uint16_t>(agent_port)) && std::chrono::steady_clock::now() < end)
       std::this_thread::sleep_for(std::chrono::milliseconds(50));  // polling until it listens
-    return agent.fd() >= 0;
+    EXPECT_TRUE(agent.Send(hello)) << "not connected\n" << sim.Log();
+    std::optional<std::string> m = agent.Receive(timeout);
+    if (!m) ADD_FAILURE() << "no answer to " << hello << "\n" << sim.Log();
+    return m;
+  }
+
+  // Sends (syn) `rounds` times; the times of the perceptions that answered, each within `timeout` (a failure for
+  // each that did not).
+  std::vector<double> SynRounds(int rounds, std::chrono::milliseconds timeout) {
+    std::vector<double> times;
+    for (int i = 0; i < rounds; ++i) {
+      EXPECT_TRUE(agent.Send("(syn)"));
+      const std::optional<std::string> m = agent.Receive(timeout);
+      if (!m) {
+        ADD_FAILURE() << "no perception after (syn) " << i << "\n" << sim.Log();
+        break;
+      }
+      times.push_back(PerceptionTime(*m));
+    }
+    return times;
+  }
+
+  // turf-sim's log announces `what` on the agent port ("agents: TCP 127.0.0.1:<port>"); the agent leaves and turf-sim,
+  // sent SIGTERM, exits 0.
+  void ExpectAnnouncedAndCleanStop(const std::string& what) {
+    EXPECT_NE(sim.Log().find(what + ": TCP 127.0.0.1:" + std::to_string(agent_port)), std::string::npos) << sim.Log();
+    agent.Close();
+    const int status = sim.Stop();
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << sim.Log();
   }
 
   int agent_port;
   int monitor_port;
   Process sim;
+  AgentClient agent;
 };
+
+// Each time 20 ms of simulation after the one before (one cycle per round).
+inline void ExpectCyclesOf20ms(const std::vector<double>& times) {
+  for (size_t i = 1; i < times.size(); ++i) EXPECT_NEAR(times[i] - times[i - 1], 0.02, 1e-6) << "round " << i;
+}
 
 }  // namespace turf::test

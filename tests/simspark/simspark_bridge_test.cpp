@@ -438,6 +438,19 @@ TEST(SimSparkBridgeTest, AgentsConnectingBeforeTurfSimIsThereAreServedOnceItIs) 
   EXPECT_TRUE(missing.empty()) << "agents " << Join(missing) << " did not join and play";
 }
 
+// Refusals of one kind so far.
+uint64_t Refused(const SimSparkBridgeStats& stats, const std::string& kind) {
+  auto it = stats.refused_by_kind.find(kind);
+  return it == stats.refused_by_kind.end() ? 0 : it->second;
+}
+
+// The agent's next perception, within `timeout`, reads its joints (hj1's angle): it is served.
+void ExpectServed(AgentClient& a, std::chrono::milliseconds timeout) {
+  const std::optional<std::string> m = a.Receive(timeout);
+  ASSERT_TRUE(m.has_value());
+  EXPECT_NE(m->find("(HJ (n hj1)"), std::string::npos);
+}
+
 TEST(SimSparkBridgeTest, BadInputIsRefusedAndOthersCarryOn) {
   Match match(/*sync=*/false, /*max_unsent=*/16 * 1024);
   AgentClient good = match.Agent();
@@ -473,17 +486,11 @@ TEST(SimSparkBridgeTest, BadInputIsRefusedAndOthersCarryOn) {
   }
   const SimSparkBridgeStats stats = match.bridge().Stats();
   EXPECT_GE(stats.dropped_clients, 3u);  // huge prefix, mid-message disconnect, stopped reading
-  auto count = [&](const std::string& kind) {
-    auto it = stats.refused_by_kind.find(kind);
-    return it == stats.refused_by_kind.end() ? 0u : it->second;
-  };
-  EXPECT_GE(count("not_finite"), 1u);
-  EXPECT_GE(count("parse"), 2u);  // "((((" and "(he1 1.0"
-  EXPECT_GE(count("unknown_effector"), 1u);
-  EXPECT_GE(count("frame_too_large"), 1u);
-  auto m = good.Receive(5s);
-  ASSERT_TRUE(m.has_value());
-  EXPECT_NE(m->find("(HJ (n hj1)"), std::string::npos);
+  EXPECT_GE(Refused(stats, "not_finite"), 1u);
+  EXPECT_GE(Refused(stats, "parse"), 2u);  // "((((" and "(he1 1.0"
+  EXPECT_GE(Refused(stats, "unknown_effector"), 1u);
+  EXPECT_GE(Refused(stats, "frame_too_large"), 1u);
+  ExpectServed(good, 5s);
 }
 
 // turf-sim stops and comes back: the bridge drops its agents (their world is
@@ -501,9 +508,7 @@ TEST(SimSparkBridgeTest, AgentsReconnectAfterTurfSimRestarts) {
   EXPECT_TRUE(closed) << "the bridge kept an agent whose world is gone";
   match.StartSim();
   AgentClient b = match.Agent();
-  auto m = b.Receive(10s);
-  ASSERT_TRUE(m.has_value());
-  EXPECT_NE(m->find("(HJ (n hj1)"), std::string::npos);
+  ExpectServed(b, 10s);
 }
 
 TEST(SimSparkBridgeTest, TrainerSetsPlayModesAndMovesTheBall) {
@@ -538,11 +543,6 @@ TEST(SimSparkBridgeTest, TrainerSetsPlayModesAndMovesTheBall) {
   EXPECT_TRUE(saw);
 }
 
-uint64_t Refused(const SimSparkBridgeStats& stats, const std::string& kind) {
-  auto it = stats.refused_by_kind.find(kind);
-  return it == stats.refused_by_kind.end() ? 0 : it->second;
-}
-
 // Real time: init, then the first GS that announces the agent's team within
 // 25 perceptions ("" when none came: the init was refused).
 std::string JoinTeam(AgentClient& a, const std::string& team) {
@@ -553,6 +553,16 @@ std::string JoinTeam(AgentClient& a, const std::string& team) {
     if (m->find("(GS (unum") != std::string::npos) return *m;
   }
   return "";
+}
+
+// Two agents take both team names: `left` as Squat1 on the left, `right` as Squat2 on the right; whether both got
+// their side.
+bool SquatBothSides(AgentClient& left, AgentClient& right) {
+  const std::string l = JoinTeam(left, "Squat1");
+  const std::string r = JoinTeam(right, "Squat2");
+  EXPECT_NE(l.find("(team left)"), std::string::npos) << l;
+  EXPECT_NE(r.find("(team right)"), std::string::npos) << r;
+  return l.find("(team left)") != std::string::npos && r.find("(team right)") != std::string::npos;
 }
 
 // Issue 20: a (killsim) from anyone who could reach the monitor port ended the
@@ -592,8 +602,7 @@ TEST(SimSparkBridgeTest, ATeamNameIsFreedWhenItsLastAgentLeaves) {
   {
     AgentClient squat1 = match.Agent();
     AgentClient squat2 = match.Agent();
-    EXPECT_NE(JoinTeam(squat1, "Squat1").find("(team left)"), std::string::npos);
-    EXPECT_NE(JoinTeam(squat2, "Squat2").find("(team right)"), std::string::npos);
+    EXPECT_TRUE(SquatBothSides(squat1, squat2));
   }  // both leave
   EXPECT_EQ(match.bridge().WaitForStats([](const SimSparkBridgeStats& s) { return s.agents == 0; }, 10s).agents, 0);
   AgentClient real = match.Agent();
@@ -607,8 +616,7 @@ TEST(SimSparkBridgeTest, AnOperatorFreesASideWhoseSquattersStayConnected) {
   Match match(/*sync=*/false);
   AgentClient squat1 = match.Agent();
   AgentClient squat2 = match.Agent();
-  ASSERT_NE(JoinTeam(squat1, "Squat1").find("(team left)"), std::string::npos);
-  ASSERT_NE(JoinTeam(squat2, "Squat2").find("(team right)"), std::string::npos);
+  ASSERT_TRUE(SquatBothSides(squat1, squat2));
   AgentClient op;
   ASSERT_TRUE(op.Connect(match.bridge().monitor_port()));
   ASSERT_TRUE(op.Receive(5s).has_value());

@@ -1,0 +1,39 @@
+#include "participants/simspark_bridge/world_snapshot.h"
+
+namespace turf {
+
+std::vector<simspark::RobotMove> SimSparkWorld::ParkPoses(const LeggedLockstep& link) {
+  std::vector<simspark::RobotMove> park;
+  for (const idl::LinkState& links : link.state().links())
+    park.push_back(TorsoMove<simspark::RobotMove>(links.robot(), links, false));
+  return park;
+}
+
+simspark::WorldSnapshot SimSparkWorld::SnapshotOf(const idl::LeggedState& state) {
+  simspark::WorldSnapshot w = WorldOf<simspark::WorldSnapshot>(state, [](const idl::LeggedState& s, size_t i) {
+    simspark::RobotSnapshot r;
+    r.name = s.joints()[i].robot();
+    r.joint_names = s.joints()[i].name();
+    r.joint_positions = s.joints()[i].position();
+    r.gyro = ToArray(s.imu()[i].angular_velocity());
+    r.accelerometer = ToArray(s.imu()[i].linear_acceleration());
+    for (const idl::ForceReading& f : s.force()[i].sensors())
+      r.feet.push_back({f.name(), f.contact(), ToArray(f.point()), ToArray(f.force())});
+    r.links = LinkPoses<simspark::RobotSnapshot::Link>(s.links()[i]);
+    return r;
+  });
+  w.ball_velocity = ToEigen(state.ball_velocity());
+  return w;
+}
+
+idl::JointTarget SimSparkWorld::Target(const simspark::JointVelocity& v) {
+  idl::JointTarget t;
+  t.name(v.joint);
+  t.mode(idl::JOINT_VELOCITY);
+  t.value(v.velocity);
+  t.kp(-1);
+  t.kd(-1);
+  return t;
+}
+
+}  // namespace turf
