@@ -10,6 +10,7 @@
 #include <optional>
 #include <utility>
 
+#include "core/legged/nao_types.h"
 #include "loader/realism_yaml.h"
 #include "loader/yaml_reader.h"
 
@@ -96,6 +97,19 @@ void ReadCameras(MapReader& m, LeggedRobot* r) {
   });
 }
 
+// `nao_type: 0..4`: the model (configs/robots/nao.xml, type 0) built as that 3D-league robot type.
+void ReadNaoType(MapReader& m, LeggedRobot* r) {
+  int type = -1;
+  if (!m.Int("nao_type", &type)) return;
+  if (type < 0 || type >= kNaoRobotTypes) return m.Fail("nao_type", fmt::format("{} is not a robot type 0..4", type));
+  if (r->model_xml.empty()) return;  // the model's own error is reported
+  NaoTypeModel typed = NaoTypeMjcf(r->model_xml, type);
+  if (!typed.error.empty()) return m.Fail("nao_type", typed.error);
+  r->model_xml = std::move(typed.xml);
+  r->model += fmt::format(" (type {})", type);
+  r->robot_type = type;
+}
+
 // Model files are read once per path, however many robots use them.
 void ReadRobot(MapReader m, const std::string& base_dir, std::map<std::string, std::string>* models, LeggedRobot* r) {
   if (!m.String("name", &r->name)) m.Fail("name", "required");
@@ -116,6 +130,7 @@ void ReadRobot(MapReader m, const std::string& base_dir, std::map<std::string, s
   } else {
     m.Fail("model", "required");
   }
+  ReadNaoType(m, r);
   m.Number("x", &r->x);
   m.Number("y", &r->y);
   double z = 0.0;

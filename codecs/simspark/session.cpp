@@ -124,9 +124,34 @@ void Session::Kick(Agent* agent) {
   kicked_.push_back(agent->id);
 }
 
-void Session::TakeRobot(Agent* agent, int type) {
+void Session::SetRobotTypes(std::vector<int> types) {
+  robot_types_ = std::move(types);
+  robot_types_.resize(robots_.size(), -1);
+}
+
+// The first free robot of `type`, else the last free one (scenes list the commonest type first);
+// `other_type`: that one was built as another type.
+std::optional<size_t> Session::FreeRobot(int type, bool* other_type) const {
+  std::optional<size_t> any;
   for (size_t i = 0; i < robots_.size(); ++i) {
     if (robot_owner_[i] >= 0) continue;
+    if (robot_types_.empty() || robot_types_[i] == type) {
+      *other_type = false;
+      return i;
+    }
+    any = i;
+  }
+  *other_type = any && robot_types_[*any] >= 0;
+  return any;
+}
+
+void Session::TakeRobot(Agent* agent, int type) {
+  bool other_type = false;
+  if (const std::optional<size_t> free = FreeRobot(type, &other_type)) {
+    const size_t i = *free;
+    if (other_type)
+      notes_.push_back(fmt::format("agent {}: no free robot of type {} in the scene: {} (type {}) serves", agent->id,
+                                   type, robots_[i], robot_types_[i]));
     robot_owner_[i] = agent->id;
     agent->robot = static_cast<int>(i);
     agent->type = type;

@@ -24,6 +24,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/rng.h"
@@ -116,6 +117,13 @@ class Session {
   // where each waits when no agent uses it (its torso pose at the start).
   Session(SessionOptions options, std::vector<std::string> robots, std::vector<RobotMove> park);
 
+  // The robot type each of `robots` was built as (0..4, -1 not known; the scene's nao_type), in the same order.
+  // An agent's `scene` then takes a free robot of the type it asks for; when none is free, another free robot
+  // serves (the last free one), as all robots did before types were built, and a note says so (TakeNotes).
+  void SetRobotTypes(std::vector<int> types);
+  // What the participant should log that is not a refusal (a robot of another type serving an agent).
+  std::vector<std::string> TakeNotes() { return std::exchange(notes_, {}); }
+
   int Connect();  // a new agent's id
   void Disconnect(int agent);
   void Receive(int agent, const std::string& payload);
@@ -183,6 +191,7 @@ class Session {
   Agent* FindAgent(int id);
   Agent* FindPlayer(Side side, int unum);
   void Issue(int agent, const std::string& kind, const std::string& detail);
+  std::optional<size_t> FreeRobot(int type, bool* other_type) const;
   void TakeRobot(Agent* agent, int type);
   void ReleaseRobot(Agent* agent);
   void LeaveTeam(Agent* agent);
@@ -195,6 +204,8 @@ class Session {
   SessionOptions options_;
   std::vector<std::string> robots_;
   std::vector<RobotMove> park_;
+  std::vector<int> robot_types_;  // per robot, -1 not known
+  std::vector<std::string> notes_;
   std::vector<int> robot_owner_;  // agent id per robot, -1 free
   std::map<int, Agent> agents_;
   int next_agent_ = 1;

@@ -82,6 +82,9 @@ struct LeggedRobot {
   // file's (its top-level body's pos z).
   std::optional<double> z;
   MotorParams motors;
+  // The 3D league's Nao robot type 0..4 the body was built as (core/legged/nao_types.h; scene key nao_type), so
+  // that a front-end gives an agent a robot of the type it asks for; -1: not a typed Nao.
+  int robot_type = -1;
   std::vector<JointStart> start_joints;
   std::vector<CameraDecl> cameras;  // besides the robot file's MJCF cameras, which are all declared
 };

@@ -77,6 +77,7 @@ void LeggedPublisher::PublishSceneInfo(const LeggedKernel& kernel) {
     robot.robot(s.robots[i].name);
     robot.id(s.robots[i].id);
     robot.model(s.robots[i].model);
+    robot.robot_type(s.robots[i].robot_type);
     for (const LeggedGeom& g : kernel.world().RobotGeoms(i)) {
       idl::RobotGeom geom;
       geom.body(g.body);

@@ -52,7 +52,11 @@ class SimSparkBridgeImpl : public LeagueFrontEnd<SimSparkBridgeImpl, SimSparkWor
 
   std::unique_ptr<simspark::Session> Start() {
     std::vector<std::string> robots;
-    for (const idl::RobotDescription& r : link_->scene_info().robots()) robots.push_back(r.robot());
+    std::vector<int> types;  // the Nao type each was built as (scene key nao_type), -1 not known
+    for (const idl::RobotDescription& r : link_->scene_info().robots()) {
+      robots.push_back(r.robot());
+      types.push_back(r.robot_type());
+    }
     spdlog::info("scene '{}': {} robots for agents, {} physics steps of {} ms per 20 ms cycle; turf-sim in lockstep",
                  link_->scene_info().name(), robots.size(), steps_, link_->step_s() * 1e3);
     spdlog::info("publishing {} (steps, moves, joint velocities); subscribing robots/*, {}, {}",
@@ -61,7 +65,9 @@ class SimSparkBridgeImpl : public LeagueFrontEnd<SimSparkBridgeImpl, SimSparkWor
     simspark::SessionOptions o;
     o.seed = options_.seed;
     o.sync_mode = options_.sync_mode;
-    return std::make_unique<simspark::Session>(o, robots, SimSparkWorld::ParkPoses(*link_));
+    auto session = std::make_unique<simspark::Session>(o, robots, SimSparkWorld::ParkPoses(*link_));
+    session->SetRobotTypes(std::move(types));
+    return session;
   }
 
   template <class Step>
@@ -75,6 +81,7 @@ class SimSparkBridgeImpl : public LeagueFrontEnd<SimSparkBridgeImpl, SimSparkWor
   }
 
   void SendOutputs() {
+    for (const std::string& note : session_->TakeNotes()) spdlog::info("{}", note);
     for (auto& [agent, message] : session_->TakeOutputs()) SendToAgent(agent, message);
     const std::string monitor = session_->TakeMonitorOutput();
     if (!monitor.empty()) {

@@ -259,6 +259,28 @@ TEST(SessionScene, ParksRobotWithResetJointsAndPerceivesAfterNextAdvance) {
   EXPECT_TRUE(h.session.TakeIssues().empty());
 }
 
+// With the scene's robot types known, `scene` takes a free robot of the asked type; with none free, the last free
+// robot of another type serves, with a note (not a refusal).
+TEST(SessionScene, TakesARobotOfTheAskedTypeElseTheLastFreeWithANote) {
+  Harness h(4);
+  h.session.SetRobotTypes({0, 3, 0, 4});
+  auto robot_of = [&](int type) {
+    h.Join("", 0, type);
+    const WorldRequests requests = h.session.TakeRequests();
+    h.world.Apply(requests);
+    return requests.moves.empty() ? std::string() : requests.moves[0].robot;
+  };
+  EXPECT_EQ(robot_of(3), "nao_2");
+  EXPECT_TRUE(h.session.TakeNotes().empty());
+  EXPECT_EQ(robot_of(0), "nao_1");
+  EXPECT_EQ(robot_of(3), "nao_4") << "no type 3 left: the last free robot";
+  const std::vector<std::string> notes = h.session.TakeNotes();
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("no free robot of type 3"), std::string::npos) << notes[0];
+  EXPECT_EQ(robot_of(0), "nao_3");
+  EXPECT_TRUE(h.session.TakeIssues().empty());
+}
+
 TEST(SessionScene, SecondSceneAndNoFreeRobotAreIssues) {
   Harness h(1);
   const int a = h.Join("", 0);

@@ -80,10 +80,19 @@ TEST(LeggedSceneYamlTest, SimSparkMatchSceneParks22NaosOffTheField) {
   EXPECT_NEAR(r.scene->physics.step, 0.02 / 3, 1e-12);
   LeggedWorld w(std::move(*r.scene));
   for (int i = 0; i < 150; ++i) w.Step();  // 1 s
-  for (const LeggedRobotState& robot : w.State().robots) {
-    EXPECT_LT(robot.base_position[1], -10.5) << robot.name;           // outside the touch line
-    EXPECT_NEAR(robot.base_position[2], 0.385, 0.005) << robot.name;  // standing
+  const LeggedScene& scene = w.scene();
+  constexpr double kSoleBelowTorso[5] = {0.385, 0.42164, 0.385, 0.440737, 0.385};  // robot types 0..4 (facts)
+  int of_type[5] = {0, 0, 0, 0, 0};
+  for (size_t i = 0; i < scene.robots.size(); ++i) {
+    const LeggedRobotState robot = w.State().robots[i];
+    const int type = scene.robots[i].robot_type;
+    ASSERT_TRUE(type >= 0 && type < 5) << robot.name;
+    ++of_type[type];
+    EXPECT_LT(robot.base_position[1], -10.5) << robot.name;                           // outside the touch line
+    EXPECT_NEAR(robot.base_position[2], kSoleBelowTorso[type], 0.005) << robot.name;  // standing
   }
+  EXPECT_EQ(of_type[0], 14);
+  for (int t = 1; t < 5; ++t) EXPECT_EQ(of_type[t], 2) << "type " << t;
 }
 
 // The match scene carries rcssserver3d's contact parameters with its tangential law on (`law: ode_friction`);
