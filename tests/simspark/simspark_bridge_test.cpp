@@ -174,7 +174,7 @@ TEST(SimSparkBridgeTest, AgentInitsBeamsAndReadsJointAnglesInDegrees) {
 // same perceptions, byte for byte (physics, beam noise and vision noise).
 std::vector<std::string> ScriptedRun() {
   Match match(/*sync=*/true);
-  AgentClient a = match.Agent(4);  // type 4: its toe effectors are accepted, the model has no toes
+  AgentClient a = match.Agent(4);  // type 4: a robot with toes (the match scene parks two)
   std::vector<std::string> seen;
   seen.push_back(Cycle(a, "(init (unum 2)(teamname Alpha))"));
   seen.push_back(Cycle(a, "(beam -4.0 1.0 30.0)"));
@@ -196,6 +196,9 @@ TEST(SimSparkBridgeTest, SameAgentStreamGivesTheSamePerceptions) {
   EXPECT_NE(first.back().find("(hear Alpha"), std::string::npos);
   EXPECT_NE(first.back().find("(HJ (n rlj4)"), std::string::npos);
   EXPECT_NE(Joint(first.back(), "hj1"), Joint(first[1], "hj1"));  // the commands did move joints
+  // The toe: (lle7 1.0) for 1.2 s turns it up to near its 70 degree stop; the right one stays.
+  EXPECT_GT(Joint(first.back(), "llj7"), 60.0) << first.back();
+  EXPECT_NEAR(Joint(first.back(), "rlj7"), 0.0, 2.0) << first.back();
 }
 
 TEST(SimSparkBridgeTest, SeesTheBallWhenFacingItAndNotWhenFacingAway) {
