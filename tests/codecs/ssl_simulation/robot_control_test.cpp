@@ -2,6 +2,8 @@
 // bytes. Golden bytes are annotated field by field (proto2 wire format).
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <cmath>
 #include <limits>
 
@@ -266,6 +268,43 @@ TEST(RobotControlCodec, UnknownFieldsAreAppliedButNamed) {
   ASSERT_EQ(d.errors.size(), 1u);
   EXPECT_EQ(d.errors[0].code, kUnknownField);
   EXPECT_NE(d.errors[0].message.find("robot_commands[0].#9"), std::string::npos) << d.errors[0].message;
+}
+
+// At every depth of a command (the top message, a command, its move, its velocity) an unknown field is named.
+TEST(RobotControlCodec, UnknownFieldsAreNamedAtEveryDepth) {
+  auto with_unknown = [](const std::function<google::protobuf::UnknownFieldSet*(ws::RobotControl*)>& where) {
+    ws::RobotControl rc;
+    ws::RobotCommand* c = rc.add_robot_commands();
+    c->set_id(1);
+    c->mutable_move_command()->mutable_local_velocity()->set_forward(0.5f);
+    c->mutable_move_command()->mutable_local_velocity()->set_left(0.0f);
+    c->mutable_move_command()->mutable_local_velocity()->set_angular(0.0f);
+    where(&rc)->AddVarint(99, 1);
+    return ConvertRobotControl(rc, Port::kBlue, 11);
+  };
+  const std::pair<const char*, std::function<google::protobuf::UnknownFieldSet*(ws::RobotControl*)>> cases[] = {
+      {"#99", [](ws::RobotControl* rc) { return rc->mutable_unknown_fields(); }},
+      {"robot_commands[0].#99",
+       [](ws::RobotControl* rc) { return rc->mutable_robot_commands(0)->mutable_unknown_fields(); }},
+      {"robot_commands[0].move_command.#99",
+       [](ws::RobotControl* rc) {
+         return rc->mutable_robot_commands(0)->mutable_move_command()->mutable_unknown_fields();
+       }},
+      {"robot_commands[0].move_command.local_velocity.#99",
+       [](ws::RobotControl* rc) {
+         return rc->mutable_robot_commands(0)
+             ->mutable_move_command()
+             ->mutable_local_velocity()
+             ->mutable_unknown_fields();
+       }},
+  };
+  for (const auto& [path, where] : cases) {
+    const RobotControlDecode d = with_unknown(where);
+    EXPECT_EQ(d.commands.size(), 1u) << path;
+    ASSERT_EQ(d.errors.size(), 1u) << path;
+    EXPECT_EQ(d.errors[0].code, kUnknownField) << path;
+    EXPECT_NE(d.errors[0].message.find(path), std::string::npos) << d.errors[0].message;
+  }
 }
 
 TEST(RobotControlCodec, EmptyRobotControlIsNoCommand) {
