@@ -10,6 +10,7 @@
 #include <atomic>
 #include <deque>
 #include <mutex>
+#include <optional>
 
 namespace turf {
 
@@ -52,6 +53,8 @@ class SimLink::Impl {
   uint64_t FrameCursor() {
     std::lock_guard<std::mutex> lock(mutex_);
     PumpLocked();
+    frames_.clear();  // older ones nobody wants
+    wanted_from_ = frames_received_;
     return frames_received_;
   }
 
@@ -63,6 +66,8 @@ class SimLink::Impl {
     const uint64_t from = std::max(cursor, first);
     out.reserve(frames_received_ > from ? frames_received_ - from : 0);
     for (uint64_t i = from; i < frames_received_; ++i) out.push_back(frames_[i - first]);
+    frames_.clear();
+    wanted_from_.reset();
     return out;
   }
 
@@ -101,9 +106,10 @@ class SimLink::Impl {
     }
     if (contacts_changed) view_.contacts = std::make_shared<const simproto::ContactMap>(contacts_);
     if (camera_reader_->Take(&camera_inbox_)) {
+      frames_received_ += camera_inbox_.size();
+      if (!wanted_from_) return;  // no frame is kept while no one has a cursor (they go with the next Take)
       for (idl::CameraFrame& f : camera_inbox_)
         frames_.push_back(std::make_shared<const idl::CameraFrame>(std::move(f)));
-      frames_received_ += camera_inbox_.size();
       while (frames_.size() > kMaxBufferedFrames) frames_.pop_front();
     }
   }
@@ -116,6 +122,7 @@ class SimLink::Impl {
   std::deque<std::shared_ptr<const idl::CameraFrame>> frames_;  // the newest received, in arrival order (shared
                                                                 // with the responses that carry them, not copied)
   uint64_t frames_received_ = 0;
+  std::optional<uint64_t> wanted_from_;  // a cursor handed out and not yet redeemed: frames are kept
   std::vector<idl::SslField> fields_;
   std::vector<idl::Clock> clocks_;
   std::vector<idl::WorldState> worlds_;
