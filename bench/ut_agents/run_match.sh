@@ -52,7 +52,12 @@ cleanup() {
 }
 trap cleanup EXIT
 
-"$BUILD_DIR/participants/launcher/turf" launch simspark --domain "$domain" --prefix "$prefix" \
+# Every parked robot of the match scene built as the agents' type (the shipped scene has 14 of type 0, 2 of each
+# other type), through a copy of the profile naming a copy of the scene.
+sed -e "s/nao_type: [0-4]/nao_type: $type/" -e "s|\.\./robots/nao\.xml|$PWD/configs/robots/nao.xml|" \
+  configs/scenes/simspark_match.yaml > "$work/scene.yaml"
+sed "s|^scene: .*|scene: $work/scene.yaml|" configs/launch/simspark.yaml > "$work/simspark.yaml"
+"$BUILD_DIR/participants/launcher/turf" launch "$work/simspark.yaml" --domain "$domain" --prefix "$prefix" \
   --set simspark.listen=127.0.0.1 --set simspark.agent-port="$port" --set simspark.monitor-port=$((port + 1)) \
   --set simspark.sync="$sync" > "$work/turf.log" 2>&1 &
 pids+=($!)

@@ -1,5 +1,5 @@
-// The lockstep DDS link to turf-sim's legged scene shared by the 3D-league front-ends (SimSpark's WorldLink,
-// RCSSServerMJ's MjLeggedLink): the control client, the scene, clock and robots/state readers, switching turf-sim
+// The lockstep DDS link to turf-sim's legged scene shared by the lockstep front-ends (participants/lockstep_front_end/:
+// SimSpark, RCSSServerMJ and HLVS): the control client, the scene, clock and robots/state readers, switching turf-sim
 // to lockstep, moves, and one step with waiting for the whole robots/state frame after it.
 //
 // Writes: control (SimControl: OP_SET_TIME_MODE, OP_TELEPORT_*, OP_STEP with joint commands).
