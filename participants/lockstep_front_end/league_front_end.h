@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -154,17 +155,22 @@ class LeagueFrontEnd {
     std::string error;
     std::vector<std::string> warnings;
     const auto requests = session_->TakeRequests();
-    const bool stepped = self().WhileStepping(
-        [&] { return link_->Step(SendRequests(requests), steps_, options_.step_timeout, stop, &error, &warnings); });
+    // The world after the step is converted in the step's job too: a league that steps on a thread of its own
+    // (RCSSServerMJ's parallel loop) converts it while the last cycle's perceptions go out.
+    std::optional<decltype(World::SnapshotOf(link_->state()))> world;
+    const bool stepped = self().WhileStepping([&] {
+      if (!link_->Step(SendRequests(requests), steps_, options_.step_timeout, stop, &error, &warnings)) return false;
+      world = World::SnapshotOf(link_->state());
+      return true;
+    });
     for (const std::string& w : warnings) spdlog::warn("turf-sim refused {}", w);
     if (!stepped) {
       if (stop()) return true;
       spdlog::error("{}; attaching again", error);
       return Attach(stop) || stop();
     }
-    auto world = World::SnapshotOf(link_->state());
-    const double sim_time = world.time;
-    session_->Advance(std::move(world));
+    const double sim_time = world->time;
+    session_->Advance(std::move(*world));
     self().SendOutputs();
     ReportIssues();
     stats_.Update([&](Stats& s) {
