@@ -5,8 +5,10 @@
 
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace turf {
@@ -97,62 +99,67 @@ std::vector<std::string> CollidingBodies(XMLElement* e) {
   return out;
 }
 
-XMLElement* Child(XMLDocument* doc, XMLElement* parent, const char* tag) {
+// A new element under `parent` with the attributes given, in order.
+XMLElement* Add(XMLDocument* doc, XMLElement* parent, const char* tag,
+                std::initializer_list<std::pair<const char*, std::string>> attributes = {}) {
   XMLElement* e = doc->NewElement(tag);
+  for (const auto& [name, value] : attributes) e->SetAttribute(name, value.c_str());
   parent->InsertEndChild(e);
   return e;
 }
 
-// Splits each foot into a shorter foot and a toe on a hinge at the foot's front edge, on the sole.
-void AddToes(XMLDocument* doc, Elements* el) {
-  XMLElement* root = doc->RootElement();
-  const std::vector<std::string> others = CollidingBodies(root);  // before the toes: every body a toe may touch
-  XMLElement* contact = root->FirstChildElement("contact");
-  if (contact == nullptr) contact = Child(doc, root, "contact");
-  XMLElement* sensor = root->FirstChildElement("sensor");
-  if (sensor == nullptr) sensor = Child(doc, root, "sensor");
+std::string Num(double v) { return fmt::format("{:.9g}", v); }
+
+// The foot of side `p` shortened at the front; false if the model lacks it.
+bool ShortenFoot(const std::string& p, Elements* el) {
+  XMLElement* foot = el->Get("body", p + "foot");
+  XMLElement* geom = el->Get("geom", p + "foot");
+  XMLElement* site = el->Get("site", p + "f");
+  if (foot == nullptr || geom == nullptr || site == nullptr) return false;
+  foot->SetAttribute("pos", Vec(0, kToeFootCentreY, -0.04).c_str());
+  geom->SetAttribute("size", Vec(0.04, kToeFootLength / 2, 0.01).c_str());
+  geom->SetAttribute("mass", Num(kToeFootMass).c_str());
+  site->SetAttribute("size", Vec(0.042, kToeFootLength / 2 + 0.002, 0.014).c_str());
+  return true;
+}
+
+// The toe of side `p` at the foot's front edge, on the sole: its hinge at the toe's rear edge, its touch sensor.
+void AddToe(XMLDocument* doc, const std::string& p, XMLElement* foot, XMLElement* sensor) {
   const double half = kToeLength / 2;
+  XMLElement* toe = Add(doc, foot, "body", {{"name", p + "toe"}, {"pos", Vec(0, kToeFootLength / 2 + half, -0.005)}});
+  Add(doc, toe, "joint",
+      {{"name", p + "lj7"},
+       {"axis", "1 0 0"},
+       {"pos", Vec(0, -half, -0.005)},
+       {"range", Num(kToeRange[0] * M_PI / 180) + " " + Num(kToeRange[1] * M_PI / 180)}});
+  Add(doc, toe, "geom",
+      {{"name", p + "toe"},
+       {"type", "box"},
+       {"size", Vec(0.04, half, 0.005)},
+       {"mass", Num(kToeMass)},
+       {"contype", "1"},
+       {"conaffinity", "1"}});
+  Add(doc, toe, "site", {{"name", p + "f1"}, {"type", "box"}, {"size", Vec(0.042, half + 0.002, 0.009)}});
+  Add(doc, sensor, "touch", {{"name", p + "f1"}, {"site", p + "f1"}});
+}
+
+XMLElement* Section(XMLDocument* doc, const char* tag) {
+  XMLElement* e = doc->RootElement()->FirstChildElement(tag);
+  return e != nullptr ? e : Add(doc, doc->RootElement(), tag);
+}
+
+// Splits each foot into a shorter foot and a toe on a hinge. A robot's own parts never collide (SimSpark): each toe
+// with every other colliding body of the robot, and the other toe.
+void AddToes(XMLDocument* doc, Elements* el) {
+  const std::vector<std::string> others = CollidingBodies(doc->RootElement());  // before the toes
+  XMLElement* contact = Section(doc, "contact");
+  XMLElement* sensor = Section(doc, "sensor");
   for (const std::string p : {"r", "l"}) {
-    XMLElement* foot = el->Get("body", p + "foot");
-    XMLElement* geom = el->Get("geom", p + "foot");
-    XMLElement* site = el->Get("site", p + "f");
-    if (foot == nullptr || geom == nullptr || site == nullptr) return;
-    foot->SetAttribute("pos", Vec(0, kToeFootCentreY, -0.04).c_str());
-    geom->SetAttribute("size", Vec(0.04, kToeFootLength / 2, 0.01).c_str());
-    geom->SetAttribute("mass", fmt::format("{:.9g}", kToeFootMass).c_str());
-    site->SetAttribute("size", Vec(0.042, kToeFootLength / 2 + 0.002, 0.014).c_str());
-    XMLElement* toe = Child(doc, foot, "body");
-    toe->SetAttribute("name", (p + "toe").c_str());
-    toe->SetAttribute("pos", Vec(0, kToeFootLength / 2 + half, -0.005).c_str());
-    XMLElement* hinge = Child(doc, toe, "joint");
-    hinge->SetAttribute("name", (p + "lj7").c_str());
-    hinge->SetAttribute("axis", "1 0 0");
-    hinge->SetAttribute("pos", Vec(0, -half, -0.005).c_str());
-    hinge->SetAttribute("range",
-                        fmt::format("{:.9g} {:.9g}", kToeRange[0] * M_PI / 180, kToeRange[1] * M_PI / 180).c_str());
-    XMLElement* box = Child(doc, toe, "geom");
-    box->SetAttribute("name", (p + "toe").c_str());
-    box->SetAttribute("type", "box");
-    box->SetAttribute("size", Vec(0.04, half, 0.005).c_str());
-    box->SetAttribute("mass", fmt::format("{:.9g}", kToeMass).c_str());
-    box->SetAttribute("contype", "1");
-    box->SetAttribute("conaffinity", "1");
-    XMLElement* touch_site = Child(doc, toe, "site");
-    touch_site->SetAttribute("name", (p + "f1").c_str());
-    touch_site->SetAttribute("type", "box");
-    touch_site->SetAttribute("size", Vec(0.042, half + 0.002, 0.009).c_str());
-    XMLElement* touch = Child(doc, sensor, "touch");
-    touch->SetAttribute("name", (p + "f1").c_str());
-    touch->SetAttribute("site", (p + "f1").c_str());
-    // A robot's own parts never collide (SimSpark): the toe with each of them, and the other toe.
-    std::vector<std::string> apart = others;
-    if (p == "l") apart.push_back("rtoe");
-    for (const std::string& body : apart) {
-      XMLElement* exclude = Child(doc, contact, "exclude");
-      exclude->SetAttribute("body1", (p + "toe").c_str());
-      exclude->SetAttribute("body2", body.c_str());
-    }
+    if (!ShortenFoot(p, el)) return;
+    AddToe(doc, p, el->Get("body", p + "foot"), sensor);
+    for (const std::string& body : others) Add(doc, contact, "exclude", {{"body1", p + "toe"}, {"body2", body}});
   }
+  Add(doc, contact, "exclude", {{"body1", "ltoe"}, {"body2", "rtoe"}});
 }
 
 }  // namespace
