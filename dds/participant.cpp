@@ -25,7 +25,6 @@
 #include <fastdds/dds/topic/TypeSupport.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
@@ -89,12 +88,13 @@ class DdsWriter final : public WriterEndpoint, private fdds::DataWriterListener 
       : publisher_(publisher),
         volatile_(qos.durability().kind == fdds::VOLATILE_DURABILITY_QOS),
         held_(MakeHeld(topic, qos)) {
-    writer_ = publisher->create_datawriter(topic_dds, qos, this, fdds::StatusMask::publication_matched());
+    writer_ = held_ ? publisher->create_datawriter(topic_dds, qos, this, fdds::StatusMask::publication_matched())
+                    : publisher->create_datawriter(topic_dds, qos);
   }
   ~DdsWriter() override {
     if (writer_ == nullptr) return;
     // Deleting the writer waits for a discovery callback that is running (and may be flushing): held_ lives on.
-    writer_->set_listener(nullptr);
+    if (held_) writer_->set_listener(nullptr);
     publisher_->delete_datawriter(writer_);
   }
   bool ok() const { return writer_ != nullptr; }
@@ -110,9 +110,7 @@ class DdsWriter final : public WriterEndpoint, private fdds::DataWriterListener 
     held_->Write(sample, source_ns, [&](const void* s, std::optional<int64_t> ns) { ok = WriteNow(s, ns) && ok; });
     return ok;
   }
-  // The listener's count (set from the writer's creation on): asking Fast DDS takes the writer's lock, on every
-  // write of a volatile topic.
-  int Matched() const override { return matched_.load(std::memory_order_acquire); }
+  int Matched() const override { return MatchedReaders(writer_); }
 
  private:
   bool WriteNow(const void* sample, std::optional<int64_t> source_ns) {
@@ -122,16 +120,13 @@ class DdsWriter final : public WriterEndpoint, private fdds::DataWriterListener 
   // On Fast DDS's discovery thread: with a reader matched, the held samples go out now (a late joiner of a paused
   // simulation gets its last state without waiting for another write).
   void on_publication_matched(fdds::DataWriter* /*writer*/, const fdds::PublicationMatchedStatus& status) override {
-    matched_.store(status.current_count, std::memory_order_release);
-    if (held_)
-      held_->SetMatched(status.current_count, [this](const void* s, std::optional<int64_t> ns) { WriteNow(s, ns); });
+    held_->SetMatched(status.current_count, [this](const void* s, std::optional<int64_t> ns) { WriteNow(s, ns); });
   }
 
   fdds::Publisher* publisher_;
   const bool volatile_;
   const std::unique_ptr<HeldSamples> held_;  // topics published over and over, durable, unkeyed
   fdds::DataWriter* writer_ = nullptr;
-  std::atomic<int> matched_{0};  // readers matched, as the listener last heard
 };
 
 // Takes samples on Fast DDS's thread into a buffer of the topic's type and hands them to the typed queue.
