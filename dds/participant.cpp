@@ -64,17 +64,34 @@ fdds::TypeSupport TypeOf(Topic topic) {
 }
 
 // The held samples of a writer that may hold them (held_samples.h): a topic turf-sim publishes again and again
-// (not a latched one), durable, unkeyed, keeping the last few.
+// (not a latched one), durable, keeping the last few (per instance if keyed). A keyed hold computes instance keys
+// with a type support of its own (the generated getKey writes into a buffer of its object), under its lock.
+template <class PubSub>
+std::unique_ptr<HeldSamples> MakeHeldOf(size_t depth, const fdds::DataWriterQos& qos) {
+  using Sample = typename PubSub::type;
+  if (!PubSub().m_isGetKeyDefined) return std::make_unique<HeldSamplesOf<Sample>>(depth);
+  const int32_t limit = qos.resource_limits().max_instances;
+  const size_t max_instances = limit > 0 ? static_cast<size_t>(limit) : 256;
+  auto type = std::make_shared<PubSub>();
+  return std::make_unique<KeyedHeldSamplesOf<Sample>>(depth, max_instances, [type](const Sample& sample) {
+    eprosima::fastrtps::rtps::InstanceHandle_t handle;
+    type->getKey(const_cast<Sample*>(&sample), &handle, false);
+    typename KeyedHeldSamplesOf<Sample>::Key key{};
+    const auto& value = std::as_const(handle.value);
+    for (size_t i = 0; i < key.size(); ++i) key[i] = value[i];
+    return key;
+  });
+}
+
 std::unique_ptr<HeldSamples> MakeHeld(Topic topic, const fdds::DataWriterQos& qos) {
   if (topic.info().direction != Direction::kPublished) return nullptr;
   if (qos.durability().kind != fdds::TRANSIENT_LOCAL_DURABILITY_QOS) return nullptr;
   if (qos.history().kind != fdds::KEEP_LAST_HISTORY_QOS || qos.history().depth <= 0) return nullptr;
-  if (TypeOf(topic)->m_isGetKeyDefined) return nullptr;
   const auto depth = static_cast<size_t>(qos.history().depth);
   switch (topic.id()) {
 #define TURF_TOPIC_HELD_CASE(constant, type, ...) \
   case TopicId::constant:                         \
-    return std::make_unique<HeldSamplesOf<idl::type>>(depth);
+    return MakeHeldOf<idl::type##PubSubType>(depth, qos);
     TURF_DDS_TOPICS(TURF_TOPIC_HELD_CASE)
 #undef TURF_TOPIC_HELD_CASE
   }

@@ -268,7 +268,7 @@ void ControlLoop::HandleControl(const idl::SimControl& request) {
       break;
   }
   if (!answer.ok()) Reject("control", fmt::format("from '{}': {}", request.client(), answer.reason));
-  Reply(request, answer);
+  Reply(ReplyToOf(request), answer);
   // Teleports and resets show in the state right away, also while paused.
   PublishState();
 }
@@ -281,7 +281,7 @@ ControlAnswer ControlLoop::QueueSteps(const idl::SimControl& request) {
   if (!answer.ok()) return answer;
   const uint64_t token = next_token_++;
   time_.QueueSteps(request.step_count(), node_.Frame(), token);
-  step_requests_.emplace(token, request);
+  step_requests_.emplace(token, ReplyToOf(request));
   return {};
 }
 
@@ -308,11 +308,11 @@ void ControlLoop::Reset() {
   pacer_.Anchor(Pacer::Clock::now(), node_.TimeNs());
 }
 
-void ControlLoop::Reply(const idl::SimControl& request, const ControlAnswer& answer) {
+void ControlLoop::Reply(const ReplyTo& to, const ControlAnswer& answer) {
   idl::SimControlReply reply;
-  reply.client(request.client());
-  reply.request_id(request.request_id());
-  reply.op(request.op());
+  reply.client(to.client);
+  reply.request_id(to.request_id);
+  reply.op(to.op);
   reply.result(answer.ok() ? idl::RESULT_OK : idl::RESULT_REJECTED);
   reply.error(answer.code);
   reply.reason(answer.reason);

@@ -175,7 +175,16 @@ class ControlLoop : Pinned {
   ControlAnswer QueueSteps(const idl::SimControl& request);
   ControlAnswer SetTimeMode(idl::TimeMode mode, double speed);
   void Reset();
-  void Reply(const idl::SimControl& request, const ControlAnswer& answer);
+  // Who a reply goes to: what a STEP request keeps until its steps are done (not its commands).
+  struct ReplyTo {
+    std::string client;
+    uint64_t request_id = 0;
+    idl::ControlOp op = idl::OP_STEP;
+  };
+  static ReplyTo ReplyToOf(const idl::SimControl& request) {
+    return {request.client(), request.request_id(), request.op()};
+  }
+  void Reply(const ReplyTo& to, const ControlAnswer& answer);
   void AfterStep();
   void PublishState();
   // --resume-dir: continue from the match's resume file, if there is one; then write one every snapshot_every.
@@ -208,8 +217,8 @@ class ControlLoop : Pinned {
   InputSchedule* schedule_ = nullptr;  // options_.resimulate
   uint64_t steps_ = 0;                 // under run_mutex_: steps since Run started (resets do not restart it)
 
-  TimeControl time_;                                   // modes, pause, STEP requests (kernel/time_control.h)
-  std::map<uint64_t, idl::SimControl> step_requests_;  // by TimeControl token
+  TimeControl time_;                           // modes, pause, STEP requests (kernel/time_control.h)
+  std::map<uint64_t, ReplyTo> step_requests_;  // by TimeControl token
   uint64_t next_token_ = 0;
   std::vector<uint64_t> finished_;
   OverflowWatch overflow_;
