@@ -97,19 +97,20 @@ simspark() {
   echo "answer). Reference rcssserver3d 0.7.3 on this machine: 0.72x with 22 agents, 1.9x with 11."
 }
 
-# One run: turf-sim serving RCSSServerMJ agents (rcssservermj_fifa scene, 22 T1) on a private domain and port, then
-# the scripted agents.
+# One run: turf-sim serving RCSSServerMJ agents (rcssservermj_fifa scene, 22 T1, or the one named) on a private domain
+# and port, then the scripted agents.
 rcssservermj_run() {
-  local agents=$1 mode=$2 motion=$3 header=${4:-}
+  local agents=$1 mode=$2 motion=$3 header=${4:-} scene=${5:-rcssservermj_fifa} label="$1 agents, $2, $3"
+  [[ "$scene" == rcssservermj_fifa ]] || label="$label, 1v1 scene"
   local domain=$((90 + RANDOM % 9)) port=$((24100 + RANDOM % 500))
   local flags=(--rcssservermj-no-realtime)
   [[ "$mode" == sync ]] || flags=(--rcssservermj-realtime)
-  "$BUILD_DIR/participants/sim/turf-sim" --scene configs/scenes/rcssservermj_fifa.yaml -d "$domain" -p "bench$$" \
+  "$BUILD_DIR/participants/sim/turf-sim" --scene "configs/scenes/$scene.yaml" -d "$domain" -p "bench$$" \
     --lockstep --rcssservermj --rcssservermj-agent-port "$port" --rcssservermj-monitor-port $((port + 1)) \
     "${flags[@]}" --log-level warn &
   local sim=$!
   "$BUILD_DIR/bench/turf-bench-rcssservermj" --port "$port" --agents "$agents" --seconds "$SECONDS_SIM" \
-    --motion "$motion" --label "$agents agents, $mode, $motion" --server-pid "$sim" $header || true
+    --motion "$motion" --label "$label" --server-pid "$sim" $header || true
   kill -INT "$sim" 2>/dev/null || true
   wait "$sim" 2>/dev/null || true
 }
@@ -120,12 +121,14 @@ rcssservermj() {
   echo "the legs held, 'all' sways every joint; $(nproc) cores"
   rcssservermj_run 22 sync upper --header
   rcssservermj_run 2 sync upper
+  rcssservermj_run 2 sync upper "" rcssservermj_fifa_1v1
   rcssservermj_run 22 sync all
   rcssservermj_run 22 real-time upper
   echo "RTF: simulated seconds per wall second over the measured stretch (sync: as fast as the agents answer)."
   echo "server / agents ms/cyc: CPU time (user + system) per 20 ms cycle of turf-sim (all its threads) and of the"
   echo "agents' process, over the same stretch: steadier than RTF on a loaded machine."
-  echo "The parked robots of the scene are simulated too. Target (issue 14): >= 5x with 22 agents."
+  echo "The parked robots of the scene are simulated too (22 T1; the 1v1 scene, rcssservermj_fifa_1v1.yaml, has 2, as"
+  echo "RCSSServerMJ's world holds one robot per connected agent). Target (issue 14): >= 5x with 22 agents."
 }
 
 # DDS Security off, on without encryption (authentication and access control), on with encryption: the SSL bench

@@ -1,8 +1,8 @@
 // turf's RCSSServerMJ front-end with turf-sim's legged node (configs/scenes/rcssservermj_fifa.yaml: 22 T1) on an
-// in-memory bus, and scripted agents over real TCP: init, activation and placement, every perceptor's order,
-// units and number format against shared/protocols/rcssservermj.md, a beam, a commanded joint moving in HJ, vision
-// every second cycle, sync mode's one cycle per round of actions, 22 agents at once, malformed input dropping only
-// its client. No sleeps: every wait is for a message or a condition, with a deadline.
+// in-memory bus (and the 1 v 1 scene with two), and scripted agents over real TCP: init, activation and placement,
+// every perceptor's order, units and number format against shared/protocols/rcssservermj.md, a beam, a commanded joint
+// moving in HJ, vision every second cycle, sync mode's one cycle per round of actions, 22 agents at once, malformed
+// input dropping only its client. No sleeps: every wait is for a message or a condition, with a deadline.
 #include <gtest/gtest.h>
 #include <poll.h>
 #include <unistd.h>
@@ -33,8 +33,8 @@ using test::AgentClient;
 // turf-sim's legged node (the FIFA scene) and the front-end on ports the kernel picks, and agents connecting to it.
 class Match : public test::FrontEndOnBus<RcssServerMjBridge> {
  public:
-  explicit Match(RcssServerMjOptions o)
-      : FrontEndOnBus("mj", test::LoadScene("rcssservermj_fifa.yaml"), [&o](dds::Bus& bus) {
+  explicit Match(RcssServerMjOptions o, const char* scene = "rcssservermj_fifa.yaml")
+      : FrontEndOnBus("mj", test::LoadScene(scene), [&o](dds::Bus& bus) {
           o.listen = "127.0.0.1";
           o.agent_port = 0;
           o.monitor_port = 0;
@@ -107,6 +107,16 @@ double Joint(const Perception& p, const std::string& name) {
   for (const auto& [n, ax] : p.hj)
     if (n == name) return ax;
   return NAN;
+}
+
+// Whether the front-end closes the agent's connection within 20 s (what it sends before is read and dropped).
+bool Closed(AgentClient* agent) {
+  const auto deadline = std::chrono::steady_clock::now() + 20s;
+  while (std::chrono::steady_clock::now() < deadline) {
+    agent->Receive(50ms);
+    if (!agent->ReadSome()) return true;
+  }
+  return false;
 }
 
 // One round: the agent's message, then its next perception.
@@ -324,17 +334,9 @@ TEST(RcssServerMjFrontEnd, MalformedInputDropsOnlyThatClient) {
   ASSERT_TRUE(oversized.SendRaw(std::string("\x7f\xff\xff\xff", 4) + "(syn)"));
   ASSERT_TRUE(third.Send("(init T1 c 1)"));  // a third team: refused at activation
   ASSERT_TRUE(good.Send("(he1 nan 0 1 1 0)(xx9 0 0 1 1 0)"));
-  const auto closed = [](AgentClient* x) {
-    const auto deadline = std::chrono::steady_clock::now() + 20s;
-    while (std::chrono::steady_clock::now() < deadline) {
-      x->Receive(50ms);
-      if (!x->ReadSome()) return true;
-    }
-    return false;
-  };
-  EXPECT_TRUE(closed(&garbage));
-  EXPECT_TRUE(closed(&oversized));
-  EXPECT_TRUE(closed(&third));
+  EXPECT_TRUE(Closed(&garbage));
+  EXPECT_TRUE(Closed(&oversized));
+  EXPECT_TRUE(Closed(&third));
   const RcssServerMjStats stats = match.bridge().WaitForStats(
       [](const RcssServerMjStats& s) {
         // Every refusal is counted, not only seen by its client: a client may read its closed socket before the
@@ -351,6 +353,29 @@ TEST(RcssServerMjFrontEnd, MalformedInputDropsOnlyThatClient) {
   for (int i = 0; i < 3; ++i) {
     ASSERT_TRUE(good.Receive(20s)) << i;
     ASSERT_TRUE(other.Receive(20s)) << i;
+  }
+}
+
+// The 1 v 1 scene (rcssservermj_fifa_1v1.yaml) parks two T1: one agent a side plays, a third agent is refused
+// (no free robot) and the two play on.
+TEST(RcssServerMjFrontEnd, TheOneVersusOneSceneTakesAnAgentASideAndRefusesAThird) {
+  Match match(RcssServerMjOptions{}, "rcssservermj_fifa_1v1.yaml");  // real time: cycles run whoever answers
+  AgentClient left = match.Connect(), right = match.Connect();
+  ASSERT_TRUE(left.Send("(init T1 a 1)"));
+  ASSERT_TRUE(right.Send("(init T1 b 1)"));
+  ASSERT_TRUE(left.Receive(60s));
+  ASSERT_TRUE(right.Receive(20s));
+  AgentClient third = match.Connect();
+  ASSERT_TRUE(third.Send("(init T1 a 2)"));
+  EXPECT_TRUE(Closed(&third));
+  const RcssServerMjStats stats = match.bridge().WaitForStats(
+      [](const RcssServerMjStats& s) { return s.refused_by_kind.count("init_refused") > 0; }, 20s);
+  const auto refused = stats.refused_by_kind.find("init_refused");
+  EXPECT_EQ(refused == stats.refused_by_kind.end() ? 0u : refused->second, 1u);
+  EXPECT_EQ(stats.active_agents, 2);
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(left.Receive(20s)) << i;
+    ASSERT_TRUE(right.Receive(20s)) << i;
   }
 }
 
