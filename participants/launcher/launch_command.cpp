@@ -79,6 +79,9 @@ LaunchCommand::LaunchCommand(CLI::App& app) : profile_dir_(DefaultProfileDir()) 
   domain_opt_ = launch->add_option("-d,--domain", domain_, "DDS domain of every process (overrides the profile)");
   prefix_opt_ = launch->add_option("-p,--prefix", prefix_, "topic prefix of every process (overrides the profile)");
   realism_opt_ = launch->add_option("--realism", realism_, "turf-sim's sensor realism preset or file");
+  launch->add_option("--scene", scene_,
+                     "scene file instead of the profile's (of the same kind: SSL or legged, as the profile's bridges "
+                     "need), e.g. configs/scenes/rcssservermj_fifa_1v1.yaml");
   server_opt_ = launch->add_option(
       "--discovery-server", discovery_server_,
       "HOST:PORT of a Fast DDS discovery server: every process gets ROS_DISCOVERY_SERVER (no multicast needed)");
@@ -109,7 +112,7 @@ int LaunchCommand::Run() {
   if (realism_opt_->count() > 0) overrides_.realism = realism_;
   if (server_opt_->count() > 0) overrides_.discovery_server = discovery_server_;
 
-  const ProfileLoadResult loaded = LoadLaunchProfile(profile_arg_, profile_dir_);
+  const ProfileLoadResult loaded = LoadLaunchProfile(profile_arg_, profile_dir_, scene_);
   if (!loaded.profile) return Fail(loaded.errors);
   const LaunchProfile& profile = *loaded.profile;
   const LaunchPlan plan = BuildPlan(profile, overrides_, SelfDir());

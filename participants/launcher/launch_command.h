@@ -27,7 +27,7 @@ class LaunchCommand : Pinned {
   std::string profile_dir_;
   bool print_ = false;
   int domain_ = 0;
-  std::string prefix_, realism_, discovery_server_, log_level_ = "info";
+  std::string prefix_, realism_, scene_, discovery_server_, log_level_ = "info";
   double grace_ = 0;
   LaunchOverrides overrides_;
   // Flags that override the profile only when given.

@@ -190,7 +190,24 @@ bool ValidFlagName(const std::string& name) {
                      [](unsigned char c) { return std::islower(c) || std::isdigit(c) || c == '-'; });
 }
 
-ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::string& base_dir) {
+// `turf launch --scene`: another scene of the profile's kind (its programs and flags are for that kind).
+void OverrideScene(const std::string& scene, LaunchProfile* p, Errors* errors) {
+  const std::string path = fs::absolute(scene).lexically_normal().string();
+  if (!fs::is_regular_file(path)) {
+    errors->push_back(fmt::format("--scene: no such file: {}", path));
+    return;
+  }
+  const auto kind = [](bool legged) { return legged ? "a legged scene" : "an SSL scene"; };
+  if (!p->scene.empty() && IsLeggedScene(p->scene) != IsLeggedScene(path)) {
+    errors->push_back(fmt::format("--scene: {} is {}; this profile runs {}", path, kind(IsLeggedScene(path)),
+                                  kind(IsLeggedScene(p->scene))));
+    return;
+  }
+  p->scene = path;
+}
+
+ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::string& base_dir,
+                                     const std::string& scene) {
   ProfileLoadResult result;
   Errors& errors = result.errors;
   YAML::Node root;
@@ -209,6 +226,7 @@ ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::st
     p.scene = Absolute(p.scene, base_dir);
     if (!fs::is_regular_file(p.scene)) m.Fail("scene", fmt::format("no such file: {}", p.scene));
   }
+  if (!scene.empty()) OverrideScene(scene, &p, &errors);
   if (!p.scene.empty()) p.legged = IsLeggedScene(p.scene);
   if (m.String("realism", &p.realism)) {
     if (LooksLikePath(p.realism)) p.realism = Absolute(p.realism, base_dir);
@@ -236,7 +254,7 @@ ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::st
   return result;
 }
 
-ProfileLoadResult LoadLaunchProfile(const std::string& name_or_path, const std::string& dir) {
+ProfileLoadResult LoadLaunchProfile(const std::string& name_or_path, const std::string& dir, const std::string& scene) {
   fs::path path(name_or_path);
   const bool is_name = name_or_path.find('/') == std::string::npos && path.extension() != ".yaml";
   if (is_name) path = fs::path(dir) / (name_or_path + ".yaml");
@@ -255,7 +273,7 @@ ProfileLoadResult LoadLaunchProfile(const std::string& name_or_path, const std::
   std::stringstream text;
   text << in.rdbuf();
   const std::string base = fs::absolute(path).parent_path().string();
-  result = ParseLaunchProfile(text.str(), base);
+  result = ParseLaunchProfile(text.str(), base, scene);
   for (std::string& e : result.errors) e = fmt::format("{}: {}", path.string(), e);
   if (result.profile) {
     result.profile->path = fs::absolute(path).lexically_normal().string();

@@ -77,11 +77,14 @@ struct ProfileLoadResult {
   std::vector<std::string> errors;
 };
 
-// Parses profile text; relative paths resolve against `base_dir`.
-ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::string& base_dir);
+// Parses profile text; relative paths resolve against `base_dir`. A non-empty `scene` (a path, relative to the
+// working directory) replaces the profile's scene, and the bridges are checked against it (`turf launch --scene`).
+ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::string& base_dir,
+                                     const std::string& scene = "");
 
 // `name_or_path`: a file, or a profile name looked up as <dir>/<name>.yaml.
-ProfileLoadResult LoadLaunchProfile(const std::string& name_or_path, const std::string& dir);
+ProfileLoadResult LoadLaunchProfile(const std::string& name_or_path, const std::string& dir,
+                                    const std::string& scene = "");
 
 // True if the scene file's top level says `kind: legged` (as
 // loader/legged_scene_yaml.h's IsLeggedSceneFile, which would link the physics).

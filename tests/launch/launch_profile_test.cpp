@@ -346,5 +346,31 @@ TEST(LaunchPlan, RcssServerMjPlanServedInTurfSim) {
   EXPECT_EQ(lines[0], "RCSSServerMJ (in turf-sim): TCP 127.0.0.1: agents 60100, monitor commands 60001");
 }
 
+// turf launch --scene: another scene of the profile's kind replaces its scene (the 1 v 1 RCSSServerMJ scene); a
+// scene of the other kind or a missing file is refused, naming why.
+TEST(LaunchProfile, SceneOptionReplacesTheSceneWithOneOfTheSameKind) {
+  const ProfileLoadResult r =
+      LoadLaunchProfile("rcssservermj", DefaultProfileDir(), kScenes + "/rcssservermj_fifa_1v1.yaml");
+  ASSERT_TRUE(r.profile.has_value()) << r.errors[0];
+  EXPECT_TRUE(r.profile->legged);
+  const LaunchPlan plan = BuildPlan(*r.profile, {}, kLauncherDir);
+  ASSERT_TRUE(plan.errors.empty()) << plan.errors[0];
+  const std::string args = Args(plan.commands[0]);
+  EXPECT_EQ(args.rfind("--scene " + kScenes + "/rcssservermj_fifa_1v1.yaml --domain 0 ", 0), 0u) << args;
+
+  const ProfileLoadResult ssl = LoadLaunchProfile("rcssservermj", DefaultProfileDir(), kScenes + "/ssl_div_a.yaml");
+  EXPECT_FALSE(ssl.profile.has_value());
+  ASSERT_EQ(ssl.errors.size(), 1u);
+  EXPECT_NE(ssl.errors[0].find("ssl_div_a.yaml is an SSL scene; this profile runs a legged scene"), std::string::npos)
+      << ssl.errors[0];
+  const ProfileLoadResult legged = LoadLaunchProfile("ssl_div_a", DefaultProfileDir(), kScenes + "/simspark_3d.yaml");
+  ASSERT_EQ(legged.errors.size(), 1u);
+  EXPECT_NE(legged.errors[0].find("is a legged scene; this profile runs an SSL scene"), std::string::npos)
+      << legged.errors[0];
+  const ProfileLoadResult missing = LoadLaunchProfile("rcssservermj", DefaultProfileDir(), kScenes + "/none.yaml");
+  ASSERT_EQ(missing.errors.size(), 1u);
+  EXPECT_NE(missing.errors[0].find("--scene: no such file"), std::string::npos) << missing.errors[0];
+}
+
 }  // namespace
 }  // namespace turf::launch
