@@ -7,14 +7,15 @@
 # steps) and give the binary and its source directory (it reads ./skills and ./paramfiles from there).
 #
 # usage: run_match.sh --ut-agent PATH --agent-dir DIR [--agents 4] [--layout split|one] [--realtime]
-#                     [--type 0..4] [--seconds 60] [--label TEXT] [--keep DIR]
+#                     [--type 0..4] [--seconds 60] [--label TEXT] [--keep DIR] [--trace]
 #   split: unums 1..N/2 on team UTA (left), 1..N/2 on UTB (right); one: 1..N on UTA
 #   default sync mode (turf waits for every agent: results do not depend on the machine's load)
 #   --keep DIR: keep the logs and measure.py's CSV and JSON there
+#   --trace: each agent through proxy.py, its messages kept as trace_<team>_<unum>.jsonl (with --keep)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
-agent="" agent_dir="" n=4 layout=split sync=true type=0 seconds=60 label="" keep=""
+agent="" agent_dir="" n=4 layout=split sync=true type=0 seconds=60 label="" keep="" trace=false
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --ut-agent) agent=$2; shift 2 ;;
@@ -26,7 +27,8 @@ while [[ $# -gt 0 ]]; do
     --seconds) seconds=$2; shift 2 ;;
     --label) label=$2; shift 2 ;;
     --keep) keep=$2; shift 2 ;;
-    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
+    --trace) trace=true; shift ;;
+    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
     *) echo "run_match.sh: unknown argument $1 (--help)" >&2; exit 2 ;;
   esac
 done
@@ -75,7 +77,15 @@ half=$(( (n + 1) / 2 ))
 for ((i = 1; i <= n; ++i)); do
   team=UTA unum=$i
   if [[ $layout == split && $i -gt $half ]]; then team=UTB unum=$((i - half)); fi
-  (cd "$agent_dir" && exec "$agent" --host=127.0.0.1 --port "$port" --team "$team" --unum "$unum" --type "$type" \
+  agent_port=$port
+  if [[ $trace == true ]]; then
+    agent_port=$((port + 100 + i))
+    python3 bench/ut_agents/proxy.py "$agent_port" "$port" "$work/trace_${team}_$unum.jsonl" &
+    pids+=($!)
+    # Listening before the agent connects (the proxy takes one connection: poll the socket table, not the port).
+    for _ in $(seq 1 40); do ss -ltn "sport = :$agent_port" | grep -q LISTEN && break; sleep 0.25; done
+  fi
+  (cd "$agent_dir" && exec "$agent" --host=127.0.0.1 --port "$agent_port" --team "$team" --unum "$unum" --type "$type" \
      --paramsfile paramfiles/defaultParams.txt --paramsfile "paramfiles/defaultParams_t$type.txt" \
      > "$work/agent_${team}_$unum.log" 2>&1) &
   pids+=($!)
