@@ -379,5 +379,30 @@ TEST(RcssServerMjFrontEnd, TheOneVersusOneSceneTakesAnAgentASideAndRefusesAThird
   }
 }
 
+// The K1 1 v 1 scene (rcssservermj_fifa_1v1_k1.yaml) parks two K1: an agent asking for a K1 gets one, with the
+// K1's 22 joints in the reference's HJ order (no waist), an agent asking for a T1 is refused.
+TEST(RcssServerMjFrontEnd, TheK1SceneServesK1AgentsTheirTwentyTwoJointsAndRefusesAT1) {
+  Match match(RcssServerMjOptions{}, "rcssservermj_fifa_1v1_k1.yaml");  // real time: cycles run whoever answers
+  AgentClient k1 = match.Connect();
+  ASSERT_TRUE(k1.Send("(init K1 a 1)"));
+  const std::optional<std::string> first = k1.Receive(60s);
+  ASSERT_TRUE(first);
+  const std::regex hj(R"(\(HJ \(n (q_[a-z0-9]+)\))");
+  std::vector<std::string> joints;
+  for (auto it = std::sregex_iterator(first->begin(), first->end(), hj); it != std::sregex_iterator(); ++it)
+    joints.push_back((*it)[1]);
+  const std::vector<std::string> expected = {
+      "q_hj1",  "q_hj2",  "q_laj1", "q_laj2", "q_laj3", "q_laj4", "q_raj1", "q_raj2", "q_raj3", "q_raj4", "q_llj1",
+      "q_llj2", "q_llj3", "q_llj4", "q_llj5", "q_llj6", "q_rlj1", "q_rlj2", "q_rlj3", "q_rlj4", "q_rlj5", "q_rlj6"};
+  EXPECT_EQ(joints, expected) << *first;
+  AgentClient t1 = match.Connect();
+  ASSERT_TRUE(t1.Send("(init T1 b 1)"));
+  EXPECT_TRUE(Closed(&t1));
+  const RcssServerMjStats stats = match.bridge().WaitForStats(
+      [](const RcssServerMjStats& s) { return s.refused_by_kind.count("init_refused") > 0; }, 20s);
+  EXPECT_EQ(stats.active_agents, 1);
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(k1.Receive(20s)) << i;
+}
+
 }  // namespace
 }  // namespace turf
