@@ -91,12 +91,18 @@ class MapReader {
 // error (malformed YAML at its line and column, several documents, not a map).
 std::optional<YAML::Node> LoadSceneDocument(const std::string& text, Errors* errors);
 
-// physics: the step (s) and the solver's iterations, alike in every kind of scene.
-template <class Physics>
-void ReadPhysics(MapReader m, Physics* p) {
+// physics: the step (s) and the solver's iterations, alike in every kind of scene; `extra(m)` reads a kind's own
+// keys before the map is finished.
+template <class Physics, class Extra>
+void ReadPhysics(MapReader m, Physics* p, Extra extra) {
   m.Number("step", &p->step);
   m.Int("solver_iterations", &p->solver_iterations);
+  extra(m);
   m.Finish();
+}
+template <class Physics>
+void ReadPhysics(MapReader m, Physics* p) {
+  ReadPhysics(m, p, [](MapReader&) {});
 }
 
 // `parse()` (a scene's parse); an exception yaml-cpp throws on input nobody

@@ -282,6 +282,7 @@ WorldRequests Session::TakeRequests() {
   // perception right after its step, so the joint velocities asked in this
   // cycle go to the world with the next one.
   std::swap(out.joints, held_joints_);
+  for (const RobotMove& m : out.moves) moved_.push_back(m.robot);
   for (auto& [id, a] : agents_) a.synced = false;
   return out;
 }
@@ -374,6 +375,7 @@ void Session::Advance(WorldSnapshot snapshot) {
   last_ = std::move(snapshot);
   const WorldSnapshot& world = *last_;
   ++cycle_;
+  RecordTorsoPoses(world);
   // The players touching the ball: a body of the player near the ball.
   std::vector<Toucher> touchers;
   for (const auto& [id, a] : agents_) {
@@ -413,6 +415,30 @@ std::string Session::MonitorGreeting() const {
   return FormatMonitorEnvironment() + FormatMonitorGame(MonitorState(game_), nullptr);
 }
 
+void Session::RecordTorsoPoses(const WorldSnapshot& world) {
+  for (const std::string& r : moved_) torso_poses_.erase(r);
+  moved_.clear();
+  for (const RobotSnapshot& r : world.robots) {
+    const RobotSnapshot::Link* torso = r.FindLink("torso");
+    if (torso == nullptr) continue;
+    std::vector<TorsoPose>& poses = torso_poses_[r.name];
+    poses.push_back({torso->position, torso->orientation});
+    if (poses.size() > 4) poses.erase(poses.begin());
+  }
+}
+
+// rcssserver3d's Accelerometer::PrePhysicsUpdateInternal: (v - v_last) / dt - gravity, turned into the body's
+// frame, before the step; a body's velocity there is what its last 20 ms step moved it by, over 20 ms.
+std::optional<Eigen::Vector3d> Session::ReferenceAcc(const std::string& robot) const {
+  const auto it = torso_poses_.find(robot);
+  if (it == torso_poses_.end() || it->second.size() < 4) return std::nullopt;
+  const std::vector<TorsoPose>& p = it->second;
+  constexpr double kCycle = 0.02;    // s
+  constexpr double kGravity = 9.81;  // m/s^2, rcssserver3d's world (spark.rb)
+  const Eigen::Vector3d change = (p[2].position - 2.0 * p[1].position + p[0].position) / (kCycle * kCycle);
+  return p[2].orientation.inverse() * (change + Eigen::Vector3d(0.0, 0.0, kGravity));
+}
+
 std::string Session::Perceive(Agent* a, const WorldSnapshot& world, bool /*touched*/) {
   Perception p;
   p.time = world.time;
@@ -430,6 +456,9 @@ std::string Session::Perceive(Agent* a, const WorldSnapshot& world, bool /*touch
     for (int k = 0; k < 3; ++k) {
       p.gyro_deg_s[k] = robot->gyro[k] * kDeg;
       p.acc[k] = robot->accelerometer[k];
+    }
+    if (const std::optional<Eigen::Vector3d> acc = ReferenceAcc(robot->name)) {
+      for (int k = 0; k < 3; ++k) p.acc[k] = (*acc)[k];
     }
     const std::vector<NaoJoint>& joints = NaoJoints(a->type);
     const std::vector<int>& index = HingeIndex(a->type, *robot);
@@ -492,7 +521,7 @@ std::string Session::TakeMonitorOutput() { return std::exchange(monitor_, {}); }
 
 namespace {
 
-constexpr uint32_t kLeagueVersion = 1;
+constexpr uint32_t kLeagueVersion = 2;
 constexpr size_t kMaxItems = 4096;  // robots, joints, links, moves, players: far above any scene
 constexpr size_t kMaxName = 256;    // a robot, joint, link or team name
 
@@ -657,6 +686,17 @@ std::string Session::SaveLeague() const {
   SaveJoints(held_joints_, out);
   out.Put(last_.has_value());
   if (last_) SaveWorld(*last_, out);
+  out.Put<uint64_t>(torso_poses_.size());
+  for (const auto& [robot, poses] : torso_poses_) {
+    out.Str(robot);
+    out.Put<uint64_t>(poses.size());
+    for (const TorsoPose& t : poses) {
+      PutVector(t.position, out);
+      PutQuaternion(t.orientation, out);
+    }
+  }
+  out.Put<uint64_t>(moved_.size());
+  for (const std::string& robot : moved_) out.Str(robot);
   out.Tag(StateTag("SPLY"));
   std::vector<const Agent*> players;
   for (const auto& [id, a] : agents_)
@@ -710,6 +750,23 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
     for (const auto& [robot, targets] : *joints) known_robot(robot);
   std::optional<WorldSnapshot> last;
   if (in.Bool()) last = RestoreWorld(in);
+  std::map<std::string, std::vector<TorsoPose>> torso_poses;
+  const size_t posed = in.Count(kMaxItems);
+  for (size_t i = 0; i < posed && in.ok(); ++i) {
+    const std::string robot = in.Str(kMaxName);
+    known_robot(robot);
+    std::vector<TorsoPose>& poses = torso_poses[robot];
+    poses.resize(in.Count(4));
+    for (TorsoPose& t : poses) {
+      t.position = GetVector(in);
+      t.orientation = GetQuaternion(in);
+    }
+  }
+  std::vector<std::string> moved(in.Count(kMaxItems));
+  for (std::string& robot : moved) {
+    robot = in.Str(kMaxName);
+    known_robot(robot);
+  }
   in.Tag(StateTag("SPLY"));
   // Each player of the snapshot onto the connected agent that is that player.
   std::map<int, Agent> players;  // by agent id: the agent with its league state replaced
@@ -774,6 +831,8 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
   requests_ = std::move(requests);
   held_joints_ = std::move(held);
   last_ = std::move(last);
+  torso_poses_ = std::move(torso_poses);
+  moved_ = std::move(moved);
   for (auto& [id, a] : players) agents_.at(id) = std::move(a);
   return "";
 }

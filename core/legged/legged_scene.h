@@ -17,6 +17,10 @@ namespace turf {
 struct LeggedPhysics {
   double step = 0.002;  // s
   int solver_iterations = 50;
+  // The IMU, the links' poses and the other position and velocity sensors as they are after each step (as ODE's
+  // perceptors read them: rcssserver3d's scenes), instead of MuJoCo's values from the start of the last step
+  // (what mj_step leaves, and what RCSSServerMJ reads).
+  bool sensors_after_step = false;
 };
 
 struct LeggedRates {

@@ -19,7 +19,9 @@ namespace {
 // 1e-5 spikes at 50 iterations, not at 200), so velocity mode feeds the creep
 // back instead: its target carries (reference - q) / kCreepTime, where the
 // reference angle integrates the commanded velocity and the difference is
-// kept within kCreepLead (a blocked joint does not wind it up).
+// kept within kCreepLead (a blocked joint does not wind it up). A step in which
+// the motor is at its bound resets the reference to where the joint is: ODE's
+// motor, overpowered, loses the angle for good.
 constexpr double kStiffCompliance = 1e-4;
 constexpr double kCreepTime = 0.1;   // s
 constexpr double kCreepLead = 0.01;  // rad
@@ -575,10 +577,22 @@ void LeggedWorld::ServoPd(JointSlot* j) {
 // integration); false if it produced a non-finite state.
 bool LeggedWorld::StagePhysics() {
   mj_step2(model_.get(), data_.get());
+  if (scene_.physics.sensors_after_step) {
+    mj_kinematics(model_.get(), data_.get());
+    mj_comPos(model_.get(), data_.get());
+    mj_comVel(model_.get(), data_.get());
+    mj_sensorPos(model_.get(), data_.get());
+    mj_sensorVel(model_.get(), data_.get());
+  }
   for (RobotSlot& r : robots_) {
     for (JointSlot& j : r.joints) {
       if (j.command.mode == JointMode::kPd) continue;
       j.effort = j.stop != 0 ? data_->qfrc_applied[j.dof] : j.row >= 0 ? data_->efc_force[j.row] : 0.0;
+      // A motor at its bound gave way, as ODE's does: what it lost is lost (no creep back to the reference;
+      // measured against rcssserver3d, tests/simspark/reference_replay_test.cpp).
+      if (j.command.mode == JointMode::kVelocity && j.stop == 0 && j.row >= 0 &&
+          std::abs(j.effort) >= data_->efc_frictionloss[j.row] * (1.0 - 1e-9))
+        j.reference = data_->qpos[j.qpos];
     }
   }
   return StateFinite(model_.get(), data_.get(), INFINITY);

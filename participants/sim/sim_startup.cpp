@@ -192,6 +192,10 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
       ->capture_default_str();
   app.add_flag("--simspark-sync", ss.sync_mode,
                "with --simspark: agent sync mode (a cycle runs when every agent has sent (syn))");
+  app.add_option("--simspark-sync-grace-cycles", ss.sync_grace_cycles,
+                 "with --simspark-sync: cycles after an agent's (scene) that run without its (syn) (rcssserver3d: 0)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
   AddSimSparkOperatorFlag(app, ss, "simspark-", "with --simspark: ");
 
   // RCSSServerMJ agents and monitor commands in this process (sim_host.h): the same flags as

@@ -27,7 +27,8 @@ struct SimCommandLine {
   bool simproto = false;
   SimprotoBridgeOptions simproto_options;
   // --simspark [ADDRESS]: serve SimSpark agents and monitors in this process (legged scenes), on 127.0.0.1 unless
-  // an address is given; --simspark-agent-port, --simspark-monitor-port, --simspark-sync as turf-simspark-bridge's.
+  // an address is given; --simspark-agent-port, --simspark-monitor-port, --simspark-sync,
+  // --simspark-sync-grace-cycles as turf-simspark-bridge's.
   bool simspark = false;
   SimSparkBridgeOptions simspark_options;
   // --rcssservermj [ADDRESS]: serve RCSSServerMJ agents and monitor commands in this process (legged scenes of

@@ -65,6 +65,7 @@ class SimSparkBridgeImpl : public LeagueFrontEnd<SimSparkBridgeImpl, SimSparkWor
     simspark::SessionOptions o;
     o.seed = options_.seed;
     o.sync_mode = options_.sync_mode;
+    o.sync_grace_cycles = options_.sync_grace_cycles;
     auto session = std::make_unique<simspark::Session>(o, robots, SimSparkWorld::ParkPoses(*link_));
     session->SetRobotTypes(std::move(types));
     return session;

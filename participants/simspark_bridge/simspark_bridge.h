@@ -45,6 +45,8 @@ struct SimSparkBridgeOptions : ParticipantOptions {
   uint16_t agent_port = 3100;    // 0: any free port (tests)
   uint16_t monitor_port = 3200;  // 0: any free port
   bool sync_mode = false;
+  // Sync mode: cycles after an agent's `scene` run without waiting for its (syn) (rcssserver3d waits from the first).
+  int sync_grace_cycles = 5;
   uint64_t seed = 1;
   std::chrono::milliseconds attach_timeout{30000};  // waiting for turf-sim at start
   std::chrono::milliseconds step_timeout{5000};     // turf-sim's answer to one cycle

@@ -43,6 +43,10 @@ inline void AddSimSparkBridgeFlags(ParticipantMain& participant, SimSparkBridgeO
                  "sync mode: drop an agent that sends no (syn) for this long (0: wait forever)")
       ->capture_default_str()
       ->check(CLI::Range(0, 3600000));
+  app.add_option("--sync-grace-cycles", options.sync_grace_cycles,
+                 "sync mode: cycles after an agent's (scene) that run without its (syn) (rcssserver3d: 0)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
   app.add_option("--seed", options.seed, "seed of beam noise and each agent's vision noise")->capture_default_str();
   app.add_option("--duration", options.duration, "stop after this many simulated seconds (0: run until Ctrl-C)")
       ->check(FiniteAtLeastZero());

@@ -30,16 +30,32 @@ inline double PerceptionTime(const std::string& perception) {
 
 struct FrontEndInSim {
   // `front_end`: the flags' prefix (simspark, rcssservermj); `scene`: a file in configs/scenes; `mode`: the front-end
-  // flag that makes it step as fast as the agents answer.
-  FrontEndInSim(const std::string& front_end, const std::string& scene, const std::string& mode, int domain_offset)
+  // flag that makes it step as fast as the agents answer; `extra`: more of turf-sim's flags.
+  FrontEndInSim(const std::string& front_end, const std::string& scene, const std::string& mode, int domain_offset,
+                const std::vector<std::string>& extra = {})
       : agent_port(FreePort(SOCK_STREAM)),
         monitor_port(FreePort(SOCK_STREAM)),
-        sim(front_end + "_in_sim",
-            {Built("participants/sim/turf-sim"), "--scene", std::string(TURF_SOURCE_DIR) + "/configs/scenes/" + scene,
-             "--lockstep", "--" + front_end, "--" + front_end + "-agent-port", std::to_string(agent_port),
-             "--" + front_end + "-monitor-port", std::to_string(monitor_port), "--" + front_end + "-" + mode,
-             "--domain", std::to_string(TestDomain(domain_offset)), "--prefix",
-             front_end + "insim" + std::to_string(getpid())}) {}
+        sim(front_end + "_in_sim", Args(front_end, scene, mode, domain_offset, extra)) {}
+
+  std::vector<std::string> Args(const std::string& front_end, const std::string& scene, const std::string& mode,
+                                int domain_offset, const std::vector<std::string>& extra) const {
+    std::vector<std::string> a = {Built("participants/sim/turf-sim"),
+                                  "--scene",
+                                  std::string(TURF_SOURCE_DIR) + "/configs/scenes/" + scene,
+                                  "--lockstep",
+                                  "--" + front_end,
+                                  "--" + front_end + "-agent-port",
+                                  std::to_string(agent_port),
+                                  "--" + front_end + "-monitor-port",
+                                  std::to_string(monitor_port),
+                                  "--" + front_end + "-" + mode,
+                                  "--domain",
+                                  std::to_string(TestDomain(domain_offset)),
+                                  "--prefix",
+                                  front_end + "insim" + std::to_string(getpid())};
+    a.insert(a.end(), extra.begin(), extra.end());
+    return a;
+  }
 
   // Connects the agent once turf-sim listens (loading 22 robots takes seconds on a loaded machine) and sends
   // `hello`; the first answer within `timeout`, or nullopt (a failure, with turf-sim's log).

@@ -504,6 +504,34 @@ TEST(SessionPerception, SeeEveryThirdPerceptionPerAgent) {
   EXPECT_EQ(b_sees, (std::vector<bool>{true, false, false, true, false, false, true}));
 }
 
+// The accelerometer as rcssserver3d's: the torso's velocity change over the cycle before the last (its poses of the
+// last four cycles), gravity added, in that cycle's torso frame; the world's own accelerometer until there are four
+// poses of the robot since it was last moved.
+TEST(SessionPerception, AccelerometerIsTheTorsosVelocityChangeOverTheCycleBeforeAsTheReferences) {
+  Harness h(1);
+  const int a = h.JoinAndCycle("Alpha", 1);
+  FakeWorld::Robot& robot = h.world.robot("nao_1");
+  robot.accelerometer = {1.0, 2.0, 3.0};  // the world's own, seen until the session has four poses
+  robot.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));  // facing -x
+  const Eigen::Vector3d start = robot.position;
+  std::vector<std::string> acc;
+  for (int k = 1; k <= 6; ++k) {
+    robot.position = start + Eigen::Vector3d(0.5 * 2.0 * std::pow(0.02 * k, 2), 0.0, 0.0);  // 2 m/s^2 along +x
+    const std::string p = OutputFor(h.Cycle(), a);
+    const size_t at = p.find("(ACC (n torso) (a ");
+    acc.push_back(at == std::string::npos ? "" : p.substr(at + 18, p.find(')', at + 18) - at - 18));
+  }
+  // The poses before this test's first move count as well: the session's own first move (at init) restarts them.
+  EXPECT_EQ(acc[0], "1.00 2.00 3.00");
+  EXPECT_EQ(acc[1], "1.00 2.00 3.00");
+  // From four poses on: 2 m/s^2 along world +x is the torso's -y (it faces -x), gravity up.
+  EXPECT_EQ(acc[3], "0.00 -2.00 9.81");
+  EXPECT_EQ(acc[5], "0.00 -2.00 9.81");
+  // A beam moves the robot: the world's accelerometer again until four poses since.
+  h.session.Receive(a, "(beam -3 0 0)");
+  EXPECT_EQ(OutputFor(h.Cycle(), a).find("(ACC (n torso) (a 1.00 2.00 3.00))") != std::string::npos, true);
+}
+
 // A robot lying face down beside the field, feet in the air, on a vision
 // cycle: it sees nothing and hears nothing. The whole message is what the
 // reference sends: no hear, no FRP, and "(See )" right after hj2.
@@ -516,11 +544,12 @@ TEST(SessionPerception, FallenRobotThatSeesNothingGetsTheReferencesMessage) {
   robot.orientation = Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX());  // forward (+y) points down
   robot.left_contact = false;
   robot.right_contact = false;
-  h.Cycle();
-  h.Cycle();
-  const std::string p = OutputFor(h.Cycle(), a);  // the 4th perception: a vision cycle
-  EXPECT_EQ(p, std::string("(time (now 0.08))(GS (sl 0) (sr 0) (t 0.00) (pm BeforeKickOff))"
-                           "(GYR (n torso) (rt 0.00 0.00 0.00))(ACC (n torso) (a 0.00 0.00 9.81))"
+  for (int i = 0; i < 5; ++i) h.Cycle();
+  // The 7th perception: a vision cycle, and the torso has lain still for the three cycles the accelerometer looks
+  // back (the reference's: gravity in the torso's frame, forward pointing down).
+  const std::string p = OutputFor(h.Cycle(), a);
+  EXPECT_EQ(p, std::string("(time (now 0.14))(GS (sl 0) (sr 0) (t 0.00) (pm BeforeKickOff))"
+                           "(GYR (n torso) (rt 0.00 0.00 0.00))(ACC (n torso) (a 0.00 -9.81 0.00))"
                            "(HJ (n hj1) (ax 0.00))(HJ (n hj2) (ax 0.00))(See )") +
                    test::kLimbJointsAtZero);
 }

@@ -1,0 +1,223 @@
+// turf's Nao against rcssserver3d's, cycle by cycle (issue 12): a UT Austin Villa agent's recorded messages
+// replayed open loop into turf-sim --simspark (sync mode, the match scene), and what turf perceives compared with
+// what rcssserver3d perceived for the same messages (tests/data/simspark/*.replay, made with
+// bench/ut_agents/replay.py and make_replay.py; the file's header says from which run).
+//
+// The replay is the same for both servers: the agent's `scene` message, then after each perception k the messages
+// of the file's `M k` lines (turf's first grace perceptions read and not answered, see kShift), so that every
+// message is taken at the same cycle on both, whatever the machine's speed. An open-loop replay of a walk drifts from
+// any closed-loop run, so the checks are over the first seconds of walking, where a faithful Nao follows the
+// reference: the leg joints' angles, the gyro, staying upright.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tests/simspark/front_end_in_sim.h"
+
+namespace turf::test {
+namespace {
+
+using namespace std::chrono_literals;
+
+// What one perception says, as far as compared.
+struct Perceived {
+  double t = NAN;
+  std::array<double, 3> gyr{};
+  std::array<double, 3> acc{};
+  std::map<std::string, double> hj;  // deg
+};
+
+struct ReplayFile {
+  std::vector<std::string> joints;                   // the R lines' angle order
+  std::map<int, std::vector<std::string>> messages;  // by the perception index they answer (-1: before the first)
+  std::vector<Perceived> reference;                  // by perception index
+  int walk_from = -1;                                // the first cycle of the walk (W line)
+};
+
+std::optional<ReplayFile> ReadReplay(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return std::nullopt;
+  ReplayFile f;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream s(line);
+    std::string tag;
+    s >> tag;
+    if (tag == "J") {
+      for (std::string j; s >> j;) f.joints.push_back(j);
+    } else if (tag == "W") {
+      s >> f.walk_from;
+    } else if (tag == "M") {
+      int k = 0;
+      s >> k;
+      std::string message;
+      std::getline(s >> std::ws, message);
+      f.messages[k].push_back(message);
+    } else if (tag == "R") {
+      int k = 0;
+      std::string pm;
+      Perceived p;
+      s >> k >> p.t >> pm;
+      for (double& g : p.gyr) s >> g;
+      for (double& a : p.acc) s >> a;
+      for (const std::string& j : f.joints) s >> p.hj[j];
+      if (!s || k != static_cast<int>(f.reference.size())) return std::nullopt;
+      f.reference.push_back(p);
+    }
+  }
+  if (f.joints.empty() || f.reference.empty() || f.walk_from < 0) return std::nullopt;
+  return f;
+}
+
+std::array<double, 3> Triple(const std::string& text, const std::regex& re) {
+  std::smatch m;
+  if (!std::regex_search(text, m, re)) return {NAN, NAN, NAN};
+  return {std::stod(m[1]), std::stod(m[2]), std::stod(m[3])};
+}
+
+Perceived Parse(const std::string& perception) {
+  static const std::regex gyr(R"(\(GYR \(n torso\) \(rt ([-0-9.e]+) ([-0-9.e]+) ([-0-9.e]+)\)\))");
+  static const std::regex acc(R"(\(ACC \(n torso\) \(a ([-0-9.e]+) ([-0-9.e]+) ([-0-9.e]+)\)\))");
+  static const std::regex hj(R"(\(HJ \(n ([a-z0-9]+)\) \(ax ([-0-9.e]+)\)\))");
+  Perceived p;
+  p.t = PerceptionTime(perception);
+  p.gyr = Triple(perception, gyr);
+  p.acc = Triple(perception, acc);
+  for (auto it = std::sregex_iterator(perception.begin(), perception.end(), hj); it != std::sregex_iterator(); ++it)
+    p.hj[(*it)[1]] = std::stod((*it)[2]);
+  return p;
+}
+
+// Plays the file's messages into turf as replay.py --grace 1 does: the file's answer to perception k after perception
+// k (turf-sim started with --simspark-sync-grace-cycles 0: it waits for the agent from its first perception, as
+// rcssserver3d). turf's perceptions by index (fewer on a failure).
+std::vector<Perceived> Replay(const ReplayFile& f, FrontEndInSim& turf) {
+  std::vector<Perceived> got;
+  const auto scene = f.messages.find(-1);
+  if (scene == f.messages.end() || scene->second.empty()) {
+    ADD_FAILURE() << "the replay file has no message before the first perception";
+    return got;
+  }
+  // Connected once the front-end serves (its start-up line), as replay.py does: an agent that connects while turf-sim
+  // still starts is served from a later cycle. Polling the log, with a deadline.
+  const auto end = std::chrono::steady_clock::now() + 60s;
+  while (turf.sim.Log().find("agents: TCP") == std::string::npos && std::chrono::steady_clock::now() < end)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  std::optional<std::string> m = turf.Hello(scene->second.front(), 60s);
+  for (int k = 0; m; ++k) {
+    got.push_back(Parse(*m));
+    if (got.size() == f.reference.size()) break;
+    const auto answer = f.messages.find(k);
+    if (answer != f.messages.end()) {
+      for (const std::string& message : answer->second) EXPECT_TRUE(turf.agent.Send(message)) << "cycle " << k;
+    }
+    m = turf.agent.Receive(30s);
+    if (!m) ADD_FAILURE() << "no perception " << k + 1 << "\n" << turf.sim.Log();
+  }
+  return got;
+}
+
+// Leg joints' RMS difference (deg), gyro's (deg/s) and accelerometer's (m/s^2, vectors) over cycles [from, to).
+struct Difference {
+  double legs = 0.0;
+  double gyro = 0.0;
+  double acc = 0.0;
+};
+
+Difference Compare(const ReplayFile& f, const std::vector<Perceived>& turf, size_t from, size_t to) {
+  double legs = 0.0, gyro = 0.0, acc = 0.0;
+  int joints = 0;
+  for (size_t k = from; k < to; ++k) {
+    for (const std::string& j : f.joints) {
+      if (j.find("lj") == std::string::npos) continue;
+      const double d = turf[k].hj.at(j) - f.reference[k].hj.at(j);
+      legs += d * d;
+      ++joints;
+    }
+    for (int i = 0; i < 3; ++i) {
+      gyro += std::pow(turf[k].gyr[i] - f.reference[k].gyr[i], 2);
+      acc += std::pow(turf[k].acc[i] - f.reference[k].acc[i], 2);
+    }
+  }
+  const double cycles = std::max<double>(1, to - from);
+  return {std::sqrt(legs / std::max(joints, 1)), std::sqrt(gyro / cycles), std::sqrt(acc / cycles)};
+}
+
+// The first cycle from `from` in which the agent would think itself fallen (its low-pass of ACC z, 0.9 old +
+// 0.1 new as UT's parser keeps it, under 5 m/s^2), or -1.
+int FirstFallen(const std::vector<Perceived>& p, size_t from) {
+  double low = 9.81;
+  for (size_t k = 0; k < p.size(); ++k) {
+    low = 0.9 * low + 0.1 * p[k].acc[2];
+    if (k >= from && low < 5.0) return static_cast<int>(k);
+  }
+  return -1;
+}
+
+struct Case {
+  const char* file;
+  int walk_cycles;               // compared from the walk's first cycle on
+  double standing_legs_rms_deg;  // tolerances: the second before the walk
+  double legs_rms_deg;           // the walk
+  double gyro_rms_dps;
+  double acc_rms;  // m/s^2
+};
+
+class ReferenceReplay : public ::testing::TestWithParam<Case> {};
+
+TEST_P(ReferenceReplay, TurfsNaoFollowsRcssserver3dsForTheSameCommands) {
+  const Case c = GetParam();
+  const std::optional<ReplayFile> f = ReadReplay(std::string(TURF_SOURCE_DIR) + "/tests/data/simspark/" + c.file);
+  ASSERT_TRUE(f) << "cannot read " << c.file;
+  const size_t from = static_cast<size_t>(f->walk_from);
+  const size_t to = std::min(f->reference.size(), from + c.walk_cycles);
+  ASSERT_LT(from, to);
+  ASSERT_EQ(FirstFallen(f->reference, from), -1) << "the reference itself falls";
+
+  FrontEndInSim turf("simspark", "simspark_match.yaml", "sync", 19, {"--simspark-sync-grace-cycles", "0"});
+  const std::vector<Perceived> got = Replay(*f, turf);
+  ASSERT_EQ(got.size(), f->reference.size());
+
+  std::printf("| cycles | t | legs RMS deg | gyro RMS deg/s | ACC RMS m/s^2 |\n| --- | --- | --- | --- | --- |\n");
+  for (size_t w = from; w < to; w += 25) {
+    const Difference d = Compare(*f, got, w, std::min(to, w + 25));
+    std::printf("| %zu-%zu | %.2f | %.2f | %.1f | %.1f |\n", w, std::min(to, w + 25) - 1, f->reference[w].t, d.legs,
+                d.gyro, d.acc);
+  }
+  const Difference standing = Compare(*f, got, from > 50 ? from - 50 : 0, from);
+  const Difference walk = Compare(*f, got, from, to);
+  std::printf("standing: legs %.3f deg, gyro %.2f deg/s; walk: legs %.2f deg, gyro %.1f deg/s, ACC %.1f m/s^2\n",
+              standing.legs, standing.gyro, walk.legs, walk.gyro, walk.acc);
+  EXPECT_LE(standing.legs, c.standing_legs_rms_deg);
+  EXPECT_EQ(FirstFallen(got, from), -1) << "turf's Nao falls where the reference's does not";
+  EXPECT_LE(walk.legs, c.legs_rms_deg);
+  EXPECT_LE(walk.gyro, c.gyro_rms_dps);
+  EXPECT_LE(walk.acc, c.acc_rms);
+  turf.ExpectAnnouncedAndCleanStop("agents");
+}
+
+INSTANTIATE_TEST_SUITE_P(UtAgents, ReferenceReplay,
+                         ::testing::Values(Case{"ut_walk_type0.replay", 100, 0.05, 1.6, 45.0, 12.0}),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           std::string name = info.param.file;
+                           name = name.substr(0, name.find('.'));
+                           std::string out;
+                           for (char ch : name)
+                             if (std::isalnum(static_cast<unsigned char>(ch))) out += ch;
+                           return out;
+                         });
+
+}  // namespace
+}  // namespace turf::test
