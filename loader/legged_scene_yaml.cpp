@@ -190,8 +190,10 @@ void ReadScene(MapReader m, const std::string& base_dir, LeggedScene* s, Errors*
   m.String("name", &s->name);
   m.Uint64("seed", &s->seed);
   m.Number("ground_friction", &s->ground_friction);
-  yaml::ReadPhysics(m.Map("physics"), &s->physics,
-                    [&](yaml::MapReader& p) { p.Bool("sensors_after_step", &s->physics.sensors_after_step); });
+  yaml::ReadPhysics(m.Map("physics"), &s->physics, [&](yaml::MapReader& p) {
+    p.Bool("sensors_after_step", &s->physics.sensors_after_step);
+    p.Number("motor_impulse_window", &s->physics.motor_impulse_window);
+  });
   {
     MapReader r = m.Map("rates");
     r.Number("joint_state_hz", &s->rates.joint_state_hz);

@@ -6,7 +6,7 @@
 // units, angles in degrees in keys ending in _deg):
 //   kind: legged                      (required: tells turf-sim which world to run)
 //   name: simspark-3d   seed: 1   ground_friction: 1.0
-//   physics: {step, solver_iterations, sensors_after_step}
+//   physics: {step, solver_iterations, sensors_after_step, motor_impulse_window}
 //   rates: {joint_state_hz}
 //   field: {length, width, goal_width, goal_depth, goal_height, goal_wall,
 //           ball_radius, ball_mass, ball_start: [x, y], wall_distance,

@@ -7,15 +7,16 @@
 # steps) and give the binary and its source directory (it reads ./skills and ./paramfiles from there).
 #
 # usage: run_match.sh --ut-agent PATH --agent-dir DIR [--agents 4] [--layout split|one] [--realtime]
-#                     [--type 0..4] [--seconds 60] [--label TEXT] [--keep DIR] [--trace]
+#                     [--type 0..4] [--seconds 60] [--label TEXT] [--keep DIR] [--trace] [--scene FILE]
 #   split: unums 1..N/2 on team UTA (left), 1..N/2 on UTB (right); one: 1..N on UTA
 #   default sync mode (turf waits for every agent: results do not depend on the machine's load)
 #   --keep DIR: keep the logs and measure.py's CSV and JSON there
 #   --trace: each agent through proxy.py, its messages kept as trace_<team>_<unum>.jsonl (with --keep)
+#   --scene FILE: a variant of configs/scenes/simspark_match.yaml to measure (same robots; default that file)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
-agent="" agent_dir="" n=4 layout=split sync=true type=0 seconds=60 label="" keep="" trace=false
+scene=configs/scenes/simspark_match.yaml agent="" agent_dir="" n=4 layout=split sync=true type=0 seconds=60 label="" keep="" trace=false
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --ut-agent) agent=$2; shift 2 ;;
@@ -28,7 +29,8 @@ while [[ $# -gt 0 ]]; do
     --label) label=$2; shift 2 ;;
     --keep) keep=$2; shift 2 ;;
     --trace) trace=true; shift ;;
-    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    --scene) scene=$2; shift 2 ;;
+    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
     *) echo "run_match.sh: unknown argument $1 (--help)" >&2; exit 2 ;;
   esac
 done
@@ -57,7 +59,7 @@ trap cleanup EXIT
 # Every parked robot of the match scene built as the agents' type (the shipped scene has 14 of type 0, 2 of each
 # other type), through a copy of the profile naming a copy of the scene.
 sed -e "s/nao_type: [0-4]/nao_type: $type/" -e "s|\.\./robots/nao\.xml|$PWD/configs/robots/nao.xml|" \
-  configs/scenes/simspark_match.yaml > "$work/scene.yaml"
+  "$scene" > "$work/scene.yaml"
 sed "s|^scene: .*|scene: $work/scene.yaml|" configs/launch/simspark.yaml > "$work/simspark.yaml"
 "$BUILD_DIR/participants/launcher/turf" launch "$work/simspark.yaml" --domain "$domain" --prefix "$prefix" \
   --set simspark.listen=127.0.0.1 --set simspark.agent-port="$port" --set simspark.monitor-port=$((port + 1)) \

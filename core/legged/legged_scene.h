@@ -21,6 +21,10 @@ struct LeggedPhysics {
   // perceptors read them: rcssserver3d's scenes), instead of MuJoCo's values from the start of the last step
   // (what mj_step leaves, and what RCSSServerMJ reads).
   bool sensors_after_step = false;
+  // s, 0 = off: a velocity motor's force bound holds for its impulse since the window began (max_torque x the
+  // time elapsed in it), so a physics step may make up what the window's earlier steps left unspent, as ODE's
+  // motor bounds the force of one whole step (the reference's 20 ms; rcssserver3d's scenes).
+  double motor_impulse_window = 0.0;
 };
 
 struct LeggedRates {

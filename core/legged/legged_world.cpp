@@ -56,7 +56,8 @@ struct LeggedWorld::JointSlot {
   // the target velocity of its row (rad/s).
   int stop = 0;
   double stop_target = 0.0;
-  int stop_row = -1;  // its limit row in this step, -1 if none
+  int stop_row = -1;     // its limit row in this step, -1 if none
+  double impulse = 0.0;  // N m s: what the velocity motor spent in this impulse window
 };
 
 struct LeggedWorld::SensorRef {
@@ -164,6 +165,8 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
     for (size_t j = 0; j < robots_[r].joints.size(); ++j)
       motor_of_dof_[robots_[r].joints[j].dof] = {static_cast<int>(r), static_cast<int>(j)};
   }
+  if (scene_.physics.motor_impulse_window > 0)
+    impulse_steps_ = static_cast<int>(std::lround(scene_.physics.motor_impulse_window / m->opt.timestep));
   if (scene_.joint_stops.enabled)
     stop_steps_ = static_cast<int>(std::max<long>(1, std::lround(scene_.joint_stops.step / m->opt.timestep)));
   if (scene_.contacts.enabled) {
@@ -316,6 +319,7 @@ void LeggedWorld::Save(StateWriter& out) const {
       out.Put(j.row);
       out.Put(j.stop);
       out.Put(j.stop_target);
+      out.Put(j.impulse);
     }
   }
 }
@@ -353,6 +357,11 @@ void LeggedWorld::Restore(StateReader& in) {
       if (j.stop < 0 || j.stop > 2 || !std::isfinite(j.stop_target)) {
         in.Fail("joint stop out of range");
         j.stop = 0;
+      }
+      j.impulse = in.Get<double>();
+      if (!(j.impulse >= 0.0 && j.impulse <= 1e6)) {
+        in.Fail("motor impulse out of range");
+        j.impulse = 0.0;
       }
     }
   }
@@ -514,6 +523,7 @@ void LeggedWorld::StageServos() {
           j.reference = q + creep + j.command.value * dt;
           // ODE's motor knows no stops: with them (scene joint_stops) the reference is not held inside either.
           if (j.limited && stop_steps_ == 0) j.reference = std::clamp(j.reference, j.lo, j.hi);
+          bound = ImpulseBound(&j);
           break;
         }
         case JointMode::kPosition: {
@@ -559,6 +569,22 @@ void LeggedWorld::StageServos() {
   }
 }
 
+// A velocity motor's force bound in this step. With an impulse window (scene
+// physics.motor_impulse_window) it is what the bound leaves of the impulse
+// since the window began: max_torque x the time elapsed in the window, less
+// what the motor spent in its earlier steps. ODE's bound holds for the force of
+// one whole 20 ms step, so a landing in the cycle's last physics step meets
+// the impulse the lighter steps before it left; saturated from the window's
+// start, the motor gets max_torque in every step, as before. Causal: nothing
+// is borrowed from later steps (that variant made the motors pulse, and the
+// UT agents fell more).
+double LeggedWorld::ImpulseBound(JointSlot* j) const {
+  if (impulse_steps_ <= 1) return j->effort_limit;
+  const int k = static_cast<int>(frame_ % static_cast<uint64_t>(impulse_steps_));
+  if (k == 0) j->impulse = 0.0;
+  return std::max(0.0, j->effort_limit * (k + 1) - j->impulse / model_->opt.timestep);
+}
+
 // PD mode (RCSSServerMJ's and the Booster SDK's motor): an explicit torque
 // from this step's angle and velocity, clamped to the joint's effort limit.
 // The joint's constraint row keeps what MuJoCo made of it (its reference
@@ -588,6 +614,7 @@ bool LeggedWorld::StagePhysics() {
     for (JointSlot& j : r.joints) {
       if (j.command.mode == JointMode::kPd) continue;
       j.effort = j.stop != 0 ? data_->qfrc_applied[j.dof] : j.row >= 0 ? data_->efc_force[j.row] : 0.0;
+      if (j.command.mode == JointMode::kVelocity) j.impulse += std::abs(j.effort) * model_->opt.timestep;
       // A motor at its bound gave way, as ODE's does: what it lost is lost (no creep back to the reference;
       // measured against rcssserver3d, tests/simspark/reference_replay_test.cpp).
       if (j.command.mode == JointMode::kVelocity && j.stop == 0 && j.row >= 0 &&

@@ -202,6 +202,7 @@ class LeggedWorld : Pinned {
   void LatchStop(JointSlot* joint) const;
   void StopRow(const JointSlot& joint, int row);
   void StopMotor(JointSlot* joint, double command, double torque);
+  double ImpulseBound(JointSlot* joint) const;
   void StageServos();
   void ServoPd(JointSlot* joint);
   static void ApplyStartJoints(const LeggedRobot& spec, std::vector<JointSlot>* joints);
@@ -218,7 +219,8 @@ class LeggedWorld : Pinned {
   std::vector<RobotSlot> robots_;
   std::vector<std::pair<int, int>> motor_of_dof_;  // dof -> (robot, joint), -1 for none
   std::unique_ptr<OdeContacts> ode_contacts_;      // the scene's contact law, when it asks for rcssserver3d's
-  int stop_steps_ = 0;  // physics steps per ODE step with the scene's joint_stops, 0 = MuJoCo's limits
+  int impulse_steps_ = 0;  // physics steps per motor impulse window (scene physics.motor_impulse_window), 0 = off
+  int stop_steps_ = 0;     // physics steps per ODE step with the scene's joint_stops, 0 = MuJoCo's limits
   int steps_since_stop_test_ = 0;
   bool commanded_ = false;  // a joint command came in since the last step
   int ball_body_ = -1;

@@ -209,7 +209,7 @@ TEST_P(ReferenceReplay, TurfsNaoFollowsRcssserver3dsForTheSameCommands) {
 }
 
 INSTANTIATE_TEST_SUITE_P(UtAgents, ReferenceReplay,
-                         ::testing::Values(Case{"ut_walk_type0.replay", 100, 0.05, 1.6, 45.0, 12.0}),
+                         ::testing::Values(Case{"ut_walk_type0.replay", 100, 0.05, 1.0, 45.0, 12.0}),
                          [](const ::testing::TestParamInfo<Case>& info) {
                            std::string name = info.param.file;
                            name = name.substr(0, name.find('.'));

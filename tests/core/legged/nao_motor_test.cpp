@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <vector>
 
 #include "core/legged/legged_world.h"
 #include "tests/core/legged/nao_fixture.h"
@@ -172,6 +173,48 @@ TEST_P(NaoMotorTest, TorqueNeverExceedsFMax) {
               Speed(w, "rlj5"));
   EXPECT_LE(max_effort, 10.0 + 1e-9);
   EXPECT_GT(max_effort, 9.0);
+}
+
+// With an impulse window (physics.motor_impulse_window, the reference's 20 ms
+// step) a motor's bound holds for its impulse since the window began: FMax x
+// the time elapsed in the window, so a load that comes after lighter steps of
+// the same window meets what they left unspent (ODE bounds the force of its
+// whole step). Ankles pressing the toes down load up within each window: more
+// than FMax in some physics step, never more impulse than the bound allows.
+TEST_P(NaoMotorTest, ImpulseWindowBoundsEachMotorsImpulseSinceTheWindowBegan) {
+  LeggedScene scene = Scene();
+  scene.physics.motor_impulse_window = 0.02;
+  const int per_window = static_cast<int>(std::lround(0.02 / GetParam()));
+  const double dt = GetParam();
+  LeggedWorld w(scene);
+  for (const char* j : {"rlj5", "llj5"})
+    ASSERT_EQ(w.SetJointCommand(0, {j, JointMode::kVelocity, -6.0}), JointCommandError::kOk);
+  const size_t joints = w.State().robots[0].joint_efforts.size();
+  std::vector<double> spent(joints, 0.0);
+  double max_effort = 0.0;
+  double max_window = 0.0;
+  double max_prefix_excess = -1.0;  // the largest (impulse since the window began) - FMax x elapsed
+  for (int i = 0; i < 10 * per_window; ++i) {
+    w.Step();
+    const int k = i % per_window;
+    const LeggedWorldState s = w.State();
+    for (size_t j = 0; j < joints; ++j) {
+      if (k == 0) spent[j] = 0.0;
+      const double e = std::abs(s.robots[0].joint_efforts[j]);
+      spent[j] += e * dt;
+      max_effort = std::max(max_effort, e);
+      max_prefix_excess = std::max(max_prefix_excess, spent[j] - 10.0 * (k + 1) * dt);
+      max_window = std::max(max_window, spent[j]);
+    }
+  }
+  std::printf(
+      "ankles pressing, %d steps per window: max |effort| %.3f N m, max impulse per window %.5f N m s, "
+      "beyond the bound %.2e N m s\n",
+      per_window, max_effort, max_window, max_prefix_excess);
+  EXPECT_LE(max_prefix_excess, 1e-9);
+  EXPECT_LE(max_window, 10.0 * 0.02 + 1e-9);
+  EXPECT_GT(max_window, 10.0 * 0.02 * 0.9);
+  EXPECT_GT(max_effort, 10.0 * std::min(per_window, 2));
 }
 
 // ODE stops (stop ERP 0.8, stop CFM 1e-8): a joint passes its stop by at
