@@ -119,6 +119,21 @@ TEST(LeggedSceneYamlTest, ContactLawBlockLoadsAndIsChecked) {
   EXPECT_TRUE(HasError(ParseNaoScene("contacts: {law: ode, robot: {cfm: .nan}}\n"), "contacts"));
 }
 
+// The match scene reads the IMU after the step and bounds its motors per 20 ms cycle (physics block); both off
+// by default, the window checked.
+TEST(LeggedSceneYamlTest, PhysicsBlockCarriesSensorTimingAndTheMotorImpulseWindow) {
+  LeggedSceneLoadResult r = LoadLeggedSceneFile(kScenes + "simspark_match.yaml");
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_TRUE(r.scene->physics.sensors_after_step);
+  EXPECT_EQ(r.scene->physics.motor_impulse_window, 0.02);
+  r = ParseNaoScene("");
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_FALSE(r.scene->physics.sensors_after_step);
+  EXPECT_EQ(r.scene->physics.motor_impulse_window, 0.0);
+  EXPECT_TRUE(HasError(ParseNaoScene("physics: {motor_impulse_window: -0.02}\n"), "motor_impulse_window"));
+  EXPECT_TRUE(HasError(ParseNaoScene("physics: {motor_impulse_window: .nan}\n"), "motor_impulse_window"));
+}
+
 // rcssserver3d's hinge stops (core/legged/legged_scene.h: OdeJointStops): off unless asked for (the match scene
 // keeps MuJoCo's limits: with them UT agents fell more often, nao-findings 2026-11-26), the reference's values by
 // default, checked.
