@@ -512,12 +512,14 @@ TEST_F(ViewerBrowser, TheCameraPanelShowsARobotsCameraLive) {
       "const p = document.getElementById('camera-panel');"
       "const i = [...document.querySelectorAll('.camera-view img')].find(x => !x.classList.contains('hidden'));"
       "return {panel: !p.classList.contains('hidden'), width: i ? i.naturalWidth : 0, height: i ? i.naturalHeight : 0,"
-      " status: document.getElementById('camera-status').textContent};";
+      " status: document.getElementById('camera-status').textContent,"
+      " frames: parseInt((document.getElementById('camera-status').textContent.match(/: (\\d+) frames$/) || [0, "
+      "'0'])[1])};";
   json shown;
   const bool ok = Within(60000, [&] {
     shown = driver_->Execute(kShown).value_or(json());
-    return shown.is_object() && shown["width"] == 320 &&
-           shown["status"].get<std::string>().find(" 3 frames") != std::string::npos;
+    // At least 3 images shown (the count keeps growing: polled on a loaded machine, it is seldom exactly 3).
+    return shown.is_object() && shown["width"] == 320 && shown["frames"].is_number() && shown["frames"] >= 3;
   });
   ASSERT_TRUE(ok) << shown.dump() << "\n" << render.Log() << viewer_->Log();
   EXPECT_TRUE(shown["panel"].get<bool>()) << "the legged scene shows the panel";
