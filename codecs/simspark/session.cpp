@@ -282,7 +282,7 @@ WorldRequests Session::TakeRequests() {
   // perception right after its step, so the joint velocities asked in this
   // cycle go to the world with the next one.
   std::swap(out.joints, held_joints_);
-  for (const RobotMove& m : out.moves) moved_.push_back(m.robot);
+  for (const RobotMove& m : out.moves) StartTorsoPosesAt(m.robot, m.position);
   for (auto& [id, a] : agents_) a.synced = false;
   return out;
 }
@@ -416,8 +416,6 @@ std::string Session::MonitorGreeting() const {
 }
 
 void Session::RecordTorsoPoses(const WorldSnapshot& world) {
-  for (const std::string& r : moved_) torso_poses_.erase(r);
-  moved_.clear();
   for (const RobotSnapshot& r : world.robots) {
     const RobotSnapshot::Link* torso = r.FindLink("torso");
     if (torso == nullptr) continue;
@@ -425,6 +423,18 @@ void Session::RecordTorsoPoses(const WorldSnapshot& world) {
     poses.push_back({torso->position, torso->orientation});
     if (poses.size() > 4) poses.erase(poses.begin());
   }
+}
+
+// A move (beam, trainer) puts the torso at `position` at rest before the next step. rcssserver3d's accelerometer
+// reads a body's velocity before the move zeroes it, and the next step's velocity is what that step moved the body
+// from where it was put (rcssserver3d 0.7.3 traced: while an agent beams every cycle, ACC reads gravity, 9.7-9.8
+// m/s^2 up). So the history is shifted to end where the move put the torso: the velocities of the cycles before
+// stay, the next one starts there.
+void Session::StartTorsoPosesAt(const std::string& robot, const Eigen::Vector3d& position) {
+  const auto it = torso_poses_.find(robot);
+  if (it == torso_poses_.end() || it->second.empty()) return;
+  const Eigen::Vector3d shift = position - it->second.back().position;
+  for (TorsoPose& p : it->second) p.position += shift;
 }
 
 // rcssserver3d's Accelerometer::PrePhysicsUpdateInternal: (v - v_last) / dt - gravity, turned into the body's
@@ -695,8 +705,6 @@ std::string Session::SaveLeague() const {
       PutQuaternion(t.orientation, out);
     }
   }
-  out.Put<uint64_t>(moved_.size());
-  for (const std::string& robot : moved_) out.Str(robot);
   out.Tag(StateTag("SPLY"));
   std::vector<const Agent*> players;
   for (const auto& [id, a] : agents_)
@@ -761,11 +769,6 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
       t.position = GetVector(in);
       t.orientation = GetQuaternion(in);
     }
-  }
-  std::vector<std::string> moved(in.Count(kMaxItems));
-  for (std::string& robot : moved) {
-    robot = in.Str(kMaxName);
-    known_robot(robot);
   }
   in.Tag(StateTag("SPLY"));
   // Each player of the snapshot onto the connected agent that is that player.
@@ -832,7 +835,6 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
   held_joints_ = std::move(held);
   last_ = std::move(last);
   torso_poses_ = std::move(torso_poses);
-  moved_ = std::move(moved);
   for (auto& [id, a] : players) agents_.at(id) = std::move(a);
   return "";
 }

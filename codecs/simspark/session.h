@@ -223,15 +223,15 @@ class Session {
   bool quit_ = false;
   std::optional<WorldSnapshot> last_;
   // rcssserver3d's accelerometer (ACC): the torso's velocity change over the cycle before the last, from its poses
-  // of the last four cycles (newest last; a robot's poses start again after it was moved), in the torso's frame of
-  // the cycle before, gravity added. Fewer poses: the world's own accelerometer.
+  // of the last four cycles (newest last; a move shifts them to end where it put the torso), in the torso's frame
+  // of the cycle before, gravity added. Fewer poses: the world's own accelerometer.
   struct TorsoPose {
     Eigen::Vector3d position = Eigen::Vector3d::Zero();
     Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
   };
   std::map<std::string, std::vector<TorsoPose>> torso_poses_;
-  std::vector<std::string> moved_;  // robots the requests taken last moved
   void RecordTorsoPoses(const WorldSnapshot& world);
+  void StartTorsoPosesAt(const std::string& robot, const Eigen::Vector3d& position);
   std::optional<Eigen::Vector3d> ReferenceAcc(const std::string& robot) const;
   std::vector<VisionPlayer> players_;            // this cycle's, for every agent's vision
   std::map<int, std::vector<int>> hinge_index_;  // robot type -> HingeIndex

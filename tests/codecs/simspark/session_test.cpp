@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -506,7 +507,7 @@ TEST(SessionPerception, SeeEveryThirdPerceptionPerAgent) {
 
 // The accelerometer as rcssserver3d's: the torso's velocity change over the cycle before the last (its poses of the
 // last four cycles), gravity added, in that cycle's torso frame; the world's own accelerometer until there are four
-// poses of the robot since it was last moved.
+// poses of the robot. A move keeps the velocities of the cycles before it.
 TEST(SessionPerception, AccelerometerIsTheTorsosVelocityChangeOverTheCycleBeforeAsTheReferences) {
   Harness h(1);
   const int a = h.JoinAndCycle("Alpha", 1);
@@ -527,9 +528,41 @@ TEST(SessionPerception, AccelerometerIsTheTorsosVelocityChangeOverTheCycleBefore
   // From four poses on: 2 m/s^2 along world +x is the torso's -y (it faces -x), gravity up.
   EXPECT_EQ(acc[3], "0.00 -2.00 9.81");
   EXPECT_EQ(acc[5], "0.00 -2.00 9.81");
-  // A beam moves the robot: the world's accelerometer again until four poses since.
+  // A beam puts the robot at rest elsewhere (here it stays there): the first ACC after it is still the change
+  // before it, in the frame before it; the next one is the change to rest from the last cycle's 0.22 m/s along
+  // +x, -11 m/s^2, in the beamed torso's frame (facing +x, give or take the beam's noise).
   h.session.Receive(a, "(beam -3 0 0)");
-  EXPECT_EQ(OutputFor(h.Cycle(), a).find("(ACC (n torso) (a 1.00 2.00 3.00))") != std::string::npos, true);
+  EXPECT_TRUE(Contains(OutputFor(h.Cycle(), a), "(ACC (n torso) (a 0.00 -2.00 9.81))"));
+  const std::string after = OutputFor(h.Cycle(), a);
+  const size_t at = after.find("(ACC (n torso) (a ");
+  ASSERT_NE(at, std::string::npos) << after;
+  std::istringstream values(after.substr(at + 18));
+  double x = NAN, y = NAN, z = NAN;
+  values >> x >> y >> z;
+  EXPECT_NEAR(std::hypot(x, y), 11.0, 0.01) << after;
+  EXPECT_LT(y, -10.0) << after;
+  EXPECT_NEAR(z, 9.81, 0.005) << after;
+}
+
+// UT Austin Villa's agents beam every cycle for their first 2.25 s ("hovering"): each step starts from rest where
+// the beam put the robot, which then falls for 20 ms. rcssserver3d's accelerometer reads the velocity each step
+// leaves, the same every cycle, so ACC reads gravity, up (traced: 9.6-9.8 m/s^2), where the falling robot's own
+// accelerometer reads 0. UT's inertial filter starts from the ACC of those cycles: read as 0, its tilt starts
+// 90 degrees off.
+TEST(SessionPerception, AnAgentBeamingEveryCycleReadsGravity) {
+  Harness h(1);
+  const int a = h.JoinAndCycle("Alpha", 1);
+  FakeWorld::Robot& robot = h.world.robot("nao_1");
+  robot.accelerometer = {0.0, 0.0, 0.0};  // in free fall
+  std::string p;
+  for (int k = 0; k < 8; ++k) {
+    h.session.Receive(a, "(beam -3 0 0)");
+    h.world.Apply(h.session.TakeRequests());
+    robot.position.z() -= 9.81 * 0.02 * 0.02;  // one 20 ms step's fall from rest (ODE's semi-implicit Euler)
+    h.session.Advance(h.world.Snapshot());
+    p = OutputFor(h.session.TakeOutputs(), a);
+  }
+  EXPECT_TRUE(Contains(p, "(ACC (n torso) (a 0.00 0.00 9.81))")) << p;
 }
 
 // A robot lying face down beside the field, feet in the air, on a vision
