@@ -141,6 +141,11 @@ def up_z(q):  # q = (w, x, y, z): world z-component of the body z-axis
     return 1.0 - 2.0 * (x * x + y * y)
 
 
+def heading(q):  # q = (w, x, y, z): degrees from world +x to the torso's forward axis (its y), in the ground plane
+    w, x, y, z = q
+    return math.degrees(math.atan2(1.0 - 2.0 * (x * x + z * z), 2.0 * (x * y - w * z)))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--viewer-port", type=int, default=8077)
@@ -151,7 +156,7 @@ def main():
     ap.add_argument("--settle", type=float, default=5.0, help="sim seconds after they are on the field before kick-off")
     ap.add_argument("--kickoff", default="Left", help="team for (kickOff X); 'none' to send nothing")
     ap.add_argument("--wait-timeout", type=float, default=120.0, help="wall seconds to wait for the robots")
-    ap.add_argument("--csv", default=None, help="write every sample (t, robot, x, y, z, upz, ball) here")
+    ap.add_argument("--csv", default=None, help="write every sample (t, robot, x, y, z, upz, ball, play mode, heading in deg) here")
     ap.add_argument("--json", default=None, help="write the result table as JSON here")
     a = ap.parse_args()
 
@@ -160,7 +165,7 @@ def main():
     torso_idx = {}
     cw = csv.writer(open(a.csv, "w", newline="")) if a.csv else None
     if cw:
-        cw.writerow(["t", "robot", "x", "y", "z", "upz", "ball_x", "ball_y", "ball_z", "play_mode"])
+        cw.writerow(["t", "robot", "x", "y", "z", "upz", "ball_x", "ball_y", "ball_z", "play_mode", "heading"])
 
     def poses(msg):
         out = {}
@@ -256,7 +261,7 @@ def main():
             else:
                 s["cand_t"] = None
             if cw:
-                cw.writerow([f"{t:.3f}", n, p[0], p[1], p[2], f"{uz:.4f}", bp[0], bp[1], bp[2], mode])
+                cw.writerow([f"{t:.3f}", n, p[0], p[1], p[2], f"{uz:.4f}", bp[0], bp[1], bp[2], mode, f"{heading(q):.1f}"])
 
     span = (t_last or 0) - (t_start or 0)
     rows = []
