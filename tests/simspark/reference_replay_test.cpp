@@ -208,8 +208,13 @@ TEST_P(ReferenceReplay, TurfsNaoFollowsRcssserver3dsForTheSameCommands) {
   turf.ExpectAnnouncedAndCleanStop("agents");
 }
 
+// ut_walk: a field player's walk from its kick-off (no beams after cycle 4). ut_hover: an agent's first 60 cycles,
+// beaming every cycle with its stance commands (UT's 2.25 s "hover"), closed loop on the reference: its ACC reads
+// gravity there (a free-fall 0 fails both the ACC bound and the fall check); the legs drift by the one frozen cycle
+// in ten turf does not model.
 INSTANTIATE_TEST_SUITE_P(UtAgents, ReferenceReplay,
-                         ::testing::Values(Case{"ut_walk_type0.replay", 100, 0.05, 1.0, 45.0, 12.0}),
+                         ::testing::Values(Case{"ut_walk_type0.replay", 100, 0.05, 1.0, 45.0, 12.0},
+                                           Case{"ut_hover_type0.replay", 52, 0.05, 2.5, 3.0, 6.0}),
                          [](const ::testing::TestParamInfo<Case>& info) {
                            std::string name = info.param.file;
                            name = name.substr(0, name.find('.'));
