@@ -304,6 +304,7 @@ void LeggedWorld::Save(StateWriter& out) const {
   out.Put(frame_);
   last_good_.Save(out);
   out.Put(health_.instability_recoveries);
+  out.Put(health_.solver_capped_steps);
   out.Put(steps_since_stop_test_);
   out.Put<uint8_t>(commanded_ ? 1 : 0);
   for (const RobotSlot& r : robots_) {
@@ -334,6 +335,7 @@ void LeggedWorld::Restore(StateReader& in) {
   }
   last_good_.Restore(in);
   health_.instability_recoveries = in.Get<uint64_t>();
+  health_.solver_capped_steps = in.Get<uint64_t>();
   steps_since_stop_test_ = in.Get<int>();
   commanded_ = in.Bool();
   if (steps_since_stop_test_ < 0 || steps_since_stop_test_ > 1'000'000) {
@@ -603,6 +605,7 @@ void LeggedWorld::ServoPd(JointSlot* j) {
 // integration); false if it produced a non-finite state.
 bool LeggedWorld::StagePhysics() {
   mj_step2(model_.get(), data_.get());
+  if (data_->solver_iter >= model_->opt.iterations) ++health_.solver_capped_steps;
   if (scene_.physics.sensors_after_step) {
     mj_kinematics(model_.get(), data_.get());
     mj_comPos(model_.get(), data_.get());

@@ -142,6 +142,9 @@ struct LeggedWorldState {
 
 struct LeggedHealth {
   uint64_t instability_recoveries = 0;  // a non-finite step undone
+  // Steps whose constraint solver stopped at physics.solver_iterations before converging: every robot's contacts
+  // and motors are one problem, so then one robot's motion depends on what the others do (raise the cap).
+  uint64_t solver_capped_steps = 0;
 };
 
 class LeggedWorld : Pinned {

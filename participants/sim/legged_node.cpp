@@ -157,7 +157,9 @@ class LeggedNode final : public KernelNode<LeggedKernel, LeggedPublisher> {
   }
 
   void ReportStatus() const override {
-    ReportStatusWith(fmt::format("recoveries={}", kernel_.world().health().instability_recoveries));
+    const LeggedHealth& h = kernel_.world().health();
+    ReportStatusWith(
+        fmt::format("recoveries={} solver_capped_steps={}", h.instability_recoveries, h.solver_capped_steps));
   }
 
   std::unique_ptr<dds::Reader<idl::JointCommandPubSubType>> command_reader_;

@@ -99,6 +99,23 @@ TEST_P(NaoPhysicsTest, StandsTenSecondsWithZeroCommands) {
   EXPECT_EQ(w.health().instability_recoveries, 0u);
 }
 
+// The constraint solver's cap is counted: four robots standing need more than one iteration a step, and a cap the
+// solver never reaches (physics.solver_iterations, configs/scenes/simspark_match.yaml) counts nothing.
+TEST_P(NaoPhysicsTest, StepsWhereTheSolverStoppedAtItsCapAreCounted) {
+  for (const int iterations : {1, 100}) {
+    LeggedScene s = Scene(4);
+    s.physics.solver_iterations = iterations;
+    LeggedWorld w(s);
+    for (int i = 0; i < 2 * steps_per_second(); ++i) w.Step();
+    std::printf("%d iterations: %llu of %d steps capped\n", iterations,
+                static_cast<unsigned long long>(w.health().solver_capped_steps), 2 * steps_per_second());
+    if (iterations == 1)
+      EXPECT_GT(w.health().solver_capped_steps, 0u);
+    else
+      EXPECT_EQ(w.health().solver_capped_steps, 0u);
+  }
+}
+
 // SimSpark: (he1 1.0) for 25 cycles (0.5 s) turns hj1 by 28.65 deg (0.5 rad).
 TEST_P(NaoPhysicsTest, VelocityCommandReachesExpectedAngle) {
   LeggedWorld w(Scene());
