@@ -118,6 +118,7 @@ void World::Save(StateWriter& out) const {
   last_good_.Save(out);
   out.Put(health_.containment_corrections);
   out.Put(health_.instability_recoveries);
+  out.Put(health_.solver_capped_steps);
   for (const RobotSlot& slot : robots_) {
     out.Put(slot.on_field);
     SaveCommand(slot.command, out);
@@ -142,6 +143,7 @@ void World::Restore(StateReader& in) {
   last_good_.Restore(in);
   health_.containment_corrections = in.Get<uint64_t>();
   health_.instability_recoveries = in.Get<uint64_t>();
+  health_.solver_capped_steps = in.Get<uint64_t>();
   for (RobotSlot& slot : robots_) {
     slot.on_field = in.Bool();
     slot.command = RestoreCommand(in);
@@ -346,6 +348,7 @@ bool World::StagePhysics() {
   const int bad_before = data_->warning[mjWARN_BADQACC].number + data_->warning[mjWARN_BADQVEL].number +
                          data_->warning[mjWARN_BADQPOS].number;
   mj_step(model_.get(), data_.get());
+  if (data_->solver_iter >= model_->opt.iterations) ++health_.solver_capped_steps;
   floor_normal_force_ = FloorNormalForce();
   const int bad_after = data_->warning[mjWARN_BADQACC].number + data_->warning[mjWARN_BADQVEL].number +
                         data_->warning[mjWARN_BADQPOS].number;

@@ -46,6 +46,7 @@ struct WorldSnapshot {
 struct WorldHealth {
   uint64_t containment_corrections = 0;  // a body pushed back inside the walls
   uint64_t instability_recoveries = 0;   // a non-finite step undone
+  uint64_t solver_capped_steps = 0;      // the constraint solver stopped at physics.solver_iterations
 };
 
 class World : Pinned {

@@ -163,7 +163,8 @@ class SslNode final : public KernelNode<SslKernel, SslPublisher> {
 
   void ReportStatus() const override {
     const WorldHealth& h = kernel_.world().health();
-    ReportStatusWith(fmt::format("containment={} recoveries={}", h.containment_corrections, h.instability_recoveries));
+    ReportStatusWith(fmt::format("containment={} recoveries={} solver_capped_steps={}", h.containment_corrections,
+                                 h.instability_recoveries, h.solver_capped_steps));
   }
 
   std::unique_ptr<dds::Reader<idl::SslRobotCommandPubSubType>> command_readers_[kTeamCount];

@@ -463,6 +463,34 @@ TEST(Physics, RobotsTakenOffTheFieldAreParkedAndBackOnAgain) {
   EXPECT_NEAR(Robot0(w.Snapshot()).y, 2.0, 0.01);
 }
 
+// The constraint solver's cap is counted (WorldHealth): 22 robots driving and turning at once, at one iteration a
+// step, hit it; at the scenes' cap (20) the solver converges, so no robot's motion depends on the others'.
+TEST(Physics, StepsWhereTheSolverStoppedAtItsCapAreCounted) {
+  for (const int iterations : {1, 20}) {
+    Scene scene = test::Teams(11);
+    scene.physics.solver_iterations = iterations;
+    World w(scene);
+    const int steps = Steps(w, 2.0);
+    for (int i = 0; i < steps; ++i) {
+      if (i % 8 == 0) {
+        for (const RobotSetup& r : scene.robots) {
+          RobotCommand c = Move(MoveKind::kLocalVelocity, 1.5, 0.5, 3.0);
+          c.team = r.team;
+          c.id = r.id;
+          ASSERT_EQ(w.SetCommand(c), InputError::kOk);
+        }
+      }
+      w.Step();
+    }
+    std::printf("%d iterations: %llu of %d steps capped\n", iterations,
+                static_cast<unsigned long long>(w.health().solver_capped_steps), steps);
+    if (iterations == 1)
+      EXPECT_GT(w.health().solver_capped_steps, 0u);
+    else
+      EXPECT_EQ(w.health().solver_capped_steps, 0u);
+  }
+}
+
 TEST(Physics, ResetRestoresTheStart) {
   World w(test::OneRobot(1.0, -1.0, 0.3));
   const WorldSnapshot start = w.Snapshot();
