@@ -305,15 +305,14 @@ std::optional<Side> Session::Toucher(const MjWorldSnapshot& world) const {
 }
 
 void Session::Advance(MjWorldSnapshot world) {
-  last_ = std::move(world);
   ++cycle_;
   ApplyMonitor();
-  const std::optional<Eigen::Vector3d> place = referee_.Update(kCycleSeconds, last_->ball, Toucher(*last_));
+  const std::optional<Eigen::Vector3d> place = referee_.Update(kCycleSeconds, world.ball, Toucher(world));
   if (place) requests_.ball = *place;
   const bool vision = cycle_ % 2 == 0;
-  const std::vector<VisiblePlayer> players = vision ? Players(*last_) : std::vector<VisiblePlayer>{};
+  const std::vector<VisiblePlayer> players = vision ? Players(world) : std::vector<VisiblePlayer>{};
   for (const auto& [id, a] : agents_)
-    if (a.active && !a.kicked) pending_.emplace_back(id, Perceive(a, *last_, vision ? &players : nullptr));
+    if (a.active && !a.kicked) pending_.emplace_back(id, Perceive(a, world, vision ? &players : nullptr));
   if (options_.sequential) Release();
 }
 

@@ -41,6 +41,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -151,6 +152,17 @@ class Session {
   bool sync() const { return options_.sync_mode || options_.sequential; }
   std::vector<int> Waiting() const;  // sync mode: active agents the next step waits for
 
+  // The league's state, for a snapshot next to the world's (the kernel's): the cycle, the referee, the kick-off
+  // coin's generator, monitor messages not yet applied, the world requests not yet taken, and per player, keyed
+  // by (side, number): model, robot, its persisting motor commands, perception and answer counts (sync mode),
+  // its messages not yet taken; then the parallel loop's perceptions not yet released. Not in it: connection-level
+  // things (agent ids, outputs and issues not yet taken, inits not yet activated).
+  std::string SaveLeague() const;
+  // Restores what SaveLeague saved; "" on success, else why, and then nothing changed. The active players now
+  // must be exactly the snapshot's, each in the same model and robot; otherwise the snapshot is refused (say,
+  // before the agents have reconnected). A player's agent id stays the connection's.
+  std::string RestoreLeague(std::string_view snapshot);
+
  private:
   struct Agent {
     int id = 0;
@@ -199,7 +211,6 @@ class Session {
   std::vector<SessionIssue> issues_;
   std::vector<int> kicked_;
   bool quit_ = false;
-  std::optional<MjWorldSnapshot> last_;
 
   friend struct MonitorVisitor;
 };

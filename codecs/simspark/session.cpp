@@ -12,6 +12,7 @@
 #include "codecs/simspark/nao_joints.h"
 #include "codecs/simspark/perception.h"
 #include "codecs/simspark/trainer.h"
+#include "core/state_io_eigen.h"
 
 namespace turf::simspark {
 
@@ -535,43 +536,6 @@ constexpr uint32_t kLeagueVersion = 2;
 constexpr size_t kMaxItems = 4096;  // robots, joints, links, moves, players: far above any scene
 constexpr size_t kMaxName = 256;    // a robot, joint, link or team name
 
-void PutVector(const Eigen::Vector3d& v, StateWriter& out) {
-  for (int k = 0; k < 3; ++k) out.Put(v[k]);
-}
-
-void PutArray(const std::array<double, 3>& v, StateWriter& out) {
-  for (double x : v) out.Put(x);
-}
-
-void PutQuaternion(const Eigen::Quaterniond& q, StateWriter& out) {
-  for (int k = 0; k < 4; ++k) out.Put(q.coeffs()[k]);
-}
-
-// Each Get* fails the reader on a value that is not finite.
-double GetFinite(StateReader& in) {
-  const double v = in.Get<double>();
-  if (!std::isfinite(v)) in.Fail("value not finite");
-  return v;
-}
-
-Eigen::Vector3d GetVector(StateReader& in) {
-  Eigen::Vector3d v;
-  for (int k = 0; k < 3; ++k) v[k] = GetFinite(in);
-  return v;
-}
-
-std::array<double, 3> GetArray(StateReader& in) {
-  std::array<double, 3> v{};
-  for (double& x : v) x = GetFinite(in);
-  return v;
-}
-
-Eigen::Quaterniond GetQuaternion(StateReader& in) {
-  Eigen::Quaterniond q;
-  for (int k = 0; k < 4; ++k) q.coeffs()[k] = GetFinite(in);
-  return q;
-}
-
 void SaveWorld(const WorldSnapshot& w, StateWriter& out) {
   out.Put(w.time);
   PutVector(w.ball, out);
@@ -611,14 +575,14 @@ WorldSnapshot RestoreWorld(StateReader& in) {
     r.joint_names.resize(in.Count(kMaxItems));
     for (std::string& j : r.joint_names) j = in.Str(kMaxName);
     in.Doubles(&r.joint_positions, r.joint_names.size());
-    r.gyro = GetArray(in);
-    r.accelerometer = GetArray(in);
+    r.gyro = GetArray<3>(in);
+    r.accelerometer = GetArray<3>(in);
     r.feet.resize(in.Count(kMaxItems));
     for (RobotSnapshot::Foot& f : r.feet) {
       f.name = in.Str(kMaxName);
       f.contact = in.Bool();
-      f.point = GetArray(in);
-      f.force = GetArray(in);
+      f.point = GetArray<3>(in);
+      f.force = GetArray<3>(in);
     }
     r.links.resize(in.Count(kMaxItems));
     for (RobotSnapshot::Link& l : r.links) {

@@ -30,6 +30,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/state_io.h"
 #include "kernel/rcssservermj/field.h"
 
 namespace turf::rcssservermj {
@@ -109,6 +110,12 @@ class Referee {
   bool BeamAllowed() const;
   const RuleBook& rules() const { return rules_; }
   const MjField& field() const { return field_; }
+
+  // The referee's state for a league snapshot: play mode and its time, teams, score, half, last touch, the
+  // ball's placements. Not its rules, field or ball radius (the session's options).
+  void Save(StateWriter& out) const;
+  // Restores what Save() wrote; on a bad value `in` fails and the referee stays as it was.
+  void Restore(StateReader& in);
 
  private:
   static int Index(Side side) { return side == Side::kLeft ? 0 : 1; }

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "core/state_io_eigen.h"
+
 namespace turf::simspark {
 
 namespace {
@@ -449,35 +451,12 @@ namespace {
 
 constexpr size_t kMaxTeamName = 256;  // far above any team name an init accepts
 
-void SaveVector(const Eigen::Vector3d& v, StateWriter& out) {
-  for (int k = 0; k < 3; ++k) out.Put(v[k]);
-}
-
-Eigen::Vector3d RestoreVector(StateReader& in) {
-  Eigen::Vector3d v;
-  for (int k = 0; k < 3; ++k) v[k] = in.Get<double>();
-  return v;
-}
-
-// A finite double; anything else fails the reader.
-double Finite(StateReader& in) {
-  const double v = in.Get<double>();
-  if (!std::isfinite(v)) in.Fail("value not finite");
-  return v;
-}
-
-template <class T, class SaveT>
-void SaveOptional(const std::optional<T>& v, StateWriter& out, SaveT save) {
-  out.Put(v.has_value());
-  if (v) save(*v);
-}
-
 }  // namespace
 
 void Game::Save(StateWriter& out) const {
   out.Tag(StateTag("SGAM"));
   for (const Team& team : teams_) {
-    SaveOptional(team.name, out, [&](const std::string& name) { out.Str(name); });
+    PutOptional(team.name, out, [&](const std::string& name) { out.Str(name); });
     out.Put<uint64_t>(team.players.size());
     for (const auto& [unum, type] : team.players) {
       out.Put<int32_t>(unum);
@@ -491,20 +470,20 @@ void Game::Save(StateWriter& out) const {
   out.Put(idle_time_);
   out.Put<int32_t>(half_);
   out.Put<int32_t>(last_kick_off_half_);
-  SaveOptional(next_half_kick_off_, out, [&](Side side) { out.Put(side); });
+  PutOptional(next_half_kick_off_, out, [&](Side side) { out.Put(side); });
   out.Put(kick_check_);
-  SaveOptional(kick_taker_, out, [&](const Toucher& t) {
+  PutOptional(kick_taker_, out, [&](const Toucher& t) {
     out.Put(t.side);
     out.Put<int32_t>(t.unum);
     out.Put(t.known);
   });
   out.Put(kick_time_);
-  SaveOptional(kick_off_team_no_score_, out, [&](Side side) { out.Put(side); });
+  PutOptional(kick_off_team_no_score_, out, [&](Side side) { out.Put(side); });
   out.Put(goal_kick_touched_);
   out.Put<int32_t>(score_[0]);
   out.Put<int32_t>(score_[1]);
   out.Put(pending_drop_);
-  SaveOptional(out_position_, out, [&](const Eigen::Vector3d& v) { SaveVector(v, out); });
+  PutOptional(out_position_, out, [&](const Eigen::Vector3d& v) { PutVector(v, out); });
   out.Put(out_time_);
 }
 
@@ -524,9 +503,9 @@ void Game::Restore(StateReader& in) {
   }
   g.mode_ = in.Enum(PlayMode::kCount);
   g.reported_mode_ = in.Enum(PlayMode::kCount);
-  g.game_time_ = Finite(in);
-  g.mode_start_ = Finite(in);
-  g.idle_time_ = Finite(in);
+  g.game_time_ = GetFinite(in);
+  g.mode_start_ = GetFinite(in);
+  g.idle_time_ = GetFinite(in);
   g.half_ = in.Get<int32_t>();
   g.last_kick_off_half_ = in.Get<int32_t>();
   if (g.half_ < 1 || g.half_ > 2 || g.last_kick_off_half_ < 0 || g.last_kick_off_half_ > 2)
@@ -540,7 +519,7 @@ void Game::Restore(StateReader& in) {
     t.known = in.Bool();
     g.kick_taker_ = t;
   }
-  g.kick_time_ = Finite(in);
+  g.kick_time_ = GetFinite(in);
   if (in.Bool()) g.kick_off_team_no_score_ = in.Enum(static_cast<Side>(2));
   g.goal_kick_touched_ = in.Bool();
   g.score_[0] = in.Get<int32_t>();
@@ -548,10 +527,9 @@ void Game::Restore(StateReader& in) {
   if (g.score_[0] < 0 || g.score_[1] < 0) in.Fail("negative score");
   g.pending_drop_ = in.Bool();
   if (in.Bool()) {
-    g.out_position_ = RestoreVector(in);
-    if (!g.out_position_->allFinite()) in.Fail("value not finite");
+    g.out_position_ = GetVector(in);
   }
-  g.out_time_ = Finite(in);
+  g.out_time_ = GetFinite(in);
   if (in.ok()) *this = std::move(g);
 }
 
