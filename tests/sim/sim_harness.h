@@ -1,5 +1,6 @@
-// In-process harness for turf-sim over DDS: the simulator's node on a thread
-// and a client participant, each test on its own domain and topic prefix.
+// In-process harness for turf-sim's node: the node on a thread and a client, over a TestTransport: a private DDS
+// domain and topic prefix (each a participant of its own) or one dds::MemoryBus they share (no DDS domain, no
+// discovery: what most node tests use; the DDS adapter keeps a few tests of its own in each file).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -21,6 +22,7 @@
 #include <thread>
 
 #include "dds/control_client.h"
+#include "dds/memory_bus.h"
 #include "dds/participant.h"
 #include "participants/sim/sim_node.h"
 #include "tests/core/test_scenes.h"
@@ -43,25 +45,58 @@ inline dds::ParticipantOptions UniqueDds(const char* name, const char* prefix = 
   return o;
 }
 
+enum class Transport { kMemory, kDds };
+
+// Test names: .../memory, .../dds.
+inline std::string TransportName(const ::testing::TestParamInfo<Transport>& info) {
+  return info.param == Transport::kMemory ? "memory" : "dds";
+}
+
+// Where a test's node and its clients meet: a private DDS domain and prefix, or one MemoryBus. Cheap to copy (the
+// copies share the bus).
+class TestTransport {
+ public:
+  // `name`, `prefix` and `salt` as UniqueDds takes them (the DDS domain and prefix; the bus's prefix).
+  explicit TestTransport(Transport kind, const char* name = "sim", const char* prefix = "test", int salt = 0)
+      : dds_(UniqueDds(name, prefix, salt)) {
+    if (kind == Transport::kMemory) bus_ = std::make_shared<dds::MemoryBus>(dds_.prefix);
+  }
+  bool memory() const { return bus_ != nullptr; }
+  const dds::ParticipantOptions& dds() const { return dds_; }
+  dds::MemoryBus& bus() const { return *bus_; }
+  // A client's bus: the shared MemoryBus, or a DDS participant of its own named `name`, made in `own`.
+  dds::Bus& ClientBus(std::unique_ptr<dds::Participant>* own, const char* name) const {
+    if (bus_) return *bus_;
+    dds::ParticipantOptions o = dds_;
+    o.name = name;
+    *own = std::make_unique<dds::Participant>(o);
+    return **own;
+  }
+
+ private:
+  dds::ParticipantOptions dds_;
+  std::shared_ptr<dds::MemoryBus> bus_;
+};
+
 // turf-sim's node on a thread of its own, for an SSL Scene or a LeggedScene.
 class SimUnderTest {
  public:
   template <typename SceneKind>
   SimUnderTest(SceneKind scene, const dds::ParticipantOptions& dds, TimeMode mode, double speed = 1.0) {
-    SimNodeOptions o;
-    o.domain = dds.domain;
-    o.prefix = dds.prefix;
-    o.qos_file = dds.qos_file;
-    o.mode = mode;
-    o.speed = speed;
-    Start(std::make_unique<SimNode>(std::move(scene), o));
+    Start(std::make_unique<SimNode>(std::move(scene), Options(dds, mode, speed)));
   }
   // On a bus the test made (a dds::MemoryBus: no DDS domain).
   template <typename SceneKind>
-  SimUnderTest(SceneKind scene, dds::Bus& bus, TimeMode mode) {
-    SimNodeOptions o;
-    o.mode = mode;
-    Start(std::make_unique<SimNode>(std::move(scene), o, bus));
+  SimUnderTest(SceneKind scene, dds::Bus& bus, TimeMode mode, double speed = 1.0) {
+    Start(std::make_unique<SimNode>(std::move(scene), Options({}, mode, speed), bus));
+  }
+  template <typename SceneKind>
+  SimUnderTest(SceneKind scene, const TestTransport& net, TimeMode mode, double speed = 1.0) {
+    if (net.memory()) {
+      Start(std::make_unique<SimNode>(std::move(scene), Options({}, mode, speed), net.bus()));
+    } else {
+      Start(std::make_unique<SimNode>(std::move(scene), Options(net.dds(), mode, speed)));
+    }
   }
   ~SimUnderTest() {
     stop_ = true;
@@ -70,6 +105,15 @@ class SimUnderTest {
   SimNode& node() { return *node_; }
 
  private:
+  static SimNodeOptions Options(const dds::ParticipantOptions& dds, TimeMode mode, double speed) {
+    SimNodeOptions o;
+    o.domain = dds.domain;
+    o.prefix = dds.prefix.empty() ? o.prefix : dds.prefix;
+    o.qos_file = dds.qos_file.empty() ? o.qos_file : dds.qos_file;
+    o.mode = mode;
+    o.speed = speed;
+    return o;
+  }
   void Start(std::unique_ptr<SimNode> node) {
     node_ = std::move(node);
     thread_ = std::thread([this] { node_->Run([this] { return stop_.load(); }); });
@@ -80,11 +124,15 @@ class SimUnderTest {
   std::thread thread_;
 };
 
-// What a team stack or a test harness would be: a plain DDS participant.
+// What a team stack or a test harness would be: a plain participant of turf's topics.
 class Client {
  public:
-  explicit Client(const dds::ParticipantOptions& o)
-      : participant_(Named(o)),
+  explicit Client(const dds::ParticipantOptions& o) : Client(Named(o), nullptr) {}
+  explicit Client(const TestTransport& net) : Client(net.dds(), &net) {}
+
+ private:
+  Client(const dds::ParticipantOptions& o, const TestTransport* net)
+      : participant_(net != nullptr ? net->ClientBus(&own_, "client") : Own(o)),
         blue_(participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandBlue)),
         yellow_(participant_.MakeWriter<idl::SslRobotCommandPubSubType>(dds::Topic::kSslCommandYellow)),
         control_(participant_, "test"),
@@ -94,6 +142,8 @@ class Client {
         field_(participant_.MakeReader<idl::SslFieldPubSubType>(dds::Topic::kSslField)),
         stats_(participant_.MakeReader<idl::SensorStatsPubSubType>(dds::Topic::kStats)),
         all_frames_(participant_.MakeReader<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)) {}
+
+ public:
 
   // Polls until `done` holds, or the timeout.
   bool WaitFor(const std::function<bool()>& done, std::chrono::milliseconds timeout = 5s) {
@@ -113,13 +163,15 @@ class Client {
   bool WaitClock(const std::function<bool(const idl::Clock&)>& done, std::chrono::milliseconds timeout = 5s) {
     return WaitFor([&] { return has_clock_ && done(clock_now_); }, timeout);
   }
-  // Discovery is slower on a busy machine: a generous (but bounded) wait.
-  bool WaitMatched(std::chrono::milliseconds timeout = 10s) {
+  static constexpr bool kNoState = false;
+  // Until turf-sim is matched and (unless `state` is kNoState) a world state has arrived. Discovery is slower on a
+  // busy machine: a generous (but bounded) wait.
+  bool WaitMatched(bool state = true, std::chrono::milliseconds timeout = 10s) {
     const auto end = Clock::now() + timeout;
     while (Clock::now() < end) {
       if (blue_->Matched() > 0 && yellow_->Matched() > 0 && control_.ServerMatched() && state_->Matched() > 0 &&
           all_frames_->Matched() > 0)
-        return WaitState([](const idl::WorldState&) { return true; });
+        return !state || WaitState([](const idl::WorldState&) { return true; });
       std::this_thread::sleep_for(5ms);
     }
     return false;
@@ -166,7 +218,12 @@ class Client {
     o.name = "client";
     return o;
   }
-  dds::Participant participant_;
+  dds::Bus& Own(const dds::ParticipantOptions& o) {
+    own_ = std::make_unique<dds::Participant>(o);
+    return *own_;
+  }
+  std::unique_ptr<dds::Participant> own_;  // on DDS: the client's participant
+  dds::Bus& participant_;
   std::unique_ptr<dds::Writer<idl::SslRobotCommandPubSubType>> blue_, yellow_;
   dds::ControlClient control_;
   std::unique_ptr<dds::Reader<idl::WorldStatePubSubType>> state_;

@@ -198,7 +198,7 @@ class ViewerBrowser : public ::testing::Test {
 TEST_F(ViewerBrowser, DrawsTheWorldDragsTheBallPausesAndSavesScreenshots) {
   Launch("ssl_div_b.yaml");
   client_ = std::make_unique<Client>(dds_);
-  OpenPage([&] { return client_->WaitMatched(10s); });
+  OpenPage([&] { return client_->WaitMatched(true, 10s); });
   if (HasFatalFailure()) return;
 
   // 1. Every robot on the field is drawn in its team's colour where the world

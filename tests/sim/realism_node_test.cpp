@@ -1,6 +1,6 @@
-// Sensor realism in turf-sim over DDS: run-time changes through the control
-// topic, modelled delays visible in the frames and the statistics topic,
-// command links, and reproducible sensor streams.
+// Sensor realism in turf-sim's node: run-time changes through the control topic, modelled delays visible in the
+// frames and the statistics topic, command links, and reproducible sensor streams. On a MemoryBus; the delays also
+// over DDS, and the cameras' DDS deadline over DDS alone.
 #include <cmath>
 
 #include "tests/sim/sim_harness.h"
@@ -25,14 +25,20 @@ idl::SimControl Realism(std::vector<idl::RealismValue> values, const std::string
 
 idl::SimControl Preset(const std::string& name) { return Realism({}, name); }
 
+class RealismNode : public ::testing::TestWithParam<Transport> {};
+INSTANTIATE_TEST_SUITE_P(On, RealismNode, ::testing::Values(Transport::kMemory), TransportName);
+class RealismNodeAnyTransport : public RealismNode {};
+INSTANTIATE_TEST_SUITE_P(On, RealismNodeAnyTransport, ::testing::Values(Transport::kMemory, Transport::kDds),
+                         TransportName);
+
 const idl::StreamStats* Stream(const idl::SensorStats& s, const std::string& name) {
   for (const auto& st : s.streams())
     if (st.name() == name) return &st;
   return nullptr;
 }
 
-TEST(RealismDds, DelaysShowInFramesAndStatistics) {
-  const auto dds = UniqueDds("sim");
+TEST_P(RealismNodeAnyTransport, DelaysShowInFramesAndStatistics) {
+  const TestTransport dds(GetParam());
   SimUnderTest sim(test::OneRobot(), dds, TimeMode::kScaled, 4.0);
   Client client(dds);
   ASSERT_TRUE(client.WaitMatched());
@@ -85,13 +91,13 @@ TEST(RealismDds, DelaysShowInFramesAndStatistics) {
   return ::testing::AssertionSuccess();
 }
 
-TEST(RealismDds, CameraLossAndNoiseFollowTheSettings) {
-  const auto dds = UniqueDds("sim");
+TEST_P(RealismNode, CameraLossAndNoiseFollowTheSettings) {
+  const TestTransport dds(GetParam());
   // Lockstep, so that no frame is lost on the way to this client (a free-running
   // sim outruns the camera topic's history when the client is slow).
   SimUnderTest sim(test::OneRobot(), dds, TimeMode::kLockstep);
   Client client(dds);
-  ASSERT_TRUE(client.WaitMatched());
+  ASSERT_TRUE(client.WaitMatched(Client::kNoState));  // lockstep: no state before the first step
   const auto reply = client.Control(
       Realism({Value(idl::REALISM_CAMERA_ROBOT_POSITION_STDDEV, 0.01), Value(idl::REALISM_CAMERA_LINK_LOSS, 0.25)}));
   ASSERT_TRUE(Ok(reply));
@@ -115,11 +121,11 @@ TEST(RealismDds, CameraLossAndNoiseFollowTheSettings) {
   EXPECT_NEAR(std::sqrt(ss / (xs.size() - 1)), 0.01, 0.05 * 0.01);
 }
 
-TEST(RealismDds, CommandLinkDelaysTheRobot) {
-  const auto dds = UniqueDds("sim");
+TEST_P(RealismNode, CommandLinkDelaysTheRobot) {
+  const TestTransport dds(GetParam());
   SimUnderTest sim(test::OneRobot(), dds, TimeMode::kLockstep);
   Client client(dds);
-  ASSERT_TRUE(client.WaitMatched());
+  ASSERT_TRUE(client.WaitMatched(Client::kNoState));  // lockstep: no state before the first step
   ASSERT_TRUE(Ok(client.Control(Realism({Value(idl::REALISM_COMMAND_LATENCY, 0.100)}))));
   // One STEP with a command, then step on: nothing moves for 100 ms.
   idl::SimControl step = Op(idl::OP_STEP);
@@ -140,8 +146,8 @@ TEST(RealismDds, CommandLinkDelaysTheRobot) {
   EXPECT_NEAR(r->linear_velocity().x(), 0.3, 0.02);
 }
 
-TEST(RealismDds, BadRealismRequestsAreRefused) {
-  const auto dds = UniqueDds("sim");
+TEST_P(RealismNode, BadRealismRequestsAreRefused) {
+  const TestTransport dds(GetParam());
   SimUnderTest sim(test::OneRobot(), dds, TimeMode::kScaled, 2.0);
   Client client(dds);
   ASSERT_TRUE(client.WaitMatched());
@@ -173,7 +179,7 @@ TEST(RealismDds, BadRealismRequestsAreRefused) {
   EXPECT_TRUE(Ok(client.Control(Realism({Value(idl::REALISM_CAMERA_LINK_LOSS, 0.0)}, "realistic"))));
 }
 
-TEST(RealismDds, DeadlineFlagsAStalledCamera) {
+TEST(RealismNodeDds, DeadlineFlagsAStalledCamera) {
   const auto dds = UniqueDds("sim");
   SimUnderTest sim(test::OneRobot(), dds, TimeMode::kRealtime);
   Client client(dds);
@@ -198,11 +204,11 @@ TEST(RealismDds, DeadlineFlagsAStalledCamera) {
 }
 
 // Same seed and lockstep commands: identical camera streams; reset replays.
-std::vector<idl::CameraFrame> LockstepFrames(const Scene& scene, const char* name) {
-  const auto dds = UniqueDds(name);
+std::vector<idl::CameraFrame> LockstepFrames(Transport transport, const Scene& scene, const char* name) {
+  const TestTransport dds(transport, name);
   SimUnderTest sim(scene, dds, TimeMode::kLockstep);
   Client client(dds);
-  EXPECT_TRUE(client.WaitMatched());
+  EXPECT_TRUE(client.WaitMatched(Client::kNoState));
   EXPECT_TRUE(Ok(client.Control(Preset("realistic"))));
   for (int i = 0; i < 20; ++i) {
     idl::SimControl step = Op(idl::OP_STEP);
@@ -233,12 +239,12 @@ bool SameFrames(const std::vector<idl::CameraFrame>& a, const std::vector<idl::C
   return true;
 }
 
-TEST(RealismDds, SameSeedSameSensorStreamOtherSeedAnother) {
+TEST_P(RealismNode, SameSeedSameSensorStreamOtherSeedAnother) {
   Scene scene = test::OneRobot();
-  const auto a = LockstepFrames(scene, "a");
-  const auto b = LockstepFrames(scene, "b");
+  const auto a = LockstepFrames(GetParam(), scene, "a");
+  const auto b = LockstepFrames(GetParam(), scene, "b");
   scene.seed = 2;
-  const auto c = LockstepFrames(scene, "c");
+  const auto c = LockstepFrames(GetParam(), scene, "c");
   ASSERT_GT(a.size(), 100u);
   // Frames of different cameras may arrive interleaved differently; compare per camera.
   auto by_camera = [](std::vector<idl::CameraFrame> v) {

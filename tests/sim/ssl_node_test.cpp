@@ -1,22 +1,31 @@
-// turf-sim over DDS, with the simulator and a client as participants in one
-// process (tests/sim/sim_harness.h). Waits are bounded; assertions are on the
-// simulated state.
+// turf-sim's SSL node and a client in one process (tests/sim/sim_harness.h), on a MemoryBus; one test also over
+// a private DDS domain. Waits are bounded; assertions are on the simulated state.
 #include "tests/sim/sim_harness.h"
 
 namespace turf::test {
 namespace {
 
 // One blue robot at twice real time, and a client that turf-sim has matched.
-class SimDds : public ::testing::Test {
+class SslNode : public ::testing::TestWithParam<Transport> {
  protected:
   void SetUp() override { ASSERT_TRUE(client.WaitMatched()); }
 
-  const dds::ParticipantOptions dds = UniqueDds("sim");
-  SimUnderTest sim{test::OneRobot(), dds, TimeMode::kScaled, 2.0};
-  Client client{dds};
+  const TestTransport net{GetParam()};
+  SimUnderTest sim{test::OneRobot(), net, TimeMode::kScaled, 2.0};
+  Client client{net};
 };
+INSTANTIATE_TEST_SUITE_P(On, SslNode, ::testing::Values(Transport::kMemory), TransportName);
 
-TEST_F(SimDds, CommandMovesRobotAsSeenInWorldState) {
+// The same, also over DDS (the node's DDS adapter and a team stack's path).
+class SslNodeAnyTransport : public SslNode {};
+INSTANTIATE_TEST_SUITE_P(On, SslNodeAnyTransport, ::testing::Values(Transport::kMemory, Transport::kDds),
+                         TransportName);
+
+// Scenes of their own, on a MemoryBus.
+class SslNodeScenes : public ::testing::TestWithParam<Transport> {};
+INSTANTIATE_TEST_SUITE_P(On, SslNodeScenes, ::testing::Values(Transport::kMemory), TransportName);
+
+TEST_P(SslNodeAnyTransport, CommandMovesRobotAsSeenInWorldState) {
   // Drive forward at 1 m/s, re-sending at ~60 Hz like a team, for 1.5 s of sim time.
   const auto cmd = LocalVelocity(idl::TEAM_BLUE, 0, 1.0, 0.0, 0.0);
   int64_t t_start = -1;
@@ -43,7 +52,7 @@ TEST_F(SimDds, CommandMovesRobotAsSeenInWorldState) {
   EXPECT_NEAR(r->position().y(), 0.0, 0.01);
 }
 
-TEST_F(SimDds, WatchdogStopsARobotWhoseCommandsStop) {
+TEST_P(SslNode, WatchdogStopsARobotWhoseCommandsStop) {
   const auto cmd = LocalVelocity(idl::TEAM_BLUE, 0, 1.0, 0.0, 0.0);
   ASSERT_TRUE(client.WaitState([&](const idl::WorldState& s) {
     client.Command(cmd);
@@ -59,7 +68,7 @@ TEST_F(SimDds, WatchdogStopsARobotWhoseCommandsStop) {
   EXPECT_NEAR(r->linear_velocity().x(), 0.0, 0.01);
 }
 
-TEST_F(SimDds, ControlTeleportsPausesStepsAndResets) {
+TEST_P(SslNode, ControlTeleportsPausesStepsAndResets) {
   auto pause = client.Control(Op(idl::OP_PAUSE));
   ASSERT_TRUE(pause.has_value());
   EXPECT_EQ(pause->result(), idl::RESULT_OK);
@@ -124,7 +133,7 @@ TEST_F(SimDds, ControlTeleportsPausesStepsAndResets) {
   }));
 }
 
-TEST_F(SimDds, BadSamplesAreCountedAndMoveNothing) {
+TEST_P(SslNode, BadSamplesAreCountedAndMoveNothing) {
   auto nan = LocalVelocity(idl::TEAM_BLUE, 0, NAN, 0.0, 0.0);
   auto huge = LocalVelocity(idl::TEAM_BLUE, 0, 1e9, 0.0, 0.0);
   auto unknown = LocalVelocity(idl::TEAM_BLUE, 9, 1.0, 0.0, 0.0);
@@ -149,11 +158,11 @@ TEST_F(SimDds, BadSamplesAreCountedAndMoveNothing) {
     EXPECT_GT(sim.node().Rejected(kind), 0u) << kind;
 }
 
-TEST(SimDdsScenes, CamerasReportWhatEachCameraSees) {
-  const auto dds = UniqueDds("sim");
+TEST_P(SslNodeScenes, CamerasReportWhatEachCameraSees) {
+  const TestTransport net(GetParam());
   Scene scene = test::Teams(2);  // blue 0, 1 and yellow 0, 1
-  SimUnderTest sim(scene, dds, TimeMode::kScaled, 2.0);
-  Client client(dds);
+  SimUnderTest sim(scene, net, TimeMode::kScaled, 2.0);
+  Client client(net);
   ASSERT_TRUE(client.WaitMatched());
   const auto pause = client.Control(Op(idl::OP_PAUSE));
   ASSERT_TRUE(Ok(pause));
@@ -218,14 +227,13 @@ TEST(SimDdsScenes, CamerasReportWhatEachCameraSees) {
   EXPECT_DOUBLE_EQ(client.field()->max_flat_kick_speed(), 6.5);
 }
 
-// The same scene and the same lockstep command stream, run twice over DDS,
-// give identical worlds.
-TEST(SimDdsScenes, LockstepRunsAreIdentical) {
-  auto run = [](const char* name) {
-    const auto dds = UniqueDds(name);
-    SimUnderTest sim(test::Teams(3), dds, TimeMode::kLockstep);
-    Client client(dds);
-    EXPECT_TRUE(client.WaitMatched());
+// The same scene and the same lockstep command stream, run twice, give identical worlds.
+TEST_P(SslNodeScenes, LockstepRunsAreIdentical) {
+  auto run = [&](const char* name) {
+    const TestTransport net(GetParam(), name);
+    SimUnderTest sim(test::Teams(3), net, TimeMode::kLockstep);
+    Client client(net);
+    EXPECT_TRUE(client.WaitMatched(Client::kNoState));  // lockstep: no state before the first step
     for (int i = 0; i < 40; ++i) {
       idl::SimControl step = Op(idl::OP_STEP);
       step.step_count(8);

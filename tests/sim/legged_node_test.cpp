@@ -1,5 +1,5 @@
-// turf-sim's legged node over DDS, in process: joint state / IMU / force out,
-// joint commands in, refusals counted, pause/step/reset and lockstep.
+// turf-sim's legged node in process: joint state / IMU / force out, joint commands in, refusals counted,
+// pause/step/reset and lockstep. On a MemoryBus; the sensor topics also over DDS.
 #include <gtest/gtest.h>
 #include <turf/idl/ClockPubSubTypes.h>
 #include <turf/idl/JointsPubSubTypes.h>
@@ -30,7 +30,10 @@ namespace {
 using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
 
-dds::ParticipantOptions UniqueDds(const char* name) { return test::UniqueDds(name, "legged", 7); }
+using test::Transport;
+using test::TestTransport;
+
+TestTransport Net(Transport kind, const char* name = "sim") { return TestTransport(kind, name, "legged", 7); }
 
 LeggedScene SimSparkScene(const SensorRealism& realism = {}) {
   LeggedSceneLoadResult r = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/simspark_3d.yaml");
@@ -42,14 +45,14 @@ LeggedScene SimSparkScene(const SensorRealism& realism = {}) {
 // turf-sim on the SimSpark scene.
 class NodeUnderTest : public test::SimUnderTest {
  public:
-  NodeUnderTest(const dds::ParticipantOptions& dds, TimeMode mode, const SensorRealism& realism = {})
-      : SimUnderTest(SimSparkScene(realism), dds, mode) {}
+  NodeUnderTest(const TestTransport& net, TimeMode mode, const SensorRealism& realism = {})
+      : SimUnderTest(SimSparkScene(realism), net, mode) {}
 };
 
 class Client {
  public:
-  explicit Client(dds::ParticipantOptions o)
-      : participant_((o.name = "client", o)),
+  explicit Client(const TestTransport& net)
+      : participant_(net.ClientBus(&own_, "client")),
         command_(participant_.MakeWriter(dds::Topic::kRobotJointCommand)),
         control_(participant_, "test") {}
 
@@ -111,7 +114,8 @@ class Client {
   }
 
  private:
-  dds::Participant participant_;
+  std::unique_ptr<dds::Participant> own_;  // on DDS: the client's participant
+  dds::Bus& participant_;
   std::unique_ptr<dds::Writer<idl::JointCommandPubSubType>> command_;
   dds::ControlClient control_;
 
@@ -125,22 +129,28 @@ class Client {
   test::Newest<idl::LeggedSceneInfoPubSubType> scene{participant_, dds::Topic::kLeggedScene};
 };
 
-// turf-sim on the SimSpark scene and a client of it, on the test's own domain
-// and prefix (made by Start, in this order; the client goes first at the end).
-class LeggedDdsTest : public ::testing::Test {
+// turf-sim on the SimSpark scene and a client of it, on the test's transport (made by Start: the client first,
+// so that its readers take the node's first samples on a MemoryBus too; the client goes first at the end).
+class LeggedNode : public ::testing::TestWithParam<Transport> {
  protected:
   // True once the client has matched turf-sim (see Client::WaitMatched).
   bool Start(TimeMode mode) {
-    sim.emplace(dds, mode);
-    client.emplace(dds);
+    client.emplace(net);
+    sim.emplace(net, mode);
     return client->WaitMatched();
   }
-  const dds::ParticipantOptions dds = UniqueDds("sim");
+  const TestTransport net = Net(GetParam());
   std::optional<NodeUnderTest> sim;
   std::optional<Client> client;
 };
+INSTANTIATE_TEST_SUITE_P(On, LeggedNode, ::testing::Values(Transport::kMemory), test::TransportName);
 
-TEST_F(LeggedDdsTest, PublishesEveryRobotsJointsImuAndForces) {
+// The same, also over DDS.
+class LeggedNodeAnyTransport : public LeggedNode {};
+INSTANTIATE_TEST_SUITE_P(On, LeggedNodeAnyTransport, ::testing::Values(Transport::kMemory, Transport::kDds),
+                         test::TransportName);
+
+TEST_P(LeggedNodeAnyTransport, PublishesEveryRobotsJointsImuAndForces) {
   ASSERT_TRUE(Start(TimeMode::kFreeRunning));
   ASSERT_TRUE(client->WaitFor([&] {
     return client->joints.count("nao_2") && client->joints["nao_1"].sim_time_ns() > 500'000'000 &&
@@ -162,7 +172,7 @@ TEST_F(LeggedDdsTest, PublishesEveryRobotsJointsImuAndForces) {
   EXPECT_NEAR(rf.point().z(), -0.01, 0.003);
 }
 
-TEST_F(LeggedDdsTest, JointCommandMovesTheJointAndBadOnesAreCounted) {
+TEST_P(LeggedNode, JointCommandMovesTheJointAndBadOnesAreCounted) {
   ASSERT_TRUE(Start(TimeMode::kFreeRunning));
   client->Command("nao_2", "hj1", idl::JOINT_POSITION, 0.8);
   ASSERT_TRUE(client->WaitFor([&] { return std::abs(client->Angle("nao_2", "hj1") - 0.8) < 0.02; }));
@@ -177,7 +187,7 @@ TEST_F(LeggedDdsTest, JointCommandMovesTheJointAndBadOnesAreCounted) {
     EXPECT_EQ(sim->node().Rejected(kind), 1u) << kind;
 }
 
-TEST_F(LeggedDdsTest, LockstepStepsExactlyAndResetRestarts) {
+TEST_P(LeggedNode, LockstepStepsExactlyAndResetRestarts) {
   ASSERT_TRUE(Start(TimeMode::kLockstep));
   EXPECT_EQ(client->joints["nao_1"].frame(), 0u);
   client->Command("nao_1", "hj1", idl::JOINT_VELOCITY, 1.0);
@@ -211,7 +221,7 @@ TEST_F(LeggedDdsTest, LockstepStepsExactlyAndResetRestarts) {
 
 // What the SimSpark bridge needs: joint commands inside STEP (atomic with the
 // step), robots and ball moved by control requests, body poses, the scene.
-TEST_F(LeggedDdsTest, StepCarriesJointCommandsAndTeleportsMoveRobotsAndBall) {
+TEST_P(LeggedNode, StepCarriesJointCommandsAndTeleportsMoveRobotsAndBall) {
   ASSERT_TRUE(Start(TimeMode::kLockstep));
   ASSERT_TRUE(client->WaitFor([&] { return client->scene.has_value() && client->links.count("nao_2"); }));
   ASSERT_EQ(client->scene->robots().size(), 2u);
@@ -281,7 +291,7 @@ TEST_F(LeggedDdsTest, StepCarriesJointCommandsAndTeleportsMoveRobotsAndBall) {
 }
 
 // Encoder realism changed at run time: published joint angles are quantised.
-TEST_F(LeggedDdsTest, SetRealismModelsTheEncoders) {
+TEST_P(LeggedNode, SetRealismModelsTheEncoders) {
   ASSERT_TRUE(Start(TimeMode::kFreeRunning));
   client->Command("nao_1", "hj1", idl::JOINT_VELOCITY, 0.37);
   idl::SimControl req;
@@ -311,7 +321,7 @@ TEST_F(LeggedDdsTest, SetRealismModelsTheEncoders) {
   EXPECT_NE(reply->reason().find("encoder.resolution"), std::string::npos) << reply->reason();
 }
 
-TEST_F(LeggedDdsTest, PauseStopsTimeAndStepAdvancesIt) {
+TEST_P(LeggedNode, PauseStopsTimeAndStepAdvancesIt) {
   ASSERT_TRUE(Start(TimeMode::kRealtime));
   const auto pause = client->Control(idl::OP_PAUSE);
   ASSERT_TRUE(pause);
@@ -350,10 +360,10 @@ SensorRealism NoisyNoLinks() {
 // each), stepping in lockstep; with `chatter`, every step is followed by
 // control requests that make turf-sim publish its state again (a pause, a
 // refused teleport), as a viewer or a bridge may send.
-std::vector<std::vector<double>> NoisyAngles(int frames, bool chatter) {
-  const auto dds = UniqueDds("sim");
-  NodeUnderTest sim(dds, TimeMode::kLockstep, NoisyNoLinks());
-  Client client(dds);
+std::vector<std::vector<double>> NoisyAngles(Transport transport, int frames, bool chatter) {
+  const TestTransport net = Net(transport);
+  Client client(net);
+  NodeUnderTest sim(net, TimeMode::kLockstep, NoisyNoLinks());
   EXPECT_TRUE(client.WaitMatched());
   std::vector<std::vector<double>> angles;
   for (int f = 1; f <= frames; ++f) {
@@ -375,9 +385,9 @@ std::vector<std::vector<double>> NoisyAngles(int frames, bool chatter) {
 
 // The determinism leak of the old node: it drew encoder noise at every state
 // publication, so a viewer's requests changed every later reading.
-TEST_F(LeggedDdsTest, ControlRequestsDoNotChangeTheSensorNoise) {
-  const auto quiet = NoisyAngles(20, false);
-  const auto chatty = NoisyAngles(20, true);
+TEST_P(LeggedNode, ControlRequestsDoNotChangeTheSensorNoise) {
+  const auto quiet = NoisyAngles(GetParam(), 20, false);
+  const auto chatty = NoisyAngles(GetParam(), 20, true);
   ASSERT_EQ(quiet.size(), 20u);
   ASSERT_EQ(chatty.size(), 20u);
   EXPECT_EQ(quiet, chatty);
@@ -387,16 +397,14 @@ TEST_F(LeggedDdsTest, ControlRequestsDoNotChangeTheSensorNoise) {
 // A joint-state link with 20 ms latency and 10 % loss, seen by a subscriber
 // in lockstep: no sample arrives before the step that is 20 ms after its
 // measurement, about a tenth never arrive, and the stats topic reports both.
-TEST_F(LeggedDdsTest, JointStatesArriveWithTheirLinksLatencyAndLoss) {
+TEST_P(LeggedNode, JointStatesArriveWithTheirLinksLatencyAndLoss) {
   SensorRealism realism;
   realism.encoder.link.latency = 0.020;
   realism.encoder.link.loss = 0.10;
-  sim.emplace(dds, TimeMode::kLockstep, realism);
-  dds::ParticipantOptions o = dds;
-  o.name = "stats";
-  dds::Participant stats_participant(o);
-  auto stats_reader = stats_participant.MakeReader<idl::SensorStatsPubSubType>(dds::Topic::kStats);
-  client.emplace(dds);
+  std::unique_ptr<dds::Participant> own;
+  auto stats_reader = net.ClientBus(&own, "stats").MakeReader(dds::Topic::kStats);
+  client.emplace(net);
+  sim.emplace(net, TimeMode::kLockstep, realism);
   ASSERT_TRUE(client->WaitControlMatched());
   ASSERT_TRUE(client->WaitFor([&] { return stats_reader->Matched() > 0; }));
 
