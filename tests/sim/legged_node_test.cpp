@@ -30,8 +30,8 @@ namespace {
 using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
 
-using test::Transport;
 using test::TestTransport;
+using test::Transport;
 
 TestTransport Net(Transport kind, const char* name = "sim") { return TestTransport(kind, name, "legged", 7); }
 

@@ -144,7 +144,6 @@ class Client {
         all_frames_(participant_.MakeReader<idl::CameraFramePubSubType>(dds::Topic::kSslCamera)) {}
 
  public:
-
   // Polls until `done` holds, or the timeout.
   bool WaitFor(const std::function<bool()>& done, std::chrono::milliseconds timeout = 5s) {
     const auto end = Clock::now() + timeout;

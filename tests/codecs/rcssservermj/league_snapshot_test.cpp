@@ -28,8 +28,8 @@ std::string Describe(const WorldRequests& r) {
   return out;
 }
 
-// A scripted match of four players (three T1, one K1; a T1 spare): beams, a coin-toss kick-off, motor commands every cycle,
-// the ball placed off its spot (PlayOn), out over a touch line (a kick-in), back to BeforeKickOff with beams and
+// A scripted match of four players (three T1, one K1; a T1 spare): beams, a coin-toss kick-off, motor commands every
+// cycle, the ball placed off its spot (PlayOn), out over a touch line (a kick-in), back to BeforeKickOff with beams and
 // coin tosses. Inputs(i) gives cycle i's inputs, the same on every run; Step(i) also runs the cycle and
 // returns every byte the session sent, by player, and what it asked of the world.
 struct LeagueMatch {
