@@ -66,4 +66,23 @@ std::optional<T> GetOptional(StateReader& in, GetT get) {
   return get();
 }
 
+// A league's robot move (a struct with robot, position, orientation and reset_joints: the 3D leagues' sessions).
+template <class Move>
+void PutMove(const Move& m, StateWriter& out) {
+  out.Str(m.robot);
+  PutVector(m.position, out);
+  PutQuaternion(m.orientation, out);
+  out.Put(m.reset_joints);
+}
+
+template <class Move>
+Move GetMove(StateReader& in, size_t max_name) {
+  Move m;
+  m.robot = in.Str(max_name);
+  m.position = GetVector(in);
+  m.orientation = GetQuaternion(in);
+  m.reset_joints = in.Bool();
+  return m;
+}
+
 }  // namespace turf

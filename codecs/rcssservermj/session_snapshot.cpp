@@ -23,22 +23,6 @@ using Player = std::pair<Side, int>;  // (side, number): a player across reconne
 
 // --- world requests ---
 
-void PutMove(const RobotMove& m, StateWriter& out) {
-  out.Str(m.robot);
-  PutVector(m.position, out);
-  PutQuaternion(m.orientation, out);
-  out.Put(m.reset_joints);
-}
-
-RobotMove GetMove(StateReader& in) {
-  RobotMove m;
-  m.robot = in.Str(kMaxName);
-  m.position = GetVector(in);
-  m.orientation = GetQuaternion(in);
-  m.reset_joints = in.Bool();
-  return m;
-}
-
 // The bounds the action parser enforces (codecs/rcssservermj/actions.h), in radians.
 bool WithinActionBounds(double q, double dq, double kp, double kd, double tau) {
   return std::abs(q) <= kMaxAbsQDeg * kRad + kSlack && std::abs(dq) <= kMaxAbsDqDegS * kRad + kSlack && kp >= 0 &&
@@ -261,7 +245,7 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
   WorldRequests requests;
   requests.moves.resize(in.Count(kMaxItems));
   for (RobotMove& m : requests.moves) {
-    m = GetMove(in);
+    m = GetMove<RobotMove>(in, kMaxName);
     known_robot(m.robot);
   }
   requests.ball = GetOptional<Eigen::Vector3d>(in, [&] { return GetVector(in); });

@@ -595,22 +595,6 @@ WorldSnapshot RestoreWorld(StateReader& in) {
   return w;
 }
 
-void SaveMove(const RobotMove& m, StateWriter& out) {
-  out.Str(m.robot);
-  PutVector(m.position, out);
-  PutQuaternion(m.orientation, out);
-  out.Put(m.reset_joints);
-}
-
-RobotMove RestoreMove(StateReader& in) {
-  RobotMove m;
-  m.robot = in.Str(kMaxName);
-  m.position = GetVector(in);
-  m.orientation = GetQuaternion(in);
-  m.reset_joints = in.Bool();
-  return m;
-}
-
 void SaveJoints(const std::map<std::string, std::vector<JointVelocity>>& joints, StateWriter& out) {
   out.Put<uint64_t>(joints.size());
   for (const auto& [robot, targets] : joints) {
@@ -650,7 +634,7 @@ std::string Session::SaveLeague() const {
   beam_rng_.Save(out);
   out.Tag(StateTag("SREQ"));
   out.Put<uint64_t>(requests_.moves.size());
-  for (const RobotMove& m : requests_.moves) SaveMove(m, out);
+  for (const RobotMove& m : requests_.moves) PutMove(m, out);
   out.Put(requests_.ball.has_value());
   if (requests_.ball) {
     PutVector(requests_.ball->position, out);
@@ -712,7 +696,7 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
   WorldRequests requests;
   requests.moves.resize(in.Count(kMaxItems));
   for (RobotMove& m : requests.moves) {
-    m = RestoreMove(in);
+    m = GetMove<RobotMove>(in, kMaxName);
     known_robot(m.robot);
   }
   if (in.Bool()) requests.ball = BallMove{GetVector(in), GetVector(in)};

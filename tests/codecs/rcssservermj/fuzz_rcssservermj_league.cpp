@@ -9,14 +9,11 @@
 #include <vector>
 
 #include "codecs/rcssservermj/session.h"
+#include "tests/support/league_snapshot.h"
 
 namespace {
 
 namespace mj = turf::rcssservermj;
-
-void Require(bool ok) {
-  if (!ok) std::abort();
-}
 
 std::vector<mj::SceneRobot> Robots() {
   std::vector<mj::SceneRobot> robots;
@@ -81,18 +78,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     referee.Restore(in);
     if (in.ok()) referee.Update(0.02, Eigen::Vector3d(0, 0, 0.11), std::nullopt);
   }
-  // The session's own snapshot with this input's tail spliced in at the position the first bytes choose, so deep
-  // sections get exercised too.
-  if (size < 3) return 0;
-  const std::string& start = match.start;
-  const size_t cut = (static_cast<size_t>(data[0]) << 8 | data[1]) % (start.size() + 1);
-  const std::string spliced = start.substr(0, cut) + std::string(bytes.substr(2));
-  const std::string before = match.session.SaveLeague();
-  if (match.session.RestoreLeague(spliced).empty()) {
-    match.Cycle();
-    Require(match.session.RestoreLeague(match.start).empty());
-  } else {
-    Require(match.session.SaveLeague() == before);
-  }
+  turf::test::FuzzSplicedRestore(match, data, size);
   return 0;
 }

@@ -9,6 +9,7 @@
 
 #include "codecs/rcssservermj/session.h"
 #include "tests/codecs/rcssservermj/session_fixture.h"
+#include "tests/support/league_snapshot.h"
 
 namespace turf::rcssservermj {
 namespace {
@@ -32,7 +33,7 @@ std::string Describe(const WorldRequests& r) {
 // cycle, the ball placed off its spot (PlayOn), out over a touch line (a kick-in), back to BeforeKickOff with beams and
 // coin tosses. Inputs(i) gives cycle i's inputs, the same on every run; Step(i) also runs the cycle and
 // returns every byte the session sent, by player, and what it asked of the world.
-struct LeagueMatch {
+struct LeagueMatch : test::LeagueScript<LeagueMatch> {
   explicit LeagueMatch(SessionOptions o = Options()) : f(o, 4, 1) {
     a = f.Join("(init T1 Alpha 1)");
     b = f.Join("(init K1 Alpha 2)");
@@ -65,26 +66,12 @@ struct LeagueMatch {
     for (const auto& [id, text] : f.Outputs()) log += Name(id) + ":" + text + "\n";
     return log;
   }
-  std::string Step(int i) {
-    Inputs(i);
-    return Cycle();
-  }
-  std::string Run(int from, int to) {
-    std::string log;
-    for (int i = from; i < to; ++i) log += Step(i);
-    return log;
-  }
   // The league saved after cycles [0, cycles).
   std::string SaveAfter(int cycles) {
     Run(0, cycles);
     return f.session.SaveLeague();
   }
-  std::string Name(int id) const {
-    const std::pair<int, const char*> names[] = {{a, "a"}, {b, "b"}, {c, "c"}, {d, "d"}};
-    for (const auto& [agent, name] : names)
-      if (agent == id) return name;
-    return std::to_string(id);
-  }
+  std::string Name(int id) const { return test::NameOf(id, {{a, "a"}, {b, "b"}, {c, "c"}, {d, "d"}}); }
 
   Fixture f;
   int a = 0, b = 0, c = 0, d = 0;
@@ -180,24 +167,11 @@ TEST(MjLeagueSnapshot, TruncatedOrCorruptedIsRefusedAndChangesNothing) {
   const std::string snapshot = m.SaveAfter(8);
   m.Run(8, 12);
   const std::string now = m.f.session.SaveLeague();
-  for (size_t cut = 0; cut < snapshot.size(); cut += 7) {
-    ASSERT_NE(m.f.session.RestoreLeague(snapshot.substr(0, cut)), "") << "cut at " << cut;
-    ASSERT_EQ(m.f.session.SaveLeague(), now) << "cut at " << cut;
-  }
-  EXPECT_NE(m.f.session.RestoreLeague(snapshot + "x"), "");
-  // Every byte flipped in turn: refused, or a valid league (then restoring `now` gives it back).
-  size_t refused = 0;
-  for (size_t i = 0; i < snapshot.size(); ++i) {
-    std::string bad = snapshot;
-    bad[i] = static_cast<char>(bad[i] ^ 0x80);
-    if (!m.f.session.RestoreLeague(bad).empty()) {
-      ++refused;
-      ASSERT_EQ(m.f.session.SaveLeague(), now) << "byte " << i;
-    } else {
-      ASSERT_EQ(m.f.session.RestoreLeague(now), "");
-    }
-  }
-  EXPECT_GT(refused, 0u);
+  EXPECT_EQ(test::DamagedSnapshotsChangeNothing(
+                snapshot, now, [&] { return m.f.session.SaveLeague(); },
+                [&](const std::string& bytes) { return m.f.session.RestoreLeague(bytes); }, 7),
+            "");
+  EXPECT_EQ(m.f.session.RestoreLeague(snapshot + "x"), "invalid league snapshot: trailing bytes");
   EXPECT_EQ(m.f.session.RestoreLeague(std::string("TSLG") + snapshot.substr(4)), "not an RCSSServerMJ league snapshot");
 }
 

@@ -10,14 +10,11 @@
 #include <vector>
 
 #include "codecs/simspark/session.h"
+#include "tests/support/league_snapshot.h"
 
 namespace {
 
 namespace ss = turf::simspark;
-
-void Require(bool ok) {
-  if (!ok) std::abort();
-}
 
 // Two robots standing apart, each with a torso and a head.
 ss::WorldSnapshot World(double time) {
@@ -68,18 +65,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     game.Restore(in);
     if (in.ok()) game.Update(0.02, Eigen::Vector3d(0, 0, 0.042), true);
   }
-  // The session's own snapshot with this input's tail spliced in at the
-  // position the first bytes choose, so deep sections get exercised too.
-  if (size < 3) return 0;
-  const std::string& start = match.start;
-  const size_t cut = (static_cast<size_t>(data[0]) << 8 | data[1]) % (start.size() + 1);
-  const std::string spliced = start.substr(0, cut) + std::string(bytes.substr(2));
-  const std::string before = match.session.SaveLeague();
-  if (match.session.RestoreLeague(spliced).empty()) {
-    match.Cycle();
-    Require(match.session.RestoreLeague(match.start).empty());
-  } else {
-    Require(match.session.SaveLeague() == before);
-  }
+  turf::test::FuzzSplicedRestore(match, data, size);
   return 0;
 }

@@ -1,0 +1,86 @@
+// Snapshot tests of a 3D league's session (SimSpark, RCSSServerMJ: SaveLeague / RestoreLeague), shared by both
+// leagues' tests and fuzz targets: a scripted match run cycle by cycle, the damaged-snapshot check, and the fuzz
+// targets' spliced restore. Header-only and gtest-free (the fuzz targets build without it).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <initializer_list>
+#include <string>
+#include <string_view>
+#include <utility>
+
+namespace turf::test {
+
+// A scripted match: `Match` derives from LeagueScript<Match> and has Inputs(i) (cycle i's inputs, the same on every
+// run) and Cycle() (runs a cycle, returns what it produced as text).
+template <class Match>
+class LeagueScript {
+ public:
+  std::string Step(int i) {
+    self().Inputs(i);
+    return self().Cycle();
+  }
+  // Cycles [from, to), their outputs concatenated.
+  std::string Run(int from, int to) {
+    std::string log;
+    for (int i = from; i < to; ++i) log += Step(i);
+    return log;
+  }
+
+ private:
+  Match& self() { return static_cast<Match&>(*this); }
+};
+
+// The name given to agent `id` in `names`, else its number: outputs compare by player, not by connection.
+inline std::string NameOf(int id, std::initializer_list<std::pair<int, const char*>> names) {
+  for (const auto& [agent, name] : names)
+    if (agent == id) return name;
+  return std::to_string(id);
+}
+
+// Every `stride`-th truncation of `snapshot` and every byte of it flipped with `mask`. Returns "" if each was
+// refused with the league's state left at `now` (restore(bytes) -> why, save() -> bytes), or, for a flip only,
+// taken (a double's bits) and then `now` restored; else what went wrong.
+template <class Save, class Restore>
+std::string DamagedSnapshotsChangeNothing(const std::string& snapshot, const std::string& now, const Save& save,
+                                          const Restore& restore, size_t stride = 1, char mask = '\xA5') {
+  for (size_t cut = 0; cut < snapshot.size(); cut += stride) {
+    if (restore(snapshot.substr(0, cut)).empty()) return "taken when cut at " + std::to_string(cut);
+    if (save() != now) return "changed when cut at " + std::to_string(cut);
+  }
+  for (size_t at = 0; at < snapshot.size(); ++at) {
+    std::string flipped = snapshot;
+    flipped[at] = static_cast<char>(flipped[at] ^ mask);
+    if (!restore(flipped).empty()) {
+      if (save() != now) return "changed when flipped at " + std::to_string(at);
+    } else if (!restore(now).empty()) {
+      return "cannot go back after a flip at " + std::to_string(at);
+    }
+  }
+  return "";
+}
+
+// A libFuzzer step: `match.start` (the session's own snapshot) with the input's tail spliced in at the position
+// its first two bytes choose, so deep sections get exercised too. A refused restore must change nothing; an
+// accepted one must leave a session that runs a cycle and takes `match.start` back. Aborts otherwise.
+template <class Match>
+void FuzzSplicedRestore(Match& match, const uint8_t* data, size_t size) {
+  const auto require = [](bool ok) {
+    if (!ok) std::abort();
+  };
+  if (size < 3) return;
+  const std::string& start = match.start;
+  const size_t cut = (static_cast<size_t>(data[0]) << 8 | data[1]) % (start.size() + 1);
+  const std::string spliced = start.substr(0, cut) + std::string(reinterpret_cast<const char*>(data) + 2, size - 2);
+  const std::string before = match.session.SaveLeague();
+  if (match.session.RestoreLeague(spliced).empty()) {
+    match.Cycle();
+    require(match.session.RestoreLeague(match.start).empty());
+  } else {
+    require(match.session.SaveLeague() == before);
+  }
+}
+
+}  // namespace turf::test
