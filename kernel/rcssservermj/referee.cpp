@@ -29,6 +29,7 @@ const RuleBook kRuleBooks[] = {
 constexpr size_t kModeCount = sizeof(kModeNames) / sizeof(kModeNames[0]);
 constexpr size_t kMaxTeamName = 256;  // far above any team name an init accepts
 constexpr int kMaxScore = 1'000'000;
+constexpr int64_t kMaxTimeMs = 24LL * 3600 * 1000;  // a day: far beyond any match's halves
 
 constexpr double kMovedFromPlacement = 0.05;  // m: a restart's ball in play
 
@@ -203,7 +204,8 @@ void Referee::Restore(StateReader& in) {
   r.time_ms_ = in.Get<int64_t>();
   r.mode_ms_ = in.Get<int64_t>();
   r.half_ = in.Get<int32_t>();
-  if (r.time_ms_ < 0 || r.mode_ms_ < 0) in.Fail("negative time");
+  if (r.time_ms_ < 0 || r.mode_ms_ < 0 || r.time_ms_ > kMaxTimeMs || r.mode_ms_ > kMaxTimeMs)
+    in.Fail("time out of range");
   if (r.half_ < 1 || r.half_ > 2) in.Fail("half out of range");
   r.last_touch_ = GetOptional<Side>(in, side);
   r.placed_ = GetOptional<Eigen::Vector3d>(in, vector);
