@@ -170,5 +170,33 @@ TEST_F(MultiHost, LinkDownForThreeSecondsBothSidesRecover) {
   EXPECT_TRUE(sim->Running() && grsim->Running() && vision->Running());
 }
 
+// A lossy link (venue Wi-Fi, a busy switch): 5 % of the UDP packets crossing it are lost each way. DDS repairs
+// what it can, so vision keeps flowing (no camera misses more than 30 frames in a row, half a second) and grSim
+// commands still move robots.
+TEST_F(MultiHost, FivePercentLossOnTheLinkVisionAndCommandsKeepFlowing) {
+  Match match({TestDomain(), prefix, hosts.get(), {}, "ssl_div_b"});
+  auto vision_client = Vision(match.vision_port);
+  auto team = Team();
+  auto sim = match.Sim();
+  auto grsim = match.Grsim();
+  auto vision = match.Vision();
+  ASSERT_TRUE(vision_client->WaitForStream(2, 15s)) << vision->Log();
+  ASSERT_TRUE(hosts->DropUdp(5)) << hosts->error();
+  vision_client->ResetGaps();
+  const int before = vision_client->detections;
+  vision_client->Drain(5000ms);
+  const long dropped = hosts->DroppedUdp();
+  RecordProperty("longest_gap_frames", static_cast<int>(vision_client->longest_gap));
+  std::printf("5%% loss: %ld packets dropped, %d detections, longest gap %u frames\n", dropped,
+              vision_client->detections - before, vision_client->longest_gap);
+  EXPECT_GT(dropped, 0) << "the loss rule dropped nothing: the test tested nothing";
+  EXPECT_GT(vision_client->detections - before, 0) << vision->Log();
+  EXPECT_LE(vision_client->longest_gap, 30u) << vision->Log();
+  const auto moved = DriveBlueRobot(*team, "127.0.0.1", match.grsim_port, *vision_client, 1, -3.0, 2.0, 600ms);
+  ASSERT_TRUE(moved.has_value());
+  EXPECT_GT(*moved, 0.2) << grsim->Log();
+  EXPECT_TRUE(sim->Running() && grsim->Running() && vision->Running());
+}
+
 }  // namespace
 }  // namespace turf::test

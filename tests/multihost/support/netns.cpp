@@ -180,4 +180,31 @@ long TwoHosts::DroppedMulticast() const {
   return total;
 }
 
+bool TwoHosts::DropUdp(int percent) {
+  const std::string dev = "\"" + if_[1] + "\"";
+  std::string rules = "table inet turf_loss\ndelete table inet turf_loss\n";
+  if (percent > 0) {
+    const std::string drop =
+        " meta l4proto udp numgen random mod 100 < " + std::to_string(percent) + " counter drop; }\n";
+    rules += "table inet turf_loss {\n  chain out { type filter hook output priority 0; oifname " + dev + drop +
+             "  chain in { type filter hook input priority 0; iifname " + dev + drop + "}\n";
+  }
+  const std::string file = "/tmp/" + ns_[1] + "-loss.nft";
+  std::ofstream(file) << rules;
+  std::string out;
+  const int status = RunCommand({"ip", "netns", "exec", ns_[1], "nft", "-f", file}, &out);
+  std::remove(file.c_str());
+  if (status != 0) error_ = "nft -f in " + ns_[1] + " failed: " + out;
+  return status == 0;
+}
+
+long TwoHosts::DroppedUdp() const {
+  std::string out;
+  RunCommand({"ip", "netns", "exec", ns_[1], "nft", "list", "table", "inet", "turf_loss"}, &out);
+  long total = 0;
+  const std::regex packets("counter packets ([0-9]+)");
+  for (std::sregex_iterator it(out.begin(), out.end(), packets), end; it != end; ++it) total += std::stol((*it)[1]);
+  return total;
+}
+
 }  // namespace turf::test

@@ -47,6 +47,11 @@ class TwoHosts {
   bool BlockMulticast();
   // Packets the multicast rules dropped so far, both namespaces.
   long DroppedMulticast() const;
+  // nftables in the bridge host: drop `percent` % of the UDP packets crossing the veth, each way, at random (0
+  // removes the rule); what a lossy LAN or Wi-Fi does. `netem` would be the usual tool, but not every kernel has it.
+  bool DropUdp(int percent);
+  // Packets the loss rule dropped so far.
+  long DroppedUdp() const;
 
   // Runs fn() with the calling thread inside `ns` (e.g. to open a socket
   // there: a socket stays in the namespace it was made in).

@@ -5,6 +5,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "codecs/proto/ssl_vision.pb.h"
@@ -62,6 +63,9 @@ bool VisionClient::ReadOne() {
   const auto& d = p.detection();
   ++detections;
   last_detection = SteadyClock::now();
+  const auto seen = cameras.find(d.camera_id());
+  if (seen != cameras.end() && d.frame_number() > seen->second + 1)
+    longest_gap = std::max(longest_gap, d.frame_number() - seen->second - 1);
   cameras[d.camera_id()] = d.frame_number();
   for (const auto& r : d.robots_blue())
     robots_[{false, r.robot_id()}] = {r.x(), r.y(), d.t_capture(), d.frame_number()};

@@ -55,6 +55,10 @@ class VisionClient {
   int detections = 0;
   bool geometry = false;
   std::map<uint32_t, uint32_t> cameras;  // camera id -> last frame number
+  // The longest run of a camera's frames that never arrived (frame numbers skipped between two that did), any
+  // camera, since the last ResetGaps().
+  uint32_t longest_gap = 0;
+  void ResetGaps() { longest_gap = 0; }
   std::optional<SteadyClock::time_point> last_detection;
 
  private:
