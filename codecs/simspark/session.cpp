@@ -1,6 +1,7 @@
 #include "codecs/simspark/session.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -116,6 +117,7 @@ void Session::LeaveTeam(Agent* agent) {
   if (!agent->inited) return;
   game_.Leave(agent->side, agent->unum, agent->type);
   radio_.Forget(agent->side, agent->unum);
+  self_collision_.Forget(agent->side, agent->unum);
   agent->inited = false;
 }
 
@@ -283,6 +285,7 @@ WorldRequests Session::TakeRequests() {
   // perception right after its step, so the joint velocities asked in this
   // cycle go to the world with the next one.
   std::swap(out.joints, held_joints_);
+  ApplyFreezes(&out.joints);
   for (const RobotMove& m : out.moves) StartTorsoPosesAt(m.robot, m.position);
   for (auto& [id, a] : agents_) a.synced = false;
   return out;
@@ -389,8 +392,10 @@ void Session::Advance(WorldSnapshot snapshot) {
     if (near) touchers.push_back(Toucher{a.side, a.unum});
   }
   const bool touched = !touchers.empty();
+  const PlayMode mode = game_.play_mode();  // the mode the referee's cycle begins with
   const GameUpdate update = game_.Update(0.02, world.ball, touchers);
   if (update.place_ball) requests_.ball = BallMove{*update.place_ball, Eigen::Vector3d::Zero()};
+  CheckSelfCollisions(mode, world);
   // Every player's seen parts, once per cycle for all agents' vision.
   players_.clear();
   for (const auto& [id, other] : agents_) {
@@ -410,6 +415,34 @@ void Session::Advance(WorldSnapshot snapshot) {
   }
   radio_.EndCycle();
   if (cycle_ % 2 == 0) monitor_ = FormatMonitorGame(MonitorState(game_), nullptr);
+}
+
+// The referee's self-collision rule on every player's links after the cycle; a note for each freeze.
+void Session::CheckSelfCollisions(PlayMode mode, const WorldSnapshot& world) {
+  std::vector<PlayerLinks> players;
+  for (const auto& [id, a] : agents_) {
+    if (!a.inited || a.robot < 0) continue;
+    const RobotSnapshot* robot = world.Find(robots_[a.robot]);
+    if (robot == nullptr) continue;
+    PlayerLinks p{a.side, a.unum, a.type, {}};
+    for (const RobotSnapshot::Link& l : robot->links) p.links.push_back({l.name, l.position, l.orientation});
+    players.push_back(std::move(p));
+  }
+  for (const SelfCollision& c : self_collision_.Update(mode, game_.game_time(), players))
+    notes_.push_back(fmt::format(
+        "self-collision of player {} {}: {} and {} overlap by {:.3f} m; joints {} frozen for {} s", SideName(c.side),
+        c.unum, c.link1, c.link2, c.depth, fmt::join(c.frozen, " "), kSelfCollisionFrozenTime));
+}
+
+// A command to a frozen joint is realized as velocity 0 (the reference's disabled hinge effector).
+void Session::ApplyFreezes(std::map<std::string, std::vector<JointVelocity>>* joints) const {
+  for (const auto& [id, a] : agents_) {
+    if (!a.inited || a.robot < 0) continue;
+    const auto it = joints->find(robots_[a.robot]);
+    if (it == joints->end()) continue;
+    for (JointVelocity& t : it->second)
+      if (self_collision_.Frozen(a.side, a.unum, t.joint)) t.velocity = 0.0;
+  }
 }
 
 std::string Session::MonitorGreeting() const {
@@ -532,7 +565,7 @@ std::string Session::TakeMonitorOutput() { return std::exchange(monitor_, {}); }
 
 namespace {
 
-constexpr uint32_t kLeagueVersion = 2;
+constexpr uint32_t kLeagueVersion = 3;
 constexpr size_t kMaxItems = 4096;  // robots, joints, links, moves, players: far above any scene
 constexpr size_t kMaxName = 256;    // a robot, joint, link or team name
 
@@ -630,6 +663,7 @@ std::string Session::SaveLeague() const {
   out.Put(kLeagueVersion);
   out.Put(cycle_);
   game_.Save(out);
+  self_collision_.Save(out);
   radio_.Save(out);
   beam_rng_.Save(out);
   out.Tag(StateTag("SREQ"));
@@ -685,6 +719,8 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
   const uint64_t cycle = in.Get<uint64_t>();
   Game game = game_;
   game.Restore(in);
+  SelfCollisionRule self_collision = self_collision_;
+  self_collision.Restore(in);
   Radio radio = radio_;
   radio.Restore(in);
   Rng beam_rng;
@@ -777,6 +813,7 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
   }
   cycle_ = cycle;
   game_ = std::move(game);
+  self_collision_ = std::move(self_collision);
   radio_ = std::move(radio);
   beam_rng_ = beam_rng;
   requests_ = std::move(requests);

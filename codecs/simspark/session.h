@@ -31,6 +31,7 @@
 #include "kernel/simspark/field3d.h"
 #include "kernel/simspark/game.h"
 #include "kernel/simspark/radio.h"
+#include "kernel/simspark/self_collision.h"
 #include "kernel/simspark/types.h"
 #include "kernel/simspark/vision.h"
 
@@ -200,6 +201,8 @@ class Session {
   std::string Perceive(Agent* agent, const WorldSnapshot& world, bool touched);
   SeeItems See(const Agent& agent, const RobotSnapshot& robot, const WorldSnapshot& world);
   const std::vector<int>& HingeIndex(int type, const RobotSnapshot& robot);
+  void CheckSelfCollisions(PlayMode mode, const WorldSnapshot& world);
+  void ApplyFreezes(std::map<std::string, std::vector<JointVelocity>>* joints) const;
 
   SessionOptions options_;
   std::vector<std::string> robots_;
@@ -212,6 +215,7 @@ class Session {
   uint64_t cycle_ = 0;
   Game game_;
   Radio radio_;
+  SelfCollisionRule self_collision_;
   Field3dGeometry field_;
   Rng beam_rng_;
   WorldRequests requests_;

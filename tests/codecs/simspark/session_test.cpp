@@ -30,6 +30,7 @@ class FakeWorld {
     std::array<double, 3> accelerometer{0.0, 0.0, 9.81};
     bool left_contact = true;
     bool right_contact = true;
+    std::vector<RobotSnapshot::Link> posed;  // links placed by a test, in the world frame (before the others)
   };
 
   explicit FakeWorld(int n) {
@@ -96,6 +97,7 @@ class FakeWorld {
       s.feet.push_back({"lf", r.left_contact, {0.0, 0.0, -0.01}, {0.0, 0.0, 22.5}});
       s.feet.push_back({"rf", r.right_contact, {0.0, 0.0, -0.01}, {0.0, 0.0, 22.5}});
       // Body centres in the torso frame (x right, y forward, z up).
+      s.links = r.posed;
       const std::pair<const char*, Eigen::Vector3d> links[] = {
           {"torso", {0.0, 0.0, 0.0}},        {"head", {0.0, 0.0, 0.2}},      {"rlowerarm", {0.1, 0.15, 0.07}},
           {"llowerarm", {-0.1, 0.15, 0.07}}, {"rfoot", {0.055, 0.0, -0.37}}, {"lfoot", {-0.055, 0.0, -0.37}},
@@ -399,6 +401,41 @@ TEST(SessionEffectors, AnAnswerMovesTheJointsOneCycleLaterAsTheReference) {
   h.Cycle(&after);
   ASSERT_EQ(after.joints.count("nao_1"), 1u);
   EXPECT_DOUBLE_EQ(after.joints.at("nao_1").at(0).velocity, -1.0);
+}
+
+// rcssserver3d's self-collision rule (kernel/simspark/self_collision.h): a type-1 robot's right lower arm deep in its
+// right thigh in PlayOn freezes the right arm and leg; a command to them is realized as velocity 0 for 1 s, others
+// as sent. Not in BeforeKickOff.
+TEST(SessionEffectors, SelfCollisionFreezesTheLimbsCommandsForOneSecond) {
+  Harness h(1);
+  const int a = h.JoinAndCycle("Alpha", 2, 1);
+  const Eigen::Quaterniond thigh(Eigen::AngleAxisd(0.6, Eigen::Vector3d(1, 1, 0).normalized()));
+  const Eigen::Quaterniond arm(Eigen::AngleAxisd(1.0, Eigen::Vector3d(0, 1, 1).normalized()));
+  h.world.robot("nao_1").posed = {{"rthigh", {-10, -11.5, 0.2}, thigh}, {"rlowerarm", {-10, -11.5, 0.2}, arm}};
+  // Commands asked in cycle n reach the world with the requests taken in cycle n + 1.
+  const auto sent = [&](const std::string& message) {
+    h.session.Receive(a, message);
+    h.Cycle();
+    WorldRequests taken;
+    h.Cycle(&taken);
+    std::map<std::string, double> v;
+    for (const JointVelocity& t : taken.joints["nao_1"]) v[t.joint] = t.velocity;
+    return v;
+  };
+  EXPECT_DOUBLE_EQ(sent("(rae3 1)(lae3 1)")["raj3"], 1.0) << "BeforeKickOff: no rule";
+  h.session.Trainer("(playMode KickOff_Left)", TrainerRole::kOperator);
+  const std::map<std::string, double> frozen = sent("(rae3 1)(rle4 1)(lae3 1)");
+  EXPECT_DOUBLE_EQ(frozen.at("raj3"), 0.0);
+  EXPECT_DOUBLE_EQ(frozen.at("rlj4"), 0.0);
+  EXPECT_DOUBLE_EQ(frozen.at("laj3"), 1.0) << "the other arm is free";
+  const std::vector<std::string> notes = h.session.TakeNotes();
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_TRUE(Contains(notes[0], "rlowerarm and rthigh")) << notes[0];
+  // The arm out of the thigh: still frozen until 1 s of game time has passed, then the command as sent.
+  h.world.robot("nao_1").posed.clear();
+  int frozen_cycles = 0;
+  for (int i = 0; i < 60 && sent("(rae3 1)").at("raj3") == 0.0; ++i) frozen_cycles += 2;
+  EXPECT_NEAR(frozen_cycles, 50, 4) << "cycles (of 20 ms) the joint stayed frozen";
 }
 
 TEST(SessionEffectors, HingeVelocitiesByModelJointNameClampedForType0) {

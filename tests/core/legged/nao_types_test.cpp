@@ -9,6 +9,7 @@
 
 #include "core/legged/legged_world.h"
 #include "core/legged/nao_types.h"
+#include "kernel/simspark/self_collision.h"
 #include "loader/legged_scene_yaml.h"
 #include "tests/core/legged/nao_fixture.h"
 
@@ -97,6 +98,25 @@ TEST_P(NaoTypesTest, StandsWithZeroCommands) {
   double load = 0.0;
   for (const ForceReading& r : s.forces) load += r.values[0];
   EXPECT_NEAR(load, 4.6071 * 9.81, 0.1 * 4.6071 * 9.81) << "the feet (and toes) carry the weight";
+}
+
+// The SimSpark referee's self-collision boxes (kernel/simspark/self_collision.h, the reference's colliders) are the
+// model's own: a box geom of that size at each link's origin, along its axes.
+TEST_P(NaoTypesTest, SelfCollisionBoxesAreTheModelsGeoms) {
+  const TypeFacts f = GetParam();
+  LeggedWorld w(TypedScene(f.type));
+  const std::vector<LeggedGeom> geoms = w.RobotGeoms(0);
+  for (const simspark::NaoBox& box : simspark::NaoBoxes(f.type)) {
+    const auto g = std::find_if(geoms.begin(), geoms.end(), [&](const LeggedGeom& g) {
+      return g.body == box.link && g.shape == LeggedGeom::Shape::kBox;
+    });
+    ASSERT_NE(g, geoms.end()) << box.link;
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(g->size[k], box.half[k], 1e-9) << box.link;
+      EXPECT_NEAR(g->position[k], 0.0, 1e-9) << box.link;
+    }
+    EXPECT_NEAR(std::abs(g->orientation[0]), 1.0, 1e-9) << box.link;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Types, NaoTypesTest, ::testing::ValuesIn(kFacts),

@@ -1,0 +1,109 @@
+// rcssserver3d's self-collision rule (shared/protocols/simspark.md, "Self-collision rule"; the reference's
+// SoccerRuleAspect::AnalyseSelfCollisionFouls and UpdateSelfCollisions with naosoccersim.rb's settings:
+// FoulOnSelfCollisions true, SelfCollisionsTolerance 0.04, SelfCollisionJointFrozenTime 1, ThawTime 2, no beam
+// penalty).
+//
+// A robot's own parts never collide physically. Instead, after every cycle while the game is not paused, the
+// referee tests each pair of one player's box colliders (torso, upper and lower arms, thighs, shanks, feet, type 4's
+// toes; not a thigh with the torso, a shank with its thigh, a foot with its shank, a toe with its foot). Two that
+// overlap freeze the joints of the limbs they belong to (an arm's 4, a leg's 6, or 7 with the toe; the torso's
+// none): for 1 s of game time a command to a frozen joint turns into velocity 0 (a joint nobody commands keeps its
+// velocity, as any hinge does). A joint cannot freeze again until 3 s after it froze.
+//
+// "Paused" is the reference's flag: set while the mode is BeforeKickOff, cleared by a kick-off, kick-in, free
+// kick, goal kick, corner kick or pass mode, kept by the others (PlayOn, goals, offside, GameOver); paused clears
+// every freeze. Times are game time (it stands still in BeforeKickOff and GameOver).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/state_io.h"
+#include "kernel/simspark/types.h"
+
+namespace turf::simspark {
+
+inline constexpr double kSelfCollisionTolerance = 0.04;  // m
+inline constexpr double kSelfCollisionFrozenTime = 1.0;  // s of game time
+inline constexpr double kSelfCollisionThawTime = 2.0;    // s, after the frozen time
+
+// A box collider of the Nao: centred on its link's origin, along the link's axes.
+struct NaoBox {
+  std::string link;                 // "torso", "rlowerarm", ...
+  Eigen::Vector3d half;             // half extents along the link's x, y, z (m)
+  std::vector<std::string> freeze;  // the joints (perceptor names) a collision of this box freezes
+};
+
+// The box colliders of robot type 0..4 (the reference's rsg files), in their scene-graph order; empty for another.
+const std::vector<NaoBox>& NaoBoxes(int robot_type);
+// Whether the reference never tests these two boxes against each other (links of one robot).
+bool NeverTested(const std::string& link1, const std::string& link2);
+
+struct PlacedBox {
+  Eigen::Vector3d centre;
+  Eigen::Matrix3d axes;  // columns: the box's x, y, z in the world
+  Eigen::Vector3d half;
+};
+
+// The reference's test (BoxCollider::CheckCollisions): no separating axis among the 15 of two boxes, each axis
+// separating when |d . L| + tolerance > the boxes' projected radii on L (d: from one centre to the other). As in the
+// reference, the 9 edge-edge axes L = a x b are not normalised, so the tolerance weighs more on them and two nearly
+// parallel edges always separate.
+bool BoxesOverlap(const PlacedBox& a, const PlacedBox& b, double tolerance);
+// The largest tolerance at which BoxesOverlap still holds: the smallest of the 15 axes' radii less |d . L| (m;
+// negative when the boxes are apart).
+double OverlapDepth(const PlacedBox& a, const PlacedBox& b);
+
+// One player's links after the cycle (name, pose in the world).
+struct PlayerLinks {
+  Side side = Side::kLeft;
+  int unum = 0;
+  int robot_type = 0;
+  struct Link {
+    std::string name;
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();
+    Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  };
+  std::vector<Link> links;
+};
+
+// A pair that froze joints this cycle, for the log.
+struct SelfCollision {
+  Side side = Side::kLeft;
+  int unum = 0;
+  std::string link1, link2;
+  double depth = 0.0;               // OverlapDepth, m
+  std::vector<std::string> frozen;  // the joints that froze now
+};
+
+class SelfCollisionRule {
+ public:
+  // After a cycle: `mode` is the play mode the referee's cycle began with, `game_time` the game time after it.
+  // Returns the pairs that froze joints.
+  std::vector<SelfCollision> Update(PlayMode mode, double game_time, const std::vector<PlayerLinks>& players);
+  // Whether a command to `joint` (perceptor name) of that player turns into velocity 0 now.
+  bool Frozen(Side side, int unum, const std::string& joint) const;
+  // A player left: its joints' times go.
+  void Forget(Side side, int unum);
+
+  // The flag and every player's joint times, for league snapshots. A restore that fails changes nothing.
+  void Save(StateWriter& out) const;
+  void Restore(StateReader& in);
+
+ private:
+  struct Joint {
+    double frozen_at = 0.0;  // game time the joint froze
+    bool frozen = false;     // commands to it turn into 0 (until frozen_at + frozen time)
+  };
+  using Player = std::pair<Side, int>;
+  void Thaw(double game_time);
+  std::vector<std::string> Freeze(const Player& player, const NaoBox& a, const NaoBox& b, double game_time);
+
+  bool paused_ = true;
+  std::map<Player, std::map<std::string, Joint>> joints_;  // only joints that froze within the last 3 s
+};
+
+}  // namespace turf::simspark
