@@ -70,6 +70,7 @@ Session::Session(SessionOptions options, std::vector<std::string> robots, std::v
       park_(std::move(park)),
       robot_owner_(robots_.size(), -1),
       game_(options_.rules),
+      incapable_(IncapableRules{options_.rules.field_width}),
       field_(StandardField3d()),
       beam_rng_(StreamSeed(options_.seed, "simspark/beam")) {
   park_.resize(robots_.size());
@@ -118,6 +119,7 @@ void Session::LeaveTeam(Agent* agent) {
   game_.Leave(agent->side, agent->unum, agent->type);
   radio_.Forget(agent->side, agent->unum);
   self_collision_.Forget(agent->side, agent->unum);
+  incapable_.Forget(agent->side, agent->unum);
   agent->inited = false;
 }
 
@@ -392,10 +394,10 @@ void Session::Advance(WorldSnapshot snapshot) {
     if (near) touchers.push_back(Toucher{a.side, a.unum});
   }
   const bool touched = !touchers.empty();
-  const PlayMode mode = game_.play_mode();  // the mode the referee's cycle begins with
   const GameUpdate update = game_.Update(0.02, world.ball, touchers);
   if (update.place_ball) requests_.ball = BallMove{*update.place_ball, Eigen::Vector3d::Zero()};
-  CheckSelfCollisions(mode, world);
+  CheckSelfCollisions(world);
+  CheckIncapable(world);
   // Every player's seen parts, once per cycle for all agents' vision.
   players_.clear();
   for (const auto& [id, other] : agents_) {
@@ -418,7 +420,7 @@ void Session::Advance(WorldSnapshot snapshot) {
 }
 
 // The referee's self-collision rule on every player's links after the cycle; a note for each freeze.
-void Session::CheckSelfCollisions(PlayMode mode, const WorldSnapshot& world) {
+void Session::CheckSelfCollisions(const WorldSnapshot& world) {
   std::vector<PlayerLinks> players;
   for (const auto& [id, a] : agents_) {
     if (!a.inited || a.robot < 0) continue;
@@ -428,10 +430,36 @@ void Session::CheckSelfCollisions(PlayMode mode, const WorldSnapshot& world) {
     for (const RobotSnapshot::Link& l : robot->links) p.links.push_back({l.name, l.position, l.orientation});
     players.push_back(std::move(p));
   }
-  for (const SelfCollision& c : self_collision_.Update(mode, game_.game_time(), players))
+  for (const SelfCollision& c : self_collision_.Update(game_.paused(), game_.game_time(), players))
     notes_.push_back(fmt::format(
         "self-collision of player {} {}: {} and {} overlap by {:.3f} m; joints {} frozen for {} s", SideName(c.side),
         c.unum, c.link1, c.link2, c.depth, fmt::join(c.frozen, " "), kSelfCollisionFrozenTime));
+}
+
+// The referee's incapable foul: a player that cannot stand is held in the air, then put outside the field, as it
+// lies (torso orientation and joints kept).
+void Session::CheckIncapable(const WorldSnapshot& world) {
+  std::vector<PlayerTorso> torsos;
+  std::map<std::pair<Side, int>, const RobotSnapshot::Link*> torso_of;
+  std::map<std::pair<Side, int>, std::string> robot_of;
+  for (const auto& [id, a] : agents_) {
+    if (!a.inited || a.robot < 0) continue;
+    const RobotSnapshot* robot = world.Find(robots_[a.robot]);
+    const RobotSnapshot::Link* torso = robot != nullptr ? robot->FindLink("torso") : nullptr;
+    if (torso == nullptr) continue;
+    torsos.push_back({a.side, a.unum, torso->position});
+    torso_of[{a.side, a.unum}] = torso;
+    robot_of[{a.side, a.unum}] = robots_[a.robot];
+  }
+  for (const RefereeMove& m : incapable_.Update(game_.paused(), torsos, world.ball)) {
+    const std::pair<Side, int> who{m.side, m.unum};
+    requests_.moves.push_back({robot_of.at(who), m.position, torso_of.at(who)->orientation, false});
+    if (m.outside)
+      notes_.push_back(
+          fmt::format("player {} {} could not stand up (the referee's incapable foul): put outside the "
+                      "field at ({:.1f}, {:.1f})",
+                      SideName(m.side), m.unum, m.position.x(), m.position.y()));
+  }
 }
 
 // A command to a frozen joint is realized as velocity 0 (the reference's disabled hinge effector).
@@ -664,6 +692,7 @@ std::string Session::SaveLeague() const {
   out.Put(cycle_);
   game_.Save(out);
   self_collision_.Save(out);
+  incapable_.Save(out);
   radio_.Save(out);
   beam_rng_.Save(out);
   out.Tag(StateTag("SREQ"));
@@ -721,6 +750,8 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
   game.Restore(in);
   SelfCollisionRule self_collision = self_collision_;
   self_collision.Restore(in);
+  IncapableRule incapable = incapable_;
+  incapable.Restore(in);
   Radio radio = radio_;
   radio.Restore(in);
   Rng beam_rng;
@@ -814,6 +845,7 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
   cycle_ = cycle;
   game_ = std::move(game);
   self_collision_ = std::move(self_collision);
+  incapable_ = std::move(incapable);
   radio_ = std::move(radio);
   beam_rng_ = beam_rng;
   requests_ = std::move(requests);

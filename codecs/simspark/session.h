@@ -30,6 +30,7 @@
 #include "core/rng.h"
 #include "kernel/simspark/field3d.h"
 #include "kernel/simspark/game.h"
+#include "kernel/simspark/incapable.h"
 #include "kernel/simspark/radio.h"
 #include "kernel/simspark/self_collision.h"
 #include "kernel/simspark/types.h"
@@ -201,7 +202,8 @@ class Session {
   std::string Perceive(Agent* agent, const WorldSnapshot& world, bool touched);
   SeeItems See(const Agent& agent, const RobotSnapshot& robot, const WorldSnapshot& world);
   const std::vector<int>& HingeIndex(int type, const RobotSnapshot& robot);
-  void CheckSelfCollisions(PlayMode mode, const WorldSnapshot& world);
+  void CheckSelfCollisions(const WorldSnapshot& world);
+  void CheckIncapable(const WorldSnapshot& world);
   void ApplyFreezes(std::map<std::string, std::vector<JointVelocity>>* joints) const;
 
   SessionOptions options_;
@@ -216,6 +218,7 @@ class Session {
   Game game_;
   Radio radio_;
   SelfCollisionRule self_collision_;
+  IncapableRule incapable_;
   Field3dGeometry field_;
   Rng beam_rng_;
   WorldRequests requests_;

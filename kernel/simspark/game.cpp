@@ -10,6 +10,33 @@ namespace turf::simspark {
 
 namespace {
 
+// What a cycle beginning in `mode` does to the reference's paused flag (SoccerRuleAspect::Update's mode rules:
+// UpdateBeforeKickOff sets it, UpdateKickOff, UpdateKickIn, UpdateFreeKick, UpdateGoalKick, UpdateCornerKick and
+// UpdatePassMode clear it).
+bool PausedAfter(PlayMode mode, bool paused) {
+  switch (mode) {
+    case PlayMode::kBeforeKickOff:
+      return true;
+    case PlayMode::kKickOffLeft:
+    case PlayMode::kKickOffRight:
+    case PlayMode::kKickInLeft:
+    case PlayMode::kKickInRight:
+    case PlayMode::kFreeKickLeft:
+    case PlayMode::kFreeKickRight:
+    case PlayMode::kDirectFreeKickLeft:
+    case PlayMode::kDirectFreeKickRight:
+    case PlayMode::kGoalKickLeft:
+    case PlayMode::kGoalKickRight:
+    case PlayMode::kCornerKickLeft:
+    case PlayMode::kCornerKickRight:
+    case PlayMode::kPassLeft:
+    case PlayMode::kPassRight:
+      return false;
+    default:
+      return paused;
+  }
+}
+
 // Degrees into (-180, 180].
 double NormalizeDeg(double deg) {
   double r = std::remainder(deg, 360.0);
@@ -260,6 +287,7 @@ GameUpdate Game::Update(double dt, const Eigen::Vector3d& ball, const std::vecto
     idle_time_ += dt;
   }
   CheckHalfTime();  // SoccerRuleAspect::Update checks the time first
+  paused_ = PausedAfter(mode_, paused_);
   UpdateKickChecks(ball, touchers);
   const bool touched = !touchers.empty();
 
@@ -472,6 +500,7 @@ void Game::Save(StateWriter& out) const {
   out.Put<int32_t>(last_kick_off_half_);
   PutOptional(next_half_kick_off_, out, [&](Side side) { out.Put(side); });
   out.Put(kick_check_);
+  out.Put<uint8_t>(paused_ ? 1 : 0);
   PutOptional(kick_taker_, out, [&](const Toucher& t) {
     out.Put(t.side);
     out.Put<int32_t>(t.unum);
@@ -512,6 +541,7 @@ void Game::Restore(StateReader& in) {
     in.Fail("half out of range");
   if (in.Bool()) g.next_half_kick_off_ = in.Enum(static_cast<Side>(2));
   g.kick_check_ = in.Bool();
+  g.paused_ = in.Bool();
   if (in.Bool()) {
     Toucher t;
     t.side = in.Enum(static_cast<Side>(2));

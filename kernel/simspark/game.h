@@ -2,8 +2,10 @@
 // (shared/protocols/simspark.md: "Connection sequence", "Team composition",
 // "Play modes", beam effector). Pure: time arrives as dt, the ball as a
 // position, touches as the players touching it this cycle; the caller applies
-// what an update asks for (ball placement). Not modelled: the auto-referee's
-// positional fouls, offside, clearing players away from the ball, the pass
+// what an update asks for (ball placement). The automatic referee's player
+// rules that are modelled have files of their own (self_collision.h,
+// incapable.h). Not modelled: the positional fouls (crowding, illegal
+// defence, charging), offside, clearing players away from the ball, the pass
 // mode's score ban, holding the ball on a set piece's spot.
 //
 // Flow, as rcssserver3d's soccer plugin runs it with naosoccersim.rb's
@@ -172,6 +174,11 @@ class Game {
 
   PlayMode play_mode() const { return mode_; }
   double game_time() const { return game_time_; }
+  // The reference's "game paused" flag (GameStateAspect::IsPaused), under which its automatic referee judges no
+  // player (self_collision.h): set by a cycle that begins in BeforeKickOff, cleared by one that begins in a
+  // kick-off, kick-in, free kick, goal kick, corner kick or pass mode, kept by the others (PlayOn, goals,
+  // offside, GameOver); set at the start.
+  bool paused() const { return paused_; }
   // s in the current mode: game time since the mode began (a trainer's time
   // change shifts it); simulation time in BeforeKickOff and GameOver.
   double mode_time() const;
@@ -217,6 +224,7 @@ class Game {
   std::optional<Side> next_half_kick_off_;  // set by half 1's coin toss
   // The double-touch check: the kick's taker and the game time of the kick.
   bool kick_check_ = false;
+  bool paused_ = true;
   std::optional<Toucher> kick_taker_;
   double kick_time_ = 0.0;
   // The kick-off taker's team while it may not score (nullopt: may score).

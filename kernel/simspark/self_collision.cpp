@@ -36,32 +36,6 @@ std::vector<NaoBox> Boxes(bool toes) {
   return out;
 }
 
-// What the reference's mode rule does to its paused flag: BeforeKickOff sets it, the set pieces and pass modes
-// clear it, every other mode leaves it.
-bool PausedAfter(PlayMode mode, bool paused) {
-  switch (mode) {
-    case PlayMode::kBeforeKickOff:
-      return true;
-    case PlayMode::kKickOffLeft:
-    case PlayMode::kKickOffRight:
-    case PlayMode::kKickInLeft:
-    case PlayMode::kKickInRight:
-    case PlayMode::kFreeKickLeft:
-    case PlayMode::kFreeKickRight:
-    case PlayMode::kDirectFreeKickLeft:
-    case PlayMode::kDirectFreeKickRight:
-    case PlayMode::kGoalKickLeft:
-    case PlayMode::kGoalKickRight:
-    case PlayMode::kCornerKickLeft:
-    case PlayMode::kCornerKickRight:
-    case PlayMode::kPassLeft:
-    case PlayMode::kPassRight:
-      return false;
-    default:
-      return paused;
-  }
-}
-
 // The reference's margin on one axis: the boxes' projected radii on it less the distance of their centres along it.
 double Margin(const PlacedBox& a, const PlacedBox& b, const Eigen::Vector3d& axis) {
   double radii = 0.0;
@@ -105,11 +79,10 @@ double OverlapDepth(const PlacedBox& a, const PlacedBox& b) {
 
 bool BoxesOverlap(const PlacedBox& a, const PlacedBox& b, double tolerance) { return OverlapDepth(a, b) >= tolerance; }
 
-std::vector<SelfCollision> SelfCollisionRule::Update(PlayMode mode, double game_time,
+std::vector<SelfCollision> SelfCollisionRule::Update(bool paused, double game_time,
                                                      const std::vector<PlayerLinks>& players) {
   std::vector<SelfCollision> out;
-  paused_ = PausedAfter(mode, paused_);
-  if (paused_) {
+  if (paused) {
     joints_.clear();
     return out;
   }
@@ -179,7 +152,6 @@ void SelfCollisionRule::Forget(Side side, int unum) { joints_.erase({side, unum}
 
 void SelfCollisionRule::Save(StateWriter& out) const {
   out.Tag(StateTag("SCOL"));
-  out.Put<uint8_t>(paused_ ? 1 : 0);
   out.Put<uint64_t>(joints_.size());
   for (const auto& [player, joints] : joints_) {
     out.Put(player.first);
@@ -195,7 +167,6 @@ void SelfCollisionRule::Save(StateWriter& out) const {
 
 void SelfCollisionRule::Restore(StateReader& in) {
   in.Tag(StateTag("SCOL"));
-  const bool paused = in.Bool();
   std::map<Player, std::map<std::string, Joint>> restored;
   const size_t players = in.Count(kMaxPlayers);
   for (size_t i = 0; i < players && in.ok(); ++i) {
@@ -214,7 +185,6 @@ void SelfCollisionRule::Restore(StateReader& in) {
     }
   }
   if (!in.ok()) return;
-  paused_ = paused;
   joints_ = std::move(restored);
 }
 

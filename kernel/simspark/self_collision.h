@@ -10,9 +10,8 @@
 // none): for 1 s of game time a command to a frozen joint turns into velocity 0 (a joint nobody commands keeps its
 // velocity, as any hinge does). A joint cannot freeze again until 3 s after it froze.
 //
-// "Paused" is the reference's flag: set while the mode is BeforeKickOff, cleared by a kick-off, kick-in, free
-// kick, goal kick, corner kick or pass mode, kept by the others (PlayOn, goals, offside, GameOver); paused clears
-// every freeze. Times are game time (it stands still in BeforeKickOff and GameOver).
+// While the game is paused (the reference's flag, Game::paused()) nothing is judged and every freeze ends. Times
+// are game time (it stands still in BeforeKickOff and GameOver).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -81,15 +80,14 @@ struct SelfCollision {
 
 class SelfCollisionRule {
  public:
-  // After a cycle: `mode` is the play mode the referee's cycle began with, `game_time` the game time after it.
-  // Returns the pairs that froze joints.
-  std::vector<SelfCollision> Update(PlayMode mode, double game_time, const std::vector<PlayerLinks>& players);
+  // After a cycle: the game's paused flag and game time after it. Returns the pairs that froze joints.
+  std::vector<SelfCollision> Update(bool paused, double game_time, const std::vector<PlayerLinks>& players);
   // Whether a command to `joint` (perceptor name) of that player turns into velocity 0 now.
   bool Frozen(Side side, int unum, const std::string& joint) const;
   // A player left: its joints' times go.
   void Forget(Side side, int unum);
 
-  // The flag and every player's joint times, for league snapshots. A restore that fails changes nothing.
+  // Every player's joint times, for league snapshots. A restore that fails changes nothing.
   void Save(StateWriter& out) const;
   void Restore(StateReader& in);
 
@@ -102,7 +100,6 @@ class SelfCollisionRule {
   void Thaw(double game_time);
   std::vector<std::string> Freeze(const Player& player, const NaoBox& a, const NaoBox& b, double game_time);
 
-  bool paused_ = true;
   std::map<Player, std::map<std::string, Joint>> joints_;  // only joints that froze within the last 3 s
 };
 

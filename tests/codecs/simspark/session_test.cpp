@@ -438,6 +438,44 @@ TEST(SessionEffectors, SelfCollisionFreezesTheLimbsCommandsForOneSecond) {
   EXPECT_NEAR(frozen_cycles, 50, 4) << "cycles (of 20 ms) the joint stayed frozen";
 }
 
+// The referee's incapable foul (kernel/simspark/incapable.h): a field player lying for more than 15 s of PlayOn is
+// held in the air for 0.5 s, then put outside the field as it lies (its torso orientation kept), with a note.
+TEST(SessionReferee, APlayerLyingFifteenSecondsIsPutOutsideTheField) {
+  Harness h(1);
+  h.JoinAndCycle("Alpha", 2);
+  h.session.Trainer("(playMode KickOff_Left)", TrainerRole::kOperator);
+  h.Cycle();
+  FakeWorld::Robot& robot = h.world.robot("nao_1");
+  robot.position = Eigen::Vector3d(1.0, 3.0, 0.1);
+  robot.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()));
+  const Eigen::Quaterniond lying = robot.orientation;
+  int cycles = 0;
+  int held = 0;
+  const RobotMove* out = nullptr;
+  WorldRequests taken;
+  for (; cycles < 1000 && out == nullptr; ++cycles) {
+    h.Cycle(&taken);
+    const RobotMove* m = FindMove(taken, "nao_1");
+    if (m == nullptr) continue;
+    EXPECT_TRUE(m->orientation.isApprox(lying)) << "moved as it lies";
+    if (m->position.z() > 0.9) {
+      ++held;
+      EXPECT_NEAR(m->position.x(), 1.0, 1e-9);
+    } else {
+      out = m;
+    }
+  }
+  ASSERT_NE(out, nullptr);
+  EXPECT_EQ(held, 25);
+  EXPECT_NEAR(out->position.x(), -0.6 * (7 - 2), 1e-9);
+  EXPECT_NEAR(out->position.y(), -10.5, 1e-9) << "the ball at the centre (y = 0): the right touch line's side";
+  EXPECT_NEAR(out->position.z(), 0.4, 1e-9);
+  const std::vector<std::string> notes = h.session.TakeNotes();
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_TRUE(Contains(notes[0], "player left 2 could not stand up")) << notes[0];
+  EXPECT_NEAR(cycles, 751 + 26 + 1, 2) << "15 s on the ground, 0.5 s held (one cycle of request latency)";
+}
+
 TEST(SessionEffectors, HingeVelocitiesByModelJointNameClampedForType0) {
   Harness h(1);
   const int a = h.Join("Alpha", 1);

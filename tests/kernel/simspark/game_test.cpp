@@ -27,6 +27,45 @@ int CyclesUntilModeChange(Game* game, const Eigen::Vector3d& ball, int max, Game
   return max;
 }
 
+// The reference's paused flag (GameStateAspect::IsPaused): set at the start and by a cycle in BeforeKickOff,
+// cleared by a cycle in a kick-off or another set piece, kept by PlayOn and goals; in snapshots.
+TEST(GamePaused, SetByBeforeKickOffClearedBySetPiecesKeptByPlayOn) {
+  Game game;
+  ASSERT_TRUE(game.Init("Alpha", 1, 0).ok);
+  EXPECT_TRUE(game.paused());
+  game.SetPlayMode(PlayMode::kPlayOn);
+  game.Update(kDt, kCentre, false);
+  EXPECT_TRUE(game.paused()) << "PlayOn keeps the flag as it was";
+  game.SetPlayMode(PlayMode::kKickOffLeft);
+  game.Update(kDt, kCentre, false);
+  EXPECT_FALSE(game.paused());
+  game.SetPlayMode(PlayMode::kPlayOn);
+  game.Update(kDt, kCentre, false);
+  EXPECT_FALSE(game.paused());
+  game.SetPlayMode(PlayMode::kGoalLeft);
+  game.Update(kDt, kCentre, false);
+  EXPECT_FALSE(game.paused()) << "a goal keeps it";
+  game.SetPlayMode(PlayMode::kBeforeKickOff);
+  game.Update(kDt, kCentre, false);
+  EXPECT_TRUE(game.paused());
+  for (PlayMode m : {PlayMode::kKickInRight, PlayMode::kCornerKickLeft, PlayMode::kGoalKickRight,
+                     PlayMode::kFreeKickLeft, PlayMode::kDirectFreeKickRight, PlayMode::kPassLeft}) {
+    game.SetPlayMode(PlayMode::kBeforeKickOff);
+    game.Update(kDt, kCentre, false);
+    game.SetPlayMode(m);
+    game.Update(kDt, kCentre, false);
+    EXPECT_FALSE(game.paused()) << PlayModeName(m);
+  }
+  StateWriter out;
+  game.Save(out);
+  const std::string bytes = out.Take();
+  Game copy;
+  StateReader in(bytes);
+  copy.Restore(in);
+  ASSERT_TRUE(in.ok()) << in.error();
+  EXPECT_FALSE(copy.paused());
+}
+
 TEST(GameInit, FirstTeamLeftSecondRightThirdRejected) {
   Game game;
   InitResult a = game.Init("Alpha", 1, 0);

@@ -109,11 +109,8 @@ const std::vector<std::string> kRightArmAndLeg = {"raj1", "raj2", "raj3", "raj4"
 
 TEST(SelfCollisionRule, ArmInsideTheThighFreezesThatArmAndLeg) {
   SelfCollisionRule rule;
-  const std::vector<SelfCollision> c = rule.Update(PlayMode::kPlayOn, 10.0, {ArmInThigh(true)});
-  // PlayOn keeps the flag, which starts paused (the reference's GameStateAspect): nothing until a kick-off.
-  EXPECT_TRUE(c.empty());
-  rule.Update(PlayMode::kKickOffLeft, 10.02, {ArmInThigh(false)});
-  const std::vector<SelfCollision> now = rule.Update(PlayMode::kPlayOn, 10.04, {ArmInThigh(true)});
+  EXPECT_TRUE(rule.Update(false, 10.0, {ArmInThigh(false)}).empty()) << "arm out of the thigh";
+  const std::vector<SelfCollision> now = rule.Update(false, 10.02, {ArmInThigh(true)});
   ASSERT_EQ(now.size(), 1u);
   EXPECT_EQ(now[0].link1, "rlowerarm");
   EXPECT_EQ(now[0].link2, "rthigh");
@@ -127,14 +124,13 @@ TEST(SelfCollisionRule, ArmInsideTheThighFreezesThatArmAndLeg) {
 // Frozen for 1 s of game time, then free; no new freeze until 3 s after the first, however long the overlap lasts.
 TEST(SelfCollisionRule, OneSecondFrozenThenTwoSecondsImmune) {
   SelfCollisionRule rule;
-  rule.Update(PlayMode::kKickOffLeft, 0.0, {});
   const double frozen_at = 5.0;
-  ASSERT_EQ(rule.Update(PlayMode::kPlayOn, frozen_at, {ArmInThigh(true)}).size(), 1u);
+  ASSERT_EQ(rule.Update(false, frozen_at, {ArmInThigh(true)}).size(), 1u);
   int cycles_frozen = 0;
   double refrozen_at = -1.0;
   for (int i = 1; i < 200 && refrozen_at < 0; ++i) {
     const double t = frozen_at + 0.02 * i;
-    if (!rule.Update(PlayMode::kPlayOn, t, {ArmInThigh(true)}).empty()) {
+    if (!rule.Update(false, t, {ArmInThigh(true)}).empty()) {
       refrozen_at = t;
     } else if (rule.Frozen(Side::kLeft, 2, "raj3")) {
       ++cycles_frozen;
@@ -144,20 +140,19 @@ TEST(SelfCollisionRule, OneSecondFrozenThenTwoSecondsImmune) {
   EXPECT_NEAR(refrozen_at - frozen_at, 3.02, 1e-6) << "free to freeze again only after more than 3 s";
 }
 
-TEST(SelfCollisionRule, BeforeKickOffPausesAndClearsEveryFreeze) {
+// While the game is paused (Game::paused(), tested in game_test.cpp) nothing is judged and every freeze ends.
+TEST(SelfCollisionRule, PausedJudgesNothingAndEndsEveryFreeze) {
   SelfCollisionRule rule;
-  rule.Update(PlayMode::kKickOffRight, 1.0, {});
-  ASSERT_EQ(rule.Update(PlayMode::kPlayOn, 1.02, {ArmInThigh(true)}).size(), 1u);
-  EXPECT_TRUE(rule.Update(PlayMode::kBeforeKickOff, 1.04, {ArmInThigh(true)}).empty());
+  EXPECT_TRUE(rule.Update(true, 1.0, {ArmInThigh(true)}).empty());
+  ASSERT_EQ(rule.Update(false, 1.02, {ArmInThigh(true)}).size(), 1u);
+  EXPECT_TRUE(rule.Frozen(Side::kLeft, 2, "raj1"));
+  EXPECT_TRUE(rule.Update(true, 1.04, {ArmInThigh(true)}).empty());
   EXPECT_FALSE(rule.Frozen(Side::kLeft, 2, "raj1"));
-  // Still paused in PlayOn after BeforeKickOff (the flag is the reference's, not the mode's).
-  EXPECT_TRUE(rule.Update(PlayMode::kPlayOn, 1.06, {ArmInThigh(true)}).empty());
-  EXPECT_EQ(rule.Update(PlayMode::kGoalKickLeft, 1.08, {ArmInThigh(true)}).size(), 1u) << "set pieces unpause";
+  EXPECT_EQ(rule.Update(false, 1.06, {ArmInThigh(true)}).size(), 1u) << "and may freeze again at once";
 }
 
 TEST(SelfCollisionRule, PairsTheReferenceNeverTestsFreezeNothing) {
   SelfCollisionRule rule;
-  rule.Update(PlayMode::kKickOffLeft, 0.0, {});
   PlayerLinks p = ArmInThigh(false);
   const auto thigh = std::find_if(p.links.begin(), p.links.end(), [](const auto& l) { return l.name == "rthigh"; });
   ASSERT_NE(thigh, p.links.end());
@@ -167,13 +162,12 @@ TEST(SelfCollisionRule, PairsTheReferenceNeverTestsFreezeNothing) {
   const PlacedBox torso = Box(p.links[0].position, p.links[0].orientation.toRotationMatrix(), NaoBoxes(1)[0].half);
   const PlacedBox in = Box(thigh->position, thigh->orientation.toRotationMatrix(), {0.035, 0.035, 0.07});
   ASSERT_GE(OverlapDepth(torso, in), kSelfCollisionTolerance) << "deep enough to count if the pair were tested";
-  EXPECT_TRUE(rule.Update(PlayMode::kPlayOn, 0.02, {p}).empty());
+  EXPECT_TRUE(rule.Update(false, 0.02, {p}).empty());
 }
 
 TEST(SelfCollisionRule, SnapshotRestoresFreezesAndRefusesDamage) {
   SelfCollisionRule rule;
-  rule.Update(PlayMode::kKickOffLeft, 0.0, {});
-  ASSERT_EQ(rule.Update(PlayMode::kPlayOn, 2.0, {ArmInThigh(true)}).size(), 1u);
+  ASSERT_EQ(rule.Update(false, 2.0, {ArmInThigh(true)}).size(), 1u);
   StateWriter out;
   rule.Save(out);
   const std::string bytes = out.Take();
@@ -184,8 +178,8 @@ TEST(SelfCollisionRule, SnapshotRestoresFreezesAndRefusesDamage) {
   for (const std::string& j : kRightArmAndLeg) EXPECT_TRUE(copy.Frozen(Side::kLeft, 2, j));
   // The same future: thawed at the same cycle.
   for (double t = 2.02; t < 3.1; t += 0.02) {
-    rule.Update(PlayMode::kPlayOn, t, {});
-    copy.Update(PlayMode::kPlayOn, t, {});
+    rule.Update(false, t, {});
+    copy.Update(false, t, {});
     ASSERT_EQ(rule.Frozen(Side::kLeft, 2, "raj1"), copy.Frozen(Side::kLeft, 2, "raj1")) << t;
   }
   // Truncated: refused, the rule as it was.
