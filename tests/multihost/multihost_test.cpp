@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -63,6 +64,30 @@ class MultiHost : public ::testing::Test {
     ASSERT_TRUE(moved.has_value());
     EXPECT_GT(*moved, 0.5) << grsim->Log();
     EXPECT_TRUE(sim->Running() && grsim->Running() && vision->Running());
+  }
+
+  // A division B match across the link, the team's sockets in the bridge host; its vision stream flows.
+  struct Running {
+    Running(MultiHost& t, const MatchSetup& setup)
+        : match(setup),
+          vision_client(t.Vision(match.vision_port)),
+          team(t.Team()),
+          sim(match.Sim()),
+          grsim(match.Grsim()),
+          vision(match.Vision()) {}
+    Match match;
+    std::unique_ptr<VisionClient> vision_client;
+    std::unique_ptr<UdpSocket> team;
+    std::unique_ptr<Process> sim, grsim, vision;
+    // Drives blue robot 1 across the link; how far it moved (m) in the vision stream.
+    std::optional<double> Drive() {
+      return DriveBlueRobot(*team, "127.0.0.1", match.grsim_port, *vision_client, 1, -3.0, 2.0, 600ms);
+    }
+  };
+  std::unique_ptr<Running> StartDivisionB() {
+    auto r = std::make_unique<Running>(*this, MatchSetup{TestDomain(), prefix, hosts.get(), {}, "ssl_div_b"});
+    EXPECT_TRUE(r->vision_client->WaitForStream(2, 15s)) << r->vision->Log();
+    return r;
   }
 
   std::unique_ptr<TwoHosts> hosts;  // outlives the processes of the test body
@@ -141,14 +166,10 @@ TEST_F(MultiHost, DiscoveryServerWorksWithMulticastBlocked) {
 // The link goes down for 3 s and comes back: vision resumes and commands move
 // robots again, with every process as it was.
 TEST_F(MultiHost, LinkDownForThreeSecondsBothSidesRecover) {
-  Match match({TestDomain(), prefix, hosts.get(), {}, "ssl_div_b"});
-  auto vision_client = Vision(match.vision_port);
-  auto team = Team();
-  auto sim = match.Sim();
-  auto grsim = match.Grsim();
-  auto vision = match.Vision();
-  ASSERT_TRUE(vision_client->WaitForStream(2, 15s)) << vision->Log();
-  const auto before = DriveBlueRobot(*team, "127.0.0.1", match.grsim_port, *vision_client, 1, -3.0, 2.0, 600ms);
+  const std::unique_ptr<Running> m = StartDivisionB();
+  ASSERT_FALSE(HasFailure());
+  VisionClient* vision_client = m->vision_client.get();
+  const auto before = m->Drive();
   ASSERT_TRUE(before.has_value());
   ASSERT_GT(*before, 0.2);
 
@@ -161,26 +182,22 @@ TEST_F(MultiHost, LinkDownForThreeSecondsBothSidesRecover) {
   EXPECT_LT(*vision_client->last_detection - down, 300ms);
 
   const auto resumed = vision_client->UntilDetection(10s);
-  ASSERT_TRUE(resumed.has_value()) << vision->Log();
+  ASSERT_TRUE(resumed.has_value()) << m->vision->Log();
   RecordProperty("vision_after_link_up_ms", static_cast<int>(resumed->count()));
   std::printf("vision resumed %lld ms after the link came back\n", static_cast<long long>(resumed->count()));
-  const auto after = DriveBlueRobot(*team, "127.0.0.1", match.grsim_port, *vision_client, 1, -3.0, 2.0, 600ms);
+  const auto after = m->Drive();
   ASSERT_TRUE(after.has_value());
-  EXPECT_GT(*after, 0.2) << grsim->Log();
-  EXPECT_TRUE(sim->Running() && grsim->Running() && vision->Running());
+  EXPECT_GT(*after, 0.2) << m->grsim->Log();
+  EXPECT_TRUE(m->sim->Running() && m->grsim->Running() && m->vision->Running());
 }
 
 // A lossy link (venue Wi-Fi, a busy switch): 5 % of the UDP packets crossing it are lost each way. DDS repairs
 // what it can, so vision keeps flowing (no camera misses more than 30 frames in a row, half a second) and grSim
 // commands still move robots.
 TEST_F(MultiHost, FivePercentLossOnTheLinkVisionAndCommandsKeepFlowing) {
-  Match match({TestDomain(), prefix, hosts.get(), {}, "ssl_div_b"});
-  auto vision_client = Vision(match.vision_port);
-  auto team = Team();
-  auto sim = match.Sim();
-  auto grsim = match.Grsim();
-  auto vision = match.Vision();
-  ASSERT_TRUE(vision_client->WaitForStream(2, 15s)) << vision->Log();
+  const std::unique_ptr<Running> m = StartDivisionB();
+  ASSERT_FALSE(HasFailure());
+  VisionClient* vision_client = m->vision_client.get();
   ASSERT_TRUE(hosts->DropUdp(5)) << hosts->error();
   vision_client->ResetGaps();
   const int before = vision_client->detections;
@@ -190,12 +207,12 @@ TEST_F(MultiHost, FivePercentLossOnTheLinkVisionAndCommandsKeepFlowing) {
   std::printf("5%% loss: %ld packets dropped, %d detections, longest gap %u frames\n", dropped,
               vision_client->detections - before, vision_client->longest_gap);
   EXPECT_GT(dropped, 0) << "the loss rule dropped nothing: the test tested nothing";
-  EXPECT_GT(vision_client->detections - before, 0) << vision->Log();
-  EXPECT_LE(vision_client->longest_gap, 30u) << vision->Log();
-  const auto moved = DriveBlueRobot(*team, "127.0.0.1", match.grsim_port, *vision_client, 1, -3.0, 2.0, 600ms);
+  EXPECT_GT(vision_client->detections - before, 0) << m->vision->Log();
+  EXPECT_LE(vision_client->longest_gap, 30u) << m->vision->Log();
+  const auto moved = m->Drive();
   ASSERT_TRUE(moved.has_value());
-  EXPECT_GT(*moved, 0.2) << grsim->Log();
-  EXPECT_TRUE(sim->Running() && grsim->Running() && vision->Running());
+  EXPECT_GT(*moved, 0.2) << m->grsim->Log();
+  EXPECT_TRUE(m->sim->Running() && m->grsim->Running() && m->vision->Running());
 }
 
 }  // namespace

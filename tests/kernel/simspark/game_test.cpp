@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/state_round_trip.h"
+
 namespace turf::simspark {
 namespace {
 
@@ -56,13 +58,8 @@ TEST(GamePaused, SetByBeforeKickOffClearedBySetPiecesKeptByPlayOn) {
     game.Update(kDt, kCentre, false);
     EXPECT_FALSE(game.paused()) << PlayModeName(m);
   }
-  StateWriter out;
-  game.Save(out);
-  const std::string bytes = out.Take();
   Game copy;
-  StateReader in(bytes);
-  copy.Restore(in);
-  ASSERT_TRUE(in.ok()) << in.error();
+  ASSERT_EQ(test::RestoreAll(test::Saved(game), &copy), "");
   EXPECT_FALSE(copy.paused());
 }
 
@@ -663,21 +660,12 @@ Game GameInPlay() {
   return game;
 }
 
-std::string Saved(const Game& game) {
-  StateWriter out;
-  game.Save(out);
-  return out.Take();
-}
-
 TEST(GameSnapshot, RoundTripKeepsModeScoreTimesAndTeams) {
   const Game played = GameInPlay();
   ASSERT_EQ(played.play_mode(), PlayMode::kPlayOn);
-  const std::string bytes = Saved(played);
+  const std::string bytes = test::Saved(played);
   Game game;
-  StateReader in(bytes);
-  game.Restore(in);
-  ASSERT_TRUE(in.ok()) << in.error();
-  EXPECT_TRUE(in.AtEnd());
+  ASSERT_EQ(test::RestoreAll(bytes, &game), "");
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
   EXPECT_EQ(game.score(Side::kLeft), 2);
   EXPECT_EQ(game.score(Side::kRight), 1);
@@ -687,7 +675,7 @@ TEST(GameSnapshot, RoundTripKeepsModeScoreTimesAndTeams) {
   EXPECT_EQ(game.TeamName(Side::kLeft), "Alpha");
   EXPECT_EQ(game.TeamName(Side::kRight), "Beta");
   EXPECT_EQ(game.PlayerCount(Side::kLeft), 2);
-  EXPECT_EQ(Saved(game), bytes);
+  EXPECT_EQ(test::Saved(game), bytes);
   // Both go on the same way: the taker's double touch, then the free kick's timeout.
   Game original = played;
   const std::vector<Toucher> taker{{Side::kLeft, 1}};
@@ -697,21 +685,21 @@ TEST(GameSnapshot, RoundTripKeepsModeScoreTimesAndTeams) {
     ASSERT_EQ(a.play_mode_changed, b.play_mode_changed) << i;
     ASSERT_EQ(a.place_ball.has_value(), b.place_ball.has_value()) << i;
   }
-  EXPECT_EQ(Saved(game), Saved(original));
+  EXPECT_EQ(test::Saved(game), test::Saved(original));
   // The taken team and number are kept: a third Alpha number 2 is refused.
   EXPECT_FALSE(game.Init("Alpha", 2, 0).ok);
 }
 
 TEST(GameSnapshot, TruncatedOrOutOfRangeChangesNothing) {
-  const std::string bytes = Saved(GameInPlay());
+  const std::string bytes = test::Saved(GameInPlay());
   Game game;
   ASSERT_TRUE(game.Init("Gamma", 3, 0).ok);
-  const std::string before = Saved(game);
+  const std::string before = test::Saved(game);
   for (size_t cut = 0; cut < bytes.size(); ++cut) {
     StateReader in(std::string_view(bytes).substr(0, cut));
     game.Restore(in);
     ASSERT_FALSE(in.ok()) << cut;
-    ASSERT_EQ(Saved(game), before) << cut;
+    ASSERT_EQ(test::Saved(game), before) << cut;
   }
   // The play mode (right after the two teams) past the last one.
   std::string bad = bytes;
@@ -722,7 +710,7 @@ TEST(GameSnapshot, TruncatedOrOutOfRangeChangesNothing) {
   StateReader in(bad);
   game.Restore(in);
   EXPECT_STREQ(in.error(), "enum value out of range");
-  EXPECT_EQ(Saved(game), before);
+  EXPECT_EQ(test::Saved(game), before);
 }
 
 // turf's rule (game.h): a side whose last player left is free for a new team;

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/state_round_trip.h"
+
 namespace turf::simspark {
 namespace {
 
@@ -109,19 +111,13 @@ TEST(IncapableRule, PausedJudgesNothingAndEndsTheCounts) {
 TEST(IncapableRule, SnapshotContinuesTheCountsAndRefusesDamage) {
   IncapableRule rule;
   for (int i = 0; i < 740; ++i) rule.Update(false, {At(0, 0, 0.1)}, kBall);
-  StateWriter out;
-  rule.Save(out);
-  const std::string bytes = out.Take();
+  const std::string bytes = test::Saved(rule);
   IncapableRule copy;
-  StateReader in(bytes);
-  copy.Restore(in);
-  ASSERT_TRUE(in.ok()) << in.error();
+  ASSERT_EQ(test::RestoreAll(bytes, &copy), "");
   EXPECT_EQ(CyclesUntilMoved(&copy, At(0, 0, 0.1), 100), 11);
   for (size_t n = 0; n < bytes.size(); ++n) {
     IncapableRule fresh;
-    StateReader cut(std::string_view(bytes).substr(0, n));
-    fresh.Restore(cut);
-    EXPECT_FALSE(cut.ok()) << n;
+    EXPECT_NE(test::RestoreAll(bytes.substr(0, n), &fresh), "") << n;
     EXPECT_EQ(CyclesUntilMoved(&fresh, At(0, 0, 0.1), 100), 0) << "a refused snapshot changes nothing";
   }
 }

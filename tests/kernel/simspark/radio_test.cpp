@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/state_round_trip.h"
+
 namespace turf::simspark {
 namespace {
 
@@ -119,14 +121,9 @@ TEST(RadioSnapshot, MessagesInFlightAndCapacitiesRoundTrip) {
   radio.Say(Left(1, 0, 0), "one", 1.0);
   radio.Deliver(Left(2, 1, 0), 1);  // spends listener 2's teammate budget
   radio.Say(Right(3, 5, 5), "three", 1.0);
-  StateWriter out;
-  radio.Save(out);
-  const std::string bytes = out.Take();
+  const std::string bytes = test::Saved(radio);
   Radio copy;
-  StateReader in(bytes);
-  copy.Restore(in);
-  ASSERT_TRUE(in.ok()) << in.error();
-  EXPECT_TRUE(in.AtEnd());
+  ASSERT_EQ(test::RestoreAll(bytes, &copy), "");
   // Listener 2 spent its budget at cycle 1: hears only the opponent at cycle 2.
   for (Radio* r : {&radio, &copy}) {
     const std::vector<Heard> heard = r->Deliver(Left(2, 1, 0), 2);
@@ -134,10 +131,8 @@ TEST(RadioSnapshot, MessagesInFlightAndCapacitiesRoundTrip) {
     EXPECT_EQ(heard[0].message, "three");
   }
   // Truncated: refused, the radio unchanged.
-  StateReader cut(std::string_view(bytes).substr(0, bytes.size() - 1));
   Radio empty;
-  empty.Restore(cut);
-  EXPECT_FALSE(cut.ok());
+  EXPECT_NE(test::RestoreAll(bytes.substr(0, bytes.size() - 1), &empty), "");
   EXPECT_TRUE(empty.Deliver(Left(1, 0, 0), 1).empty());
 }
 

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/state_round_trip.h"
+
 namespace turf::simspark {
 namespace {
 
@@ -168,13 +170,9 @@ TEST(SelfCollisionRule, PairsTheReferenceNeverTestsFreezeNothing) {
 TEST(SelfCollisionRule, SnapshotRestoresFreezesAndRefusesDamage) {
   SelfCollisionRule rule;
   ASSERT_EQ(rule.Update(false, 2.0, {ArmInThigh(true)}).size(), 1u);
-  StateWriter out;
-  rule.Save(out);
-  const std::string bytes = out.Take();
+  const std::string bytes = test::Saved(rule);
   SelfCollisionRule copy;
-  StateReader in(bytes);
-  copy.Restore(in);
-  ASSERT_TRUE(in.ok()) << in.error();
+  ASSERT_EQ(test::RestoreAll(bytes, &copy), "");
   for (const std::string& j : kRightArmAndLeg) EXPECT_TRUE(copy.Frozen(Side::kLeft, 2, j));
   // The same future: thawed at the same cycle.
   for (double t = 2.02; t < 3.1; t += 0.02) {
@@ -185,9 +183,7 @@ TEST(SelfCollisionRule, SnapshotRestoresFreezesAndRefusesDamage) {
   // Truncated: refused, the rule as it was.
   for (size_t n = 0; n < bytes.size(); ++n) {
     SelfCollisionRule fresh;
-    StateReader cut(std::string_view(bytes).substr(0, n));
-    fresh.Restore(cut);
-    EXPECT_FALSE(cut.ok()) << n;
+    EXPECT_NE(test::RestoreAll(bytes.substr(0, n), &fresh), "") << n;
     EXPECT_FALSE(fresh.Frozen(Side::kLeft, 2, "raj1")) << n;
   }
 }
