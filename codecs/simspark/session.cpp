@@ -118,8 +118,6 @@ void Session::LeaveTeam(Agent* agent) {
   if (!agent->inited) return;
   game_.Leave(agent->side, agent->unum, agent->type);
   radio_.Forget(agent->side, agent->unum);
-  self_collision_.Forget(agent->side, agent->unum);
-  incapable_.Forget(agent->side, agent->unum);
   agent->inited = false;
 }
 

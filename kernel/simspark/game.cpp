@@ -11,29 +11,19 @@ namespace turf::simspark {
 namespace {
 
 // What a cycle beginning in `mode` does to the reference's paused flag (SoccerRuleAspect::Update's mode rules:
-// UpdateBeforeKickOff sets it, UpdateKickOff, UpdateKickIn, UpdateFreeKick, UpdateGoalKick, UpdateCornerKick and
-// UpdatePassMode clear it).
+// UpdateBeforeKickOff and UpdateGoal set it; UpdatePlayOn, UpdateGameOver and the kick-off, kick-in, free kick,
+// goal kick, corner kick and pass modes' rules clear it; UpdateOffside leaves it).
 bool PausedAfter(PlayMode mode, bool paused) {
   switch (mode) {
     case PlayMode::kBeforeKickOff:
+    case PlayMode::kGoalLeft:
+    case PlayMode::kGoalRight:
       return true;
-    case PlayMode::kKickOffLeft:
-    case PlayMode::kKickOffRight:
-    case PlayMode::kKickInLeft:
-    case PlayMode::kKickInRight:
-    case PlayMode::kFreeKickLeft:
-    case PlayMode::kFreeKickRight:
-    case PlayMode::kDirectFreeKickLeft:
-    case PlayMode::kDirectFreeKickRight:
-    case PlayMode::kGoalKickLeft:
-    case PlayMode::kGoalKickRight:
-    case PlayMode::kCornerKickLeft:
-    case PlayMode::kCornerKickRight:
-    case PlayMode::kPassLeft:
-    case PlayMode::kPassRight:
-      return false;
-    default:
+    case PlayMode::kOffsideLeft:
+    case PlayMode::kOffsideRight:
       return paused;
+    default:
+      return false;
   }
 }
 

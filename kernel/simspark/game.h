@@ -175,9 +175,8 @@ class Game {
   PlayMode play_mode() const { return mode_; }
   double game_time() const { return game_time_; }
   // The reference's "game paused" flag (GameStateAspect::IsPaused), under which its automatic referee judges no
-  // player (self_collision.h): set by a cycle that begins in BeforeKickOff, cleared by one that begins in a
-  // kick-off, kick-in, free kick, goal kick, corner kick or pass mode, kept by the others (PlayOn, goals,
-  // offside, GameOver); set at the start.
+  // player (self_collision.h, incapable.h): set by a cycle that begins in BeforeKickOff or a goal, kept by one in
+  // an offside mode, cleared by every other; set at the start.
   bool paused() const { return paused_; }
   // s in the current mode: game time since the mode began (a trainer's time
   // change shifts it); simulation time in BeforeKickOff and GameOver.

@@ -53,6 +53,7 @@ std::vector<RefereeMove> IncapableRule::Update(bool paused, const std::vector<Pl
     return moves;
   }
   for (const PlayerTorso& p : players) {
+    if (!p.position.allFinite()) continue;  // a bad sample from elsewhere: nothing counted, nobody moved
     Counts& c = counts_[{p.side, p.unum}];
     Count(p, &c);
     // A foul being enforced is not judged again (HaveEnforceableFoul).
@@ -71,8 +72,6 @@ std::vector<RefereeMove> IncapableRule::Update(bool paused, const std::vector<Pl
   }
   return moves;
 }
-
-void IncapableRule::Forget(Side side, int unum) { counts_.erase({side, unum}); }
 
 void IncapableRule::Save(StateWriter& out) const {
   out.Tag(StateTag("SINC"));

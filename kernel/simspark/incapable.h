@@ -13,8 +13,12 @@
 // y = W/2 + 0.5 on the touch line's side away from the ball. Its counts start again as if it had stood for 5 s.
 // While paused every count and foul ends.
 //
-// Not modelled: the reference's crowding and illegal-defence fouls, which its AnalyseFouls tests first, and its
-// GetSafeReposition, which nudges the outside spot away from other robots standing on it.
+// The counts are kept per side and number, also after a player leaves (the reference's arrays). A torso position
+// that is not finite counts nothing and moves nobody.
+//
+// Not modelled: the reference's other fouls that come first or reset a player's counts (charging, illegal
+// defence, touching; crowding is off in naosoccersim.rb), and its GetSafeReposition, which nudges the outside spot
+// away from other robots standing on it.
 #pragma once
 
 #include <Eigen/Core>
@@ -57,8 +61,6 @@ class IncapableRule {
 
   // After a cycle; returns the moves for the players held or put outside now.
   std::vector<RefereeMove> Update(bool paused, const std::vector<PlayerTorso>& players, const Eigen::Vector3d& ball);
-  // A player left: its counts go.
-  void Forget(Side side, int unum);
 
   // Every player's counts, for league snapshots. A restore that fails changes nothing.
   void Save(StateWriter& out) const;

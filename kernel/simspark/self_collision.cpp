@@ -91,7 +91,9 @@ std::vector<SelfCollision> SelfCollisionRule::Update(bool paused, double game_ti
     for (const NaoBox& box : NaoBoxes(p.robot_type)) {
       const auto link =
           std::find_if(p.links.begin(), p.links.end(), [&](const PlayerLinks::Link& l) { return l.name == box.link; });
-      if (link != p.links.end())
+      // A pose that is not finite (a bad sample from elsewhere) is no box: it neither collides nor freezes.
+      if (link != p.links.end() && link->position.allFinite() && link->orientation.coeffs().allFinite() &&
+          link->orientation.norm() > 1e-9)
         boxes.push_back({&box, {link->position, link->orientation.normalized().toRotationMatrix(), box.half}});
     }
     for (size_t i = 0; i < boxes.size(); ++i) {
@@ -147,8 +149,6 @@ bool SelfCollisionRule::Frozen(Side side, int unum, const std::string& joint) co
   const auto it = player->second.find(joint);
   return it != player->second.end() && it->second.frozen;
 }
-
-void SelfCollisionRule::Forget(Side side, int unum) { joints_.erase({side, unum}); }
 
 void SelfCollisionRule::Save(StateWriter& out) const {
   out.Tag(StateTag("SCOL"));

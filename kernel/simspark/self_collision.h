@@ -11,7 +11,10 @@
 // velocity, as any hinge does). A joint cannot freeze again until 3 s after it froze.
 //
 // While the game is paused (the reference's flag, Game::paused()) nothing is judged and every freeze ends. Times
-// are game time (it stands still in BeforeKickOff and GameOver).
+// are game time (it stands still in BeforeKickOff and GameOver), in double where the reference sums floats, so a
+// freeze may end a cycle earlier or later than there. The times are kept per side and number, also after a player
+// leaves (the reference's arrays): a new player with that number takes them over. A link pose that is not finite
+// is no box.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -84,8 +87,6 @@ class SelfCollisionRule {
   std::vector<SelfCollision> Update(bool paused, double game_time, const std::vector<PlayerLinks>& players);
   // Whether a command to `joint` (perceptor name) of that player turns into velocity 0 now.
   bool Frozen(Side side, int unum, const std::string& joint) const;
-  // A player left: its joints' times go.
-  void Forget(Side side, int unum);
 
   // Every player's joint times, for league snapshots. A restore that fails changes nothing.
   void Save(StateWriter& out) const;

@@ -29,35 +29,27 @@ int CyclesUntilModeChange(Game* game, const Eigen::Vector3d& ball, int max, Game
   return max;
 }
 
-// The reference's paused flag (GameStateAspect::IsPaused): set at the start and by a cycle in BeforeKickOff,
-// cleared by a cycle in a kick-off or another set piece, kept by PlayOn and goals; in snapshots.
-TEST(GamePaused, SetByBeforeKickOffClearedBySetPiecesKeptByPlayOn) {
+// The reference's paused flag (GameStateAspect::IsPaused): set at the start and by a cycle in BeforeKickOff or a
+// goal, kept by offside, cleared by every other mode; in snapshots.
+TEST(GamePaused, SetByBeforeKickOffAndGoalsKeptByOffsideClearedByTheRest) {
   Game game;
   ASSERT_TRUE(game.Init("Alpha", 1, 0).ok);
   EXPECT_TRUE(game.paused());
-  game.SetPlayMode(PlayMode::kPlayOn);
-  game.Update(kDt, kCentre, false);
-  EXPECT_TRUE(game.paused()) << "PlayOn keeps the flag as it was";
-  game.SetPlayMode(PlayMode::kKickOffLeft);
-  game.Update(kDt, kCentre, false);
-  EXPECT_FALSE(game.paused());
-  game.SetPlayMode(PlayMode::kPlayOn);
-  game.Update(kDt, kCentre, false);
-  EXPECT_FALSE(game.paused());
-  game.SetPlayMode(PlayMode::kGoalLeft);
-  game.Update(kDt, kCentre, false);
-  EXPECT_FALSE(game.paused()) << "a goal keeps it";
-  game.SetPlayMode(PlayMode::kBeforeKickOff);
-  game.Update(kDt, kCentre, false);
-  EXPECT_TRUE(game.paused());
-  for (PlayMode m : {PlayMode::kKickInRight, PlayMode::kCornerKickLeft, PlayMode::kGoalKickRight,
-                     PlayMode::kFreeKickLeft, PlayMode::kDirectFreeKickRight, PlayMode::kPassLeft}) {
-    game.SetPlayMode(PlayMode::kBeforeKickOff);
+  const auto after = [&](PlayMode before, PlayMode mode) {
+    game.SetPlayMode(before);
     game.Update(kDt, kCentre, false);
-    game.SetPlayMode(m);
+    game.SetPlayMode(mode);
     game.Update(kDt, kCentre, false);
-    EXPECT_FALSE(game.paused()) << PlayModeName(m);
-  }
+    return game.paused();
+  };
+  for (PlayMode m : {PlayMode::kPlayOn, PlayMode::kKickOffLeft, PlayMode::kKickInRight, PlayMode::kCornerKickLeft,
+                     PlayMode::kGoalKickRight, PlayMode::kFreeKickLeft, PlayMode::kDirectFreeKickRight,
+                     PlayMode::kPassLeft, PlayMode::kGameOver})
+    EXPECT_FALSE(after(PlayMode::kBeforeKickOff, m)) << PlayModeName(m);
+  for (PlayMode m : {PlayMode::kBeforeKickOff, PlayMode::kGoalLeft, PlayMode::kGoalRight})
+    EXPECT_TRUE(after(PlayMode::kPlayOn, m)) << PlayModeName(m);
+  EXPECT_TRUE(after(PlayMode::kBeforeKickOff, PlayMode::kOffsideLeft)) << "offside keeps it";
+  EXPECT_FALSE(after(PlayMode::kPlayOn, PlayMode::kOffsideRight)) << "offside keeps it";
   Game copy;
   ASSERT_EQ(test::RestoreAll(test::Saved(game), &copy), "");
   EXPECT_FALSE(copy.paused());

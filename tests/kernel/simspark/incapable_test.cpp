@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -106,6 +107,14 @@ TEST(IncapableRule, PausedJudgesNothingAndEndsTheCounts) {
   for (int i = 0; i < 700; ++i) ASSERT_TRUE(rule.Update(false, {At(0, 0, 0.1)}, kBall).empty());
   ASSERT_TRUE(rule.Update(true, {At(0, 0, 0.1)}, kBall).empty());
   EXPECT_EQ(CyclesUntilMoved(&rule, At(0, 0, 0.1), 2000), 751);
+}
+
+// A torso that is not finite (a bad sample from another participant) counts nothing and is never moved.
+TEST(IncapableRule, NonFiniteTorsoCountsNothing) {
+  IncapableRule rule;
+  for (int i = 0; i < 700; ++i) ASSERT_TRUE(rule.Update(false, {At(0, 0, 0.1)}, kBall).empty());
+  for (int i = 0; i < 2000; ++i) ASSERT_TRUE(rule.Update(false, {At(NAN, 0, 0.1)}, kBall).empty()) << i;
+  EXPECT_EQ(CyclesUntilMoved(&rule, At(0, 0, 0.1), 100), 51) << "the count went on from 700";
 }
 
 TEST(IncapableRule, SnapshotContinuesTheCountsAndRefusesDamage) {

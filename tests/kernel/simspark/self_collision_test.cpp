@@ -167,6 +167,22 @@ TEST(SelfCollisionRule, PairsTheReferenceNeverTestsFreezeNothing) {
   EXPECT_TRUE(rule.Update(false, 0.02, {p}).empty());
 }
 
+// A link pose that is not finite (a bad sample from another participant) is no box.
+TEST(SelfCollisionRule, NonFinitePosesFreezeNothing) {
+  SelfCollisionRule rule;
+  for (double bad : {double(NAN), double(INFINITY)}) {
+    PlayerLinks p = ArmInThigh(true);
+    for (PlayerLinks::Link& l : p.links)
+      if (l.name == "rlowerarm") l.position.x() = bad;
+    EXPECT_TRUE(rule.Update(false, 1.0, {p}).empty());
+    p = ArmInThigh(true);
+    for (PlayerLinks::Link& l : p.links)
+      if (l.name == "rthigh") l.orientation.coeffs() << bad, 0, 0, 1;
+    EXPECT_TRUE(rule.Update(false, 1.0, {p}).empty());
+  }
+  EXPECT_FALSE(rule.Frozen(Side::kLeft, 2, "raj1"));
+}
+
 TEST(SelfCollisionRule, SnapshotRestoresFreezesAndRefusesDamage) {
   SelfCollisionRule rule;
   ASSERT_EQ(rule.Update(false, 2.0, {ArmInThigh(true)}).size(), 1u);
