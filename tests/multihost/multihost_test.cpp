@@ -10,6 +10,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -55,15 +56,42 @@ class MultiHost : public ::testing::Test {
     auto grsim = match.Grsim();
     auto vision = match.Vision();
     const auto start = SteadyClock::now();
-    // A deadline, not a pace: with DDS Security every pair of processes authenticates first (key exchange and
-    // signatures), which a loaded machine can stretch past 15 s.
-    ASSERT_TRUE(vision_client->WaitForStream(4, 45s)) << vision->Log() << sim->Log();
+    // Deadlines, not paces: with DDS Security every pair of processes authenticates first (key exchange and
+    // signatures), which a loaded machine can stretch past 15 s. And on a loaded machine Fast DDS 2.9 sometimes
+    // never completes one pair's authentication (README, "Access control": measured, such a bridge waited for
+    // turf-sim over 150 s): a bridge still waiting after 25 s is restarted once, as the README tells an operator
+    // to do, and the test says so.
+    int restarted = 0;
+    if (!vision_client->WaitForStream(4, 25s)) {
+      vision = match.Vision("restarted");
+      ++restarted;
+      ASSERT_TRUE(vision_client->WaitForStream(4, 45s)) << vision->Log() << sim->Log();
+    }
     const auto first = std::chrono::duration_cast<std::chrono::milliseconds>(SteadyClock::now() - start);
     RecordProperty("vision_after_start_ms", static_cast<int>(first.count()));
+    const auto matched = [&] { return grsim->Log().find("turf-sim is listening") != std::string::npos; };
+    if (!DrainUntil(*vision_client, matched, 25s)) {
+      grsim = match.Grsim("restarted");
+      ++restarted;
+      ASSERT_TRUE(DrainUntil(*vision_client, matched, 45s)) << grsim->Log() << sim->Log();
+    }
+    RecordProperty("bridges_restarted", restarted);
+    if (restarted > 0)
+      std::printf("%d bridge(s) restarted: their DDS authentication with turf-sim never ended\n", restarted);
     const auto moved = DriveBlueRobot(*team, "127.0.0.1", match.grsim_port, *vision_client, 3, -3.0, 2.0, 1000ms);
-    ASSERT_TRUE(moved.has_value());
+    ASSERT_TRUE(moved.has_value()) << grsim->Log() << vision->Log();
     EXPECT_GT(*moved, 0.5) << grsim->Log();
     EXPECT_TRUE(sim->Running() && grsim->Running() && vision->Running());
+  }
+
+  // Reads vision until `done` holds (true) or `timeout` passes (false).
+  static bool DrainUntil(VisionClient& vision, const std::function<bool()>& done, std::chrono::milliseconds timeout) {
+    const auto end = SteadyClock::now() + timeout;
+    while (!done()) {
+      if (SteadyClock::now() > end) return false;
+      vision.Drain(50ms);
+    }
+    return true;
   }
 
   // A division B match across the link, the team's sockets in the bridge host; its vision stream flows.
