@@ -49,6 +49,7 @@ void SampleFields(LeggedStream stream, State& r, Io& io) {
       io.Array(r.accelerometer);
       io.Array(r.base_position);
       io.Array(r.base_orientation);
+      io.Array(r.base_velocity);
       break;
     default:
       for (auto& f : r.forces) {
@@ -107,6 +108,7 @@ LeggedRobotState StreamFields(const LeggedRobotState& r, LeggedStream stream) {
       out.accelerometer = r.accelerometer;
       out.base_position = r.base_position;
       out.base_orientation = r.base_orientation;
+      out.base_velocity = r.base_velocity;
       break;
     default:
       out.forces = r.forces;

@@ -64,13 +64,27 @@ const RobotSnapshot* WorldSnapshot::Find(const std::string& robot) const {
   return nullptr;
 }
 
+namespace {
+
+// The foul referee on the game's field.
+FoulRules FoulRulesOf(const GameRules& game) {
+  FoulRules rules;
+  rules.field_length = game.field_length;
+  rules.field_width = game.field_width;
+  rules.penalty_depth = game.penalty_depth;
+  rules.penalty_width = game.penalty_width;
+  return rules;
+}
+
+}  // namespace
+
 Session::Session(SessionOptions options, std::vector<std::string> robots, std::vector<RobotMove> park)
     : options_(std::move(options)),
       robots_(std::move(robots)),
       park_(std::move(park)),
       robot_owner_(robots_.size(), -1),
       game_(options_.rules),
-      incapable_(IncapableRules{options_.rules.field_width}),
+      fouls_(FoulRulesOf(options_.rules)),
       field_(StandardField3d()),
       beam_rng_(StreamSeed(options_.seed, "simspark/beam")) {
   park_.resize(robots_.size());
@@ -395,7 +409,7 @@ void Session::Advance(WorldSnapshot snapshot) {
   const GameUpdate update = game_.Update(0.02, world.ball, touchers);
   if (update.place_ball) requests_.ball = BallMove{*update.place_ball, Eigen::Vector3d::Zero()};
   CheckSelfCollisions(world);
-  CheckIncapable(world);
+  CheckFouls(world, touchers);
   // Every player's seen parts, once per cycle for all agents' vision.
   players_.clear();
   for (const auto& [id, other] : agents_) {
@@ -434,29 +448,42 @@ void Session::CheckSelfCollisions(const WorldSnapshot& world) {
         c.unum, c.link1, c.link2, c.depth, fmt::join(c.frozen, " "), kSelfCollisionFrozenTime));
 }
 
-// The referee's incapable foul: a player that cannot stand is held in the air, then put outside the field, as it
-// lies (torso orientation and joints kept).
-void Session::CheckIncapable(const WorldSnapshot& world) {
-  std::vector<PlayerTorso> torsos;
+// The referee's fouls of single players (incapable, charging): the player is held in the air, then put outside the
+// field, as it lies (torso orientation and joints kept).
+void Session::CheckFouls(const WorldSnapshot& world, const std::vector<Toucher>& touchers) {
+  std::vector<RefereePlayer> players;
   std::map<std::pair<Side, int>, const RobotSnapshot::Link*> torso_of;
   std::map<std::pair<Side, int>, std::string> robot_of;
+  std::map<std::string, std::pair<Side, int>> player_of;  // by robot
   for (const auto& [id, a] : agents_) {
     if (!a.inited || a.robot < 0) continue;
     const RobotSnapshot* robot = world.Find(robots_[a.robot]);
     const RobotSnapshot::Link* torso = robot != nullptr ? robot->FindLink("torso") : nullptr;
     if (torso == nullptr) continue;
-    torsos.push_back({a.side, a.unum, torso->position});
+    const bool touching = std::find(touchers.begin(), touchers.end(), Toucher{a.side, a.unum}) != touchers.end();
+    players.push_back({a.side, a.unum, torso->position, robot->velocity, touching});
     torso_of[{a.side, a.unum}] = torso;
     robot_of[{a.side, a.unum}] = robots_[a.robot];
+    player_of[robots_[a.robot]] = {a.side, a.unum};
   }
-  for (const RefereeMove& m : incapable_.Update(game_.paused(), torsos, world.ball)) {
+  std::vector<OpponentContact> contacts;
+  for (const RobotTouch& t : world.robot_contacts) {
+    const auto a = player_of.find(t.robot_a);
+    const auto b = player_of.find(t.robot_b);
+    if (a == player_of.end() || b == player_of.end() || a->second.first == b->second.first) continue;
+    const bool a_left = a->second.first == Side::kLeft;
+    contacts.push_back(
+        {a_left ? a->second.second : b->second.second, a_left ? b->second.second : a->second.second, t.point});
+  }
+  for (const RefereeMove& m : fouls_.Update(game_.paused(), players, contacts, world.ball)) {
     const std::pair<Side, int> who{m.side, m.unum};
     requests_.moves.push_back({robot_of.at(who), m.position, torso_of.at(who)->orientation, false});
     if (m.outside)
-      notes_.push_back(
-          fmt::format("player {} {} could not stand up (the referee's incapable foul): put outside the "
-                      "field at ({:.1f}, {:.1f})",
-                      SideName(m.side), m.unum, m.position.x(), m.position.y()));
+      notes_.push_back(fmt::format("player {} {} {}: put outside the field at ({:.1f}, {:.1f})", SideName(m.side),
+                                   m.unum,
+                                   m.foul == Foul::kCharging ? "ran into an opponent (the referee's charging foul)"
+                                                             : "could not stand up (the referee's incapable foul)",
+                                   m.position.x(), m.position.y()));
   }
 }
 
@@ -591,7 +618,7 @@ std::string Session::TakeMonitorOutput() { return std::exchange(monitor_, {}); }
 
 namespace {
 
-constexpr uint32_t kLeagueVersion = 3;
+constexpr uint32_t kLeagueVersion = 4;
 constexpr size_t kMaxItems = 4096;  // robots, joints, links, moves, players: far above any scene
 constexpr size_t kMaxName = 256;    // a robot, joint, link or team name
 
@@ -620,6 +647,13 @@ void SaveWorld(const WorldSnapshot& w, StateWriter& out) {
       PutVector(l.position, out);
       PutQuaternion(l.orientation, out);
     }
+    PutVector(r.velocity, out);
+  }
+  out.Put<uint64_t>(w.robot_contacts.size());
+  for (const RobotTouch& t : w.robot_contacts) {
+    out.Str(t.robot_a);
+    out.Str(t.robot_b);
+    PutVector(t.point, out);
   }
 }
 
@@ -649,6 +683,14 @@ WorldSnapshot RestoreWorld(StateReader& in) {
       l.position = GetVector(in);
       l.orientation = GetQuaternion(in);
     }
+    r.velocity = GetVector(in);
+    if (!in.ok()) break;
+  }
+  w.robot_contacts.resize(in.Count(kMaxItems));
+  for (RobotTouch& t : w.robot_contacts) {
+    t.robot_a = in.Str(kMaxName);
+    t.robot_b = in.Str(kMaxName);
+    t.point = GetVector(in);
     if (!in.ok()) break;
   }
   return w;
@@ -690,7 +732,7 @@ std::string Session::SaveLeague() const {
   out.Put(cycle_);
   game_.Save(out);
   self_collision_.Save(out);
-  incapable_.Save(out);
+  fouls_.Save(out);
   radio_.Save(out);
   beam_rng_.Save(out);
   out.Tag(StateTag("SREQ"));
@@ -748,8 +790,8 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
   game.Restore(in);
   SelfCollisionRule self_collision = self_collision_;
   self_collision.Restore(in);
-  IncapableRule incapable = incapable_;
-  incapable.Restore(in);
+  FoulReferee fouls = fouls_;
+  fouls.Restore(in);
   Radio radio = radio_;
   radio.Restore(in);
   Rng beam_rng;
@@ -843,7 +885,7 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
   cycle_ = cycle;
   game_ = std::move(game);
   self_collision_ = std::move(self_collision);
-  incapable_ = std::move(incapable);
+  fouls_ = std::move(fouls);
   radio_ = std::move(radio);
   beam_rng_ = beam_rng;
   requests_ = std::move(requests);

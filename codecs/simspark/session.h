@@ -29,8 +29,8 @@
 
 #include "core/rng.h"
 #include "kernel/simspark/field3d.h"
+#include "kernel/simspark/fouls.h"
 #include "kernel/simspark/game.h"
-#include "kernel/simspark/incapable.h"
 #include "kernel/simspark/radio.h"
 #include "kernel/simspark/self_collision.h"
 #include "kernel/simspark/types.h"
@@ -58,7 +58,15 @@ struct RobotSnapshot {
     Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
   };
   std::vector<Link> links;
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s of the torso, world frame
   const Link* FindLink(const std::string& link) const;
+};
+
+// Two robots touching in the cycle's last physics step: the mean of their contact points.
+struct RobotTouch {
+  std::string robot_a;
+  std::string robot_b;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
 };
 
 struct WorldSnapshot {
@@ -66,6 +74,7 @@ struct WorldSnapshot {
   Eigen::Vector3d ball = Eigen::Vector3d::Zero();
   Eigen::Vector3d ball_velocity = Eigen::Vector3d::Zero();
   std::vector<RobotSnapshot> robots;
+  std::vector<RobotTouch> robot_contacts;
   const RobotSnapshot* Find(const std::string& robot) const;
 };
 
@@ -203,7 +212,7 @@ class Session {
   SeeItems See(const Agent& agent, const RobotSnapshot& robot, const WorldSnapshot& world);
   const std::vector<int>& HingeIndex(int type, const RobotSnapshot& robot);
   void CheckSelfCollisions(const WorldSnapshot& world);
-  void CheckIncapable(const WorldSnapshot& world);
+  void CheckFouls(const WorldSnapshot& world, const std::vector<Toucher>& touchers);
   void ApplyFreezes(std::map<std::string, std::vector<JointVelocity>>* joints) const;
 
   SessionOptions options_;
@@ -218,7 +227,7 @@ class Session {
   Game game_;
   Radio radio_;
   SelfCollisionRule self_collision_;
-  IncapableRule incapable_;
+  FoulReferee fouls_;
   Field3dGeometry field_;
   Rng beam_rng_;
   WorldRequests requests_;

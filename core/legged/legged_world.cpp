@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
+#include <utility>
 
 #include "core/legged/legged_mjcf.h"
 
@@ -159,6 +161,10 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
       }
     }
     robots_.push_back(std::move(slot));
+  }
+  robot_of_body_.assign(m->nbody, -1);
+  for (size_t r = 0; r < robots_.size(); ++r) {
+    for (int b : robots_[r].bodies) robot_of_body_[b] = static_cast<int>(r);
   }
   motor_of_dof_.assign(m->nv, {-1, -1});
   for (size_t r = 0; r < robots_.size(); ++r) {
@@ -758,6 +764,30 @@ void LeggedWorld::ContactWrench(int site, ForceReading* out) const {
   }
 }
 
+// The contacts of the last step between bodies of two robots, one entry per pair with the mean point.
+void LeggedWorld::RobotContacts(std::vector<RobotContact>* out) const {
+  const mjModel* m = model_.get();
+  const mjData* d = data_.get();
+  std::map<std::pair<int, int>, RobotContact> pairs;
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& c = d->contact[i];
+    int a = robot_of_body_[m->geom_bodyid[c.geom1]];
+    int b = robot_of_body_[m->geom_bodyid[c.geom2]];
+    if (a < 0 || b < 0 || a == b) continue;
+    if (a > b) std::swap(a, b);
+    RobotContact& p = pairs[{a, b}];
+    p.robot_a = a;
+    p.robot_b = b;
+    for (int k = 0; k < 3; ++k) p.point[k] += c.pos[k];
+    ++p.points;
+  }
+  out->clear();
+  for (auto& [key, p] : pairs) {
+    for (double& x : p.point) x /= p.points;
+    out->push_back(p);
+  }
+}
+
 LeggedWorldState LeggedWorld::State() const {
   LeggedWorldState out;
   State(&out);
@@ -776,6 +806,7 @@ void LeggedWorld::State(LeggedWorldState* out) const {
     s.id = r.spec->id;
     for (int k = 0; k < 3; ++k) s.base_position[k] = d->xpos[3 * r.base_body + k];
     for (int k = 0; k < 4; ++k) s.base_orientation[k] = d->xquat[4 * r.base_body + k];
+    for (int k = 0; k < 3; ++k) s.base_velocity[k] = r.root_dof >= 0 ? d->qvel[r.root_dof + k] : 0.0;
     const size_t n = r.joints.size();
     s.joint_names.resize(n);
     s.joint_positions.resize(n);
@@ -808,6 +839,7 @@ void LeggedWorld::State(LeggedWorldState* out) const {
       for (int k = 0; k < 4; ++k) link.orientation[k] = d->xquat[4 * r.bodies[b] + k];
     }
   }
+  RobotContacts(&out->robot_contacts);
   out->has_ball = ball_body_ >= 0;
   if (out->has_ball) {
     for (int k = 0; k < 3; ++k) {

@@ -119,6 +119,7 @@ struct LeggedRobotState {
   int id = 0;
   std::array<double, 3> base_position{};     // the robot's root body, world frame
   std::array<double, 4> base_orientation{};  // w, x, y, z
+  std::array<double, 3> base_velocity{};     // m/s of the root body's origin, world frame (0: fixed to the world)
   std::vector<std::string> joint_names;      // hinge and slide joints, model order
   std::vector<double> joint_positions;
   std::vector<double> joint_velocities;
@@ -131,10 +132,19 @@ struct LeggedRobotState {
   std::vector<LinkPose> links;  // every body of the robot, model order
 };
 
+// Two robots touching in the last physics step (a referee's input: rcssserver3d's charging foul).
+struct RobotContact {
+  int robot_a = 0;  // indices into LeggedWorldState::robots, robot_a < robot_b
+  int robot_b = 0;
+  std::array<double, 3> point{};  // m, world frame: the mean of the contact points between their bodies
+  int points = 0;                 // how many contact points
+};
+
 struct LeggedWorldState {
   int64_t time_ns = 0;
   uint64_t frame = 0;
   std::vector<LeggedRobotState> robots;
+  std::vector<RobotContact> robot_contacts;  // every pair of robots touching, ordered by (robot_a, robot_b)
   bool has_ball = false;
   std::array<double, 3> ball_position{};
   std::array<double, 3> ball_velocity{};
@@ -214,12 +224,14 @@ class LeggedWorld : Pinned {
   void ResetCommands(RobotSlot* robot);
   void AcceptState();  // the current state is the last good one
   void ContactWrench(int site, ForceReading* out) const;
+  void RobotContacts(std::vector<RobotContact>* out) const;
 
   LeggedScene scene_;
   std::string mjcf_;
   MjModelPtr model_;
   MjDataPtr data_;
   std::vector<RobotSlot> robots_;
+  std::vector<int> robot_of_body_;                 // body -> index into robots_, -1 for none
   std::vector<std::pair<int, int>> motor_of_dof_;  // dof -> (robot, joint), -1 for none
   std::unique_ptr<OdeContacts> ode_contacts_;      // the scene's contact law, when it asks for rcssserver3d's
   int impulse_steps_ = 0;  // physics steps per motor impulse window (scene physics.motor_impulse_window), 0 = off

@@ -44,6 +44,7 @@ void FillImu(const LeggedRobotState& r, int64_t time_ns, idl::ImuState* imu) {
   imu->linear_acceleration(V3(r.accelerometer));
   imu->base_position(V3(r.base_position));
   imu->base_orientation(Q4(r.base_orientation));
+  imu->base_velocity(V3(r.base_velocity));
 }
 
 void FillForce(const LeggedRobotState& r, int64_t time_ns, idl::ForceState* force) {
@@ -90,6 +91,15 @@ void FillState(const LeggedWorldState& state, idl::LeggedState* out) {
   out->has_ball(state.has_ball);
   out->ball_position(V3(state.ball_position));
   out->ball_velocity(V3(state.ball_velocity));
+  out->robot_contacts().resize(state.robot_contacts.size());
+  for (size_t c = 0; c < state.robot_contacts.size(); ++c) {
+    const RobotContact& in = state.robot_contacts[c];
+    idl::RobotContact& contact = out->robot_contacts()[c];
+    contact.robot_a(state.robots[in.robot_a].name);
+    contact.robot_b(state.robots[in.robot_b].name);
+    contact.point(V3(in.point));
+    contact.points(static_cast<uint32_t>(in.points));
+  }
 }
 
 bool FromIdl(const idl::JointTarget& in, JointCommand* out) {

@@ -20,9 +20,12 @@ simspark::WorldSnapshot SimSparkWorld::SnapshotOf(const idl::LeggedState& state)
     for (const idl::ForceReading& f : s.force()[i].sensors())
       r.feet.push_back({f.name(), f.contact(), ToArray(f.point()), ToArray(f.force())});
     r.links = LinkPoses<simspark::RobotSnapshot::Link>(s.links()[i]);
+    r.velocity = ToEigen(s.imu()[i].base_velocity());
     return r;
   });
   w.ball_velocity = ToEigen(state.ball_velocity());
+  for (const idl::RobotContact& c : state.robot_contacts())
+    w.robot_contacts.push_back({c.robot_a(), c.robot_b(), ToEigen(c.point())});
   return w;
 }
 

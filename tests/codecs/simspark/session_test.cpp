@@ -31,6 +31,7 @@ class FakeWorld {
     bool left_contact = true;
     bool right_contact = true;
     std::vector<RobotSnapshot::Link> posed;  // links placed by a test, in the world frame (before the others)
+    Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // the torso's
   };
 
   explicit FakeWorld(int n) {
@@ -104,10 +105,14 @@ class FakeWorld {
       };
       for (const auto& [name, offset] : links)
         s.links.push_back({name, r.position + r.orientation * offset, r.orientation});
+      s.velocity = r.velocity;
       w.robots.push_back(s);
     }
+    w.robot_contacts = contacts;
     return w;
   }
+
+  std::vector<RobotTouch> contacts;  // robots touching, as a test sets them
 
  private:
   std::vector<Robot> robots_;
@@ -474,6 +479,54 @@ TEST(SessionReferee, APlayerLyingFifteenSecondsIsPutOutsideTheField) {
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_TRUE(Contains(notes[0], "player left 2 could not stand up")) << notes[0];
   EXPECT_NEAR(cycles, 751 + 26 + 1, 2) << "15 s on the ground, 0.5 s held (one cycle of request latency)";
+}
+
+// The referee's charging foul (kernel/simspark/fouls.h): left 2 runs at 0.6 m/s into right 3, who stands; away from
+// the ball. The charger is held in the air, then put outside the field with a note; the other is not moved, and a
+// contact between team mates is no charge.
+TEST(SessionReferee, APlayerRunningIntoAnOpponentIsPutOutsideTheField) {
+  Harness h(3);
+  h.JoinAndCycle("Alpha", 2);
+  h.JoinAndCycle("Beta", 3);
+  h.JoinAndCycle("Alpha", 4);
+  h.session.Trainer("(playMode PlayOn)", TrainerRole::kOperator);
+  h.Cycle();
+  FakeWorld::Robot& charger = h.world.robot("nao_1");
+  FakeWorld::Robot& opponent = h.world.robot("nao_2");
+  FakeWorld::Robot& mate = h.world.robot("nao_3");
+  charger.position = Eigen::Vector3d(5.0, 3.0, 0.35);
+  charger.velocity = Eigen::Vector3d(0.6, 0.0, 0.0);
+  opponent.position = Eigen::Vector3d(5.3, 3.0, 0.35);
+  mate.position = Eigen::Vector3d(4.7, 3.0, 0.35);
+  mate.velocity = Eigen::Vector3d(0.6, 0.0, 0.0);
+  h.world.contacts = {{"nao_1", "nao_3", {4.85, 3.0, 0.3}}};  // the mate runs into the charger's back
+  WorldRequests taken;
+  for (int i = 0; i < 5; ++i) {
+    h.Cycle(&taken);
+    ASSERT_TRUE(taken.moves.empty()) << "team mates touching: no charge";
+  }
+  h.world.contacts = {{"nao_2", "nao_1", {5.15, 3.0, 0.3}}};  // either order
+  h.Cycle();
+  h.world.contacts.clear();
+  int held = 0;
+  const RobotMove* out = nullptr;
+  for (int i = 0; i < 100 && out == nullptr; ++i) {
+    h.Cycle(&taken);
+    EXPECT_EQ(FindMove(taken, "nao_2"), nullptr) << "the opponent run into stays";
+    const RobotMove* m = FindMove(taken, "nao_1");
+    ASSERT_NE(m, nullptr) << "cycle " << i;
+    if (m->position.z() > 0.9) {
+      ++held;
+    } else {
+      out = m;
+    }
+  }
+  ASSERT_NE(out, nullptr);
+  EXPECT_EQ(held, 25);
+  EXPECT_NEAR(out->position.x(), -0.6 * (7 - 2), 1e-9);
+  const std::vector<std::string> notes = h.session.TakeNotes();
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_TRUE(Contains(notes[0], "player left 2 ran into an opponent (the referee's charging foul)")) << notes[0];
 }
 
 TEST(SessionEffectors, HingeVelocitiesByModelJointNameClampedForType0) {

@@ -130,5 +130,48 @@ TEST(LeggedPlacementTest, GeomsDescribeTheNaosShapes) {
   EXPECT_TRUE(w.RobotGeoms(3).empty());
 }
 
+// Robots touching (a referee's input): one entry per pair, robots in scene order, the mean contact point between them.
+TEST(LeggedPlacementTest, TwoRobotsTouchingAreOnePairWithTheMeanContactPoint) {
+  LeggedWorld w(NaoScene(3));
+  w.Step();
+  EXPECT_TRUE(w.State().robot_contacts.empty()) << "standing 1 m apart";
+  RobotPlacement p;
+  p.position = {-1.85, 0.0, 0.385};  // nao_2 0.15 m to nao_1's right: arms and legs overlap
+  ASSERT_EQ(w.PlaceRobot(1, p), PlacementError::kOk);
+  w.Step();
+  const LeggedWorldState s = w.State();
+  ASSERT_EQ(s.robot_contacts.size(), 1u);
+  const RobotContact& c = s.robot_contacts[0];
+  EXPECT_EQ(c.robot_a, 0);
+  EXPECT_EQ(c.robot_b, 1);
+  EXPECT_GT(c.points, 0);
+  EXPECT_GT(c.point[0], -2.0) << "between the two";
+  EXPECT_LT(c.point[0], -1.85);
+  EXPECT_GT(c.point[2], 0.0);
+  EXPECT_LT(c.point[2], 0.6);
+}
+
+// The root body's velocity, world frame: falling freely from 1 m it gains g per second downwards.
+TEST(LeggedPlacementTest, BaseVelocityIsTheRootBodysInTheWorldFrame) {
+  LeggedWorld w(NaoScene());
+  RobotPlacement p;
+  p.position = {0.0, 0.0, 1.5};
+  ASSERT_EQ(w.PlaceRobot(0, p), PlacementError::kOk);
+  const int64_t start = w.time_ns();
+  std::array<double, 3> before{};
+  while (w.time_ns() - start < 200'000'000) {
+    before = w.State().robots[0].base_position;
+    w.Step();
+  }
+  const LeggedRobotState r = w.State().robots[0];
+  const double t = (w.time_ns() - start) * 1e-9;
+  EXPECT_NEAR(r.base_velocity[2], -9.81 * t, 0.02 * 9.81 * t);
+  EXPECT_NEAR(r.base_velocity[0], 0.0, 1e-6);
+  EXPECT_NEAR(r.base_velocity[1], 0.0, 1e-6);
+  const double dt = w.scene().physics.step;
+  EXPECT_NEAR((r.base_position[2] - before[2]) / dt, r.base_velocity[2], 1.01 * 9.81 * dt)
+      << "the position's rate of change, within one step's change of velocity";
+}
+
 }  // namespace
 }  // namespace turf

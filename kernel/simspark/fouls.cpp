@@ -1,0 +1,224 @@
+#include "kernel/simspark/fouls.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace turf::simspark {
+
+namespace {
+
+constexpr double kCycle = 0.02;           // s
+constexpr double kGroundHeight = 0.15;    // m: a torso below this lies on the ground
+constexpr double kStandingHeight = 0.25;  // m: at or above this it stands (or tries to)
+constexpr double kStandingReset = 0.5;    // s standing that ends the not-standing count
+constexpr double kMovedImmunity = 1.0;    // s after a referee's move without a charging judgement
+constexpr double kHoldHeight = 1.0;       // m, plus 1 cm per cycle of the foul
+constexpr double kOutsideHeight = 0.4;    // m: the reference's agent radius
+constexpr double kOutsideMargin = 0.5;    // m beyond the touch line
+constexpr double kOutsideSpacing = 0.6;   // m along x per uniform number
+constexpr size_t kMaxPlayers = 64;
+constexpr int kMaxUnum = 99;
+constexpr int kMaxCount = 1 << 30;
+
+int Cycles(double seconds) { return static_cast<int>(std::lround(seconds / kCycle)); }
+void Tick(int* count) { *count = std::min(*count + 1, kMaxCount); }
+
+}  // namespace
+
+const char* FoulName(Foul foul) {
+  switch (foul) {
+    case Foul::kNone:
+      return "none";
+    case Foul::kIncapable:
+      return "incapable";
+    case Foul::kCharging:
+      return "charging";
+  }
+  return "?";
+}
+
+// ResetFoulCounterPlayer: the velocities and the time since the last move stay.
+void FoulReferee::ResetCounts(Counts* c) {
+  Counts fresh;
+  fresh.velocities = c->velocities;
+  fresh.since_moved = c->since_moved;
+  *c = fresh;
+}
+
+// ProcessAgentState.
+void FoulReferee::Count(const RefereePlayer& p, Counts* c) const {
+  const bool inside = std::abs(p.torso.y()) < rules_.field_width / 2 + 0.1;
+  const double z = p.torso.z();
+  if (z < kStandingHeight && inside) {
+    Tick(&c->not_standing);
+    c->standing = 0;
+  }
+  if (z < kGroundHeight && inside) Tick(&c->ground);
+  if (z >= kStandingHeight) {
+    Tick(&c->standing);
+    c->ground = 0;
+  }
+  if (c->standing > kStandingReset / kCycle) c->not_standing = 0;
+  Tick(&c->since_ball);
+  Tick(&c->since_contact);
+  Tick(&c->since_moved);
+}
+
+// The reference's penalty box, stretched behind the goal line for a goalie.
+bool FoulReferee::GoalieInOwnArea(Side side, int unum, const Eigen::Vector3d& torso) const {
+  if (unum != 1 || std::abs(torso.y()) > rules_.penalty_width / 2) return false;
+  const double front = rules_.field_length / 2 - rules_.penalty_depth;
+  return side == Side::kLeft ? torso.x() <= -front : torso.x() >= front;
+}
+
+// AnalyseChargingFouls: every update is read from the counts before it (the reference's _new arrays).
+void FoulReferee::JudgeCharging(const std::vector<RefereePlayer>& players, const std::vector<OpponentContact>& contacts,
+                                const Eigen::Vector3d& ball) {
+  std::map<Player, Counts> next = counts_;
+  const ChargingRules& r = rules_.charging;
+  for (const OpponentContact& contact : contacts) {
+    const RefereePlayer* p[2] = {nullptr, nullptr};
+    for (const RefereePlayer& q : players) {
+      if (q.side == Side::kLeft && q.unum == contact.left_unum) p[0] = &q;
+      if (q.side == Side::kRight && q.unum == contact.right_unum) p[1] = &q;
+    }
+    if (p[0] == nullptr || p[1] == nullptr || !contact.point.allFinite()) continue;
+    const Player who[2] = {{Side::kLeft, contact.left_unum}, {Side::kRight, contact.right_unum}};
+    const Counts* c[2] = {&counts_.at(who[0]), &counts_.at(who[1])};
+    bool judged = true;
+    for (const Counts* k : c)
+      if (k->not_standing != 0 || k->since_moved < kMovedImmunity / kCycle || k->foul != Foul::kNone) judged = false;
+    if (!judged) continue;
+    std::array<ChargingParty, 2> parties;
+    bool goalie[2];
+    for (int i = 0; i < 2; ++i) {
+      parties[i].torso = p[i]->torso;
+      for (const Eigen::Vector3d& v : c[i]->velocities) parties[i].velocity += v / kVelocities;
+      goalie[i] = GoalieInOwnArea(who[i].first, who[i].second, p[i]->torso);
+    }
+    const ChargingVerdict verdict = JudgeCollision(parties, contact.point, ball, r);
+    for (int i = 0; i < 2; ++i) {
+      if (!verdict.moving_into[i]) continue;
+      Counts& other = next.at(who[1 - i]);
+      if (goalie[i]) {
+        other.since_ball = 0;
+      } else if (c[i]->since_ball < r.immunity_time / kCycle) {
+        other.since_ball = std::min(other.since_ball, c[i]->since_ball);
+      }
+      other.since_contact = std::min(other.since_contact, c[i]->since_contact);
+    }
+    for (int i = 0; i < 2; ++i) {
+      if (verdict.charging[i] && !goalie[i] && c[i]->since_contact >= r.collision_min_time / kCycle &&
+          c[i]->since_ball >= r.immunity_time / kCycle) {
+        Counts& mine = next.at(who[i]);
+        mine.foul_time = c[i]->foul_time + 1;
+        mine.foul = Foul::kCharging;
+      }
+    }
+    if (!verdict.charging[0] && !verdict.charging[1]) {
+      next.at(who[0]).since_contact = 0;
+      next.at(who[1]).since_contact = 0;
+    }
+  }
+  counts_ = std::move(next);
+}
+
+// AnalyseFouls' FT_Incapable.
+bool FoulReferee::Incapable(int unum, const Counts& c) const {
+  const bool goalie = unum == 1;
+  const double ground = goalie ? rules_.goalie_ground_max_time : rules_.ground_max_time;
+  const double not_standing = goalie ? rules_.goalie_not_standing_max_time : rules_.not_standing_max_time;
+  return c.ground > ground / kCycle || c.not_standing > not_standing / kCycle;
+}
+
+// ClearPlayersAutomatic and RepositionOutsidePos.
+std::vector<RefereeMove> FoulReferee::Enforce(const std::vector<RefereePlayer>& players, const Eigen::Vector3d& ball) {
+  std::vector<RefereeMove> moves;
+  for (const RefereePlayer& p : players) {
+    Counts& c = counts_.at({p.side, p.unum});
+    if (c.foul == Foul::kNone) continue;
+    c.since_moved = 0;
+    if (c.foul_time <= rules_.hold_time / kCycle) {
+      Tick(&c.foul_time);
+      moves.push_back({p.side, p.unum, {p.torso.x(), p.torso.y(), kHoldHeight + c.foul_time * 0.01}, false, c.foul});
+      continue;
+    }
+    const double x = (p.side == Side::kLeft ? -kOutsideSpacing : kOutsideSpacing) * (7 - p.unum);
+    const double y = (rules_.field_width / 2 + kOutsideMargin) * (ball.y() < 0 ? 1.0 : -1.0);
+    moves.push_back({p.side, p.unum, {x, y, kOutsideHeight}, true, c.foul});
+    ResetCounts(&c);
+  }
+  return moves;
+}
+
+std::vector<RefereeMove> FoulReferee::Update(bool paused, const std::vector<RefereePlayer>& given,
+                                             const std::vector<OpponentContact>& contacts,
+                                             const Eigen::Vector3d& ball) {
+  // A bad sample from elsewhere: that player counts nothing and is moved nowhere.
+  std::vector<RefereePlayer> players;
+  for (const RefereePlayer& p : given)
+    if (p.torso.allFinite() && p.velocity.allFinite()) players.push_back(p);
+  for (const RefereePlayer& p : players) {
+    Counts& c = counts_[{p.side, p.unum}];
+    std::rotate(c.velocities.rbegin(), c.velocities.rbegin() + 1, c.velocities.rend());
+    c.velocities[0] = p.velocity;
+  }
+  if (paused) {
+    for (auto& [player, c] : counts_) ResetCounts(&c);  // ResetFoulCounter
+    return {};
+  }
+  for (const RefereePlayer& p : players) {
+    Counts& c = counts_.at({p.side, p.unum});
+    Count(p, &c);
+    if (p.touching_ball) c.since_ball = 0;  // UpdateTimesSinceLastBallTouch
+  }
+  if (ball.allFinite()) JudgeCharging(players, contacts, ball);
+  for (const RefereePlayer& p : players) {
+    Counts& c = counts_.at({p.side, p.unum});
+    if (c.foul != Foul::kNone) continue;  // a foul being enforced is not judged again (HaveEnforceableFoul)
+    const bool incapable = Incapable(p.unum, c);
+    c.foul_time = incapable ? 1 : 0;
+    c.foul = incapable ? Foul::kIncapable : Foul::kNone;
+  }
+  return Enforce(players, ball);
+}
+
+void FoulReferee::Save(StateWriter& out) const {
+  out.Tag(StateTag("SFOU"));
+  out.Put<uint64_t>(counts_.size());
+  for (const auto& [player, c] : counts_) {
+    out.Put(player.first);
+    out.Put<int32_t>(player.second);
+    for (int v : {c.ground, c.not_standing, c.standing, c.foul_time, c.since_ball, c.since_contact, c.since_moved})
+      out.Put<int32_t>(v);
+    out.Put(c.foul);
+    for (const Eigen::Vector3d& v : c.velocities)
+      for (int k = 0; k < 3; ++k) out.Put(v[k]);
+  }
+}
+
+void FoulReferee::Restore(StateReader& in) {
+  in.Tag(StateTag("SFOU"));
+  std::map<Player, Counts> restored;
+  const size_t n = in.Count(kMaxPlayers);
+  for (size_t i = 0; i < n && in.ok(); ++i) {
+    const Side side = in.Enum(static_cast<Side>(2));
+    const int unum = in.Get<int32_t>();
+    if (unum < 0 || unum > kMaxUnum) in.Fail("referee count of a player number out of range");
+    Counts c;
+    for (int* v :
+         {&c.ground, &c.not_standing, &c.standing, &c.foul_time, &c.since_ball, &c.since_contact, &c.since_moved}) {
+      *v = in.Get<int32_t>();
+      if (*v < 0 || *v > kMaxCount) in.Fail("referee count out of range");
+    }
+    c.foul = in.Enum(static_cast<Foul>(3));
+    for (Eigen::Vector3d& v : c.velocities) {
+      for (int k = 0; k < 3; ++k) v[k] = in.Get<double>();
+      if (!v.allFinite()) in.Fail("referee velocity not finite");
+    }
+    if (!restored.emplace(Player{side, unum}, c).second) in.Fail("a player twice");
+  }
+  if (in.ok()) counts_ = std::move(restored);
+}
+
+}  // namespace turf::simspark

@@ -1,0 +1,128 @@
+// rcssserver3d's automatic referee for fouls of single players (SoccerRuleAspect's ProcessAgentState,
+// UpdateTimesSinceLastBallTouch, AnalyseChargingFouls, AnalyseFouls, ClearPlayersAutomatic and
+// RepositionOutsidePos with naosoccersim.rb's settings): the incapable foul and charging. A player that commits
+// one is held in the air for 0.5 s, then put outside the field.
+//
+// Every cycle each present player's torso velocity joins its last three (paused or not). While the game is paused
+// (Game::paused()) every count and foul ends and nothing is judged. Otherwise, in the reference's order:
+// - Counts, for each player whose torso is within the field's width (|y| < W/2 + 0.1): a torso below 0.25 m counts a
+//   cycle not standing (and ends the standing streak), below 0.15 m also a cycle on the ground; at 0.25 m or above a
+//   cycle standing, which ends the ground count, and more than 0.5 s standing ends the not-standing count. Every
+//   player also counts a cycle since it last touched the ball (0 if it touches it now), since its last contact that
+//   was not charging, and since the referee last moved it.
+// - Charging, for every pair of opponents touching (charging.h judges who ran into whom), unless either is not
+//   standing (any cycle not standing since it last stood 0.5 s), was moved by the referee within 1 s, or has a foul
+//   already. A player moving into the other hands it its own times: the other's time since the ball becomes the
+//   smaller of the two if the mover touched the ball within 1 s (0 if the mover is a goalie in its own penalty
+//   area), and likewise its time since a contact. The charger commits the foul unless it is the goalie in its own
+//   penalty area (the box PenaltyLength 1.8 by PenaltyWidth 3.9 and behind the goal line), touched the ball within
+//   1 s, or had a contact that was not charging within 0.2 s. A contact in which nobody charged restarts both
+//   players' time since a contact.
+// - Incapable, for each player without a foul: a field player more than 15 s on the ground or 30 s not standing
+//   (the goalie, number 1: 30 s and 60 s).
+// - Enforcement: for 0.5 s the player's robot is held in the air where it is (torso at 1 m plus 1 cm per cycle of the
+//   foul, at rest, as it lies), then put outside the field, torso 0.4 m high with its orientation and joints as they
+//   were, at x = -0.6 (7 - number) for the left team (+ for the right) and y = W/2 + 0.5 on the touch line's side
+//   away from the ball; its counts start again as if it had stood for 5 s.
+//
+// The counts are kept per side and number, also after a player leaves (the reference's arrays). A player whose
+// torso or velocity is not finite counts nothing, is judged for nothing and moved nowhere.
+//
+// Not modelled: the reference's other fouls (illegal defence: more than 3 defenders in their penalty area, never
+// reached with fewer players a side; touching: with naosoccersim.rb's settings it only resets counts; crowding is
+// off there), and its GetSafeReposition, which nudges the outside spot away from other robots standing on it.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "core/state_io.h"
+#include "kernel/simspark/charging.h"
+#include "kernel/simspark/types.h"
+
+namespace turf::simspark {
+
+struct FoulRules {
+  double field_length = 30.0;           // m (L)
+  double field_width = 20.0;            // m (W)
+  double penalty_depth = 1.8;           // m, the referee's box (PenaltyLength)
+  double penalty_width = 3.9;           // m (PenaltyWidth)
+  double ground_max_time = 15.0;        // s, a field player
+  double not_standing_max_time = 30.0;  // s, a field player
+  double goalie_ground_max_time = 30.0;
+  double goalie_not_standing_max_time = 60.0;
+  double hold_time = 0.5;  // s in the air before the move
+  ChargingRules charging;
+};
+
+enum class Foul : uint8_t { kNone, kIncapable, kCharging };
+const char* FoulName(Foul foul);  // "none", "incapable", "charging"
+
+// A player after the cycle.
+struct RefereePlayer {
+  Side side = Side::kLeft;
+  int unum = 0;
+  Eigen::Vector3d torso = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // the torso's, m/s
+  bool touching_ball = false;
+};
+
+// Two opponents touching in the cycle: the mean of their contact points.
+struct OpponentContact {
+  int left_unum = 0;
+  int right_unum = 0;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+};
+
+// Where the referee puts a player's torso before the next step (orientation and joints as they are, at rest).
+struct RefereeMove {
+  Side side = Side::kLeft;
+  int unum = 0;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  bool outside = false;  // the last move of a foul: out of the field (else held in the air)
+  Foul foul = Foul::kNone;
+};
+
+class FoulReferee {
+ public:
+  explicit FoulReferee(FoulRules rules = {}) : rules_(rules) {}
+
+  // After a cycle; returns the moves for the players held or put outside now.
+  std::vector<RefereeMove> Update(bool paused, const std::vector<RefereePlayer>& players,
+                                  const std::vector<OpponentContact>& contacts, const Eigen::Vector3d& ball);
+
+  // Every player's counts, for league snapshots. A restore that fails changes nothing.
+  void Save(StateWriter& out) const;
+  void Restore(StateReader& in);
+
+ private:
+  static constexpr int kVelocities = 3;  // the reference's AVERAGE_VELOCITY_MEASUREMENTS
+  struct Counts {
+    int ground = 0;        // cycles on the ground in a row
+    int not_standing = 0;  // cycles not standing since the last 0.5 s standing
+    int standing = 250;    // cycles standing in a row (5 s after a reset, as the reference's)
+    int foul_time = 0;     // cycles of the foul; the move out comes when it passes the hold time
+    Foul foul = Foul::kNone;
+    int since_ball = 50;     // cycles since it touched the ball (1 s after a reset)
+    int since_contact = 10;  // cycles since a contact that was not charging (0.2 s after a reset)
+    int since_moved = 50;    // cycles since the referee moved it (1 s at first; a reset keeps it)
+    std::array<Eigen::Vector3d, kVelocities> velocities{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                                        Eigen::Vector3d::Zero()};
+  };
+  using Player = std::pair<Side, int>;
+  void Count(const RefereePlayer& p, Counts* c) const;
+  void JudgeCharging(const std::vector<RefereePlayer>& players, const std::vector<OpponentContact>& contacts,
+                     const Eigen::Vector3d& ball);
+  bool Incapable(int unum, const Counts& c) const;
+  bool GoalieInOwnArea(Side side, int unum, const Eigen::Vector3d& torso) const;
+  std::vector<RefereeMove> Enforce(const std::vector<RefereePlayer>& players, const Eigen::Vector3d& ball);
+  static void ResetCounts(Counts* c);
+
+  FoulRules rules_;
+  std::map<Player, Counts> counts_;
+};
+
+}  // namespace turf::simspark

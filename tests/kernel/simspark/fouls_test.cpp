@@ -1,0 +1,272 @@
+// rcssserver3d's incapable foul (kernel/simspark/fouls.h) against the reference's rule as its code states it
+// (SoccerRuleAspect::ProcessAgentState, AnalyseFouls, ClearPlayersAutomatic, RepositionOutsidePos;
+// naosoccersim.rb's times): who is judged, after how many cycles, the hold in the air and the spot outside.
+#include "kernel/simspark/fouls.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "tests/support/state_round_trip.h"
+
+namespace turf::simspark {
+namespace {
+
+const Eigen::Vector3d kBall(1.0, 2.0, 0.042);
+
+RefereePlayer At(double x, double y, double z, int unum = 4, Side side = Side::kLeft) {
+  return {side, unum, {x, y, z}, Eigen::Vector3d::Zero(), false};
+}
+
+// Cycles (not paused) with the torso at `torso` until the referee moves the player; that cycle's number, or 0.
+int CyclesUntilMoved(FoulReferee* rule, const RefereePlayer& torso, int max,
+                     std::vector<RefereeMove>* moves = nullptr) {
+  for (int i = 1; i <= max; ++i) {
+    std::vector<RefereeMove> m = rule->Update(false, {torso}, {}, kBall);
+    if (!m.empty()) {
+      if (moves != nullptr) *moves = m;
+      return i;
+    }
+  }
+  return 0;
+}
+
+// On the ground (torso below 0.15 m) for more than 15 s (750 cycles): the foul at the 751st cycle.
+TEST(FoulReferee, FieldPlayerOnTheGroundMoreThanFifteenSeconds) {
+  FoulReferee rule;
+  std::vector<RefereeMove> moves;
+  EXPECT_EQ(CyclesUntilMoved(&rule, At(3, 1, 0.1), 2000, &moves), 751);
+  ASSERT_EQ(moves.size(), 1u);
+  EXPECT_EQ(moves[0].unum, 4);
+  EXPECT_FALSE(moves[0].outside);
+  EXPECT_NEAR(moves[0].position.x(), 3.0, 1e-12) << "held where it is";
+  EXPECT_NEAR(moves[0].position.y(), 1.0, 1e-12);
+  EXPECT_NEAR(moves[0].position.z(), 1.02, 1e-12) << "1 m and 1 cm per cycle of the foul";
+}
+
+// Held in the air for 0.5 s (25 cycles in all), then put outside: x = -0.6 (7 - 4) for the left team, on the touch
+// line away from the ball (ball at y > 0: y = -(10 + 0.5)), torso 0.4 m high.
+TEST(FoulReferee, HeldHalfASecondThenPutOutsideAwayFromTheBall) {
+  FoulReferee rule;
+  ASSERT_EQ(CyclesUntilMoved(&rule, At(3, 1, 0.1), 2000), 751);
+  int held = 1;
+  std::vector<RefereeMove> m;
+  for (double z = 1.02; held < 100; ++held) {
+    m = rule.Update(false, {At(3, 1, z)}, {}, kBall);
+    ASSERT_EQ(m.size(), 1u);
+    if (m[0].outside) break;
+    EXPECT_NEAR(m[0].position.z(), z + 0.01, 1e-9);
+    z = m[0].position.z();
+  }
+  EXPECT_EQ(held, 25) << "cycles held before the move out";
+  EXPECT_NEAR(m[0].position.x(), -1.8, 1e-12);
+  EXPECT_NEAR(m[0].position.y(), -10.5, 1e-12);
+  EXPECT_NEAR(m[0].position.z(), 0.4, 1e-12);
+  // Lying outside the field's width: never judged again there.
+  EXPECT_EQ(CyclesUntilMoved(&rule, At(-1.8, -10.5, 0.1), 3000), 0);
+  // The right team's spot mirrors x; a ball at y < 0 sends it to y > 0.
+  FoulReferee right;
+  for (int i = 0; i < 751 + 24; ++i) right.Update(false, {At(0, 0, 0.1, 9, Side::kRight)}, {}, {0, -1, 0});
+  const std::vector<RefereeMove> out = right.Update(false, {At(0, 0, 1.2, 9, Side::kRight)}, {}, {0, -1, 0});
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_TRUE(out[0].outside);
+  EXPECT_NEAR(out[0].position.x(), 0.6 * (7 - 9), 1e-12);
+  EXPECT_NEAR(out[0].position.y(), 10.5, 1e-12);
+}
+
+// Sitting (0.15 to 0.25 m) is not on the ground, but not standing: more than 30 s (1500 cycles).
+TEST(FoulReferee, NotStandingMoreThanThirtySeconds) {
+  FoulReferee rule;
+  EXPECT_EQ(CyclesUntilMoved(&rule, At(0, 0, 0.2), 3000), 1501);
+}
+
+// The goalie (number 1): 30 s on the ground, 60 s not standing.
+TEST(FoulReferee, TheGoalieHasTwiceTheTime) {
+  FoulReferee ground;
+  EXPECT_EQ(CyclesUntilMoved(&ground, At(-14, 0, 0.1, 1), 4000), 1501);
+  FoulReferee sitting;
+  EXPECT_EQ(CyclesUntilMoved(&sitting, At(-14, 0, 0.2, 1), 4000), 3001);
+}
+
+// One cycle standing ends the ground count; the not-standing count ends only after more than 0.5 s standing.
+TEST(FoulReferee, StandingUpEndsTheCounts) {
+  FoulReferee rule;
+  for (int i = 0; i < 700; ++i) ASSERT_TRUE(rule.Update(false, {At(0, 0, 0.1)}, {}, kBall).empty());
+  ASSERT_TRUE(rule.Update(false, {At(0, 0, 0.3)}, {}, kBall).empty());
+  EXPECT_EQ(CyclesUntilMoved(&rule, At(0, 0, 0.1), 2000), 751) << "the ground count started again";
+
+  FoulReferee sit;
+  for (int i = 0; i < 1400; ++i) ASSERT_TRUE(sit.Update(false, {At(0, 0, 0.2)}, {}, kBall).empty());
+  for (int i = 0; i < 25; ++i) ASSERT_TRUE(sit.Update(false, {At(0, 0, 0.3)}, {}, kBall).empty());
+  EXPECT_EQ(CyclesUntilMoved(&sit, At(0, 0, 0.2), 2000), 101) << "25 cycles standing are not enough";
+}
+
+TEST(FoulReferee, PausedJudgesNothingAndEndsTheCounts) {
+  FoulReferee rule;
+  for (int i = 0; i < 5000; ++i) ASSERT_TRUE(rule.Update(true, {At(0, 0, 0.1)}, {}, kBall).empty());
+  for (int i = 0; i < 700; ++i) ASSERT_TRUE(rule.Update(false, {At(0, 0, 0.1)}, {}, kBall).empty());
+  ASSERT_TRUE(rule.Update(true, {At(0, 0, 0.1)}, {}, kBall).empty());
+  EXPECT_EQ(CyclesUntilMoved(&rule, At(0, 0, 0.1), 2000), 751);
+}
+
+// A torso that is not finite (a bad sample from another participant) counts nothing and is never moved.
+TEST(FoulReferee, NonFiniteTorsoCountsNothing) {
+  FoulReferee rule;
+  for (int i = 0; i < 700; ++i) ASSERT_TRUE(rule.Update(false, {At(0, 0, 0.1)}, {}, kBall).empty());
+  for (int i = 0; i < 2000; ++i) ASSERT_TRUE(rule.Update(false, {At(NAN, 0, 0.1)}, {}, kBall).empty()) << i;
+  EXPECT_EQ(CyclesUntilMoved(&rule, At(0, 0, 0.1), 100), 51) << "the count went on from 700";
+}
+
+TEST(FoulReferee, SnapshotContinuesTheCountsAndRefusesDamage) {
+  FoulReferee rule;
+  for (int i = 0; i < 740; ++i) rule.Update(false, {At(0, 0, 0.1)}, {}, kBall);
+  const std::string bytes = test::Saved(rule);
+  FoulReferee copy;
+  ASSERT_EQ(test::RestoreAll(bytes, &copy), "");
+  EXPECT_EQ(CyclesUntilMoved(&copy, At(0, 0, 0.1), 100), 11);
+  for (size_t n = 0; n < bytes.size(); ++n) {
+    FoulReferee fresh;
+    EXPECT_NE(test::RestoreAll(bytes.substr(0, n), &fresh), "") << n;
+    EXPECT_EQ(CyclesUntilMoved(&fresh, At(0, 0, 0.1), 100), 0) << "a refused snapshot changes nothing";
+  }
+}
+
+// --- Charging (AnalyseChargingFouls, with the judgement of charging.h) ---
+
+const Eigen::Vector3d kFarBall(8.0, 6.0, 0.042);
+
+// Left 4 running at 0.6 m/s into right 5, who stands 0.3 m ahead; both standing upright.
+struct Collision {
+  RefereePlayer charger{Side::kLeft, 4, {0.0, 0.0, 0.35}, {0.6, 0.0, 0.0}, false};
+  RefereePlayer victim{Side::kRight, 5, {0.3, 0.0, 0.35}, Eigen::Vector3d::Zero(), false};
+  OpponentContact contact{4, 5, {0.15, 0.0, 0.3}};
+
+  std::vector<RefereeMove> Cycle(FoulReferee* referee, bool touching = true, bool paused = false) const {
+    return referee->Update(paused, {charger, victim},
+                           touching ? std::vector<OpponentContact>{contact} : std::vector<OpponentContact>{}, kFarBall);
+  }
+  // Cycles with the contact from now on until the referee moves someone: that cycle (counting from 1), or 0.
+  int CyclesUntilMoved(FoulReferee* referee, int max, std::vector<RefereeMove>* moves = nullptr) const {
+    for (int i = 1; i <= max; ++i) {
+      std::vector<RefereeMove> m = Cycle(referee);
+      if (!m.empty()) {
+        if (moves != nullptr) *moves = m;
+        return i;
+      }
+    }
+    return 0;
+  }
+};
+
+// The speed is the mean of the last three cycles' velocities: after three cycles of running the contact charges.
+// The charger is held in the air for 0.5 s, then put outside; the opponent it ran into is not moved.
+TEST(FoulReferee, ChargingHoldsThenPutsTheChargerOutside) {
+  FoulReferee referee;
+  const Collision c;
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(c.Cycle(&referee, false).empty());
+  std::vector<RefereeMove> m = c.Cycle(&referee);
+  ASSERT_EQ(m.size(), 1u);
+  EXPECT_EQ(m[0].side, Side::kLeft);
+  EXPECT_EQ(m[0].unum, 4);
+  EXPECT_EQ(m[0].foul, Foul::kCharging);
+  EXPECT_FALSE(m[0].outside);
+  EXPECT_NEAR(m[0].position.z(), 1.02, 1e-12);
+  int held = 1;
+  for (; held < 100; ++held) {
+    m = c.Cycle(&referee, false);
+    ASSERT_EQ(m.size(), 1u);
+    if (m[0].outside) break;
+  }
+  EXPECT_EQ(held, 25) << "cycles held before the move out";
+  EXPECT_EQ(m[0].unum, 4);
+  EXPECT_EQ(m[0].foul, Foul::kCharging);
+  EXPECT_NEAR(m[0].position.x(), -0.6 * (7 - 4), 1e-12);
+  EXPECT_NEAR(m[0].position.y(), -10.5, 1e-12) << "away from the ball (y > 0)";
+}
+
+// A contact in the first cycle of running at 0.9 m/s: the mean speed is 0.3 m/s, no charge. A contact in which
+// nobody charged makes both wait 0.2 s (10 cycles) before a charge counts: from the second cycle on (mean 0.6 m/s)
+// the contact charges, and the foul comes at the 11th.
+TEST(FoulReferee, AContactWithoutChargeRestartsTheWaitForTheNext) {
+  FoulReferee referee;
+  Collision c;
+  c.charger.velocity.x() = 0.9;
+  EXPECT_EQ(c.CyclesUntilMoved(&referee, 100), 11);
+}
+
+// A player that touched the ball within 1 s charges nobody.
+TEST(FoulReferee, TouchingTheBallGivesASecondOfImmunity) {
+  FoulReferee referee;
+  Collision c;
+  c.charger.touching_ball = true;
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(c.Cycle(&referee, false).empty());
+  c.charger.touching_ball = false;
+  EXPECT_EQ(c.CyclesUntilMoved(&referee, 200), 50) << "50 cycles after the last touch";
+}
+
+// The goalie in its own penalty area (also behind its goal line) is not called for charging; elsewhere it is.
+TEST(FoulReferee, TheGoalieInItsOwnPenaltyAreaDoesNotCharge) {
+  Collision c;
+  c.charger.unum = 1;
+  c.contact.left_unum = 1;
+  c.charger.torso = {-14.0, 1.0, 0.35};
+  c.victim.torso = {-13.7, 1.0, 0.35};
+  c.contact.point = {-13.85, 1.0, 0.3};
+  FoulReferee in_area;
+  for (int i = 0; i < 3; ++i) c.Cycle(&in_area, false);
+  EXPECT_EQ(c.CyclesUntilMoved(&in_area, 200), 0);
+  c.charger.torso = {-13.0, 1.0, 0.35};  // 0.2 m in front of its area
+  c.victim.torso = {-12.7, 1.0, 0.35};
+  c.contact.point = {-12.85, 1.0, 0.3};
+  FoulReferee outside;
+  for (int i = 0; i < 3; ++i) c.Cycle(&outside, false);
+  EXPECT_EQ(c.CyclesUntilMoved(&outside, 200), 1);
+}
+
+// A player not standing since it last stood 0.5 s is not judged for charging, nor is one the referee moved within 1 s.
+TEST(FoulReferee, APlayerGettingUpIsNotJudgedForCharging) {
+  FoulReferee referee;
+  Collision c;
+  c.charger.torso.z() = 0.2;
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(c.Cycle(&referee, false).empty());
+  c.charger.torso.z() = 0.35;
+  EXPECT_EQ(c.CyclesUntilMoved(&referee, 200), 26)
+      << "more than 0.5 s standing (26 cycles) ends the not-standing count";
+}
+
+TEST(FoulReferee, PausedJudgesNoCharging) {
+  FoulReferee referee;
+  const Collision c;
+  for (int i = 0; i < 200; ++i) ASSERT_TRUE(c.Cycle(&referee, true, true).empty());
+  EXPECT_EQ(c.CyclesUntilMoved(&referee, 10), 1) << "the velocities were kept while paused";
+}
+
+// A player whose velocity is not finite (a bad sample from elsewhere) is judged for nothing.
+TEST(FoulReferee, NonFiniteVelocityIsJudgedForNothing) {
+  FoulReferee referee;
+  Collision c;
+  for (int i = 0; i < 3; ++i) c.Cycle(&referee, false);
+  c.charger.velocity.x() = NAN;
+  EXPECT_EQ(c.CyclesUntilMoved(&referee, 100), 0);
+  c.charger.velocity.x() = 0.6;
+  c.contact.point.x() = INFINITY;
+  EXPECT_EQ(c.CyclesUntilMoved(&referee, 100), 0);
+}
+
+TEST(FoulReferee, SnapshotKeepsTheVelocitiesAndTimes) {
+  FoulReferee referee;
+  Collision c;
+  c.charger.touching_ball = true;
+  c.Cycle(&referee, false);
+  c.charger.touching_ball = false;
+  for (int i = 0; i < 30; ++i) c.Cycle(&referee, false);
+  FoulReferee copy;
+  ASSERT_EQ(test::RestoreAll(test::Saved(referee), &copy), "");
+  EXPECT_EQ(c.CyclesUntilMoved(&copy, 100), 20) << "the time since the ball touch went on";
+  EXPECT_EQ(c.CyclesUntilMoved(&referee, 100), 20);
+}
+
+}  // namespace
+}  // namespace turf::simspark
