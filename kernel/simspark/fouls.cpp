@@ -108,7 +108,9 @@ void FoulReferee::JudgeCharging(const std::vector<RefereePlayer>& players, const
       other.since_contact = std::min(other.since_contact, c[i]->since_contact);
     }
     for (int i = 0; i < 2; ++i) {
-      if (verdict.charging[i] && !goalie[i] && c[i]->since_contact >= r.collision_min_time / kCycle &&
+      // The reference's setting is a float: 0.2f / 0.02 is 10.0000001, so 11 cycles.
+      const double min_contact_cycles = static_cast<float>(r.collision_min_time) / kCycle;
+      if (verdict.charging[i] && !goalie[i] && c[i]->since_contact >= min_contact_cycles &&
           c[i]->since_ball >= r.immunity_time / kCycle) {
         Counts& mine = next.at(who[i]);
         mine.foul_time = c[i]->foul_time + 1;

@@ -4,9 +4,9 @@
 // position, touches as the players touching it this cycle; the caller applies
 // what an update asks for (ball placement). The automatic referee's player
 // rules that are modelled have files of their own (self_collision.h,
-// incapable.h). Not modelled: the positional fouls (crowding, illegal
-// defence, charging), offside, clearing players away from the ball, the pass
-// mode's score ban, holding the ball on a set piece's spot.
+// fouls.h: incapable and charging). Not modelled: the positional fouls
+// (crowding, illegal defence), offside, clearing players away from the ball,
+// the pass mode's score ban, holding the ball on a set piece's spot.
 //
 // Flow, as rcssserver3d's soccer plugin runs it with naosoccersim.rb's
 // settings (references: SoccerRuleAspect::<function> in
@@ -175,7 +175,7 @@ class Game {
   PlayMode play_mode() const { return mode_; }
   double game_time() const { return game_time_; }
   // The reference's "game paused" flag (GameStateAspect::IsPaused), under which its automatic referee judges no
-  // player (self_collision.h, incapable.h): set by a cycle that begins in BeforeKickOff or a goal, kept by one in
+  // player (self_collision.h, fouls.h): set by a cycle that begins in BeforeKickOff or a goal, kept by one in
   // an offside mode, cleared by every other; set at the start.
   bool paused() const { return paused_; }
   // s in the current mode: game time since the mode began (a trainer's time

@@ -187,13 +187,13 @@ TEST(FoulReferee, ChargingHoldsThenPutsTheChargerOutside) {
 }
 
 // A contact in the first cycle of running at 0.9 m/s: the mean speed is 0.3 m/s, no charge. A contact in which
-// nobody charged makes both wait 0.2 s (10 cycles) before a charge counts: from the second cycle on (mean 0.6 m/s)
-// the contact charges, and the foul comes at the 11th.
+// nobody charged makes both wait 0.2 s before a charge counts: from the second cycle on (mean 0.6 m/s) the contact
+// charges, and the foul comes at the 12th (the reference's float setting: 0.2f / 0.02 is just above 10 cycles).
 TEST(FoulReferee, AContactWithoutChargeRestartsTheWaitForTheNext) {
   FoulReferee referee;
   Collision c;
   c.charger.velocity.x() = 0.9;
-  EXPECT_EQ(c.CyclesUntilMoved(&referee, 100), 11);
+  EXPECT_EQ(c.CyclesUntilMoved(&referee, 100), 12);
 }
 
 // A player that touched the ball within 1 s charges nobody.
