@@ -84,7 +84,7 @@ Session::Session(SessionOptions options, std::vector<std::string> robots, std::v
       park_(std::move(park)),
       robot_owner_(robots_.size(), -1),
       game_(options_.rules),
-      fouls_(FoulRulesOf(options_.rules)),
+      fouls_(FoulRulesOf(options_.rules), StreamSeed(options_.seed, "simspark/fouls")),
       field_(StandardField3d()),
       beam_rng_(StreamSeed(options_.seed, "simspark/beam")) {
   park_.resize(robots_.size());
@@ -448,8 +448,8 @@ void Session::CheckSelfCollisions(const WorldSnapshot& world) {
         c.unum, c.link1, c.link2, c.depth, fmt::join(c.frozen, " "), kSelfCollisionFrozenTime));
 }
 
-// The referee's fouls of single players (incapable, charging): the player is held in the air, then put outside the
-// field, as it lies (torso orientation and joints kept).
+// The referee's fouls of single players: after incapable and charging the player is held in the air, then put
+// outside the field, as it lies (torso orientation and joints kept); after touching it is pushed out of the crowd.
 void Session::CheckFouls(const WorldSnapshot& world, const std::vector<Toucher>& touchers) {
   std::vector<RefereePlayer> players;
   std::map<std::pair<Side, int>, const RobotSnapshot::Link*> torso_of;
@@ -466,24 +466,28 @@ void Session::CheckFouls(const WorldSnapshot& world, const std::vector<Toucher>&
     robot_of[{a.side, a.unum}] = robots_[a.robot];
     player_of[robots_[a.robot]] = {a.side, a.unum};
   }
-  std::vector<OpponentContact> contacts;
+  std::vector<PlayerContact> contacts;
   for (const RobotTouch& t : world.robot_contacts) {
     const auto a = player_of.find(t.robot_a);
     const auto b = player_of.find(t.robot_b);
-    if (a == player_of.end() || b == player_of.end() || a->second.first == b->second.first) continue;
-    const bool a_left = a->second.first == Side::kLeft;
-    contacts.push_back(
-        {a_left ? a->second.second : b->second.second, a_left ? b->second.second : a->second.second, t.point});
+    if (a == player_of.end() || b == player_of.end()) continue;  // a parked robot: no player
+    contacts.push_back({a->second.first, a->second.second, b->second.first, b->second.second, t.point});
   }
   for (const RefereeMove& m : fouls_.Update(game_.paused(), players, contacts, world.ball)) {
     const std::pair<Side, int> who{m.side, m.unum};
     requests_.moves.push_back({robot_of.at(who), m.position, torso_of.at(who)->orientation, false});
-    if (m.outside)
+    if (m.foul == Foul::kTouching) {
+      notes_.push_back(
+          fmt::format("player {} {} pushed out of a group of {} players touching (the referee's touching "
+                      "foul) to ({:.2f}, {:.2f})",
+                      SideName(m.side), m.unum, m.group_size, m.position.x(), m.position.y()));
+    } else if (m.outside) {
       notes_.push_back(fmt::format("player {} {} {}: put outside the field at ({:.1f}, {:.1f})", SideName(m.side),
                                    m.unum,
                                    m.foul == Foul::kCharging ? "ran into an opponent (the referee's charging foul)"
                                                              : "could not stand up (the referee's incapable foul)",
                                    m.position.x(), m.position.y()));
+    }
   }
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kernel/simspark/touch_groups.h"
+
 namespace turf::simspark {
 
 namespace {
@@ -33,6 +35,8 @@ const char* FoulName(Foul foul) {
       return "incapable";
     case Foul::kCharging:
       return "charging";
+    case Foul::kTouching:
+      return "touching";
   }
   return "?";
 }
@@ -42,6 +46,7 @@ void FoulReferee::ResetCounts(Counts* c) {
   Counts fresh;
   fresh.velocities = c->velocities;
   fresh.since_moved = c->since_moved;
+  fresh.last_group_size = c->last_group_size;
   *c = fresh;
 }
 
@@ -72,18 +77,20 @@ bool FoulReferee::GoalieInOwnArea(Side side, int unum, const Eigen::Vector3d& to
 }
 
 // AnalyseChargingFouls: every update is read from the counts before it (the reference's _new arrays).
-void FoulReferee::JudgeCharging(const std::vector<RefereePlayer>& players, const std::vector<OpponentContact>& contacts,
+void FoulReferee::JudgeCharging(const std::vector<RefereePlayer>& players, const std::vector<PlayerContact>& contacts,
                                 const Eigen::Vector3d& ball) {
   std::map<Player, Counts> next = counts_;
   const ChargingRules& r = rules_.charging;
-  for (const OpponentContact& contact : contacts) {
+  for (const PlayerContact& contact : contacts) {
+    if (contact.side_a == contact.side_b || !contact.point.allFinite()) continue;  // opponents only
+    const bool a_left = contact.side_a == Side::kLeft;
+    const Player who[2] = {{Side::kLeft, a_left ? contact.unum_a : contact.unum_b},
+                           {Side::kRight, a_left ? contact.unum_b : contact.unum_a}};
     const RefereePlayer* p[2] = {nullptr, nullptr};
-    for (const RefereePlayer& q : players) {
-      if (q.side == Side::kLeft && q.unum == contact.left_unum) p[0] = &q;
-      if (q.side == Side::kRight && q.unum == contact.right_unum) p[1] = &q;
-    }
-    if (p[0] == nullptr || p[1] == nullptr || !contact.point.allFinite()) continue;
-    const Player who[2] = {{Side::kLeft, contact.left_unum}, {Side::kRight, contact.right_unum}};
+    for (const RefereePlayer& q : players)
+      for (int i = 0; i < 2; ++i)
+        if (q.side == who[i].first && q.unum == who[i].second) p[i] = &q;
+    if (p[0] == nullptr || p[1] == nullptr) continue;
     const Counts* c[2] = {&counts_.at(who[0]), &counts_.at(who[1])};
     bool judged = true;
     for (const Counts* k : c)
@@ -125,6 +132,37 @@ void FoulReferee::JudgeCharging(const std::vector<RefereePlayer>& players, const
   counts_ = std::move(next);
 }
 
+// AnalyseTouchGroups and PenalizeTouchingFoul: the pushes.
+std::vector<RefereeMove> FoulReferee::JudgeTouching(const std::vector<RefereePlayer>& players,
+                                                    const std::vector<PlayerContact>& contacts) {
+  std::vector<TouchPlayer> touch;
+  std::map<Player, size_t> index;
+  for (const RefereePlayer& p : players) {
+    const Counts& c = counts_.at({p.side, p.unum});
+    index[{p.side, p.unum}] = touch.size();
+    touch.push_back({p.side, p.unum, p.torso, c.foul != Foul::kNone, c.last_group_size});
+  }
+  std::vector<std::pair<size_t, size_t>> touching;
+  for (const PlayerContact& contact : contacts) {
+    const auto a = index.find({contact.side_a, contact.unum_a});
+    const auto b = index.find({contact.side_b, contact.unum_b});
+    if (a != index.end() && b != index.end()) touching.emplace_back(a->second, b->second);
+  }
+  const TouchGroups groups = AnalyseTouchGroups(touch, touching, rng_);
+  std::vector<RefereeMove> moves;
+  for (const TouchingFoul& f : groups.fouls) {
+    const TouchPlayer& p = touch[f.player];
+    Counts& c = counts_.at({p.side, p.unum});
+    c.foul_time = 1;
+    c.foul = Foul::kTouching;
+    c.since_moved = 0;
+    moves.push_back({p.side, p.unum, f.position, false, Foul::kTouching, f.group_size});
+  }
+  for (size_t i = 0; i < touch.size(); ++i)
+    counts_.at({touch[i].side, touch[i].unum}).last_group_size = groups.group_sizes[i];
+  return moves;
+}
+
 // AnalyseFouls' FT_Incapable.
 bool FoulReferee::Incapable(int unum, const Counts& c) const {
   const bool goalie = unum == 1;
@@ -139,6 +177,10 @@ std::vector<RefereeMove> FoulReferee::Enforce(const std::vector<RefereePlayer>& 
   for (const RefereePlayer& p : players) {
     Counts& c = counts_.at({p.side, p.unum});
     if (c.foul == Foul::kNone) continue;
+    if (c.foul == Foul::kTouching) {  // pushed already (JudgeTouching); not cleared, only its counts reset
+      ResetCounts(&c);
+      continue;
+    }
     c.since_moved = 0;
     if (c.foul_time <= rules_.hold_time / kCycle) {
       Tick(&c.foul_time);
@@ -154,8 +196,7 @@ std::vector<RefereeMove> FoulReferee::Enforce(const std::vector<RefereePlayer>& 
 }
 
 std::vector<RefereeMove> FoulReferee::Update(bool paused, const std::vector<RefereePlayer>& given,
-                                             const std::vector<OpponentContact>& contacts,
-                                             const Eigen::Vector3d& ball) {
+                                             const std::vector<PlayerContact>& contacts, const Eigen::Vector3d& ball) {
   // A bad sample from elsewhere: that player counts nothing and is moved nowhere.
   std::vector<RefereePlayer> players;
   for (const RefereePlayer& p : given)
@@ -166,7 +207,10 @@ std::vector<RefereeMove> FoulReferee::Update(bool paused, const std::vector<Refe
     c.velocities[0] = p.velocity;
   }
   if (paused) {
-    for (auto& [player, c] : counts_) ResetCounts(&c);  // ResetFoulCounter
+    for (auto& [player, c] : counts_) {
+      ResetCounts(&c);  // ResetFoulCounter
+      c.last_group_size = 1;
+    }
     return {};
   }
   for (const RefereePlayer& p : players) {
@@ -182,16 +226,20 @@ std::vector<RefereeMove> FoulReferee::Update(bool paused, const std::vector<Refe
     c.foul_time = incapable ? 1 : 0;
     c.foul = incapable ? Foul::kIncapable : Foul::kNone;
   }
-  return Enforce(players, ball);
+  std::vector<RefereeMove> moves = JudgeTouching(players, contacts);
+  for (RefereeMove& m : Enforce(players, ball)) moves.push_back(m);
+  return moves;
 }
 
 void FoulReferee::Save(StateWriter& out) const {
   out.Tag(StateTag("SFOU"));
+  rng_.Save(out);
   out.Put<uint64_t>(counts_.size());
   for (const auto& [player, c] : counts_) {
     out.Put(player.first);
     out.Put<int32_t>(player.second);
-    for (int v : {c.ground, c.not_standing, c.standing, c.foul_time, c.since_ball, c.since_contact, c.since_moved})
+    for (int v : {c.ground, c.not_standing, c.standing, c.foul_time, c.since_ball, c.since_contact, c.since_moved,
+                  c.last_group_size})
       out.Put<int32_t>(v);
     out.Put(c.foul);
     for (const Eigen::Vector3d& v : c.velocities)
@@ -201,6 +249,8 @@ void FoulReferee::Save(StateWriter& out) const {
 
 void FoulReferee::Restore(StateReader& in) {
   in.Tag(StateTag("SFOU"));
+  Rng rng;
+  rng.Restore(in);
   std::map<Player, Counts> restored;
   const size_t n = in.Count(kMaxPlayers);
   for (size_t i = 0; i < n && in.ok(); ++i) {
@@ -208,19 +258,21 @@ void FoulReferee::Restore(StateReader& in) {
     const int unum = in.Get<int32_t>();
     if (unum < 0 || unum > kMaxUnum) in.Fail("referee count of a player number out of range");
     Counts c;
-    for (int* v :
-         {&c.ground, &c.not_standing, &c.standing, &c.foul_time, &c.since_ball, &c.since_contact, &c.since_moved}) {
+    for (int* v : {&c.ground, &c.not_standing, &c.standing, &c.foul_time, &c.since_ball, &c.since_contact,
+                   &c.since_moved, &c.last_group_size}) {
       *v = in.Get<int32_t>();
       if (*v < 0 || *v > kMaxCount) in.Fail("referee count out of range");
     }
-    c.foul = in.Enum(static_cast<Foul>(3));
+    c.foul = in.Enum(static_cast<Foul>(4));
     for (Eigen::Vector3d& v : c.velocities) {
       for (int k = 0; k < 3; ++k) v[k] = in.Get<double>();
       if (!v.allFinite()) in.Fail("referee velocity not finite");
     }
     if (!restored.emplace(Player{side, unum}, c).second) in.Fail("a player twice");
   }
-  if (in.ok()) counts_ = std::move(restored);
+  if (!in.ok()) return;
+  rng_ = rng;
+  counts_ = std::move(restored);
 }
 
 }  // namespace turf::simspark

@@ -1,7 +1,7 @@
 // rcssserver3d's automatic referee for fouls of single players (SoccerRuleAspect's ProcessAgentState,
-// UpdateTimesSinceLastBallTouch, AnalyseChargingFouls, AnalyseFouls, ClearPlayersAutomatic and
-// RepositionOutsidePos with naosoccersim.rb's settings): the incapable foul and charging. A player that commits
-// one is held in the air for 0.5 s, then put outside the field.
+// UpdateTimesSinceLastBallTouch, AnalyseChargingFouls, AnalyseFouls, AnalyseTouchGroups, ClearPlayersAutomatic and
+// RepositionOutsidePos with naosoccersim.rb's settings): the incapable foul and charging, after which a player is
+// held in the air for 0.5 s, then put outside the field, and touching, after which it is pushed out of a crowd.
 //
 // Every cycle each present player's torso velocity joins its last three (paused or not). While the game is paused
 // (Game::paused()) every count and foul ends and nothing is judged. Otherwise, in the reference's order:
@@ -20,6 +20,8 @@
 //   players' time since a contact.
 // - Incapable, for each player without a foul: a field player more than 15 s on the ground or 30 s not standing
 //   (the goalie, number 1: 30 s and 60 s).
+// - Touching (touch_groups.h): in a group of more than two players touching, one is pushed 0.4 m away from the
+//   group's centre (the referee's move, with its 1 s without a charging judgement); its counts start again.
 // - Enforcement: for 0.5 s the player's robot is held in the air where it is (torso at 1 m plus 1 cm per cycle of the
 //   foul, at rest, as it lies), then put outside the field, torso 0.4 m high with its orientation and joints as they
 //   were, at x = -0.6 (7 - number) for the left team (+ for the right) and y = W/2 + 0.5 on the touch line's side
@@ -28,9 +30,13 @@
 // The counts are kept per side and number, also after a player leaves (the reference's arrays). A player whose
 // torso or velocity is not finite counts nothing, is judged for nothing and moved nowhere.
 //
-// Not modelled: the reference's other fouls (illegal defence: more than 3 defenders in their penalty area, never
-// reached with fewer players a side; touching: with naosoccersim.rb's settings it only resets counts; crowding is
-// off there), and its GetSafeReposition, which nudges the outside spot away from other robots standing on it.
+// Not modelled: illegal defence (a fourth defender entering its own penalty area is moved out of it: it needs more
+// than three players a side), crowding (off in naosoccersim.rb); the reference's GetSafeReposition, which nudges a
+// move's spot away from other robots standing on it; the 1 s without a charging judgement after the game's own
+// moves of players (clearing them at kick-offs and set pieces, which turf's Game does not do either); contacts
+// and touch groups that pile up while the game is paused (here each cycle has its own; a pause forgets them). The
+// players touching the ball are the caller's (the SimSpark session: a body within 0.15 m of the ball's centre; the
+// reference: a collision with the ball).
 #pragma once
 
 #include <Eigen/Core>
@@ -39,6 +45,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/rng.h"
 #include "core/state_io.h"
 #include "kernel/simspark/charging.h"
 #include "kernel/simspark/types.h"
@@ -58,8 +65,8 @@ struct FoulRules {
   ChargingRules charging;
 };
 
-enum class Foul : uint8_t { kNone, kIncapable, kCharging };
-const char* FoulName(Foul foul);  // "none", "incapable", "charging"
+enum class Foul : uint8_t { kNone, kIncapable, kCharging, kTouching };
+const char* FoulName(Foul foul);  // "none", "incapable", "charging", "touching"
 
 // A player after the cycle.
 struct RefereePlayer {
@@ -70,10 +77,12 @@ struct RefereePlayer {
   bool touching_ball = false;
 };
 
-// Two opponents touching in the cycle: the mean of their contact points.
-struct OpponentContact {
-  int left_unum = 0;
-  int right_unum = 0;
+// Two players touching in the cycle (of one team or both): the mean of their contact points.
+struct PlayerContact {
+  Side side_a = Side::kLeft;
+  int unum_a = 0;
+  Side side_b = Side::kRight;
+  int unum_b = 0;
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
 };
 
@@ -82,17 +91,19 @@ struct RefereeMove {
   Side side = Side::kLeft;
   int unum = 0;
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
-  bool outside = false;  // the last move of a foul: out of the field (else held in the air)
+  bool outside = false;  // the last move of a foul: out of the field (else held in the air, or pushed)
   Foul foul = Foul::kNone;
+  int group_size = 0;  // kTouching: the players of the group it was pushed out of
 };
 
 class FoulReferee {
  public:
-  explicit FoulReferee(FoulRules rules = {}) : rules_(rules) {}
+  // `seed`: the touching foul's random orders.
+  explicit FoulReferee(FoulRules rules = {}, uint64_t seed = 0) : rules_(rules), rng_(seed) {}
 
   // After a cycle; returns the moves for the players held or put outside now.
   std::vector<RefereeMove> Update(bool paused, const std::vector<RefereePlayer>& players,
-                                  const std::vector<OpponentContact>& contacts, const Eigen::Vector3d& ball);
+                                  const std::vector<PlayerContact>& contacts, const Eigen::Vector3d& ball);
 
   // Every player's counts, for league snapshots. A restore that fails changes nothing.
   void Save(StateWriter& out) const;
@@ -106,22 +117,26 @@ class FoulReferee {
     int standing = 250;    // cycles standing in a row (5 s after a reset, as the reference's)
     int foul_time = 0;     // cycles of the foul; the move out comes when it passes the hold time
     Foul foul = Foul::kNone;
-    int since_ball = 50;     // cycles since it touched the ball (1 s after a reset)
-    int since_contact = 10;  // cycles since a contact that was not charging (0.2 s after a reset)
-    int since_moved = 50;    // cycles since the referee moved it (1 s at first; a reset keeps it)
+    int since_ball = 50;      // cycles since it touched the ball (1 s after a reset)
+    int since_contact = 10;   // cycles since a contact that was not charging (0.2 s after a reset)
+    int since_moved = 50;     // cycles since the referee moved it (1 s at first; a reset keeps it)
+    int last_group_size = 1;  // players touching it, itself included, at the end of the cycle before
     std::array<Eigen::Vector3d, kVelocities> velocities{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
                                                         Eigen::Vector3d::Zero()};
   };
   using Player = std::pair<Side, int>;
   void Count(const RefereePlayer& p, Counts* c) const;
-  void JudgeCharging(const std::vector<RefereePlayer>& players, const std::vector<OpponentContact>& contacts,
+  void JudgeCharging(const std::vector<RefereePlayer>& players, const std::vector<PlayerContact>& contacts,
                      const Eigen::Vector3d& ball);
+  std::vector<RefereeMove> JudgeTouching(const std::vector<RefereePlayer>& players,
+                                         const std::vector<PlayerContact>& contacts);
   bool Incapable(int unum, const Counts& c) const;
   bool GoalieInOwnArea(Side side, int unum, const Eigen::Vector3d& torso) const;
   std::vector<RefereeMove> Enforce(const std::vector<RefereePlayer>& players, const Eigen::Vector3d& ball);
   static void ResetCounts(Counts* c);
 
   FoulRules rules_;
+  Rng rng_;
   std::map<Player, Counts> counts_;
 };
 

@@ -529,6 +529,37 @@ TEST(SessionReferee, APlayerRunningIntoAnOpponentIsPutOutsideTheField) {
   EXPECT_TRUE(Contains(notes[0], "player left 2 ran into an opponent (the referee's charging foul)")) << notes[0];
 }
 
+// The referee's touching foul (kernel/simspark/touch_groups.h): a third player joining two touching ones is pushed
+// 0.4 m out of the group, with a note; the others stay.
+TEST(SessionReferee, AThirdPlayerJoiningTwoTouchingIsPushedOut) {
+  Harness h(3);
+  h.JoinAndCycle("Alpha", 2);
+  h.JoinAndCycle("Alpha", 3);
+  h.JoinAndCycle("Alpha", 4);
+  h.session.Trainer("(playMode PlayOn)", TrainerRole::kOperator);
+  h.Cycle();
+  h.world.robot("nao_1").position = Eigen::Vector3d(5.0, 3.0, 0.35);
+  h.world.robot("nao_2").position = Eigen::Vector3d(5.3, 3.0, 0.35);
+  h.world.robot("nao_3").position = Eigen::Vector3d(4.7, 3.0, 0.35);
+  h.world.contacts = {{"nao_1", "nao_2", {5.15, 3.0, 0.3}}};
+  WorldRequests taken;
+  for (int i = 0; i < 3; ++i) {
+    h.Cycle(&taken);
+    ASSERT_TRUE(taken.moves.empty()) << "two touching";
+  }
+  h.world.contacts.push_back({"nao_3", "nao_1", {4.85, 3.0, 0.3}});
+  h.Cycle();
+  h.world.contacts.pop_back();  // pushed away: touching no more
+  h.Cycle(&taken);
+  ASSERT_EQ(taken.moves.size(), 1u);
+  EXPECT_EQ(taken.moves[0].robot, "nao_3");
+  EXPECT_NEAR(taken.moves[0].position.x(), 4.7 - 0.4, 1e-9) << "0.4 m from the group's centre (5.0, 3.0)";
+  EXPECT_NEAR(taken.moves[0].position.y(), 3.0, 1e-9);
+  const std::vector<std::string> notes = h.session.TakeNotes();
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_TRUE(Contains(notes[0], "player left 4 pushed out of a group of 3 players touching")) << notes[0];
+}
+
 TEST(SessionEffectors, HingeVelocitiesByModelJointNameClampedForType0) {
   Harness h(1);
   const int a = h.Join("Alpha", 1);

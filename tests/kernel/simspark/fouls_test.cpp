@@ -141,11 +141,11 @@ const Eigen::Vector3d kFarBall(8.0, 6.0, 0.042);
 struct Collision {
   RefereePlayer charger{Side::kLeft, 4, {0.0, 0.0, 0.35}, {0.6, 0.0, 0.0}, false};
   RefereePlayer victim{Side::kRight, 5, {0.3, 0.0, 0.35}, Eigen::Vector3d::Zero(), false};
-  OpponentContact contact{4, 5, {0.15, 0.0, 0.3}};
+  PlayerContact contact{Side::kLeft, 4, Side::kRight, 5, {0.15, 0.0, 0.3}};
 
   std::vector<RefereeMove> Cycle(FoulReferee* referee, bool touching = true, bool paused = false) const {
     return referee->Update(paused, {charger, victim},
-                           touching ? std::vector<OpponentContact>{contact} : std::vector<OpponentContact>{}, kFarBall);
+                           touching ? std::vector<PlayerContact>{contact} : std::vector<PlayerContact>{}, kFarBall);
   }
   // Cycles with the contact from now on until the referee moves someone: that cycle (counting from 1), or 0.
   int CyclesUntilMoved(FoulReferee* referee, int max, std::vector<RefereeMove>* moves = nullptr) const {
@@ -210,7 +210,7 @@ TEST(FoulReferee, TouchingTheBallGivesASecondOfImmunity) {
 TEST(FoulReferee, TheGoalieInItsOwnPenaltyAreaDoesNotCharge) {
   Collision c;
   c.charger.unum = 1;
-  c.contact.left_unum = 1;
+  c.contact.unum_a = 1;
   c.charger.torso = {-14.0, 1.0, 0.35};
   c.victim.torso = {-13.7, 1.0, 0.35};
   c.contact.point = {-13.85, 1.0, 0.3};
@@ -266,6 +266,33 @@ TEST(FoulReferee, SnapshotKeepsTheVelocitiesAndTimes) {
   ASSERT_EQ(test::RestoreAll(test::Saved(referee), &copy), "");
   EXPECT_EQ(c.CyclesUntilMoved(&copy, 100), 20) << "the time since the ball touch went on";
   EXPECT_EQ(c.CyclesUntilMoved(&referee, 100), 20);
+}
+
+// --- Touching (touch_groups.h) ---
+
+// A player lying 14 s joins two touching team mates: it is pushed out of the group (its robot moved, nothing held),
+// and its counts start again: the incapable foul comes 15 s after the push, not 1 s.
+TEST(FoulReferee, TouchingPushesTheNewcomerAndStartsItsCountsAgain) {
+  FoulReferee referee;
+  const RefereePlayer two{Side::kLeft, 2, {0.0, 0.0, 0.35}, Eigen::Vector3d::Zero(), false};
+  const RefereePlayer three{Side::kLeft, 3, {0.3, 0.0, 0.35}, Eigen::Vector3d::Zero(), false};
+  const RefereePlayer four = At(-0.3, 0.0, 0.1);
+  const PlayerContact pair{Side::kLeft, 2, Side::kLeft, 3, {0.15, 0, 0.3}};
+  const PlayerContact joins{Side::kLeft, 4, Side::kLeft, 2, {-0.15, 0, 0.2}};
+  for (int i = 0; i < 700; ++i) ASSERT_TRUE(referee.Update(false, {two, three, four}, {pair}, kBall).empty());
+  const std::vector<RefereeMove> m = referee.Update(false, {two, three, four}, {pair, joins}, kBall);
+  ASSERT_EQ(m.size(), 1u);
+  EXPECT_EQ(m[0].unum, 4);
+  EXPECT_EQ(m[0].foul, Foul::kTouching);
+  EXPECT_EQ(m[0].group_size, 3);
+  EXPECT_FALSE(m[0].outside);
+  EXPECT_LT(m[0].position.x(), -0.3) << "away from the group";
+  EXPECT_NEAR(m[0].position.z(), 0.1, 1e-12) << "its height kept";
+  const RefereePlayer pushed = At(m[0].position.x(), m[0].position.y(), 0.1);
+  int cycles = 1;
+  for (; cycles < 2000; ++cycles)
+    if (!referee.Update(false, {two, three, pushed}, {pair}, kBall).empty()) break;
+  EXPECT_EQ(cycles, 751) << "the ground count started again at the push";
 }
 
 }  // namespace
