@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,17 +21,23 @@ RefereePlayer At(double x, double y, double z, int unum = 4, Side side = Side::k
   return {side, unum, {x, y, z}, Eigen::Vector3d::Zero(), false};
 }
 
-// Cycles (not paused) with the torso at `torso` until the referee moves the player; that cycle's number, or 0.
-int CyclesUntilMoved(FoulReferee* rule, const RefereePlayer& torso, int max,
+// Runs `cycle` until it returns a move, at most `max` times: that cycle's number (from 1), or 0.
+int CyclesUntilMoved(const std::function<std::vector<RefereeMove>()>& cycle, int max,
                      std::vector<RefereeMove>* moves = nullptr) {
   for (int i = 1; i <= max; ++i) {
-    std::vector<RefereeMove> m = rule->Update(false, {torso}, {}, kBall);
+    std::vector<RefereeMove> m = cycle();
     if (!m.empty()) {
       if (moves != nullptr) *moves = m;
       return i;
     }
   }
   return 0;
+}
+
+// Cycles (not paused) with the torso at `torso` until the referee moves the player.
+int CyclesUntilMoved(FoulReferee* rule, const RefereePlayer& torso, int max,
+                     std::vector<RefereeMove>* moves = nullptr) {
+  return CyclesUntilMoved([&] { return rule->Update(false, {torso}, {}, kBall); }, max, moves);
 }
 
 // On the ground (torso below 0.15 m) for more than 15 s (750 cycles): the foul at the 751st cycle.
@@ -148,15 +155,8 @@ struct Collision {
                            touching ? std::vector<PlayerContact>{contact} : std::vector<PlayerContact>{}, kFarBall);
   }
   // Cycles with the contact from now on until the referee moves someone: that cycle (counting from 1), or 0.
-  int CyclesUntilMoved(FoulReferee* referee, int max, std::vector<RefereeMove>* moves = nullptr) const {
-    for (int i = 1; i <= max; ++i) {
-      std::vector<RefereeMove> m = Cycle(referee);
-      if (!m.empty()) {
-        if (moves != nullptr) *moves = m;
-        return i;
-      }
-    }
-    return 0;
+  int CyclesUntilMoved(FoulReferee* referee, int max) const {
+    return simspark::CyclesUntilMoved([&] { return Cycle(referee); }, max);
   }
 };
 
