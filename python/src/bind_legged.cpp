@@ -19,7 +19,7 @@ pyb::array_t<double> Array(const std::array<double, N>& v) {
   return Copy(v.data(), static_cast<pyb::ssize_t>(N));
 }
 
-// One robot's readings: joints, IMU and base pose, and every force sensor's values with its contact flag.
+// One robot's readings: joints, IMU, base pose and velocity, and every force sensor's values with its contact flag.
 pyb::dict RobotDict(const LeggedRobotState& r) {
   pyb::dict d;
   d["name"] = r.name;
@@ -31,6 +31,7 @@ pyb::dict RobotDict(const LeggedRobotState& r) {
   d["accelerometer"] = Array(r.accelerometer);
   d["base_position"] = Array(r.base_position);
   d["base_orientation"] = Array(r.base_orientation);
+  d["base_velocity"] = Array(r.base_velocity);
   std::vector<double> force, contact;
   for (const ForceReading& f : r.forces) {
     force.insert(force.end(), f.values.begin(), f.values.end());

@@ -4,12 +4,12 @@ name, world-major (block[w] is world w's), described by plain data so that spawn
 SSL: commands n_worlds x 2 x robots_per_team x 6; ball n_worlds x 6; robots n_worlds x robots x 9; time n_worlds.
 Legged: commands n_worlds x (every robot's joints x 5, robot after robot); observation n_worlds x width, where each
 robot's readings (measured and truth: joint positions, velocities, efforts, orientation, gyro, accelerometer, base
-position and orientation, force values, contacts) and the ball (6, scenes with one) have fixed columns."""
+position, orientation and velocity, force values, contacts) and the ball (6, scenes with one) have fixed columns."""
 
 import numpy as np
 
 LEGGED_FIELDS = ("joint_position", "joint_velocity", "joint_effort", "orientation", "gyro", "accelerometer",
-                 "base_position", "base_orientation", "force", "contact")
+                 "base_position", "base_orientation", "base_velocity", "force", "contact")
 
 
 def ssl_layout(sim, n_worlds):

@@ -41,6 +41,7 @@ def test_readings_and_standing():
         o = sim.step({"t1": hold(sim)}, 4)
     assert o["time"] == pytest.approx(1.0)
     assert o["truth"][0]["base_position"][2] > 0.55  # still standing (starts at 0.665 m)
+    assert np.linalg.norm(o["truth"][0]["base_velocity"]) < 0.1  # and at rest
     assert np.linalg.norm(o["robots"][0]["accelerometer"]) == pytest.approx(9.81, abs=1.0)
     assert o["robots"][0]["contact"].sum() >= 1
 
