@@ -207,10 +207,7 @@ std::vector<RefereeMove> FoulReferee::Update(bool paused, const std::vector<Refe
     c.velocities[0] = p.velocity;
   }
   if (paused) {
-    for (auto& [player, c] : counts_) {
-      ResetCounts(&c);  // ResetFoulCounter
-      c.last_group_size = 1;
-    }
+    for (auto& [player, c] : counts_) ResetCounts(&c);  // ResetFoulCounter; the touch groups stay as they were
     return {};
   }
   for (const RefereePlayer& p : players) {

@@ -31,10 +31,13 @@
 // torso or velocity is not finite counts nothing, is judged for nothing and moved nowhere.
 //
 // Not modelled: illegal defence (a fourth defender entering its own penalty area is moved out of it: it needs more
-// than three players a side), crowding (off in naosoccersim.rb); the reference's GetSafeReposition, which nudges a
-// move's spot away from other robots standing on it; the 1 s without a charging judgement after the game's own
-// moves of players (clearing them at kick-offs and set pieces, which turf's Game does not do either); contacts
-// and touch groups that pile up while the game is paused (here each cycle has its own; a pause forgets them). The
+// than three players a side), crowding (off in naosoccersim.rb); the reference's GetSafeReposition, which moves the
+// spot of every referee move (the push, the spot outside) in 0.4 m steps while it is within 1 m of the ball or a
+// 0.4 m sphere around it meets another robot's bounding box, and away from penalty areas: a touching push, made
+// next to the group, almost always ends farther away there than turf's 0.4 m; the 1 s without a charging judgement
+// after the game's own moves of players (clearing them at kick-offs and set pieces, which turf's Game does not do
+// either); contacts and touch groups that pile up while the game is paused (here each cycle has its own), and the
+// empty groups of the reference's first cycles of a match (no touching foul before its second cycle of play). The
 // players touching the ball are the caller's (the SimSpark session: a body within 0.15 m of the ball's centre; the
 // reference: a collision with the ball).
 #pragma once

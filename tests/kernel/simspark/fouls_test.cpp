@@ -295,5 +295,23 @@ TEST(FoulReferee, TouchingPushesTheNewcomerAndStartsItsCountsAgain) {
   EXPECT_EQ(cycles, 751) << "the ground count started again at the push";
 }
 
+// A pause keeps who was touching whom before it: a player that joins a pair during the pause is the newcomer when
+// play resumes.
+TEST(FoulReferee, APauseKeepsTheGroupsOfBeforeIt) {
+  const RefereePlayer two = At(0.0, 0.0, 0.35, 2);
+  const RefereePlayer three = At(0.3, 0.0, 0.35, 3);
+  const RefereePlayer four = At(-0.3, 0.0, 0.35, 4);
+  const PlayerContact pair{Side::kLeft, 2, Side::kLeft, 3, {0.15, 0, 0.3}};
+  const PlayerContact joins{Side::kLeft, 4, Side::kLeft, 2, {-0.15, 0, 0.3}};
+  for (uint64_t seed = 0; seed < 10; ++seed) {  // whatever the referee's random orders
+    FoulReferee referee({}, seed);
+    for (int i = 0; i < 3; ++i) ASSERT_TRUE(referee.Update(false, {two, three, four}, {pair}, kBall).empty());
+    for (int i = 0; i < 10; ++i) ASSERT_TRUE(referee.Update(true, {two, three, four}, {pair, joins}, kBall).empty());
+    const std::vector<RefereeMove> m = referee.Update(false, {two, three, four}, {pair, joins}, kBall);
+    ASSERT_EQ(m.size(), 1u);
+    EXPECT_EQ(m[0].unum, 4) << "seed " << seed;
+  }
+}
+
 }  // namespace
 }  // namespace turf::simspark
