@@ -66,11 +66,32 @@ const RobotSnapshot* WorldSnapshot::Find(const std::string& robot) const {
 
 namespace {
 
+constexpr double kHeadRadius = 0.065;  // m, the Nao's head sphere
+
+// The box that holds a robot's colliders: its type's boxes where its links are, and the head.
+Eigen::AlignedBox3d BoundingBox(const RobotSnapshot& robot, int robot_type) {
+  Eigen::AlignedBox3d box;
+  for (const NaoBox& b : NaoBoxes(robot_type)) {
+    const RobotSnapshot::Link* link = robot.FindLink(b.link);
+    if (link == nullptr) continue;
+    const Eigen::Matrix3d axes = link->orientation.toRotationMatrix();
+    const Eigen::Vector3d reach = axes.cwiseAbs() * b.half;
+    box.extend(link->position - reach);
+    box.extend(link->position + reach);
+  }
+  if (const RobotSnapshot::Link* head = robot.FindLink("head"); head != nullptr) {
+    box.extend(head->position - Eigen::Vector3d::Constant(kHeadRadius));
+    box.extend(head->position + Eigen::Vector3d::Constant(kHeadRadius));
+  }
+  return box;
+}
+
 // The foul referee on the game's field.
 FoulRules FoulRulesOf(const GameRules& game) {
   FoulRules rules;
   rules.field_length = game.field_length;
   rules.field_width = game.field_width;
+  rules.goal_width = game.goal_width;
   rules.penalty_depth = game.penalty_depth;
   rules.penalty_width = game.penalty_width;
   return rules;
@@ -461,7 +482,7 @@ void Session::CheckFouls(const WorldSnapshot& world, const std::vector<Toucher>&
     const RobotSnapshot::Link* torso = robot != nullptr ? robot->FindLink("torso") : nullptr;
     if (torso == nullptr) continue;
     const bool touching = std::find(touchers.begin(), touchers.end(), Toucher{a.side, a.unum}) != touchers.end();
-    players.push_back({a.side, a.unum, torso->position, robot->velocity, touching});
+    players.push_back({a.side, a.unum, torso->position, robot->velocity, touching, BoundingBox(*robot, a.type)});
     torso_of[{a.side, a.unum}] = torso;
     robot_of[{a.side, a.unum}] = robots_[a.robot];
     player_of[robots_[a.robot]] = {a.side, a.unum};

@@ -25,16 +25,14 @@
 // - Enforcement: for 0.5 s the player's robot is held in the air where it is (torso at 1 m plus 1 cm per cycle of the
 //   foul, at rest, as it lies), then put outside the field, torso 0.4 m high with its orientation and joints as they
 //   were, at x = -0.6 (7 - number) for the left team (+ for the right) and y = W/2 + 0.5 on the touch line's side
-//   away from the ball; its counts start again as if it had stood for 5 s.
+//   away from the ball, or the safe spot nearest it (safe_spot.h); its counts start again as if it had stood for
+//   5 s. A touching push goes to the safe spot nearest its 0.4 m, too. Each move sees the moves before it.
 //
 // The counts are kept per side and number, also after a player leaves (the reference's arrays). A player whose
 // torso or velocity is not finite counts nothing, is judged for nothing and moved nowhere.
 //
 // Not modelled: illegal defence (a fourth defender entering its own penalty area is moved out of it: it needs more
-// than three players a side), crowding (off in naosoccersim.rb); the reference's GetSafeReposition, which moves the
-// spot of every referee move (the push, the spot outside) in 0.4 m steps while it is within 1 m of the ball or a
-// 0.4 m sphere around it meets another robot's bounding box, and away from penalty areas: a touching push, made
-// next to the group, almost always ends farther away there than turf's 0.4 m; the 1 s without a charging judgement
+// than three players a side), crowding (off in naosoccersim.rb); the 1 s without a charging judgement
 // after the game's own moves of players (clearing them at kick-offs and set pieces, which turf's Game does not do
 // either); contacts and touch groups that pile up while the game is paused (here each cycle has its own), and the
 // empty groups of the reference's first cycles of a match (no touching foul before its second cycle of play). The
@@ -43,6 +41,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <array>
 #include <map>
 #include <utility>
@@ -51,6 +50,7 @@
 #include "core/rng.h"
 #include "core/state_io.h"
 #include "kernel/simspark/charging.h"
+#include "kernel/simspark/safe_spot.h"
 #include "kernel/simspark/types.h"
 
 namespace turf::simspark {
@@ -58,6 +58,7 @@ namespace turf::simspark {
 struct FoulRules {
   double field_length = 30.0;           // m (L)
   double field_width = 20.0;            // m (W)
+  double goal_width = 2.1;              // m
   double penalty_depth = 1.8;           // m, the referee's box (PenaltyLength)
   double penalty_width = 3.9;           // m (PenaltyWidth)
   double ground_max_time = 15.0;        // s, a field player
@@ -78,6 +79,7 @@ struct RefereePlayer {
   Eigen::Vector3d torso = Eigen::Vector3d::Zero();
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // the torso's, m/s
   bool touching_ball = false;
+  Eigen::AlignedBox3d box;  // holds all its parts (for where a move may put another player); empty: the torso
 };
 
 // Two players touching in the cycle (of one team or both): the mean of their contact points.
@@ -137,10 +139,15 @@ class FoulReferee {
   bool GoalieInOwnArea(Side side, int unum, const Eigen::Vector3d& torso) const;
   std::vector<RefereeMove> Enforce(const std::vector<RefereePlayer>& players, const Eigen::Vector3d& ball);
   static void ResetCounts(Counts* c);
+  // Moves the player's torso to `wanted`, or to the safe spot near it (safe_spot.h); where it went.
+  Eigen::Vector3d Place(Side side, int unum, const Eigen::Vector3d& wanted, bool safe);
 
   FoulRules rules_;
   Rng rng_;
   std::map<Player, Counts> counts_;
+  // During Update: every player as the moves so far left it, and the ball.
+  std::vector<SpotPlayer> spots_;
+  Eigen::Vector3d ball_ = Eigen::Vector3d::Zero();
 };
 
 }  // namespace turf::simspark

@@ -313,5 +313,24 @@ TEST(FoulReferee, APauseKeepsTheGroupsOfBeforeIt) {
   }
 }
 
+// The spot outside is the safe one nearest it (safe_spot.h): a robot already standing there pushes it along.
+TEST(FoulReferee, TheSpotOutsideAvoidsARobotStandingOnIt) {
+  FoulReferee referee;
+  RefereePlayer standing = At(-1.8, -10.5, 0.35, 9, Side::kRight);
+  standing.box = Eigen::AlignedBox3d(Eigen::Vector3d(-1.9, -10.6, 0.0), Eigen::Vector3d(-1.7, -10.4, 0.55));
+  std::vector<RefereeMove> m;
+  EXPECT_EQ(CyclesUntilMoved(
+                [&] {
+                  return referee.Update(false, {At(3, 1, 0.1), standing}, {}, kBall);
+                },
+                2000, &m),
+            751);
+  for (int i = 0; i < 25; ++i) m = referee.Update(false, {At(3, 1, 1.2), standing}, {}, kBall);
+  ASSERT_EQ(m.size(), 1u);
+  ASSERT_TRUE(m[0].outside);
+  EXPECT_GT(standing.box.squaredExteriorDistance(m[0].position), 0.4 * 0.4) << m[0].position.transpose();
+  EXPECT_LT((m[0].position - Eigen::Vector3d(-1.8, -10.5, 0.4)).norm(), 1.5) << "near the spot";
+}
+
 }  // namespace
 }  // namespace turf::simspark
