@@ -6,8 +6,11 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "core/state_io.h"
 
@@ -38,5 +41,11 @@ class Rng {
   bool has_spare_ = false;
   double spare_ = 0.0;
 };
+
+// Fisher-Yates from the back: element i - 1 swaps with one drawn as Next() % i (the same order everywhere).
+template <class T>
+void Shuffle(std::vector<T>* v, Rng& rng) {
+  for (std::size_t i = v->size(); i > 1; --i) std::swap((*v)[i - 1], (*v)[rng.Next() % i]);
+}
 
 }  // namespace turf

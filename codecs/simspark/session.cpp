@@ -97,14 +97,37 @@ FoulRules FoulRulesOf(const GameRules& game) {
   return rules;
 }
 
+SafeSpotRules SpotRulesOf(const GameRules& game) {
+  SafeSpotRules rules;
+  rules.field_length = game.field_length;
+  rules.goal_width = game.goal_width;
+  rules.penalty_depth = game.penalty_depth;
+  rules.penalty_width = game.penalty_width;
+  return rules;
+}
+
 }  // namespace
+
+// The players as the referee sees them after a cycle, and the robots they are in.
+struct Session::RefereeView {
+  using Player = std::pair<Side, int>;
+  std::vector<RefereePlayer> players;
+  std::map<Player, std::string> robot_of;
+  std::map<Player, Eigen::Quaterniond> orientation_of;  // the torso's
+  std::map<std::string, Player> player_of;              // by robot
+
+  // A move of the player's torso to `to`, as it lies (orientation and joints kept), before the next step.
+  RobotMove MoveTo(Side side, int unum, const Eigen::Vector3d& to) const {
+    return {robot_of.at({side, unum}), to, orientation_of.at({side, unum}), false};
+  }
+};
 
 Session::Session(SessionOptions options, std::vector<std::string> robots, std::vector<RobotMove> park)
     : options_(std::move(options)),
       robots_(std::move(robots)),
       park_(std::move(park)),
       robot_owner_(robots_.size(), -1),
-      game_(options_.rules),
+      game_(options_.rules, StreamSeed(options_.seed, "simspark/game")),
       fouls_(FoulRulesOf(options_.rules), StreamSeed(options_.seed, "simspark/fouls")),
       field_(StandardField3d()),
       beam_rng_(StreamSeed(options_.seed, "simspark/beam")) {
@@ -430,7 +453,9 @@ void Session::Advance(WorldSnapshot snapshot) {
   const GameUpdate update = game_.Update(0.02, world.ball, touchers);
   if (update.place_ball) requests_.ball = BallMove{*update.place_ball, Eigen::Vector3d::Zero()};
   CheckSelfCollisions(world);
-  CheckFouls(world, touchers);
+  RefereeView view = ViewOf(world, touchers);
+  ClearPlayers(update.clearings, &view);
+  CheckFouls(view, world, update.place_ball.value_or(world.ball));
   // Every player's seen parts, once per cycle for all agents' vision.
   players_.clear();
   for (const auto& [id, other] : agents_) {
@@ -469,34 +494,55 @@ void Session::CheckSelfCollisions(const WorldSnapshot& world) {
         c.unum, c.link1, c.link2, c.depth, fmt::join(c.frozen, " "), kSelfCollisionFrozenTime));
 }
 
-// The referee's fouls of single players: after incapable and charging the player is held in the air, then put
-// outside the field, as it lies (torso orientation and joints kept); after touching it is pushed out of the crowd.
-void Session::CheckFouls(const WorldSnapshot& world, const std::vector<Toucher>& touchers) {
-  std::vector<RefereePlayer> players;
-  std::map<std::pair<Side, int>, const RobotSnapshot::Link*> torso_of;
-  std::map<std::pair<Side, int>, std::string> robot_of;
-  std::map<std::string, std::pair<Side, int>> player_of;  // by robot
+Session::RefereeView Session::ViewOf(const WorldSnapshot& world, const std::vector<Toucher>& touchers) const {
+  RefereeView view;
   for (const auto& [id, a] : agents_) {
     if (!a.inited || a.robot < 0) continue;
     const RobotSnapshot* robot = world.Find(robots_[a.robot]);
     const RobotSnapshot::Link* torso = robot != nullptr ? robot->FindLink("torso") : nullptr;
     if (torso == nullptr) continue;
     const bool touching = std::find(touchers.begin(), touchers.end(), Toucher{a.side, a.unum}) != touchers.end();
-    players.push_back({a.side, a.unum, torso->position, robot->velocity, touching, BoundingBox(*robot, a.type)});
-    torso_of[{a.side, a.unum}] = torso;
-    robot_of[{a.side, a.unum}] = robots_[a.robot];
-    player_of[robots_[a.robot]] = {a.side, a.unum};
+    view.players.push_back({a.side, a.unum, torso->position, robot->velocity, touching, BoundingBox(*robot, a.type)});
+    view.robot_of[{a.side, a.unum}] = robots_[a.robot];
+    view.orientation_of[{a.side, a.unum}] = torso->orientation;
+    view.player_of[robots_[a.robot]] = {a.side, a.unum};
   }
+  return view;
+}
+
+// The game's own moves of players away from the ball (clearing.h), before the referee judges fouls: they see where
+// the players were put, and a player moved is not judged for charging for 1 s (as after the referee's moves).
+void Session::ClearPlayers(const std::vector<Clearing>& clearings, RefereeView* view) {
+  if (clearings.empty()) return;
+  std::vector<SpotPlayer> spots;
+  for (const RefereePlayer& p : view->players) spots.push_back({p.side, p.unum, p.torso, p.box});
+  SpotBoard board(std::move(spots), clearings.front().ball, SpotRulesOf(options_.rules));
+  for (const ClearingMove& m : Clear(clearings, options_.rules.field_length, &board)) {
+    for (RefereePlayer& p : view->players) {
+      if (p.side != m.side || p.unum != m.unum) continue;
+      if (!p.box.isEmpty()) p.box.translate(m.position - p.torso);
+      p.torso = m.position;
+    }
+    fouls_.Moved(m.side, m.unum);
+    requests_.moves.push_back(view->MoveTo(m.side, m.unum, m.position));
+    notes_.push_back(
+        fmt::format("player {} {} moved away from the ball (the game's clearing in {}) to ({:.2f}, {:.2f})",
+                    SideName(m.side), m.unum, PlayModeName(game_.play_mode()), m.position.x(), m.position.y()));
+  }
+}
+
+// The referee's fouls of single players: after incapable and charging the player is held in the air, then put
+// outside the field, as it lies (torso orientation and joints kept); after touching it is pushed out of the crowd.
+void Session::CheckFouls(const RefereeView& view, const WorldSnapshot& world, const Eigen::Vector3d& ball) {
   std::vector<PlayerContact> contacts;
   for (const RobotTouch& t : world.robot_contacts) {
-    const auto a = player_of.find(t.robot_a);
-    const auto b = player_of.find(t.robot_b);
-    if (a == player_of.end() || b == player_of.end()) continue;  // a parked robot: no player
+    const auto a = view.player_of.find(t.robot_a);
+    const auto b = view.player_of.find(t.robot_b);
+    if (a == view.player_of.end() || b == view.player_of.end()) continue;  // a parked robot: no player
     contacts.push_back({a->second.first, a->second.second, b->second.first, b->second.second, t.point});
   }
-  for (const RefereeMove& m : fouls_.Update(game_.paused(), players, contacts, world.ball)) {
-    const std::pair<Side, int> who{m.side, m.unum};
-    requests_.moves.push_back({robot_of.at(who), m.position, torso_of.at(who)->orientation, false});
+  for (const RefereeMove& m : fouls_.Update(game_.paused(), view.players, contacts, ball)) {
+    requests_.moves.push_back(view.MoveTo(m.side, m.unum, m.position));
     if (m.foul == Foul::kTouching) {
       notes_.push_back(
           fmt::format("player {} {} pushed out of a group of {} players touching (the referee's touching "
@@ -643,7 +689,7 @@ std::string Session::TakeMonitorOutput() { return std::exchange(monitor_, {}); }
 
 namespace {
 
-constexpr uint32_t kLeagueVersion = 4;
+constexpr uint32_t kLeagueVersion = 5;
 constexpr size_t kMaxItems = 4096;  // robots, joints, links, moves, players: far above any scene
 constexpr size_t kMaxName = 256;    // a robot, joint, link or team name
 

@@ -212,7 +212,10 @@ class Session {
   SeeItems See(const Agent& agent, const RobotSnapshot& robot, const WorldSnapshot& world);
   const std::vector<int>& HingeIndex(int type, const RobotSnapshot& robot);
   void CheckSelfCollisions(const WorldSnapshot& world);
-  void CheckFouls(const WorldSnapshot& world, const std::vector<Toucher>& touchers);
+  struct RefereeView;
+  RefereeView ViewOf(const WorldSnapshot& world, const std::vector<Toucher>& touchers) const;
+  void ClearPlayers(const std::vector<Clearing>& clearings, RefereeView* view);
+  void CheckFouls(const RefereeView& view, const WorldSnapshot& world, const Eigen::Vector3d& ball);
   void ApplyFreezes(std::map<std::string, std::vector<JointVelocity>>* joints) const;
 
   SessionOptions options_;

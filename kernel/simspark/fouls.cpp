@@ -132,22 +132,6 @@ void FoulReferee::JudgeCharging(const std::vector<RefereePlayer>& players, const
   counts_ = std::move(next);
 }
 
-// MoveAgent: the move, through GetSafeReposition when `safe`; later moves of the cycle see it.
-Eigen::Vector3d FoulReferee::Place(Side side, int unum, const Eigen::Vector3d& wanted, bool safe) {
-  SafeSpotRules spot;
-  spot.field_length = rules_.field_length;
-  spot.goal_width = rules_.goal_width;
-  spot.penalty_depth = rules_.penalty_depth;
-  spot.penalty_width = rules_.penalty_width;
-  const Eigen::Vector3d to = safe ? SafeSpot(wanted, side, unum, spots_, ball_, spot) : wanted;
-  for (SpotPlayer& p : spots_) {
-    if (p.side != side || p.unum != unum) continue;
-    if (!p.box.isEmpty()) p.box.translate(to - p.torso);
-    p.torso = to;
-  }
-  return to;
-}
-
 // AnalyseTouchGroups and PenalizeTouchingFoul: the pushes.
 std::vector<RefereeMove> FoulReferee::JudgeTouching(const std::vector<RefereePlayer>& players,
                                                     const std::vector<PlayerContact>& contacts) {
@@ -172,7 +156,8 @@ std::vector<RefereeMove> FoulReferee::JudgeTouching(const std::vector<RefereePla
     c.foul_time = 1;
     c.foul = Foul::kTouching;
     c.since_moved = 0;
-    moves.push_back({p.side, p.unum, Place(p.side, p.unum, f.position, true), false, Foul::kTouching, f.group_size});
+    moves.push_back(
+        {p.side, p.unum, board_->Place(p.side, p.unum, f.position, true), false, Foul::kTouching, f.group_size});
   }
   for (size_t i = 0; i < touch.size(); ++i)
     counts_.at({touch[i].side, touch[i].unum}).last_group_size = groups.group_sizes[i];
@@ -201,12 +186,12 @@ std::vector<RefereeMove> FoulReferee::Enforce(const std::vector<RefereePlayer>& 
     if (c.foul_time <= rules_.hold_time / kCycle) {
       Tick(&c.foul_time);
       const Eigen::Vector3d held(p.torso.x(), p.torso.y(), kHoldHeight + c.foul_time * 0.01);
-      moves.push_back({p.side, p.unum, Place(p.side, p.unum, held, false), false, c.foul});
+      moves.push_back({p.side, p.unum, board_->Place(p.side, p.unum, held, false), false, c.foul});
       continue;
     }
     const double x = (p.side == Side::kLeft ? -kOutsideSpacing : kOutsideSpacing) * (7 - p.unum);
     const double y = (rules_.field_width / 2 + kOutsideMargin) * (ball.y() < 0 ? 1.0 : -1.0);
-    moves.push_back({p.side, p.unum, Place(p.side, p.unum, {x, y, kOutsideHeight}, true), true, c.foul});
+    moves.push_back({p.side, p.unum, board_->Place(p.side, p.unum, {x, y, kOutsideHeight}, true), true, c.foul});
     ResetCounts(&c);
   }
   return moves;
@@ -218,12 +203,17 @@ std::vector<RefereeMove> FoulReferee::Update(bool paused, const std::vector<Refe
   std::vector<RefereePlayer> players;
   for (const RefereePlayer& p : given)
     if (p.torso.allFinite() && p.velocity.allFinite()) players.push_back(p);
-  spots_.clear();
+  std::vector<SpotPlayer> spots;
   for (const RefereePlayer& p : players)
-    spots_.push_back(
+    spots.push_back(
         {p.side, p.unum, p.torso,
          p.box.isEmpty() || !p.box.min().allFinite() || !p.box.max().allFinite() ? Eigen::AlignedBox3d() : p.box});
-  ball_ = ball;
+  SafeSpotRules spot;
+  spot.field_length = rules_.field_length;
+  spot.goal_width = rules_.goal_width;
+  spot.penalty_depth = rules_.penalty_depth;
+  spot.penalty_width = rules_.penalty_width;
+  board_.emplace(std::move(spots), ball, spot);
   for (const RefereePlayer& p : players) {
     Counts& c = counts_[{p.side, p.unum}];
     std::rotate(c.velocities.rbegin(), c.velocities.rbegin() + 1, c.velocities.rend());

@@ -44,6 +44,7 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -110,6 +111,10 @@ class FoulReferee {
   std::vector<RefereeMove> Update(bool paused, const std::vector<RefereePlayer>& players,
                                   const std::vector<PlayerContact>& contacts, const Eigen::Vector3d& ball);
 
+  // The game moved the player (clearing.h) this cycle, before Update: as after the referee's own moves, it is not
+  // judged for charging for 1 s (SoccerRuleAspect::MoveAgent resets its time since it was moved).
+  void Moved(Side side, int unum) { counts_[{side, unum}].since_moved = 0; }
+
   // Every player's counts, for league snapshots. A restore that fails changes nothing.
   void Save(StateWriter& out) const;
   void Restore(StateReader& in);
@@ -139,15 +144,12 @@ class FoulReferee {
   bool GoalieInOwnArea(Side side, int unum, const Eigen::Vector3d& torso) const;
   std::vector<RefereeMove> Enforce(const std::vector<RefereePlayer>& players, const Eigen::Vector3d& ball);
   static void ResetCounts(Counts* c);
-  // Moves the player's torso to `wanted`, or to the safe spot near it (safe_spot.h); where it went.
-  Eigen::Vector3d Place(Side side, int unum, const Eigen::Vector3d& wanted, bool safe);
 
   FoulRules rules_;
   Rng rng_;
   std::map<Player, Counts> counts_;
-  // During Update: every player as the moves so far left it, and the ball.
-  std::vector<SpotPlayer> spots_;
-  Eigen::Vector3d ball_ = Eigen::Vector3d::Zero();
+  // During Update: every player as the moves so far left it, and the ball (the moves go through it).
+  std::optional<SpotBoard> board_;
 };
 
 }  // namespace turf::simspark

@@ -45,29 +45,25 @@ constexpr double kKickDuration = 0.1 - 1e-6;
 // UpdateCornerKick / UpdateGoalKick: time > lastChange + mKickInPauseTime + 0.03).
 constexpr double kSetPieceTouchMargin = 0.03;
 
-// KickIn, corner, goal kick and the free kicks (offside's rule is compiled out
-// in the reference: SoccerRuleAspect::UpdateOffside is "#if 0").
-bool IsSetPiece(PlayMode mode) {
+// The team taking a set piece (kick-in, corner, goal kick, free kicks).
+Side SetPieceTeam(PlayMode mode) {
   switch (mode) {
     case PlayMode::kKickInLeft:
-    case PlayMode::kKickInRight:
     case PlayMode::kCornerKickLeft:
-    case PlayMode::kCornerKickRight:
     case PlayMode::kGoalKickLeft:
-    case PlayMode::kGoalKickRight:
     case PlayMode::kFreeKickLeft:
-    case PlayMode::kFreeKickRight:
     case PlayMode::kDirectFreeKickLeft:
-    case PlayMode::kDirectFreeKickRight:
-      return true;
+      return Side::kLeft;
     default:
-      return false;
+      return Side::kRight;
   }
 }
 
 }  // namespace
 
-Game::Game(GameRules rules) : rules_(rules) {}
+Game::Game(GameRules rules, uint64_t seed) : rules_(rules), rng_(seed) {
+  free_kick_pos_ = {0.0, 0.0, rules_.ball_radius};  // SoccerRuleAspect's constructor
+}
 
 std::optional<std::string> Game::CompositionError(const Team& team, int robot_type) const {
   std::array<int, kRobotTypes> count{};
@@ -173,10 +169,6 @@ Pose2 Game::StartPose(Side side, int unum) const {
   return {x, y, 180.0};
 }
 
-bool Game::InPlay() const {
-  return mode_ == PlayMode::kPlayOn || mode_ == PlayMode::kPassLeft || mode_ == PlayMode::kPassRight;
-}
-
 double Game::mode_time() const {
   // GameStateAspect::GetModeTime: mLeadTime in BeforeKickOff, mFupTime in
   // GameOver, else mTime - mLastModeChange (game time).
@@ -189,8 +181,6 @@ void Game::ChangeMode(PlayMode mode) {
   mode_ = mode;
   mode_start_ = game_time_;  // GameStateAspect::SetPlayMode: mLastModeChange = mTime
   idle_time_ = 0.0;
-  out_position_.reset();
-  goal_kick_touched_ = false;
 }
 
 void Game::StartKickOff(Side side) {
@@ -198,24 +188,44 @@ void Game::StartKickOff(Side side) {
   last_kick_off_half_ = half_;  // GameStateAspect::KickOff: mLastKickOffGameHalf
 }
 
+Eigen::Vector3d Game::OutOfPenaltyAreas(Eigen::Vector3d p) const {
+  // SoccerRuleAspect::DropBall and UpdateFreeKick: a ball in a penalty box (edges included) goes to the box's front
+  // corner on its side of the x axis (y < 0: -, else +).
+  for (const Side side : {Side::kLeft, Side::kRight}) {
+    const Eigen::AlignedBox2d area = PenaltyArea(side);
+    if (!area.contains(p.head<2>())) continue;
+    p.x() = side == Side::kLeft ? area.max().x() : area.min().x();
+    p.y() = p.y() < 0.0 ? area.min().y() : area.max().y();
+    break;
+  }
+  return p;
+}
+
 Eigen::Vector3d Game::DropPosition(const Eigen::Vector3d& ball) const {
-  const double hl = rules_.field_length / 2.0;
+  // SoccerRuleAspect::DropBall: out of the penalty areas, and a ball on or beyond a touch line to a radius inside.
   const double hw = rules_.field_width / 2.0;
   const double r = rules_.ball_radius;
-  // x: turf's own clamp (turf drops an out ball; the reference awards a set piece).
-  Eigen::Vector3d p(std::clamp(ball.x(), -hl + r, hl - r), ball.y(), r);
-  // SoccerRuleAspect::DropBall: a ball in a penalty box (edges included) goes to
-  // the box's front corner on its side of the x axis (y < 0: -, else +)...
-  const double front = hl - rules_.penalty_depth;
-  const double side = rules_.penalty_width / 2.0;
-  if (std::abs(p.x()) >= front && std::abs(p.y()) <= side) {
-    p.x() = std::copysign(front, p.x());
-    p.y() = p.y() < 0.0 ? -side : side;
-  }
-  // ...and one on or beyond a touch line to a radius inside it.
+  Eigen::Vector3d p = OutOfPenaltyAreas(ball);
   if (p.y() <= -hw) p.y() = -hw + r;
   if (p.y() >= hw) p.y() = hw - r;
   return p;
+}
+
+Eigen::AlignedBox2d Game::Half(Side side) const {
+  // SoccerRuleAspect::UpdateCachedInternal: 10 m beyond the field on three sides, "so that no opponents sneak up
+  // from behind".
+  const double hl = rules_.field_length / 2.0 + 10.0;
+  const double hw = rules_.field_width / 2.0 + 10.0;
+  if (side == Side::kLeft) return Eigen::AlignedBox2d(Eigen::Vector2d(-hl, -hw), Eigen::Vector2d(0.0, hw));
+  return Eigen::AlignedBox2d(Eigen::Vector2d(0.0, -hw), Eigen::Vector2d(hl, hw));
+}
+
+Eigen::AlignedBox2d Game::PenaltyArea(Side side) const {
+  const double hl = rules_.field_length / 2.0;
+  const double front = hl - rules_.penalty_depth;
+  const double w = rules_.penalty_width / 2.0;
+  if (side == Side::kLeft) return Eigen::AlignedBox2d(Eigen::Vector2d(-hl, -w), Eigen::Vector2d(-front, w));
+  return Eigen::AlignedBox2d(Eigen::Vector2d(front, -w), Eigen::Vector2d(hl, w));
 }
 
 void Game::CheckHalfTime() {
@@ -228,47 +238,56 @@ void Game::CheckHalfTime() {
   }
 }
 
-void Game::TakeKick(const Toucher& taker) {
+void Game::TakeKick(const Toucher& taker, double time, bool indirect) {
   // SoccerRuleAspect::SetKickTakenValues: the taker and the game time of its touch.
-  kick_check_ = taker.known;
+  kick_check_ = true;
   kick_taker_ = taker;
-  kick_time_ = game_time_;
+  kick_time_ = time;
+  indirect_kick_ = indirect;
+}
+
+void Game::ResetKickChecks() {
+  kick_check_ = false;
+  indirect_kick_ = false;
+}
+
+bool Game::LastTouchIsTheKick() const {
+  return kick_taker_ && last_toucher_ && *last_toucher_ == *kick_taker_ &&
+         last_touch_time_ - kick_time_ < kKickDuration;
 }
 
 void Game::UpdateKickChecks(const Eigen::Vector3d& ball, const std::vector<Toucher>& touchers) {
   // SoccerRuleAspect::Update, before the mode's rule: the kick-off team may
   // score once the other team touched the ball or it touched the ball outside
   // the centre circle (FreeKickDistance).
-  if (kick_off_team_no_score_) {
-    const bool outside_circle = ball.head<2>().norm() > rules_.free_kick_distance;
-    for (const Toucher& t : touchers) {
-      if (!t.known || t.side != *kick_off_team_no_score_ || outside_circle) kick_off_team_no_score_.reset();
-      if (!kick_off_team_no_score_) break;
-    }
+  if (!kick_off_team_no_score_) return;
+  const bool outside_circle = ball.head<2>().norm() > rules_.free_kick_distance;
+  for (const Toucher& t : touchers) {
+    if (t.side != *kick_off_team_no_score_ || outside_circle) kick_off_team_no_score_.reset();
+    if (!kick_off_team_no_score_) break;
   }
 }
 
-GameUpdate Game::Update(double dt, const Eigen::Vector3d& ball, bool touched) {
-  std::vector<Toucher> touchers;
-  if (touched) touchers.push_back(Toucher{Side::kLeft, 0, false});
-  return Update(dt, ball, touchers);
-}
-
-GameUpdate Game::Update(double dt, const Eigen::Vector3d& ball, const std::vector<Toucher>& touchers) {
+// One Update in the making: what it asks of the caller, and the ball as the cycle's placements left it.
+struct Game::Cycle {
   GameUpdate update;
-  const auto place = [&](const Eigen::Vector3d& p, bool drop) {
+  Eigen::Vector3d ball;
+  bool on_field = true;
+
+  // SoccerRuleAspect::MoveBall: the ball, at rest, and the free-kick spot go there.
+  void MoveBall(const Eigen::Vector3d& p, bool drop, Game* game) {
     update.place_ball = p;
     update.dropped_ball = drop;
-  };
-  // SoccerRuleAspect::DropBall: the ball moves, the kick checks end, PlayOn.
-  const auto drop_ball = [&](const Eigen::Vector3d& at) {
-    place(DropPosition(at), true);
-    kick_check_ = false;
-    ChangeMode(PlayMode::kPlayOn);
-  };
+    ball = p;
+    game->free_kick_pos_ = {p.x(), p.y(), game->rules_.ball_radius};
+  }
+};
+
+GameUpdate Game::Update(double dt, const Eigen::Vector3d& ball, const std::vector<Toucher>& touchers) {
+  Cycle c{{}, ball};
   if (pending_drop_) {
     pending_drop_ = false;
-    place(DropPosition(ball), true);
+    DropBallAt(c, ball);
   }
   // GameStateAspect::UpdateTime: game time stops in BeforeKickOff and GameOver.
   if (mode_ != PlayMode::kBeforeKickOff && mode_ != PlayMode::kGameOver) {
@@ -276,156 +295,312 @@ GameUpdate Game::Update(double dt, const Eigen::Vector3d& ball, const std::vecto
   } else {
     idle_time_ += dt;
   }
+  // BallStateAspect::Update: the last toucher, whether the ball is on the field, where it last was.
+  if (!touchers.empty()) {
+    last_toucher_ = touchers.front();
+    last_touch_time_ = game_time_;
+  }
+  const double r = rules_.ball_radius;
+  c.on_field = std::abs(c.ball.x()) < rules_.field_length / 2.0 + r + 0.001 &&
+               std::abs(c.ball.y()) < rules_.field_width / 2.0 + r + 0.001;
+  if (c.on_field) last_on_field_ = c.ball;
   CheckHalfTime();  // SoccerRuleAspect::Update checks the time first
   paused_ = PausedAfter(mode_, paused_);
-  UpdateKickChecks(ball, touchers);
-  const bool touched = !touchers.empty();
+  UpdateKickChecks(c.ball, touchers);
 
-  const double hl = rules_.field_length / 2.0;
-  const double hw = rules_.field_width / 2.0;
-  const double r = rules_.ball_radius;
   switch (mode_) {
     case PlayMode::kBeforeKickOff:
-      // SoccerRuleAspect::UpdateBeforeKickOff: with an agent connected, the ball
-      // is held at the centre; AutomaticKickOff false (naosoccersim.rb), so no
-      // kick-off after WaitBeforeKickOff.
-      if (PlayerCount(Side::kLeft) + PlayerCount(Side::kRight) > 0) {
-        update.place_ball_at_centre = true;
-        place({0.0, 0.0, r}, false);
-      }
+      UpdateBeforeKickOff(c);
       break;
     case PlayMode::kKickOffLeft:
     case PlayMode::kKickOffRight:
-      // SoccerRuleAspect::UpdateKickOff: every cycle the kick checks reset and
-      // the kick-off team may score;
-      kick_check_ = false;
-      kick_off_team_no_score_.reset();
-      if (mode_time() > rules_.drop_ball_time) {
-        // untouched for more than RuleDropBallTime (15 s): drop ball where it
-        // is, PlayOn, for nobody in particular;
-        drop_ball(ball);
-      } else if (touched) {
-        // the first touch: PlayOn. With more than 2 agents (GameControlServer::
-        // GetAgentCount() > 2; here: registered players) the toucher took an
-        // indirect kick and its team may not score yet.
-        if (PlayerCount(Side::kLeft) + PlayerCount(Side::kRight) > 2) {
-          TakeKick(touchers.front());
-          if (touchers.front().known) kick_off_team_no_score_ = touchers.front().side;
-        }
-        ChangeMode(PlayMode::kPlayOn);
-      }
+      UpdateKickOff(c, mode_ == PlayMode::kKickOffLeft ? Side::kLeft : Side::kRight);
       break;
     case PlayMode::kGoalLeft:
-    case PlayMode::kGoalRight:
-      // SoccerRuleAspect::UpdateGoal: after RuleGoalPauseTime (mode time >= 3 s)
-      // the ball goes to the centre and the team scored on kicks off.
+    case PlayMode::kGoalRight: {
+      // SoccerRuleAspect::Update clears for the coming kick-off; UpdateGoal: after RuleGoalPauseTime (mode time
+      // >= 3 s) the ball goes to the centre and the team scored on kicks off.
+      const Side kicks_off = mode_ == PlayMode::kGoalLeft ? Side::kRight : Side::kLeft;
+      ClearBeforeKickOff(c, kicks_off);
       if (mode_time() >= rules_.goal_pause) {
-        StartKickOff(mode_ == PlayMode::kGoalLeft ? Side::kRight : Side::kLeft);
-        update.place_ball_at_centre = true;
-        place({0.0, 0.0, r}, false);
+        StartKickOff(kicks_off);
+        c.update.place_ball_at_centre = true;
+        c.MoveBall({0.0, 0.0, r}, false, this);
       }
       break;
+    }
     case PlayMode::kGameOver:
     case PlayMode::kOffsideLeft:
     case PlayMode::kOffsideRight:
       break;
-    default:
-      if (IsSetPiece(mode_)) {
-        // UpdateKickIn / UpdateFreeKick / UpdateCornerKick / UpdateGoalKick:
-        // nothing during RuleKickInPauseTime; then the kick checks reset, a drop
-        // ball after more than RuleDropBallTime, PlayOn at a touch more than
-        // 0.03 s after the pause, the toucher having taken the kick.
-        if (mode_time() < rules_.kick_in_pause) break;
-        kick_check_ = false;
-        if (mode_time() > rules_.drop_ball_time) {
-          drop_ball(ball);
-          break;
-        }
-        const bool counts = touched && mode_time() > rules_.kick_in_pause + kSetPieceTouchMargin;
-        if (mode_ == PlayMode::kGoalKickLeft || mode_ == PlayMode::kGoalKickRight) {
-          // UpdateGoalKick: PlayOn once the ball, touched, is out of the team's
-          // penalty box (or off the field); the last toucher took the kick.
-          if (counts) {
-            goal_kick_touched_ = true;
-            kick_taker_ = touchers.front();
-            kick_time_ = game_time_;
-          }
-          // Out of the box: beyond its front edge or wider than it (strictly),
-          // or off the field (BallStateAspect::UpdateBallOnField).
-          const double front = hl - rules_.penalty_depth;
-          const bool left = mode_ == PlayMode::kGoalKickLeft;
-          const bool off_field = std::abs(ball.x()) >= hl + r + 0.001 || std::abs(ball.y()) >= hw + r + 0.001;
-          const bool out_of_box =
-              (left ? ball.x() > -front : ball.x() < front) || std::abs(ball.y()) > rules_.penalty_width / 2.0;
-          if (goal_kick_touched_ && (off_field || out_of_box)) {
-            const Toucher taker = *kick_taker_;
-            const double at = kick_time_;
-            TakeKick(taker);
-            kick_time_ = at;
-            ChangeMode(PlayMode::kPlayOn);
-          }
-        } else if (counts) {
-          TakeKick(touchers.front());
-          ChangeMode(PlayMode::kPlayOn);
-        }
-        break;
-      }
-      // UpdatePassMode: PlayOn after PassModeDuration (4 s) or at a touch; then
-      // the PlayOn rules in the same cycle.
-      if ((mode_ == PlayMode::kPassLeft || mode_ == PlayMode::kPassRight) &&
-          (mode_time() >= rules_.pass_duration || touched)) {
+    case PlayMode::kPlayOn:
+      UpdatePlayOn(c);
+      break;
+    case PlayMode::kPassLeft:
+    case PlayMode::kPassRight: {
+      // UpdatePassMode: PlayOn after PassModeDuration (4 s) or at a touch since the mode began; the PlayOn rules;
+      // while still in the mode, the other team kept away from the ball.
+      const PlayMode pass = mode_;
+      if (mode_time() >= rules_.pass_duration || (last_toucher_ && last_touch_time_ >= mode_start_))
         ChangeMode(PlayMode::kPlayOn);
-      }
-      if (!InPlay()) break;
-      // UpdatePlayOn -> CheckFreeKickTakerFoul: the kick's taker touching the
-      // ball again 0.1 s or more after its kick, before anybody else did:
-      // indirect free kick for the other team (AwardFreeKick). Another
-      // player's touch ends the check (several at once: not the taker alone).
-      if (kick_check_ && touched) {
-        const bool taker_alone = std::all_of(touchers.begin(), touchers.end(),
-                                             [&](const Toucher& t) { return kick_taker_ && t == *kick_taker_; });
-        if (!taker_alone) {
-          kick_check_ = false;
-        } else if (game_time_ - kick_time_ >= kKickDuration) {
-          kick_check_ = false;
-          ChangeMode(kick_taker_->side == Side::kLeft ? PlayMode::kFreeKickRight : PlayMode::kFreeKickLeft);
-          break;
-        }
-      }
-      if (out_position_) {
-        out_time_ += dt;
-        if (out_time_ >= rules_.kick_in_pause) {
-          place(DropPosition(*out_position_), true);
-          out_position_.reset();
-        }
-        break;
-      }
-      if (std::abs(ball.x()) > hl + r && std::abs(ball.y()) < rules_.goal_width / 2.0 &&
-          ball.z() < rules_.goal_height) {
-        const Side scorer = ball.x() > 0.0 ? Side::kLeft : Side::kRight;
-        if (kick_off_team_no_score_ == scorer) {
-          // CheckGoal -> PunishIndirectKickGoal: the kick-off team scored before
-          // it was allowed to: goal kick for the team scored on, the ball on its
-          // spot GoalKickDist in front of the goal line (AwardGoalKick).
-          const Side defender = Opponent(scorer);
-          ChangeMode(defender == Side::kLeft ? PlayMode::kGoalKickLeft : PlayMode::kGoalKickRight);
-          const double spot = hl - rules_.goal_kick_distance;
-          place({defender == Side::kLeft ? -spot : spot, 0.0, r}, false);
-          break;
-        }
-        update.goal = true;
-        update.scored_by = scorer;
-        ++score_[Index(update.scored_by)];
-        ChangeMode(update.scored_by == Side::kLeft ? PlayMode::kGoalLeft : PlayMode::kGoalRight);
-      } else if (std::abs(ball.x()) > hl + r || std::abs(ball.y()) > hw + r) {
-        out_position_ = ball;
-        out_time_ = 0.0;
-      }
+      UpdatePlayOn(c);
+      if (mode_ == pass)
+        Repel(c, c.ball, rules_.pass_mode_distance, 0.1, pass == PlayMode::kPassLeft ? Side::kRight : Side::kLeft);
+      break;
+    }
+    default:
+      UpdateSetPiece(c);
       break;
   }
-  update.play_mode_changed = mode_ != reported_mode_;
+  c.update.play_mode_changed = mode_ != reported_mode_;
   reported_mode_ = mode_;
-  return update;
+  return c.update;
+}
+
+void Game::UpdateBeforeKickOff(Cycle& c) {
+  // SoccerRuleAspect::UpdateBeforeKickOff: with an agent connected, the ball is held at the centre and each team
+  // is cleared from the other's half, in a random order; AutomaticKickOff false (naosoccersim.rb), so no kick-off
+  // after WaitBeforeKickOff.
+  if (PlayerCount(Side::kLeft) + PlayerCount(Side::kRight) == 0) return;
+  c.update.place_ball_at_centre = true;
+  c.MoveBall({0.0, 0.0, rules_.ball_radius}, false, this);
+  const bool left_first = rng_.Next() % 2 == 0;
+  for (const Side team : {left_first ? Side::kLeft : Side::kRight, left_first ? Side::kRight : Side::kLeft})
+    ClearBox(c, Half(Opponent(team)), team);
+}
+
+void Game::UpdateKickOff(Cycle& c, Side side) {
+  // SoccerRuleAspect::UpdateKickOff: every cycle the kick checks reset, the kick-off team may score and the teams
+  // are cleared;
+  ResetKickChecks();
+  kick_off_team_no_score_.reset();
+  ClearBeforeKickOff(c, side);
+  if (mode_time() > rules_.drop_ball_time) {
+    // untouched for more than RuleDropBallTime (15 s): drop ball where it is, PlayOn, for nobody in particular;
+    DropBallAt(c, c.ball);
+    return;
+  }
+  // the first touch since the mode began: PlayOn. With more than 2 agents (GameControlServer::GetAgentCount() > 2;
+  // here: registered players) the toucher took an indirect kick and its team may not score yet.
+  if (!last_toucher_ || last_touch_time_ <= mode_start_) return;
+  if (PlayerCount(Side::kLeft) + PlayerCount(Side::kRight) > 2) {
+    TakeKick(*last_toucher_, last_touch_time_, true);
+    kick_off_team_no_score_ = last_toucher_->side;
+  }
+  ChangeMode(PlayMode::kPlayOn);
+}
+
+void Game::UpdateSetPiece(Cycle& c) {
+  // UpdateKickIn / UpdateFreeKick / UpdateCornerKick / UpdateGoalKick.
+  const PlayMode mode = mode_;
+  const Side team = SetPieceTeam(mode);
+  const bool goal_kick = mode == PlayMode::kGoalKickLeft || mode == PlayMode::kGoalKickRight;
+  const bool corner = mode == PlayMode::kCornerKickLeft || mode == PlayMode::kCornerKickRight;
+  const bool free_kick = !goal_kick && !corner && mode != PlayMode::kKickInLeft && mode != PlayMode::kKickInRight;
+  // Nothing during RuleKickInPauseTime but arming the push from the spot.
+  if (mode_time() < rules_.kick_in_pause) {
+    repel_for_kick_ = true;
+    return;
+  }
+  ResetKickChecks();
+  // A free kick is not taken in a penalty area: its spot moves to the area's front corner.
+  if (free_kick) free_kick_pos_ = OutOfPenaltyAreas(free_kick_pos_);
+  // The other team is cleared from the spot (a goal kick: from the penalty area).
+  if (goal_kick) {
+    ClearBox(c, PenaltyArea(team), Opponent(team));
+  } else {
+    ClearCircle(c, free_kick_pos_, Opponent(team));
+  }
+  if (mode_time() > rules_.drop_ball_time) {
+    DropBallAt(c, free_kick_pos_);
+    return;
+  }
+  if ((goal_kick || corner) && !last_toucher_) return;  // never touched: the ball is not held
+  const bool taken =
+      last_toucher_ && last_touch_time_ > mode_start_ + rules_.kick_in_pause + kSetPieceTouchMargin && !repel_for_kick_;
+  if (goal_kick && taken) {
+    // PlayOn once the ball, touched, is out of the team's penalty area: beyond its front edge or wider than it
+    // (strictly), or off the field.
+    const Eigen::AlignedBox2d area = PenaltyArea(team);
+    const double x = c.ball.x();
+    const bool beyond_front = team == Side::kLeft ? x > area.max().x() : x < area.min().x();
+    if (!c.on_field || beyond_front || std::abs(c.ball.y()) > area.max().y()) {
+      TakeKick(*last_toucher_, last_touch_time_, false);
+      ChangeMode(PlayMode::kPlayOn);
+    }
+    return;
+  }
+  if (taken) {
+    const bool indirect = mode == PlayMode::kKickInLeft || mode == PlayMode::kKickInRight ||
+                          mode == PlayMode::kFreeKickLeft || mode == PlayMode::kFreeKickRight;
+    TakeKick(*last_toucher_, last_touch_time_, indirect);
+    ChangeMode(PlayMode::kPlayOn);
+    return;
+  }
+  // RepelPlayersForKick: the taking team's players pushed off the spot once; the ball held on it.
+  if (repel_for_kick_) {
+    Repel(c, free_kick_pos_, rules_.kick_repel_distance, 0.0, team);
+    repel_for_kick_ = false;
+  }
+  c.MoveBall(free_kick_pos_, false, this);
+}
+
+void Game::UpdatePlayOn(Cycle& c) {
+  // SoccerRuleAspect::UpdatePlayOn: the taker's second touch, a goal, the ball off the field.
+  if (CheckTakerFoul()) return;
+  if (CheckGoal(c)) return;
+  CheckBallLeftField(c);
+}
+
+bool Game::CheckTakerFoul() {
+  // CheckFreeKickTakerFoul: once the last touch is no longer the kick, the check ends; a second touch of the
+  // taker's is an indirect free kick for the other team (PunishFreeKickFoul -> AwardFreeKick).
+  if (!kick_check_ || !kick_taker_ || LastTouchIsTheKick()) return false;
+  ResetKickChecks();
+  if (!last_toucher_ || !(*last_toucher_ == *kick_taker_)) return false;
+  repel_for_kick_ = true;
+  ChangeMode(kick_taker_->side == Side::kLeft ? PlayMode::kFreeKickRight : PlayMode::kFreeKickLeft);
+  return true;
+}
+
+bool Game::CheckGoal(Cycle& c) {
+  const Eigen::Vector3d& ball = c.ball;
+  if (!(std::abs(ball.x()) > rules_.field_length / 2.0 + rules_.ball_radius &&
+        std::abs(ball.y()) < rules_.goal_width / 2.0 && ball.z() < rules_.goal_height))
+    return false;
+  const Side scored_on = ball.x() > 0.0 ? Side::kRight : Side::kLeft;
+  const Side scorer = Opponent(scored_on);
+  if (kick_off_team_no_score_ == scorer) {
+    // The kick-off team scored before it was allowed to (PunishIndirectKickGoal with the kick-off's taker): a goal
+    // kick for the team scored on.
+    indirect_kick_ = false;
+    AwardGoalKick(scored_on);
+    return true;
+  }
+  // No goal straight from an indirect kick, nor an own goal straight from a direct one (more than 2 agents).
+  if (LastTouchIsTheKick() && (indirect_kick_ || last_toucher_->side == scored_on) &&
+      PlayerCount(Side::kLeft) + PlayerCount(Side::kRight) > 2) {
+    PunishIndirectKickGoal(*last_toucher_, scored_on);
+    return true;
+  }
+  c.update.goal = true;
+  c.update.scored_by = scorer;
+  ++score_[Index(scorer)];
+  ChangeMode(scorer == Side::kLeft ? PlayMode::kGoalLeft : PlayMode::kGoalRight);
+  return true;
+}
+
+void Game::PunishIndirectKickGoal(const Toucher& kicker, Side scored_on) {
+  indirect_kick_ = false;
+  if (kicker.side == scored_on) {
+    AwardCornerKick(Opponent(kicker.side), last_on_field_);
+  } else {
+    AwardGoalKick(scored_on);
+  }
+}
+
+void Game::CheckBallLeftField(const Cycle& c) {
+  // SoccerRuleAspect::CheckBallLeftField: on the field, the free-kick spot follows it.
+  if (c.on_field) {
+    free_kick_pos_ = {last_on_field_.x(), last_on_field_.y(), rules_.ball_radius};
+    return;
+  }
+  if (!last_toucher_) return;
+  const bool last_touch_left = last_toucher_->side == Side::kLeft;
+  const bool ball_left = c.ball.x() < 0.0;
+  if (std::abs(c.ball.x()) >= rules_.field_length / 2.0) {
+    if (last_touch_left != ball_left) {
+      AwardGoalKick(ball_left ? Side::kLeft : Side::kRight);  // over the attackers' goal line: the defenders'
+    } else {
+      AwardCornerKick(Opponent(last_toucher_->side), c.ball);  // over its own: the attackers'
+    }
+  } else if (std::abs(c.ball.y()) >= rules_.field_width / 2.0) {
+    // AwardKickIn: where it last was on the field, on the touch line (a radius inside).
+    const double y = rules_.field_width / 2.0 - rules_.ball_radius;
+    AwardSetPiece(last_toucher_->side == Side::kLeft ? PlayMode::kKickInRight : PlayMode::kKickInLeft,
+                  {last_on_field_.x(), last_on_field_.y() > 0.0 ? y : -y, rules_.ball_radius});
+  }
+}
+
+void Game::AwardSetPiece(PlayMode mode, const Eigen::Vector3d& spot) {
+  free_kick_pos_ = spot;
+  repel_for_kick_ = true;
+  ChangeMode(mode);
+}
+
+void Game::AwardGoalKick(Side side) {
+  // AwardGoalKick: GoalKickDist in front of the goal line, on the middle.
+  const double x = rules_.field_length / 2.0 - rules_.goal_kick_distance;
+  AwardSetPiece(side == Side::kLeft ? PlayMode::kGoalKickLeft : PlayMode::kGoalKickRight,
+                {side == Side::kLeft ? -x : x, 0.0, rules_.ball_radius});
+}
+
+void Game::AwardCornerKick(Side side, const Eigen::Vector3d& ball) {
+  // AwardCornerKick: a radius in front of the other team's goal line, (W + goal width) / 4 - r from the middle on
+  // the ball's side ("temp value for RoboCup 2012").
+  const double x = rules_.field_length / 2.0 - rules_.ball_radius;
+  const double y = (rules_.field_width + rules_.goal_width) / 4.0 - rules_.ball_radius;
+  AwardSetPiece(side == Side::kLeft ? PlayMode::kCornerKickLeft : PlayMode::kCornerKickRight,
+                {side == Side::kLeft ? x : -x, ball.y() > 0.0 ? y : -y, rules_.ball_radius});
+}
+
+void Game::DropBallAt(Cycle& c, const Eigen::Vector3d& at) {
+  // SoccerRuleAspect::DropBall: the ball to its drop position, both teams cleared from it in a random order, the
+  // kick checks end, PlayOn.
+  const Eigen::Vector3d p = DropPosition(at);
+  c.MoveBall(p, true, this);
+  const bool left_first = rng_.Next() % 2 == 0;
+  ClearCircle(c, p, left_first ? Side::kLeft : Side::kRight);
+  ClearCircle(c, p, left_first ? Side::kRight : Side::kLeft);
+  ResetKickChecks();
+  ChangeMode(PlayMode::kPlayOn);
+}
+
+void Game::ClearBeforeKickOff(Cycle& c, Side side) {
+  // ClearPlayersBeforeKickOff: the other team out of the kick-off team's half and the centre circle; the kick-off
+  // team out of the other half unless wholly in the centre circle.
+  const Side other = Opponent(side);
+  ClearBox(c, Half(side), other);
+  ClearCircle(c, Eigen::Vector3d::Zero(), other);
+  ClearBox(c, Half(other), side, rules_.free_kick_distance);
+}
+
+void Game::ClearCircle(Cycle& c, const Eigen::Vector3d& centre, Side team) {
+  Clearing k;
+  k.kind = ClearingKind::kCircle;
+  k.team = team;
+  k.centre = centre;
+  k.radius = rules_.free_kick_distance;
+  k.distance = rules_.free_kick_move_distance;
+  k.ball = c.ball;
+  k.order_seed = rng_.Next();
+  c.update.clearings.push_back(k);
+}
+
+void Game::ClearBox(Cycle& c, const Eigen::AlignedBox2d& box, Side team, double keep_in_circle) {
+  Clearing k;
+  k.kind = ClearingKind::kBox;
+  k.team = team;
+  k.box = box;
+  k.keep_in_circle = keep_in_circle;
+  k.distance = rules_.free_kick_move_distance;
+  k.ball = c.ball;
+  k.order_seed = rng_.Next();
+  c.update.clearings.push_back(k);
+}
+
+void Game::Repel(Cycle& c, const Eigen::Vector3d& centre, double radius, double pad, Side team) {
+  // RepelPlayers: the safe spot does not avoid the ball (fAvoidBall false).
+  Clearing k;
+  k.kind = ClearingKind::kRepel;
+  k.team = team;
+  k.centre = centre;
+  k.radius = radius;
+  k.distance = pad;
+  k.avoid_ball = false;
+  k.ball = c.ball;
+  k.order_seed = rng_.Next();
+  c.update.clearings.push_back(k);
 }
 
 void Game::SetPlayMode(PlayMode mode) {
@@ -456,8 +631,7 @@ void Game::SetScore(std::optional<int> left, std::optional<int> right) {
 
 void Game::DropBall() {
   pending_drop_ = true;
-  out_position_.reset();
-  kick_check_ = false;  // SoccerRuleAspect::DropBall -> ResetKickChecks
+  ResetKickChecks();  // SoccerRuleAspect::DropBall -> ResetKickChecks
   ChangeMode(PlayMode::kPlayOn);
 }
 
@@ -491,23 +665,27 @@ void Game::Save(StateWriter& out) const {
   PutOptional(next_half_kick_off_, out, [&](Side side) { out.Put(side); });
   out.Put(kick_check_);
   out.Put<uint8_t>(paused_ ? 1 : 0);
-  PutOptional(kick_taker_, out, [&](const Toucher& t) {
+  const auto put_toucher = [&](const Toucher& t) {
     out.Put(t.side);
     out.Put<int32_t>(t.unum);
-    out.Put(t.known);
-  });
+  };
+  PutOptional(kick_taker_, out, put_toucher);
   out.Put(kick_time_);
+  out.Put(indirect_kick_);
   PutOptional(kick_off_team_no_score_, out, [&](Side side) { out.Put(side); });
-  out.Put(goal_kick_touched_);
   out.Put<int32_t>(score_[0]);
   out.Put<int32_t>(score_[1]);
   out.Put(pending_drop_);
-  PutOptional(out_position_, out, [&](const Eigen::Vector3d& v) { PutVector(v, out); });
-  out.Put(out_time_);
+  PutOptional(last_toucher_, out, put_toucher);
+  out.Put(last_touch_time_);
+  PutVector(last_on_field_, out);
+  PutVector(free_kick_pos_, out);
+  out.Put(repel_for_kick_);
+  rng_.Save(out);
 }
 
 void Game::Restore(StateReader& in) {
-  Game g(rules_);
+  Game g(rules_, 0);
   in.Tag(StateTag("SGAM"));
   for (Team& team : g.teams_) {
     if (in.Bool()) team.name = in.Str(kMaxTeamName);
@@ -532,24 +710,26 @@ void Game::Restore(StateReader& in) {
   if (in.Bool()) g.next_half_kick_off_ = in.Enum(static_cast<Side>(2));
   g.kick_check_ = in.Bool();
   g.paused_ = in.Bool();
-  if (in.Bool()) {
+  const auto get_toucher = [&]() {
     Toucher t;
     t.side = in.Enum(static_cast<Side>(2));
     t.unum = in.Get<int32_t>();
-    t.known = in.Bool();
-    g.kick_taker_ = t;
-  }
+    return t;
+  };
+  if (in.Bool()) g.kick_taker_ = get_toucher();
   g.kick_time_ = GetFinite(in);
+  g.indirect_kick_ = in.Bool();
   if (in.Bool()) g.kick_off_team_no_score_ = in.Enum(static_cast<Side>(2));
-  g.goal_kick_touched_ = in.Bool();
   g.score_[0] = in.Get<int32_t>();
   g.score_[1] = in.Get<int32_t>();
   if (g.score_[0] < 0 || g.score_[1] < 0) in.Fail("negative score");
   g.pending_drop_ = in.Bool();
-  if (in.Bool()) {
-    g.out_position_ = GetVector(in);
-  }
-  g.out_time_ = GetFinite(in);
+  if (in.Bool()) g.last_toucher_ = get_toucher();
+  g.last_touch_time_ = GetFinite(in);
+  g.last_on_field_ = GetVector(in);
+  g.free_kick_pos_ = GetVector(in);
+  g.repel_for_kick_ = in.Bool();
+  g.rng_.Restore(in);
   if (in.ok()) *this = std::move(g);
 }
 

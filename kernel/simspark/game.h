@@ -1,17 +1,18 @@
-// The minimal soccer game state behind GS, init and beam
-// (shared/protocols/simspark.md: "Connection sequence", "Team composition",
-// "Play modes", beam effector). Pure: time arrives as dt, the ball as a
-// position, touches as the players touching it this cycle; the caller applies
-// what an update asks for (ball placement). The automatic referee's player
-// rules that are modelled have files of their own (self_collision.h,
-// fouls.h: incapable and charging). Not modelled: the positional fouls
-// (crowding, illegal defence), offside, clearing players away from the ball,
-// the pass mode's score ban, holding the ball on a set piece's spot.
+// The soccer game behind GS, init and beam, and rcssserver3d's automatic
+// referee for the ball (shared/protocols/simspark.md: "Connection sequence",
+// "Team composition", "Play modes", beam effector). Pure: time arrives as dt,
+// the ball as a position, touches as the players touching it this cycle; the
+// caller applies what an update asks for (ball placement, the clearings of
+// players, clearing.h). The automatic referee's player rules have files of
+// their own (self_collision.h, fouls.h). Not modelled: the positional fouls
+// (crowding, illegal defence), offside, the pass mode's score ban and the
+// agents' pass command.
 //
 // Flow, as rcssserver3d's soccer plugin runs it with naosoccersim.rb's
 // settings (references: SoccerRuleAspect::<function> in
 // plugin/soccer/soccerruleaspect/soccerruleaspect.cpp, GameStateAspect in
-// plugin/soccer/gamestateaspect/gamestateaspect.cpp; settings in
+// plugin/soccer/gamestateaspect/gamestateaspect.cpp, BallStateAspect in
+// plugin/soccer/ballstateaspect/ballstateaspect.cpp; settings in
 // rcssserver3d/naosoccersim.rb):
 // - Game time runs in every mode except BeforeKickOff and GameOver
 //   (GameStateAspect::UpdateTime); a mode's time is the game time since the
@@ -19,31 +20,56 @@
 //   two. The halves are checked before the mode's rule each cycle
 //   (SoccerRuleAspect::Update -> CheckTime): half 1 ends in BeforeKickOff of
 //   half 2 at half_time, half 2 in GameOver at 2 * half_time. No side change.
-// - No automatic kick-off (AutomaticKickOff false): a trainer calls KickOff.
-//   In BeforeKickOff the ball is held at the centre (once some player is
-//   registered).
-// - KickOff_X -> PlayOn at the first touch; untouched for more than
-//   drop_ball_time -> drop ball where it is, PlayOn, nobody's ball.
-// - Double touch: whoever took a kick-off (with more than 2 players), a kick-in,
-//   corner, goal kick or free kick may not touch the ball again, 0.1 s or more
-//   after the kick, before another player has touched it: indirect free kick
-//   for the other team. A kick-off taker's team may not score before the ball
-//   left the centre circle after its touch or the other team touched it: goal
-//   kick for the defending team instead.
-// - In PlayOn (and pass modes): ball centre beyond a goal line by more than its
-//   radius, inside the goal mouth (|y| < goal_width/2, z < goal_height) ->
-//   Goal_Left if it is in the right goal (left scored), else Goal_Right;
-//   goal_pause later -> KickOff of the other team, ball to the centre.
-// - Ball out elsewhere: who touched it last is not known here, so there is no
-//   kick-in / corner / goal kick. The mode stays PlayOn; after kick_in_pause the
-//   ball is dropped at the point where it left, moved inside the field and out
-//   of the penalty areas (GameUpdate::place_ball). (turf's own rule.)
-// - Set-piece modes (KickIn, corner, goal kick, free kicks) -> PlayOn at the
-//   first touch more than kick_in_pause + 0.03 s into the mode (a goal kick:
-//   once the touched ball has left the team's penalty area); untouched for more
-//   than drop_ball_time -> drop ball. Pass modes -> PlayOn at a touch or after
-//   pass_duration. Offside modes: nothing (the reference's rule is compiled
-//   out), they last until a trainer changes the mode.
+// - The ball (BallStateAspect): the last player to touch it and the game time
+//   of that touch are kept, across modes (several touching at once: the first
+//   listed). The ball is on the field while |x| < L/2 + r + 1 mm and
+//   |y| < W/2 + r + 1 mm; where it last was on the field is kept.
+// - The free-kick spot: every placement of the ball by the game moves it there
+//   (SoccerRuleAspect::MoveBall); in PlayOn it follows the ball on the field.
+// - BeforeKickOff (with a player registered): the ball is held at the centre,
+//   each team is cleared from the other's half (random order). No automatic
+//   kick-off (AutomaticKickOff false): a trainer calls KickOff.
+// - KickOff_X: each cycle the other team is cleared from X's half and the
+//   centre circle, X's players from the other half unless wholly in the circle
+//   (ClearPlayersBeforeKickOff); the same in Goal_Y for the team that will kick
+//   off. -> PlayOn at the first touch after the mode began; untouched for more
+//   than drop_ball_time -> drop ball.
+// - A drop ball (trainer, timeouts): the ball to its drop position (out of the
+//   penalty areas, within the touch lines), both teams (random order) cleared
+//   from its 2 m circle, PlayOn, the kick checks end.
+// - Kicks taken: a kick-off (with more than 2 players), kick-in or indirect
+//   free kick is indirect; a corner, goal kick or direct free kick direct. The
+//   taker may not touch the ball again, 0.1 s or more after the kick, before
+//   another player has: indirect free kick for the other team. A goal whose
+//   last touch was the taker's within 0.1 s of an indirect kick, or an own goal
+//   so from a direct kick (more than 2 players): a goal kick for the team
+//   scored on, or a corner for the other team after an own goal. A kick-off
+//   taker's team may not score before the ball left the centre circle after its
+//   touch or the other team touched it: goal kick for the team scored on.
+// - In PlayOn (and pass modes), after the taker's and the goal checks: ball
+//   centre beyond a goal line by more than its radius, inside the goal mouth
+//   (|y| < goal_width/2, z < goal_height) -> Goal_Left if it is in the right
+//   goal (left scored), else Goal_Right; goal_pause later -> KickOff of the
+//   other team, ball to the centre.
+// - Ball off the field (CheckBallLeftField), by the last toucher's team: over a
+//   touch line -> kick-in for the other team at the point where it left, on the
+//   line; over a goal line -> a goal kick for the defending team (spot 1 m in
+//   front of its goal) when the attackers touched it last, else a corner for
+//   the attackers at ((W + goal width) / 4 - r) from the middle, on the ball's
+//   side (the reference's "temp value for RoboCup 2012"). Nobody touched the
+//   ball yet: nothing happens.
+// - Set pieces (kick-in, corner, goal kick, free kicks): for kick_in_pause
+//   nothing; then each cycle the kick checks reset, the other team is cleared
+//   from the spot's 2 m circle (a goal kick: from the penalty area), a drop ball
+//   after more than drop_ball_time, and until the kick is taken the ball is
+//   held on the spot, the taking team's players within 0.5 m of it pushed away
+//   once. A free kick's spot in a penalty area moves to the area's front corner.
+//   Taken: a touch more than kick_in_pause + 0.03 s into the mode, after the
+//   push (a goal kick: and the ball out of the penalty area); a corner or goal
+//   kick is not held before anybody ever touched the ball. Pass modes -> PlayOn
+//   at a touch or after pass_duration; while in one the other team is kept
+//   1.1 m from the ball. Offside modes: nothing (the reference's rule is
+//   compiled out), they last until a trainer changes the mode.
 #pragma once
 
 #include <Eigen/Core>
@@ -54,6 +80,7 @@
 
 #include "core/rng.h"
 #include "core/state_io.h"
+#include "kernel/simspark/clearing.h"
 #include "kernel/simspark/types.h"
 
 namespace turf::simspark {
@@ -73,8 +100,11 @@ struct GameRules {
   // drawn lines are 6.0 wide (field3d.h).
   double penalty_depth = 1.8;
   double penalty_width = 3.9;
-  double free_kick_distance = 2.0;  // m, the centre circle's radius (FreeKickDistance 2)
-  double goal_kick_distance = 1.0;  // m, a goal kick's spot in front of the goal line (GoalKickDist 1)
+  double free_kick_distance = 2.0;       // m, the centre circle's radius (FreeKickDistance 2)
+  double goal_kick_distance = 1.0;       // m, a goal kick's spot in front of the goal line (GoalKickDist 1)
+  double free_kick_move_distance = 2.5;  // m, how far the clearings move players (FreeKickMoveDist 2.5)
+  double kick_repel_distance = 0.5;      // m, the taking team's push from the spot (KickRepelDist 0.5)
+  double pass_mode_distance = 1.0;       // m, the other team's distance in pass mode (PassModeMinOppBallDist 1)
   double ball_radius = 0.042;
   double beam_noise_xy = 0.05;   // m, uniform +-
   double beam_noise_deg = 10.0;  // deg, uniform +-
@@ -96,8 +126,7 @@ struct Pose2 {
 struct Toucher {
   Side side = Side::kLeft;
   int unum = 0;
-  bool known = true;  // false: a touch by a player not identified (Update's bool form)
-  bool operator==(const Toucher& o) const { return known && o.known && side == o.side && unum == o.unum; }
+  bool operator==(const Toucher& o) const { return side == o.side && unum == o.unum; }
 };
 
 struct InitResult {
@@ -115,14 +144,16 @@ struct GameUpdate {
   bool play_mode_changed = false;     // since the previous Update (trainer changes included)
   // Move the ball here (world frame, centre) and zero its velocities.
   std::optional<Eigen::Vector3d> place_ball;
-  bool dropped_ball = false;  // place_ball is a drop ball (trainer, kick-off / set-piece timeout or out ball)
+  bool dropped_ball = false;        // place_ball is a drop ball (trainer, kick-off / set-piece timeout)
+  std::vector<Clearing> clearings;  // the game's moves of players this cycle, in order (clearing.h)
 };
 
 inline constexpr int kRobotTypes = 5;  // scene types 0..4
 
 class Game {
  public:
-  explicit Game(GameRules rules = {});
+  // seed: the clearings' random orders.
+  explicit Game(GameRules rules = {}, uint64_t seed = 0);
 
   // Registers a player. The first team name becomes left, the second right, a
   // third is rejected. unum 0 = lowest free 1..11; others any int, unique per
@@ -160,8 +191,6 @@ class Game {
   // Once per cycle after physics. ball = ball centre, field frame; touchers =
   // the players touching the ball this cycle.
   GameUpdate Update(double dt, const Eigen::Vector3d& ball, const std::vector<Toucher>& touchers);
-  // touched = some player whose identity is not known (no double-touch rules).
-  GameUpdate Update(double dt, const Eigen::Vector3d& ball, bool touched);
 
   // Trainer commands.
   void SetPlayMode(PlayMode mode);
@@ -186,8 +215,11 @@ class Game {
   const GameRules& rules() const { return rules_; }
 
   // Where a drop ball at `ball` goes: out of the penalty areas (to their front
-  // corner on the ball's side), inside the field, on the ground.
+  // corner on the ball's side), within the touch lines (a radius inside), at its
+  // height (SoccerRuleAspect::DropBall: x is not limited).
   Eigen::Vector3d DropPosition(const Eigen::Vector3d& ball) const;
+  // Where the next set piece is taken (SoccerRuleAspect's mFreeKickPos).
+  const Eigen::Vector3d& free_kick_spot() const { return free_kick_pos_; }
 
   // Everything the game changes (teams, play mode, times, score, kick
   // checks), for snapshots; the rules are configuration, not saved. A restore
@@ -205,11 +237,35 @@ class Game {
   std::optional<std::string> CompositionError(const Team& team, int robot_type) const;
   void ChangeMode(PlayMode mode);
   void CheckHalfTime();
-  bool InPlay() const;
+  Eigen::Vector3d OutOfPenaltyAreas(Eigen::Vector3d p) const;
   void StartKickOff(Side side);
-  // The double-touch check and the kick-off team's scoring ban, before the mode's rule.
+  // The kick-off team's scoring ban, before the mode's rule.
   void UpdateKickChecks(const Eigen::Vector3d& ball, const std::vector<Toucher>& touchers);
-  void TakeKick(const Toucher& taker);
+  void TakeKick(const Toucher& taker, double time, bool indirect);
+  void ResetKickChecks();
+  // The reference's WasLastKickFromFreeKick: the last touch is the kick's taker's, within 0.1 s of its kick.
+  bool LastTouchIsTheKick() const;
+  // The mode rules; `c` is this cycle's update being built.
+  struct Cycle;
+  void UpdateBeforeKickOff(Cycle& c);
+  void UpdateKickOff(Cycle& c, Side side);
+  void UpdateSetPiece(Cycle& c);
+  void UpdatePlayOn(Cycle& c);
+  bool CheckTakerFoul();
+  bool CheckGoal(Cycle& c);
+  void CheckBallLeftField(const Cycle& c);
+  void AwardSetPiece(PlayMode mode, const Eigen::Vector3d& spot);
+  void AwardGoalKick(Side side);
+  void AwardCornerKick(Side side, const Eigen::Vector3d& ball);
+  void PunishIndirectKickGoal(const Toucher& kicker, Side scored_on);
+  void DropBallAt(Cycle& c, const Eigen::Vector3d& at);
+  // ClearPlayersBeforeKickOff(side): side kicks off.
+  void ClearBeforeKickOff(Cycle& c, Side side);
+  void ClearCircle(Cycle& c, const Eigen::Vector3d& centre, Side team);
+  void ClearBox(Cycle& c, const Eigen::AlignedBox2d& box, Side team, double keep_in_circle = 0.0);
+  void Repel(Cycle& c, const Eigen::Vector3d& centre, double radius, double pad, Side team);
+  Eigen::AlignedBox2d Half(Side side) const;         // the reference's mLeftHalf / mRightHalf (oversized)
+  Eigen::AlignedBox2d PenaltyArea(Side side) const;  // the referee's box, edges included
 
   GameRules rules_;
   Team teams_[2];
@@ -221,18 +277,24 @@ class Game {
   int half_ = 1;
   int last_kick_off_half_ = 0;              // half of the last kick-off (0: none yet)
   std::optional<Side> next_half_kick_off_;  // set by half 1's coin toss
-  // The double-touch check: the kick's taker and the game time of the kick.
+  // The double-touch check: the kick's taker and the game time of the kick;
+  // indirect: no goal straight from it.
   bool kick_check_ = false;
   bool paused_ = true;
   std::optional<Toucher> kick_taker_;
   double kick_time_ = 0.0;
+  bool indirect_kick_ = false;
   // The kick-off taker's team while it may not score (nullopt: may score).
   std::optional<Side> kick_off_team_no_score_;
-  bool goal_kick_touched_ = false;
   int score_[2] = {0, 0};
   bool pending_drop_ = false;
-  std::optional<Eigen::Vector3d> out_position_;  // ball left the field here (waiting for kick_in_pause)
-  double out_time_ = 0.0;
+  // The ball: its last toucher and the game time of that touch, where it last was on the field.
+  std::optional<Toucher> last_toucher_;
+  double last_touch_time_ = 0.0;
+  Eigen::Vector3d last_on_field_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d free_kick_pos_ = Eigen::Vector3d::Zero();
+  bool repel_for_kick_ = false;  // the taking team's push from the spot is still to come
+  Rng rng_;
 };
 
 }  // namespace turf::simspark

@@ -12,12 +12,13 @@ namespace {
 class Search {
  public:
   Search(Side side, int unum, const std::vector<SpotPlayer>& players, const Eigen::Vector3d& ball,
-         const SafeSpotRules& rules, const SpotPlayer& self)
+         const SafeSpotRules& rules, const SpotPlayer& self, bool avoid_ball)
       : side_(side),
         unum_(unum),
         players_(players),
         ball_(ball),
         rules_(rules),
+        avoid_ball_(avoid_ball),
         r_(rules.agent_radius),
         agent_(self.torso.head<2>()) {
     inside_own_ = InOwnArea(agent_);
@@ -56,8 +57,10 @@ class Search {
 
   bool Unsafe(const Eigen::Vector3d& pos) const {
     if (std::abs(pos.x()) > rules_.field_length / 2 && std::abs(pos.y()) < rules_.goal_width / 2 + r_) return true;
-    const double ball_distance = std::hypot(ball_.x() - pos.x(), ball_.y() - pos.y());
-    if (ball_distance < std::max(2 * r_, rules_.min_ball_distance)) return true;
+    if (avoid_ball_) {
+      const double ball_distance = std::hypot(ball_.x() - pos.x(), ball_.y() - pos.y());
+      if (ball_distance < std::max(2 * r_, rules_.min_ball_distance)) return true;
+    }
     for (const SpotPlayer& p : players_) {
       if (p.side == side_ && p.unum == unum_) continue;
       const Eigen::AlignedBox3d box = p.box.isEmpty() ? Eigen::AlignedBox3d(p.torso, p.torso) : p.box;
@@ -143,6 +146,7 @@ class Search {
   const std::vector<SpotPlayer>& players_;
   Eigen::Vector3d ball_;
   const SafeSpotRules& rules_;
+  bool avoid_ball_;
   double r_;
   Eigen::Vector2d agent_;
   bool inside_own_ = false;
@@ -153,11 +157,29 @@ class Search {
 }  // namespace
 
 Eigen::Vector3d SafeSpot(const Eigen::Vector3d& wanted, Side side, int unum, const std::vector<SpotPlayer>& players,
-                         const Eigen::Vector3d& ball, const SafeSpotRules& rules) {
+                         const Eigen::Vector3d& ball, const SafeSpotRules& rules, bool avoid_ball) {
   const auto self = std::find_if(players.begin(), players.end(),
                                  [&](const SpotPlayer& p) { return p.side == side && p.unum == unum; });
-  if (self == players.end() || !wanted.allFinite() || !ball.allFinite()) return wanted;
-  return Search(side, unum, players, ball, rules, *self).Find(wanted);
+  if (self == players.end() || !wanted.allFinite() || (avoid_ball && !ball.allFinite())) return wanted;
+  return Search(side, unum, players, ball, rules, *self, avoid_ball).Find(wanted);
+}
+
+// MoveAgent: the move, through GetSafeReposition when `safe`; the bodies move at once, so later moves see it.
+Eigen::Vector3d SpotBoard::Place(Side side, int unum, const Eigen::Vector3d& wanted, bool safe, bool avoid_ball) {
+  if (Find(side, unum) == nullptr) return wanted;
+  const Eigen::Vector3d to = safe ? SafeSpot(wanted, side, unum, players_, ball_, rules_, avoid_ball) : wanted;
+  for (SpotPlayer& p : players_) {
+    if (p.side != side || p.unum != unum) continue;
+    if (!p.box.isEmpty()) p.box.translate(to - p.torso);
+    p.torso = to;
+  }
+  return to;
+}
+
+const SpotPlayer* SpotBoard::Find(Side side, int unum) const {
+  for (const SpotPlayer& p : players_)
+    if (p.side == side && p.unum == unum) return &p;
+  return nullptr;
 }
 
 }  // namespace turf::simspark

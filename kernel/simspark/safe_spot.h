@@ -17,6 +17,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <utility>
 #include <vector>
 
 #include "kernel/simspark/types.h"
@@ -42,8 +43,29 @@ struct SpotPlayer {
   Eigen::AlignedBox3d box;  // empty: the torso's point
 };
 
-// Where the referee puts player (side, unum) that it wants at `wanted`, among `players` (it included) and the ball.
+// Where the referee puts player (side, unum) that it wants at `wanted`, among `players` (it included) and the ball
+// (avoid_ball false: the ball is no reason to move on, as for the reference's RepelPlayersForKick).
 Eigen::Vector3d SafeSpot(const Eigen::Vector3d& wanted, Side side, int unum, const std::vector<SpotPlayer>& players,
-                         const Eigen::Vector3d& ball, const SafeSpotRules& rules = {});
+                         const Eigen::Vector3d& ball, const SafeSpotRules& rules = {}, bool avoid_ball = true);
+
+// The players as the referee's moves in one cycle leave them: each move sees the ones before it (the reference
+// moves the bodies at once).
+class SpotBoard {
+ public:
+  SpotBoard(std::vector<SpotPlayer> players, const Eigen::Vector3d& ball, SafeSpotRules rules)
+      : players_(std::move(players)), ball_(ball), rules_(rules) {}
+
+  // Moves the player's torso (and its box) to `wanted`, or to the safe spot nearest it when `safe`; where it went.
+  Eigen::Vector3d Place(Side side, int unum, const Eigen::Vector3d& wanted, bool safe, bool avoid_ball = true);
+  const SpotPlayer* Find(Side side, int unum) const;
+  const std::vector<SpotPlayer>& players() const { return players_; }
+  const Eigen::Vector3d& ball() const { return ball_; }
+  void set_ball(const Eigen::Vector3d& ball) { ball_ = ball; }
+
+ private:
+  std::vector<SpotPlayer> players_;
+  Eigen::Vector3d ball_;
+  SafeSpotRules rules_;
+};
 
 }  // namespace turf::simspark

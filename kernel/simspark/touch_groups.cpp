@@ -10,11 +10,6 @@ namespace {
 
 constexpr double kPush = 0.4;  // m: the reference's agent radius
 
-template <class T>
-void Shuffle(std::vector<T>* v, Rng& rng) {
-  for (size_t i = v->size(); i > 1; --i) std::swap((*v)[i - 1], (*v)[rng.Next() % i]);
-}
-
 class Analysis {
  public:
   Analysis(const std::vector<TouchPlayer>& players, const std::vector<std::pair<size_t, size_t>>& touching, Rng& rng,

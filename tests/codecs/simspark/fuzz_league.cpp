@@ -63,7 +63,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     turf::StateReader in(bytes);
     ss::Game game;
     game.Restore(in);
-    if (in.ok()) game.Update(0.02, Eigen::Vector3d(0, 0, 0.042), true);
+    if (in.ok()) game.Update(0.02, Eigen::Vector3d(0, 0, 0.042), {ss::Toucher{ss::Side::kLeft, 1}});
   }
   turf::test::FuzzSplicedRestore(match, data, size);
   return 0;

@@ -451,7 +451,7 @@ TEST(SessionReferee, APlayerLyingFifteenSecondsIsPutOutsideTheField) {
   h.session.Trainer("(playMode KickOff_Left)", TrainerRole::kOperator);
   h.Cycle();
   FakeWorld::Robot& robot = h.world.robot("nao_1");
-  robot.position = Eigen::Vector3d(1.0, 3.0, 0.1);
+  robot.position = Eigen::Vector3d(-1.0, 3.0, 0.1);  // in its own half: the kick-off's clearing leaves it
   robot.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()));
   const Eigen::Quaterniond lying = robot.orientation;
   int cycles = 0;
@@ -465,7 +465,7 @@ TEST(SessionReferee, APlayerLyingFifteenSecondsIsPutOutsideTheField) {
     EXPECT_TRUE(m->orientation.isApprox(lying)) << "moved as it lies";
     if (m->position.z() > 0.9) {
       ++held;
-      EXPECT_NEAR(m->position.x(), 1.0, 1e-9);
+      EXPECT_NEAR(m->position.x(), -1.0, 1e-9);
     } else {
       out = m;
     }
@@ -558,6 +558,78 @@ TEST(SessionReferee, AThirdPlayerJoiningTwoTouchingIsPushedOut) {
   const std::vector<std::string> notes = h.session.TakeNotes();
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_TRUE(Contains(notes[0], "player left 4 pushed out of a group of 3 players touching")) << notes[0];
+}
+
+// The game's kick-in (kernel/simspark/game.h, clearing.h): left 2 touched the ball last before it went over the
+// touch line, so right has the kick-in on the line where the ball left. After the 1 s pause the ball is held on the
+// spot, left 2 (within 2 m of it) is moved 2.5 m along x towards its goal, and right 3 (within 0.5 m of the spot)
+// is pushed to 0.5 m from it; each with a note. Nobody moves again while they keep away.
+TEST(SessionGame, AKickInHoldsTheBallAndClearsThePlayersAroundTheSpot) {
+  Harness h(2);
+  h.JoinAndCycle("Alpha", 2);
+  h.JoinAndCycle("Beta", 3);
+  h.session.Trainer("(playMode PlayOn)", TrainerRole::kOperator);
+  FakeWorld::Robot& left = h.world.robot("nao_1");
+  FakeWorld::Robot& right = h.world.robot("nao_2");
+  left.position = Eigen::Vector3d(-0.055, 0.0, 0.4);  // its right foot at the ball (0, 0)
+  h.Cycle();
+  left.position = Eigen::Vector3d(3.5, 9.0, 0.4);
+  right.position = Eigen::Vector3d(3.2, 9.8, 0.4);
+  h.session.Trainer("(ball (pos 3 9.5 0.042))", TrainerRole::kOperator);
+  h.Cycle();
+  h.Cycle();
+  h.session.Trainer("(ball (pos 3 10.3 0.042))", TrainerRole::kOperator);
+  h.Cycle();
+  h.Cycle();
+  EXPECT_EQ(h.session.game().play_mode(), PlayMode::kKickInRight);
+  WorldRequests taken;
+  int cycles = 0;
+  for (; cycles < 100 && taken.moves.empty(); ++cycles) h.Cycle(&taken);
+  EXPECT_NEAR(cycles, 50, 2) << "the kick-in pause";
+  ASSERT_TRUE(taken.ball.has_value());
+  const Eigen::Vector3d spot(3.0, 10.0 - 0.042, 0.042);
+  EXPECT_TRUE(taken.ball->position.isApprox(spot)) << taken.ball->position.transpose();
+  const RobotMove* cleared = FindMove(taken, "nao_1");
+  ASSERT_NE(cleared, nullptr);
+  EXPECT_NEAR(cleared->position.x(), 3.0 - 2.5, 1e-9);
+  EXPECT_NEAR(cleared->position.y(), 9.0, 1e-9);
+  const RobotMove* pushed = FindMove(taken, "nao_2");
+  ASSERT_NE(pushed, nullptr);
+  EXPECT_NEAR((pushed->position - spot).head<2>().norm(), 0.5, 1e-9);
+  EXPECT_GT(pushed->position.x(), spot.x()) << "pushed the way it stood from the spot";
+  const std::vector<std::string> notes = h.session.TakeNotes();
+  ASSERT_EQ(notes.size(), 2u);
+  for (const std::string& note : notes) EXPECT_TRUE(Contains(note, "the game's clearing in KickIn_Right")) << note;
+  for (int i = 0; i < 10; ++i) {
+    h.Cycle(&taken);
+    EXPECT_TRUE(taken.moves.empty()) << i;
+    ASSERT_TRUE(taken.ball.has_value()) << "held until the kick";
+  }
+}
+
+// ClearPlayersBeforeKickOff: at the other team's kick-off, a player in the kick-off team's half goes 2.5 m into its
+// own; a kick-off team's player wholly in the centre circle stays, one beyond it in the other half is moved back.
+TEST(SessionGame, AKickOffClearsThePlayersFromTheOtherHalf) {
+  Harness h(3);
+  h.JoinAndCycle("Alpha", 2);
+  h.JoinAndCycle("Alpha", 3);
+  h.JoinAndCycle("Beta", 4);
+  h.world.robot("nao_1").position = Eigen::Vector3d(0.8, 0.3, 0.4);   // left: in the circle
+  h.world.robot("nao_2").position = Eigen::Vector3d(5.0, -4.0, 0.4);  // left: in the right half
+  h.world.robot("nao_3").position = Eigen::Vector3d(-6.0, 3.0, 0.4);  // right: in the left half
+  h.session.Trainer("(playMode KickOff_Left)", TrainerRole::kOperator);
+  h.Cycle();
+  WorldRequests taken;
+  h.Cycle(&taken);
+  EXPECT_EQ(FindMove(taken, "nao_1"), nullptr) << "wholly in the centre circle";
+  const RobotMove* back = FindMove(taken, "nao_2");
+  ASSERT_NE(back, nullptr);
+  EXPECT_NEAR(back->position.x(), -2.5, 1e-9);
+  EXPECT_NEAR(back->position.y(), -4.0, 1e-9);
+  const RobotMove* home = FindMove(taken, "nao_3");
+  ASSERT_NE(home, nullptr);
+  EXPECT_NEAR(home->position.x(), 2.5, 1e-9);
+  EXPECT_NEAR(home->position.y(), 3.0, 1e-9);
 }
 
 TEST(SessionEffectors, HingeVelocitiesByModelJointNameClampedForType0) {

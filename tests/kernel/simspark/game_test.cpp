@@ -14,13 +14,15 @@ namespace {
 
 constexpr double kDt = 0.02;
 const Eigen::Vector3d kCentre(0, 0, 0.042);
+const std::vector<Toucher> kNobody;
+const std::vector<Toucher> kSomeone{{Side::kLeft, 1}};
 
 // Runs cycles with the ball at `ball` until the play mode changes; returns the
 // number of cycles (or `max` if it never does).
 int CyclesUntilModeChange(Game* game, const Eigen::Vector3d& ball, int max, GameUpdate* last = nullptr) {
   const PlayMode start = game->play_mode();
   for (int i = 1; i <= max; ++i) {
-    const GameUpdate u = game->Update(kDt, ball, false);
+    const GameUpdate u = game->Update(kDt, ball, kNobody);
     if (game->play_mode() != start) {
       if (last != nullptr) *last = u;
       return i;
@@ -37,9 +39,9 @@ TEST(GamePaused, SetByBeforeKickOffAndGoalsKeptByOffsideClearedByTheRest) {
   EXPECT_TRUE(game.paused());
   const auto after = [&](PlayMode before, PlayMode mode) {
     game.SetPlayMode(before);
-    game.Update(kDt, kCentre, false);
+    game.Update(kDt, kCentre, kNobody);
     game.SetPlayMode(mode);
-    game.Update(kDt, kCentre, false);
+    game.Update(kDt, kCentre, kNobody);
     return game.paused();
   };
   for (PlayMode m : {PlayMode::kPlayOn, PlayMode::kKickOffLeft, PlayMode::kKickInRight, PlayMode::kCornerKickLeft,
@@ -216,10 +218,10 @@ TEST(GameBeam, NoiseWithinBoundsAndClampedAfter) {
 
 TEST(GameFlow, ClockStoppedBeforeKickOffAndBallHeldAtCentre) {
   Game game;
-  GameUpdate u = game.Update(kDt, {3, 1, 0.042}, false);
+  GameUpdate u = game.Update(kDt, {3, 1, 0.042}, kNobody);
   EXPECT_FALSE(u.place_ball.has_value());  // nobody there yet
   ASSERT_TRUE(game.Init("A", 0, 0).ok);
-  u = game.Update(kDt, {3, 1, 0.042}, true);
+  u = game.Update(kDt, {3, 1, 0.042}, kSomeone);
   EXPECT_TRUE(u.place_ball_at_centre);
   ASSERT_TRUE(u.place_ball.has_value());
   EXPECT_TRUE(u.place_ball->isApprox(kCentre));
@@ -231,13 +233,13 @@ TEST(GameFlow, KickOffToPlayOnAtFirstTouch) {
   Game game;
   game.KickOff(Side::kLeft, nullptr);
   EXPECT_EQ(game.play_mode(), PlayMode::kKickOffLeft);
-  GameUpdate u = game.Update(kDt, kCentre, false);
+  GameUpdate u = game.Update(kDt, kCentre, kNobody);
   EXPECT_TRUE(u.play_mode_changed);  // the trainer's change is reported once
-  u = game.Update(kDt, kCentre, false);
+  u = game.Update(kDt, kCentre, kNobody);
   EXPECT_FALSE(u.play_mode_changed);
   EXPECT_EQ(game.play_mode(), PlayMode::kKickOffLeft);
   EXPECT_NEAR(game.game_time(), 2 * kDt, 1e-12);
-  u = game.Update(kDt, kCentre, true);
+  u = game.Update(kDt, kCentre, kSomeone);
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
   EXPECT_TRUE(u.play_mode_changed);
   EXPECT_FALSE(u.place_ball.has_value());
@@ -264,12 +266,12 @@ TEST(GameFlow, UntouchedKickOffBecomesPlayOnAfterMoreThanFifteenSecondsOfGameTim
   game.KickOff(Side::kLeft, nullptr);
   const Eigen::Vector3d ball(0.2, -0.1, 0.042);
   for (int i = 0; i < 60; ++i) {
-    const GameUpdate u = game.Update(0.25, ball, false);
+    const GameUpdate u = game.Update(0.25, ball, kNobody);
     ASSERT_EQ(game.play_mode(), PlayMode::kKickOffLeft) << i;
     ASSERT_FALSE(u.place_ball.has_value());
   }
   EXPECT_EQ(game.mode_time(), 15.0);
-  const GameUpdate u = game.Update(0.25, ball, false);
+  const GameUpdate u = game.Update(0.25, ball, kNobody);
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
   EXPECT_TRUE(u.play_mode_changed);
   EXPECT_TRUE(u.dropped_ball);
@@ -291,14 +293,14 @@ TEST(GameFlow, UntouchedKickOffEndsOnTheCycleAfterFifteenSeconds) {
 TEST(GameFlow, ModeTimeIsGameTimeSinceTheModeBegan) {
   Game game;
   game.KickOff(Side::kLeft, nullptr);
-  game.Update(0.25, kCentre, false);
+  game.Update(0.25, kCentre, kNobody);
   game.SetGameTime(14.9);
   EXPECT_NEAR(game.mode_time(), 14.9, 1e-12);
-  game.Update(0.25, kCentre, false);  // 15.15 s
+  game.Update(0.25, kCentre, kNobody);  // 15.15 s
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
   // BeforeKickOff counts simulation time (the game clock stands).
   game.SetPlayMode(PlayMode::kBeforeKickOff);
-  game.Update(0.25, kCentre, false);
+  game.Update(0.25, kCentre, kNobody);
   EXPECT_EQ(game.mode_time(), 0.25);
 }
 
@@ -309,7 +311,7 @@ TEST(GameFlow, HalfTimeEndsPlayBeforeTheGoalCheck) {
   ASSERT_TRUE(game.Init("A", 1, 0).ok);
   game.SetPlayMode(PlayMode::kPlayOn);
   game.SetGameTime(299.99);
-  const GameUpdate u = game.Update(kDt, {15.1, 0, 0.042}, false);
+  const GameUpdate u = game.Update(kDt, {15.1, 0, 0.042}, kNobody);
   EXPECT_FALSE(u.goal);
   EXPECT_EQ(game.score(Side::kLeft), 0);
   EXPECT_EQ(game.play_mode(), PlayMode::kBeforeKickOff);
@@ -320,10 +322,10 @@ TEST(GameFlow, HalfTimeEndsPlayBeforeTheGoalCheck) {
 TEST(GameFlow, GoalKickOffAtThreeSecondsOfGameTime) {
   Game game;
   game.SetPlayMode(PlayMode::kPlayOn);
-  ASSERT_TRUE(game.Update(0.25, {-15.1, 0, 0.042}, false).goal);
-  for (int i = 0; i < 11; ++i) game.Update(0.25, {-15.3, 0, 0.042}, false);
+  ASSERT_TRUE(game.Update(0.25, {-15.1, 0, 0.042}, kNobody).goal);
+  for (int i = 0; i < 11; ++i) game.Update(0.25, {-15.3, 0, 0.042}, kNobody);
   EXPECT_EQ(game.play_mode(), PlayMode::kGoalRight);
-  game.Update(0.25, {-15.3, 0, 0.042}, false);
+  game.Update(0.25, {-15.3, 0, 0.042}, kNobody);
   EXPECT_EQ(game.play_mode(), PlayMode::kKickOffLeft);
 }
 
@@ -360,7 +362,7 @@ TEST(GameKicks, AnotherTouchEndsTheDoubleTouchCheck) {
   Game game = FourPlayers();
   game.KickOff(Side::kRight, nullptr);
   game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});
-  for (int i = 0; i < 10; ++i) game.Update(kDt, kCentre, false);
+  for (int i = 0; i < 10; ++i) game.Update(kDt, kCentre, kNobody);
   game.Update(kDt, kCentre, std::vector<Toucher>{kLeft2});
   for (int i = 0; i < 10; ++i) game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
@@ -374,7 +376,7 @@ TEST(GameKicks, NoDoubleTouchRuleAtAKickOffWithTwoPlayers) {
   for (int i = 0; i < 20; ++i) game.Update(kDt, kCentre, std::vector<Toucher>{kLeft1});
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
   game.SetPlayMode(PlayMode::kPlayOn);
-  EXPECT_TRUE(game.Update(kDt, {15.1, 0, 0.042}, false).goal);  // and the kick-off team may score
+  EXPECT_TRUE(game.Update(kDt, {15.1, 0, 0.042}, kNobody).goal);  // and the kick-off team may score
 }
 
 // CheckGoal: the kick-off team may not score before the other team touched the
@@ -385,12 +387,12 @@ TEST(GameKicks, KickOffTeamCannotScoreStraightFromTheKickOff) {
   game.KickOff(Side::kLeft, nullptr);
   game.Update(kDt, kCentre, std::vector<Toucher>{kLeft1});
   game.Update(kDt, {1.0, 0, 0.042}, std::vector<Toucher>{kLeft2});  // inside the circle
-  const GameUpdate u = game.Update(kDt, {15.1, 0, 0.042}, false);
+  const GameUpdate u = game.Update(kDt, {15.1, 0, 0.042}, kNobody);
   EXPECT_FALSE(u.goal);
   EXPECT_EQ(game.score(Side::kLeft), 0);
   EXPECT_EQ(game.play_mode(), PlayMode::kGoalKickRight);
-  ASSERT_TRUE(u.place_ball.has_value());
-  EXPECT_TRUE(u.place_ball->isApprox(Eigen::Vector3d(14, 0, 0.042)));
+  EXPECT_FALSE(u.place_ball.has_value());  // the ball waits for the kick-in pause
+  EXPECT_TRUE(game.free_kick_spot().isApprox(Eigen::Vector3d(14, 0, 0.042)));
 }
 
 TEST(GameKicks, KickOffTeamScoresOnceTheBallLeftTheCircleOrTheOtherTeamTouchedIt) {
@@ -399,14 +401,14 @@ TEST(GameKicks, KickOffTeamScoresOnceTheBallLeftTheCircleOrTheOtherTeamTouchedIt
     game.KickOff(Side::kLeft, nullptr);
     game.Update(kDt, kCentre, std::vector<Toucher>{kLeft1});
     game.Update(kDt, {2.5, 0, 0.042}, std::vector<Toucher>{kLeft2});
-    EXPECT_TRUE(game.Update(kDt, {15.1, 0, 0.042}, false).goal);
+    EXPECT_TRUE(game.Update(kDt, {15.1, 0, 0.042}, kNobody).goal);
   }
   {
     Game game = FourPlayers();
     game.KickOff(Side::kLeft, nullptr);
     game.Update(kDt, kCentre, std::vector<Toucher>{kLeft1});
     game.Update(kDt, {0.5, 0, 0.042}, std::vector<Toucher>{kRight1});
-    EXPECT_TRUE(game.Update(kDt, {15.1, 0, 0.042}, false).goal);
+    EXPECT_TRUE(game.Update(kDt, {15.1, 0, 0.042}, kNobody).goal);
   }
 }
 
@@ -416,9 +418,9 @@ TEST(GameKicks, UntouchedSetPieceBecomesPlayOnAfterMoreThanFifteenSeconds) {
                               PlayMode::kFreeKickRight, PlayMode::kDirectFreeKickLeft}) {
     Game game;
     game.SetPlayMode(mode);
-    for (int i = 0; i < 60; ++i) game.Update(0.25, {3, 9.958, 0.042}, false);
+    for (int i = 0; i < 60; ++i) game.Update(0.25, {3, 9.958, 0.042}, kNobody);
     EXPECT_EQ(game.play_mode(), mode);
-    const GameUpdate u = game.Update(0.25, {3, 9.958, 0.042}, false);
+    const GameUpdate u = game.Update(0.25, {3, 9.958, 0.042}, kNobody);
     EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn) << PlayModeName(mode);
     EXPECT_TRUE(u.dropped_ball);
   }
@@ -428,11 +430,11 @@ TEST(GameKicks, UntouchedSetPieceBecomesPlayOnAfterMoreThanFifteenSeconds) {
 TEST(GameKicks, SetPieceTouchCountsAfterPausePlusThirtyMilliseconds) {
   Game game;
   game.SetPlayMode(PlayMode::kKickInRight);
-  for (int i = 0; i < 51; ++i) game.Update(kDt, kCentre, false);  // 1.02 s
-  game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});       // 1.04 s
+  for (int i = 0; i < 51; ++i) game.Update(kDt, kCentre, kNobody);  // 1.02 s
+  game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});         // 1.04 s
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
   game.SetPlayMode(PlayMode::kKickInRight);
-  for (int i = 0; i < 50; ++i) game.Update(kDt, kCentre, false);
+  for (int i = 0; i < 50; ++i) game.Update(kDt, kCentre, kNobody);
   game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});  // 1.02 s: too early
   EXPECT_EQ(game.play_mode(), PlayMode::kKickInRight);
 }
@@ -441,12 +443,12 @@ TEST(GameKicks, SetPieceTouchCountsAfterPausePlusThirtyMilliseconds) {
 TEST(GameKicks, GoalKickPlaysOnWhenTheTouchedBallLeavesThePenaltyBox) {
   Game game;
   game.SetPlayMode(PlayMode::kGoalKickLeft);
-  for (int i = 0; i < 60; ++i) game.Update(kDt, {-14, 0, 0.042}, false);
+  for (int i = 0; i < 60; ++i) game.Update(kDt, {-14, 0, 0.042}, kNobody);
   game.Update(kDt, {-14, 0, 0.042}, std::vector<Toucher>{kLeft1});
   EXPECT_EQ(game.play_mode(), PlayMode::kGoalKickLeft);
-  game.Update(kDt, {-13.3, 0.5, 0.042}, false);
+  game.Update(kDt, {-13.3, 0.5, 0.042}, kNobody);
   EXPECT_EQ(game.play_mode(), PlayMode::kGoalKickLeft);
-  game.Update(kDt, {-13.1, 0.5, 0.042}, false);
+  game.Update(kDt, {-13.1, 0.5, 0.042}, kNobody);
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
 }
 
@@ -454,7 +456,7 @@ TEST(GameKicks, GoalKickPlaysOnWhenTheTouchedBallLeavesThePenaltyBox) {
 TEST(GameKicks, PassModeEndsAtATouch) {
   Game game;
   game.SetPlayMode(PlayMode::kPassLeft);
-  game.Update(kDt, kCentre, false);
+  game.Update(kDt, kCentre, kNobody);
   EXPECT_EQ(game.play_mode(), PlayMode::kPassLeft);
   game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
@@ -464,7 +466,7 @@ TEST(GameKicks, PassModeEndsAtATouch) {
 TEST(GameKicks, OffsideModeLastsUntilTheTrainerChangesIt) {
   Game game;
   game.SetPlayMode(PlayMode::kOffsideLeft);
-  for (int i = 0; i < 1000; ++i) game.Update(kDt, kCentre, i % 2 == 0);
+  for (int i = 0; i < 1000; ++i) game.Update(kDt, kCentre, i % 2 == 0 ? kSomeone : kNobody);
   EXPECT_EQ(game.play_mode(), PlayMode::kOffsideLeft);
 }
 
@@ -477,7 +479,7 @@ TEST(GameFlow, SecondHalfKickOffGoesToTheOtherTeam) {
     game.KickOff(std::nullopt, &rng);
     const PlayMode first = game.play_mode();
     game.SetGameTime(299.99);
-    game.Update(kDt, kCentre, false);
+    game.Update(kDt, kCentre, kNobody);
     ASSERT_EQ(game.half(), 2);
     game.KickOff(std::nullopt, &rng);
     EXPECT_NE(game.play_mode(), first) << seed;
@@ -500,15 +502,15 @@ TEST(GameFlow, CoinTossPicksBothSides) {
 TEST(GameFlow, GoalInTheRightGoalScoresForLeft) {
   Game game;
   game.SetPlayMode(PlayMode::kPlayOn);
-  GameUpdate u = game.Update(kDt, {15.03, 0.5, 0.042}, false);  // centre past the line by less than a radius
+  GameUpdate u = game.Update(kDt, {15.03, 0.5, 0.042}, kNobody);  // centre past the line by less than a radius
   EXPECT_FALSE(u.goal);
-  u = game.Update(kDt, {15.05, 0.5, 0.042}, false);
+  u = game.Update(kDt, {15.05, 0.5, 0.042}, kNobody);
   EXPECT_TRUE(u.goal);
   EXPECT_EQ(u.scored_by, Side::kLeft);
   EXPECT_EQ(game.play_mode(), PlayMode::kGoalLeft);
   EXPECT_EQ(game.score(Side::kLeft), 1);
   EXPECT_EQ(game.score(Side::kRight), 0);
-  u = game.Update(kDt, {15.3, 0.5, 0.042}, false);  // still in the goal: counted once
+  u = game.Update(kDt, {15.3, 0.5, 0.042}, kNobody);  // still in the goal: counted once
   EXPECT_FALSE(u.goal);
   EXPECT_EQ(game.score(Side::kLeft), 1);
 }
@@ -516,7 +518,7 @@ TEST(GameFlow, GoalInTheRightGoalScoresForLeft) {
 TEST(GameFlow, GoalInTheLeftGoalScoresForRight) {
   Game game;
   game.SetPlayMode(PlayMode::kPlayOn);
-  const GameUpdate u = game.Update(kDt, {-15.2, -1.0, 0.7}, false);
+  const GameUpdate u = game.Update(kDt, {-15.2, -1.0, 0.7}, kNobody);
   EXPECT_TRUE(u.goal);
   EXPECT_EQ(u.scored_by, Side::kRight);
   EXPECT_EQ(game.play_mode(), PlayMode::kGoalRight);
@@ -528,7 +530,7 @@ TEST(GameFlow, WideOrHighIsNoGoal) {
        {Eigen::Vector3d(15.2, 1.1, 0.042), Eigen::Vector3d(15.2, 0, 0.85), Eigen::Vector3d(-15.2, -1.06, 0.042)}) {
     Game game;
     game.SetPlayMode(PlayMode::kPlayOn);
-    EXPECT_FALSE(game.Update(kDt, ball, false).goal) << ball.transpose();
+    EXPECT_FALSE(game.Update(kDt, ball, kNobody).goal) << ball.transpose();
     EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
   }
 }
@@ -536,7 +538,7 @@ TEST(GameFlow, WideOrHighIsNoGoal) {
 TEST(GameFlow, GoalPauseThenKickOffOfTheOtherTeam) {
   Game game;
   game.SetPlayMode(PlayMode::kPlayOn);
-  ASSERT_TRUE(game.Update(kDt, {15.1, 0, 0.042}, false).goal);
+  ASSERT_TRUE(game.Update(kDt, {15.1, 0, 0.042}, kNobody).goal);
   GameUpdate last;
   const int cycles = CyclesUntilModeChange(&game, {15.3, 0, 0.042}, 1000, &last);
   EXPECT_NEAR(cycles, 150, 1);  // 3 s
@@ -547,7 +549,7 @@ TEST(GameFlow, GoalPauseThenKickOffOfTheOtherTeam) {
   EXPECT_TRUE(last.place_ball->isApprox(kCentre));
 
   game.SetPlayMode(PlayMode::kPlayOn);
-  ASSERT_TRUE(game.Update(kDt, {-15.1, 0, 0.042}, false).goal);
+  ASSERT_TRUE(game.Update(kDt, {-15.1, 0, 0.042}, kNobody).goal);
   CyclesUntilModeChange(&game, {-15.3, 0, 0.042}, 1000);
   EXPECT_EQ(game.play_mode(), PlayMode::kKickOffLeft);
 }
@@ -556,51 +558,218 @@ TEST(GameFlow, HalvesAndGameOver) {
   Game game;
   game.KickOff(Side::kLeft, nullptr);
   game.SetGameTime(299.99);
-  game.Update(kDt, kCentre, false);
+  game.Update(kDt, kCentre, kNobody);
   EXPECT_EQ(game.half(), 2);
   EXPECT_EQ(game.play_mode(), PlayMode::kBeforeKickOff);
   const double t = game.game_time();
   EXPECT_GE(t, 300.0);
-  game.Update(kDt, kCentre, false);
+  game.Update(kDt, kCentre, kNobody);
   EXPECT_EQ(game.game_time(), t);  // stopped
   game.KickOff(Side::kRight, nullptr);
-  game.Update(kDt, kCentre, true);
+  game.Update(kDt, kCentre, kSomeone);
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
   EXPECT_GT(game.game_time(), t);  // the second half continues the clock
   game.SetGameTime(599.99);
-  game.Update(kDt, kCentre, false);
+  game.Update(kDt, kCentre, kNobody);
   EXPECT_EQ(game.play_mode(), PlayMode::kGameOver);
   const double end = game.game_time();
-  game.Update(kDt, kCentre, false);
+  game.Update(kDt, kCentre, kNobody);
   EXPECT_EQ(game.game_time(), end);
   EXPECT_EQ(game.half(), 2);
 }
 
-TEST(GameFlow, OutBallDroppedInsideAfterThePause) {
+// Runs `cycles` cycles with the ball at `ball`, nobody touching; the last update.
+GameUpdate RunCycles(Game* game, const Eigen::Vector3d& ball, int cycles) {
+  GameUpdate u;
+  for (int i = 0; i < cycles; ++i) u = game->Update(kDt, ball, kNobody);
+  return u;
+}
+
+const Clearing* FindClearing(const GameUpdate& u, ClearingKind kind, Side team) {
+  for (const Clearing& c : u.clearings)
+    if (c.kind == kind && c.team == team) return &c;
+  return nullptr;
+}
+
+// CheckBallLeftField / AwardKickIn: over a touch line, a kick-in for the other team than the last toucher's, on
+// the line where the ball last was on the field. For the kick-in pause nothing; then the ball is held on the spot,
+// the other team cleared from its 2 m circle every cycle, the taking team pushed 0.5 m off it once.
+TEST(GameSetPieces, KickInForTheOtherTeamOnTheLineWhereTheBallLeft) {
+  Game game = FourPlayers();
+  game.SetPlayMode(PlayMode::kPlayOn);
+  game.Update(kDt, {3, 5, 0.042}, std::vector<Toucher>{kLeft2});
+  game.Update(kDt, {3.2, 9.9, 0.042}, kNobody);  // still on the field (within a radius and 1 mm)
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  GameUpdate u = game.Update(kDt, {3.3, 10.1, 0.042}, kNobody);
+  EXPECT_EQ(game.play_mode(), PlayMode::kKickInRight);
+  EXPECT_TRUE(game.free_kick_spot().isApprox(Eigen::Vector3d(3.2, 10 - 0.042, 0.042)));
+  EXPECT_FALSE(u.place_ball.has_value());
+  const Eigen::Vector3d out(3.5, 11, 0.042);
+  for (int i = 0; i < 48; ++i) {
+    u = game.Update(kDt, out, kNobody);
+    ASSERT_FALSE(u.place_ball.has_value()) << i;
+    ASSERT_TRUE(u.clearings.empty()) << i;
+  }
+  u = RunCycles(&game, out, 2);  // 1.0 s into the mode
+  ASSERT_TRUE(u.place_ball.has_value());
+  EXPECT_FALSE(u.dropped_ball);
+  EXPECT_TRUE(u.place_ball->isApprox(game.free_kick_spot()));
+  const Clearing* circle = FindClearing(u, ClearingKind::kCircle, Side::kLeft);
+  ASSERT_NE(circle, nullptr);
+  EXPECT_TRUE(circle->centre.isApprox(game.free_kick_spot()));
+  EXPECT_DOUBLE_EQ(circle->radius, 2.0);
+  EXPECT_DOUBLE_EQ(circle->distance, 2.5);
+  const Clearing* repel = FindClearing(u, ClearingKind::kRepel, Side::kRight);
+  ASSERT_NE(repel, nullptr);
+  EXPECT_DOUBLE_EQ(repel->radius, 0.5);
+  EXPECT_FALSE(repel->avoid_ball);
+  u = game.Update(kDt, *u.place_ball, kNobody);
+  EXPECT_TRUE(u.place_ball.has_value());  // held
+  EXPECT_NE(FindClearing(u, ClearingKind::kCircle, Side::kLeft), nullptr);
+  EXPECT_EQ(FindClearing(u, ClearingKind::kRepel, Side::kRight), nullptr);  // once
+  u = game.Update(kDt, game.free_kick_spot(), std::vector<Toucher>{kRight1});
+  EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  EXPECT_FALSE(u.place_ball.has_value());
+}
+
+// Over a goal line: a goal kick for the defenders when an attacker touched it last, a corner for the attackers
+// when a defender did (AwardGoalKick: 1 m in front of the goal; AwardCornerKick: a radius in front of the line,
+// (W + goal width) / 4 - r from the middle on the ball's side).
+TEST(GameSetPieces, GoalKickOrCornerByWhoTouchedTheBallLast) {
+  struct Case {
+    Toucher last;
+    Eigen::Vector3d out;
+    PlayMode mode;
+    Eigen::Vector3d spot;
+  };
+  const double corner_y = (20 + 2.1) / 4 - 0.042;
+  for (const Case& c : {Case{kLeft1, {15.3, 3, 0.042}, PlayMode::kGoalKickRight, {14, 0, 0.042}},
+                        Case{kRight1, {15.3, 3, 0.042}, PlayMode::kCornerKickLeft, {14.958, corner_y, 0.042}},
+                        Case{kRight1, {-15.3, -4, 0.042}, PlayMode::kGoalKickLeft, {-14, 0, 0.042}},
+                        Case{kLeft1, {-15.3, -4, 0.042}, PlayMode::kCornerKickRight, {-14.958, -corner_y, 0.042}}}) {
+    Game game = FourPlayers();
+    game.SetPlayMode(PlayMode::kPlayOn);
+    game.Update(kDt, {0, 0, 0.042}, std::vector<Toucher>{c.last});
+    game.Update(kDt, c.out, kNobody);
+    EXPECT_EQ(game.play_mode(), c.mode) << PlayModeName(c.mode);
+    EXPECT_TRUE(game.free_kick_spot().isApprox(c.spot)) << game.free_kick_spot().transpose();
+    const GameUpdate u = RunCycles(&game, c.out, 50);
+    ASSERT_TRUE(u.place_ball.has_value()) << PlayModeName(c.mode);
+    EXPECT_TRUE(u.place_ball->isApprox(c.spot));
+  }
+}
+
+// With nobody having touched the ball, an out ball changes nothing (the reference has no team to blame).
+TEST(GameSetPieces, OutBallNobodyTouchedChangesNothing) {
   Game game;
   game.SetPlayMode(PlayMode::kPlayOn);
-  game.Update(kDt, {3, 5, 0.042}, false);
-  GameUpdate u = game.Update(kDt, {3, 10.1, 0.042}, false);
-  EXPECT_FALSE(u.place_ball.has_value());
-  int cycles = 1;
-  while (!u.place_ball && cycles < 200) {
-    u = game.Update(kDt, {3.5, 11, 0.042}, false);
-    ++cycles;
-  }
-  EXPECT_NEAR(cycles, 50, 1);  // 1 s kick-in pause
-  ASSERT_TRUE(u.place_ball.has_value());
-  EXPECT_TRUE(u.dropped_ball);
-  EXPECT_NEAR(u.place_ball->x(), 3.0, 1e-12);  // where it left
-  EXPECT_NEAR(u.place_ball->y(), 10 - 0.042, 1e-12);
+  const GameUpdate u = RunCycles(&game, {3, 10.5, 0.042}, 100);
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
-  EXPECT_FALSE(game.Update(kDt, {3, 9.958, 0.042}, false).place_ball.has_value());
+  EXPECT_FALSE(u.place_ball.has_value());
+}
+
+// UpdateGoalKick: the other team is cleared from the taking team's penalty area, not from a circle.
+TEST(GameSetPieces, GoalKickClearsThePenaltyAreaOfTheOtherTeam) {
+  Game game = FourPlayers();
+  game.SetPlayMode(PlayMode::kPlayOn);
+  game.Update(kDt, {0, 0, 0.042}, std::vector<Toucher>{kRight1});
+  game.Update(kDt, {-15.3, -4, 0.042}, kNobody);
+  ASSERT_EQ(game.play_mode(), PlayMode::kGoalKickLeft);
+  const GameUpdate u = RunCycles(&game, {-15.3, -4, 0.042}, 51);
+  const Clearing* box = FindClearing(u, ClearingKind::kBox, Side::kRight);
+  ASSERT_NE(box, nullptr);
+  EXPECT_TRUE(box->box.min().isApprox(Eigen::Vector2d(-15, -1.95)));
+  EXPECT_TRUE(box->box.max().isApprox(Eigen::Vector2d(-13.2, 1.95)));
+  EXPECT_EQ(FindClearing(u, ClearingKind::kCircle, Side::kRight), nullptr);
+}
+
+// CheckGoal -> WasLastKickFromFreeKick: a goal whose last touch was an indirect kick (a kick-in) is a goal kick
+// for the team scored on; an own goal straight from a direct kick (a corner) a corner for the other team; a goal
+// straight from a direct kick counts.
+TEST(GameSetPieces, NoGoalStraightFromAnIndirectKickNorAnOwnGoalFromADirectOne) {
+  const auto take = [](PlayMode mode, const Toucher& taker, const Eigen::Vector3d& goal) {
+    Game game = FourPlayers();
+    game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});  // a corner is held once anybody touched the ball
+    game.SetPlayMode(mode);
+    RunCycles(&game, {3, 0, 0.042}, 55);
+    game.Update(kDt, game.free_kick_spot(), std::vector<Toucher>{taker});
+    EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+    RunCycles(&game, {8, 0, 0.042}, 100);  // 2 s later, nobody else touched it
+    const GameUpdate u = game.Update(kDt, goal, kNobody);
+    return std::make_pair(u.goal, game.play_mode());
+  };
+  EXPECT_EQ(take(PlayMode::kKickInLeft, kLeft1, {15.2, 0, 0.042}), std::make_pair(false, PlayMode::kGoalKickRight));
+  EXPECT_EQ(take(PlayMode::kFreeKickLeft, kLeft1, {15.2, 0, 0.042}), std::make_pair(false, PlayMode::kGoalKickRight));
+  EXPECT_EQ(take(PlayMode::kDirectFreeKickLeft, kLeft1, {15.2, 0, 0.042}), std::make_pair(true, PlayMode::kGoalLeft));
+  EXPECT_EQ(take(PlayMode::kCornerKickLeft, kLeft1, {-15.2, 0, 0.042}),
+            std::make_pair(false, PlayMode::kCornerKickRight));
+}
+
+// A free kick's spot in a penalty area goes to the area's front corner (UpdateFreeKick); the taker's second touch
+// gives one where the ball last was on the field.
+TEST(GameSetPieces, FreeKickSpotLeavesThePenaltyArea) {
+  Game game = FourPlayers();
+  game.KickOff(Side::kRight, nullptr);
+  game.Update(kDt, kCentre, std::vector<Toucher>{kRight1});
+  RunCycles(&game, {13.5, -0.5, 0.042}, 5);
+  game.Update(kDt, {13.5, -0.5, 0.042}, std::vector<Toucher>{kRight1});  // 0.12 s after its kick
+  ASSERT_EQ(game.play_mode(), PlayMode::kFreeKickLeft);
+  EXPECT_TRUE(game.free_kick_spot().isApprox(Eigen::Vector3d(13.5, -0.5, 0.042)));
+  const GameUpdate u = RunCycles(&game, {13.5, -0.5, 0.042}, 50);
+  ASSERT_TRUE(u.place_ball.has_value());
+  EXPECT_TRUE(u.place_ball->isApprox(Eigen::Vector3d(13.2, -1.95, 0.042))) << u.place_ball->transpose();
+}
+
+// The game's clearings at kick-offs (ClearPlayersBeforeKickOff) and before them (UpdateBeforeKickOff), and at a
+// drop ball: which team, which area, in what order.
+TEST(GameClearings, KickOffBeforeKickOffAndDropBall) {
+  Game game = FourPlayers();
+  GameUpdate u = game.Update(kDt, kCentre, kNobody);
+  ASSERT_EQ(u.clearings.size(), 2u);  // BeforeKickOff: each team from the other's half
+  for (const Clearing& c : u.clearings) {
+    EXPECT_EQ(c.kind, ClearingKind::kBox);
+    EXPECT_EQ(c.box.min().x(), c.team == Side::kLeft ? 0.0 : -25.0);
+    EXPECT_EQ(c.box.max().x(), c.team == Side::kLeft ? 25.0 : 0.0);
+  }
+  game.KickOff(Side::kLeft, nullptr);
+  u = game.Update(kDt, kCentre, kNobody);
+  ASSERT_EQ(u.clearings.size(), 3u);
+  EXPECT_EQ(u.clearings[0].kind, ClearingKind::kBox);  // the other team from the kick-off team's half
+  EXPECT_EQ(u.clearings[0].team, Side::kRight);
+  EXPECT_EQ(u.clearings[0].box.max().x(), 0.0);
+  EXPECT_EQ(u.clearings[1].kind, ClearingKind::kCircle);  // and from the centre circle
+  EXPECT_EQ(u.clearings[1].team, Side::kRight);
+  EXPECT_EQ(u.clearings[2].kind, ClearingKind::kBox);  // the kick-off team from the other half
+  EXPECT_EQ(u.clearings[2].team, Side::kLeft);
+  EXPECT_EQ(u.clearings[2].box.min().x(), 0.0);
+  EXPECT_DOUBLE_EQ(u.clearings[2].keep_in_circle, 2.0);
+  game.DropBall();
+  u = game.Update(kDt, {4, 2, 0.042}, kNobody);
+  ASSERT_EQ(u.clearings.size(), 2u);
+  EXPECT_NE(u.clearings[0].team, u.clearings[1].team);
+  for (const Clearing& c : u.clearings) {
+    EXPECT_EQ(c.kind, ClearingKind::kCircle);
+    EXPECT_TRUE(c.centre.isApprox(Eigen::Vector3d(4, 2, 0.042)));
+    EXPECT_TRUE(c.ball.isApprox(Eigen::Vector3d(4, 2, 0.042)));
+  }
+  // Both orders come up, drawn from the game's seed.
+  int left_first = 0;
+  for (uint64_t seed = 1; seed <= 40; ++seed) {
+    Game g(GameRules{}, seed);
+    ASSERT_TRUE(g.Init("A", 1, 0).ok);
+    left_first += g.Update(kDt, kCentre, kNobody).clearings.front().team == Side::kLeft;
+  }
+  EXPECT_GT(left_first, 5);
+  EXPECT_LT(left_first, 35);
 }
 
 TEST(GameFlow, DropPositionLeavesPenaltyAreas) {
   Game game;
   // The rule aspect's box is 1.8 deep and 3.9 wide (PenaltyWidth), edges included.
-  EXPECT_TRUE(game.DropPosition({14, 0.5, 0.3}).isApprox(Eigen::Vector3d(13.2, 1.95, 0.042)));
-  EXPECT_TRUE(game.DropPosition({-15.5, -0.2, 0.042}).isApprox(Eigen::Vector3d(-13.2, -1.95, 0.042)));
+  EXPECT_TRUE(game.DropPosition({14, 0.5, 0.3}).isApprox(Eigen::Vector3d(13.2, 1.95, 0.3)));  // height kept
+  EXPECT_TRUE(game.DropPosition({-14.5, -0.2, 0.042}).isApprox(Eigen::Vector3d(-13.2, -1.95, 0.042)));
+  // Behind a goal line it stays (SoccerRuleAspect::DropBall does not limit x).
+  EXPECT_TRUE(game.DropPosition({-15.5, -0.2, 0.042}).isApprox(Eigen::Vector3d(-15.5, -0.2, 0.042)));
   EXPECT_TRUE(game.DropPosition({13.2, 1.95, 0.042}).isApprox(Eigen::Vector3d(13.2, 1.95, 0.042)));
   EXPECT_TRUE(game.DropPosition({14, 0, 0.042}).isApprox(Eigen::Vector3d(13.2, 1.95, 0.042)));  // y = 0: +
   EXPECT_TRUE(game.DropPosition({5, -12, 0.042}).isApprox(Eigen::Vector3d(5, -9.958, 0.042)));
@@ -612,7 +781,7 @@ TEST(GameTrainer, DropBallScoreTimeAndModes) {
   game.KickOff(Side::kLeft, nullptr);
   game.DropBall();
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
-  const GameUpdate u = game.Update(kDt, {-14, 0, 0.042}, false);
+  const GameUpdate u = game.Update(kDt, {-14, 0, 0.042}, kNobody);
   ASSERT_TRUE(u.place_ball.has_value());
   EXPECT_TRUE(u.place_ball->isApprox(Eigen::Vector3d(-13.2, 1.95, 0.042)));
   game.SetScore(2, std::nullopt);
@@ -622,11 +791,12 @@ TEST(GameTrainer, DropBallScoreTimeAndModes) {
   game.SetGameTime(-4);
   EXPECT_EQ(game.game_time(), 0.0);
   game.SetPlayMode(PlayMode::kKickInLeft);
-  game.Update(kDt, kCentre, true);  // within the kick-in pause: no change
+  game.Update(kDt, kCentre, kSomeone);  // within the kick-in pause: no change
   EXPECT_EQ(game.play_mode(), PlayMode::kKickInLeft);
-  for (int i = 0; i < 60; ++i) game.Update(kDt, kCentre, false);
-  game.Update(kDt, kCentre, true);
+  for (int i = 0; i < 60; ++i) game.Update(kDt, kCentre, kNobody);
+  game.Update(kDt, kCentre, kSomeone);
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
+  game.Update(kDt, kCentre, kNobody);  // a touch since the pass mode began would end it at once
   game.SetPlayMode(PlayMode::kPassRight);
   EXPECT_NEAR(CyclesUntilModeChange(&game, kCentre, 1000), 200, 1);
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);

@@ -83,5 +83,54 @@ TEST(SafeSpot, NoSafeSpotKeepsTheOneWanted) {
   EXPECT_EQ(SafeSpot(wanted, L, 4, {Standing(L, 4, 0, 0)}, kFarBall, rules), wanted);
 }
 
+// avoid_ball false (the reference's fAvoidBall, off for the kick's repel): the ball is no reason to move on; the
+// other robots still are.
+TEST(SafeSpot, AvoidBallFalseIgnoresTheBall) {
+  const std::vector<SpotPlayer> players = {Standing(L, 4, 0, 0)};
+  const Eigen::Vector3d ball(0.5, 0.0, 0.042);
+  const Eigen::Vector3d wanted(0.4, 0.0, 0.35);
+  EXPECT_EQ(SafeSpot(wanted, L, 4, players, ball, {}, false), wanted);
+  EXPECT_NE(SafeSpot(wanted, L, 4, players, ball, {}, true), wanted);
+  const std::vector<SpotPlayer> crowded = {Standing(L, 4, 0, 0), Standing(R, 9, 0.6, 0)};
+  const Eigen::Vector3d spot = SafeSpot(wanted, L, 4, crowded, ball, {}, false);
+  EXPECT_GT(crowded[1].box.squaredExteriorDistance(spot), 0.4 * 0.4) << spot.transpose();
+  EXPECT_LT(std::hypot(spot.x() - ball.x(), spot.y() - ball.y()), 1.0) << "near the ball is fine";
+  ExpectOnTheGrid(spot, wanted);
+}
+
+// SpotBoard::Place moves the torso and translates the box with it; later searches see the moved box.
+TEST(SpotBoard, PlaceMovesTheTorsoAndItsBox) {
+  SpotBoard board({Standing(L, 4, 0, 0), Standing(R, 9, 3, 3)}, kFarBall, {});
+  const Eigen::Vector3d to(2.0, -1.0, 0.4);
+  EXPECT_EQ(board.Place(L, 4, to, false), to);
+  const SpotPlayer* p = board.Find(L, 4);
+  ASSERT_NE(p, nullptr);
+  EXPECT_EQ(p->torso, to);
+  EXPECT_NEAR(p->box.min().x(), 1.9, 1e-12);
+  EXPECT_NEAR(p->box.max().x(), 2.1, 1e-12);
+  EXPECT_NEAR(p->box.min().y(), -1.1, 1e-12);
+  EXPECT_NEAR(p->box.max().y(), -0.9, 1e-12);
+  EXPECT_NEAR(p->box.min().z(), 0.05, 1e-12);
+  EXPECT_NEAR(p->box.max().z(), 0.6, 1e-12);
+  EXPECT_EQ(board.Find(R, 9)->torso, Eigen::Vector3d(3, 3, 0.35)) << "the others stay";
+  // Wanted right on the moved robot: the safe spot clears its box where it is now.
+  const Eigen::Vector3d spot = board.Place(R, 9, {2.0, -1.0, 0.35}, true);
+  EXPECT_GT(board.Find(L, 4)->box.squaredExteriorDistance(spot), 0.4 * 0.4) << spot.transpose();
+  EXPECT_EQ(board.Find(R, 9)->torso, spot);
+  ExpectOnTheGrid(spot, {2.0, -1.0, 0.35});
+}
+
+// An empty box stays empty; a robot not on the board is not moved and gets the spot wanted.
+TEST(SpotBoard, EmptyBoxesAndStrangers) {
+  SpotPlayer point{L, 2, {1, 1, 0.3}, {}};
+  SpotBoard board({point}, kFarBall, {});
+  EXPECT_EQ(board.Place(L, 2, {4, 4, 0.3}, false), Eigen::Vector3d(4, 4, 0.3));
+  EXPECT_TRUE(board.Find(L, 2)->box.isEmpty());
+  EXPECT_EQ(board.Find(R, 2), nullptr);
+  EXPECT_EQ(board.Place(R, 2, {4, 4, 0.3}, true), Eigen::Vector3d(4, 4, 0.3));
+  ASSERT_EQ(board.players().size(), 1u);
+  EXPECT_EQ(board.players()[0].torso, Eigen::Vector3d(4, 4, 0.3));
+}
+
 }  // namespace
 }  // namespace turf::simspark
