@@ -16,7 +16,12 @@
 // - kRepel: a player whose torso is within `radius` of the centre on the ground plane goes to radius + distance
 //   from the centre, in the direction it stands in (a torso exactly at the centre: along +x, which the reference
 //   leaves undefined).
-// Every move then goes to the safe spot nearest it (safe_spot.h), avoiding the ball when avoid_ball.
+// Every move then goes through the reference's safe-spot search (safe_spot.h: when the spot is unsafe, candidates in
+// order of their distance from where the player stands), avoiding the ball when avoid_ball.
+//
+// Not modelled: the reference moves a player's bodies relative to a transform that is only updated by the next
+// physics step, so a player moved twice in one cycle (cleared, then moved by the foul referee) ends at the second
+// spot plus the first move; here each move is absolute.
 #pragma once
 
 #include <Eigen/Core>

@@ -463,11 +463,23 @@ bool Game::CheckTakerFoul() {
   return true;
 }
 
+// BallStateAspect::UpdateGoalState: the ball meets the goal's box collider (goal.rsg: GoalDepth - 2r deep from a
+// radius behind the goal line, GoalWidth - 2r wide, GoalHeight high); CheckGoal's fallback: its centre beyond the
+// line by more than a radius, in the mouth.
+bool Game::BallInGoal(const Eigen::Vector3d& ball) const {
+  const double r = rules_.ball_radius;
+  const double line = rules_.field_length / 2.0;
+  const Eigen::AlignedBox3d box(
+      Eigen::Vector3d(line + r, -(rules_.goal_width / 2.0 - r), 0.0),
+      Eigen::Vector3d(line + rules_.goal_depth - r, rules_.goal_width / 2.0 - r, rules_.goal_height));
+  const Eigen::Vector3d mirrored(std::abs(ball.x()), ball.y(), ball.z());
+  if (box.squaredExteriorDistance(mirrored) < r * r) return true;
+  return std::abs(ball.x()) > line + r && std::abs(ball.y()) < rules_.goal_width / 2.0 && ball.z() < rules_.goal_height;
+}
+
 bool Game::CheckGoal(Cycle& c) {
   const Eigen::Vector3d& ball = c.ball;
-  if (!(std::abs(ball.x()) > rules_.field_length / 2.0 + rules_.ball_radius &&
-        std::abs(ball.y()) < rules_.goal_width / 2.0 && ball.z() < rules_.goal_height))
-    return false;
+  if (!BallInGoal(ball)) return false;
   const Side scored_on = ball.x() > 0.0 ? Side::kRight : Side::kLeft;
   const Side scorer = Opponent(scored_on);
   if (kick_off_team_no_score_ == scorer) {
@@ -480,7 +492,7 @@ bool Game::CheckGoal(Cycle& c) {
   // No goal straight from an indirect kick, nor an own goal straight from a direct one (more than 2 agents).
   if (LastTouchIsTheKick() && (indirect_kick_ || last_toucher_->side == scored_on) &&
       PlayerCount(Side::kLeft) + PlayerCount(Side::kRight) > 2) {
-    PunishIndirectKickGoal(*last_toucher_, scored_on);
+    PunishIndirectKickGoal(*last_toucher_, scored_on, ball);
     return true;
   }
   c.update.goal = true;
@@ -490,10 +502,10 @@ bool Game::CheckGoal(Cycle& c) {
   return true;
 }
 
-void Game::PunishIndirectKickGoal(const Toucher& kicker, Side scored_on) {
+void Game::PunishIndirectKickGoal(const Toucher& kicker, Side scored_on, const Eigen::Vector3d& ball) {
   indirect_kick_ = false;
   if (kicker.side == scored_on) {
-    AwardCornerKick(Opponent(kicker.side), last_on_field_);
+    AwardCornerKick(Opponent(kicker.side), ball);
   } else {
     AwardGoalKick(scored_on);
   }

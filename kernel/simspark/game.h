@@ -44,16 +44,19 @@
 //   last touch was the taker's within 0.1 s of an indirect kick, or an own goal
 //   so from a direct kick (more than 2 players): a goal kick for the team
 //   scored on, or a corner for the other team after an own goal. A kick-off
-//   taker's team may not score before the ball left the centre circle after its
-//   touch or the other team touched it: goal kick for the team scored on.
-// - In PlayOn (and pass modes), after the taker's and the goal checks: ball
-//   centre beyond a goal line by more than its radius, inside the goal mouth
-//   (|y| < goal_width/2, z < goal_height) -> Goal_Left if it is in the right
-//   goal (left scored), else Goal_Right; goal_pause later -> KickOff of the
-//   other team, ball to the centre.
+//   taker's team may not score before it touched the ball outside the centre
+//   circle or the other team touched it: goal kick for the team scored on.
+// - In PlayOn (and pass modes), after the taker's check: a goal when the ball
+//   meets the goal's box (the reference's recorder: from a radius behind the
+//   goal line to a radius before the net, a radius inside the posts, up to the
+//   bar; so a ball whose centre is over the line in the mouth), or, as the
+//   reference's fallback, its centre is beyond the line by more than a radius
+//   in the mouth (|y| < goal_width/2, z < goal_height) -> Goal_Left if it is in
+//   the right goal (left scored), else Goal_Right; goal_pause later -> KickOff
+//   of the other team, ball to the centre.
 // - Ball off the field (CheckBallLeftField), by the last toucher's team: over a
-//   touch line -> kick-in for the other team at the point where it left, on the
-//   line; over a goal line -> a goal kick for the defending team (spot 1 m in
+//   touch line -> kick-in for the other team at the point where it left, a
+//   radius inside the line; over a goal line -> a goal kick for the defending team (spot 1 m in
 //   front of its goal) when the attackers touched it last, else a corner for
 //   the attackers at ((W + goal width) / 4 - r) from the middle, on the ball's
 //   side (the reference's "temp value for RoboCup 2012"). Nobody touched the
@@ -61,14 +64,15 @@
 // - Set pieces (kick-in, corner, goal kick, free kicks): for kick_in_pause
 //   nothing; then each cycle the kick checks reset, the other team is cleared
 //   from the spot's 2 m circle (a goal kick: from the penalty area), a drop ball
-//   after more than drop_ball_time, and until the kick is taken the ball is
-//   held on the spot, the taking team's players within 0.5 m of it pushed away
-//   once. A free kick's spot in a penalty area moves to the area's front corner.
-//   Taken: a touch more than kick_in_pause + 0.03 s into the mode, after the
-//   push (a goal kick: and the ball out of the penalty area); a corner or goal
+//   after more than drop_ball_time of the mode, and until a touch counts the
+//   ball is held on the spot, the taking team's players within 0.5 m of it
+//   pushed to 0.5 m once. A free kick's spot in a penalty area moves to the
+//   area's front corner. A touch counts more than kick_in_pause + 0.03 s into
+//   the mode, after the push; it takes the kick (a goal kick: once the ball is
+//   out of the penalty area; it is no longer held meanwhile). A corner or goal
 //   kick is not held before anybody ever touched the ball. Pass modes -> PlayOn
-//   at a touch or after pass_duration; while in one the other team is kept
-//   1.1 m from the ball. Offside modes: nothing (the reference's rule is
+//   at a touch or after pass_duration; while in one, the other team's players
+//   within 1 m of the ball are moved to 1.1 m. Offside modes: nothing (the reference's rule is
 //   compiled out), they last until a trainer changes the mode.
 #pragma once
 
@@ -88,13 +92,14 @@ namespace turf::simspark {
 struct GameRules {
   double half_time = 300.0;      // s of game time per half (naosoccersim.rb RuleHalfTime 5 * 60)
   double goal_pause = 3.0;       // s in Goal_X before the kick-off (RuleGoalPauseTime 3)
-  double drop_ball_time = 15.0;  // s untouched in a kick-off / set piece before a drop ball (RuleDropBallTime 15)
-  double kick_in_pause = 1.0;    // s before an out ball is dropped / a set piece may be taken (RuleKickInPauseTime 1)
+  double drop_ball_time = 15.0;  // s of a kick-off / set piece not taken before a drop ball (RuleDropBallTime 15)
+  double kick_in_pause = 1.0;    // s of a set piece before it is held and may be taken (RuleKickInPauseTime 1)
   double pass_duration = 4.0;    // s in pass_left/right (PassModeDuration 4)
   double field_length = 30.0;
   double field_width = 20.0;
   double goal_width = 2.1;
   double goal_height = 0.8;
+  double goal_depth = 0.6;
   // The rule aspect's penalty box (drop balls, goal kicks): PenaltyLength 1.8 deep,
   // PenaltyWidth 3.9 wide (SoccerRuleAspect::UpdateCachedInternal); the field's
   // drawn lines are 6.0 wide (field3d.h).
@@ -257,7 +262,8 @@ class Game {
   void AwardSetPiece(PlayMode mode, const Eigen::Vector3d& spot);
   void AwardGoalKick(Side side);
   void AwardCornerKick(Side side, const Eigen::Vector3d& ball);
-  void PunishIndirectKickGoal(const Toucher& kicker, Side scored_on);
+  void PunishIndirectKickGoal(const Toucher& kicker, Side scored_on, const Eigen::Vector3d& ball);
+  bool BallInGoal(const Eigen::Vector3d& ball) const;
   void DropBallAt(Cycle& c, const Eigen::Vector3d& at);
   // ClearPlayersBeforeKickOff(side): side kicks off.
   void ClearBeforeKickOff(Cycle& c, Side side);

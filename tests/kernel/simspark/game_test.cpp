@@ -502,9 +502,10 @@ TEST(GameFlow, CoinTossPicksBothSides) {
 TEST(GameFlow, GoalInTheRightGoalScoresForLeft) {
   Game game;
   game.SetPlayMode(PlayMode::kPlayOn);
-  GameUpdate u = game.Update(kDt, {15.03, 0.5, 0.042}, kNobody);  // centre past the line by less than a radius
+  GameUpdate u = game.Update(kDt, {14.995, 0.5, 0.042}, kNobody);  // on the line
   EXPECT_FALSE(u.goal);
-  u = game.Update(kDt, {15.05, 0.5, 0.042}, kNobody);
+  // The goal's box begins a radius behind the line: the ball meets it once its centre is over the line.
+  u = game.Update(kDt, {15.005, 0.5, 0.042}, kNobody);
   EXPECT_TRUE(u.goal);
   EXPECT_EQ(u.scored_by, Side::kLeft);
   EXPECT_EQ(game.play_mode(), PlayMode::kGoalLeft);
@@ -513,6 +514,17 @@ TEST(GameFlow, GoalInTheRightGoalScoresForLeft) {
   u = game.Update(kDt, {15.3, 0.5, 0.042}, kNobody);  // still in the goal: counted once
   EXPECT_FALSE(u.goal);
   EXPECT_EQ(game.score(Side::kLeft), 1);
+}
+
+// goal.rsg's box: a radius inside the posts, up to the bar; the ball counts when it meets it.
+TEST(GameFlow, TheBallMeetsTheGoalsBox) {
+  for (const auto& [ball, goal] :
+       {std::pair{Eigen::Vector3d(15.3, 1.04, 0.042), true}, std::pair{Eigen::Vector3d(15.3, 1.06, 0.042), false},
+        std::pair{Eigen::Vector3d(-15.3, 0.0, 0.83), true}, std::pair{Eigen::Vector3d(-15.3, 0.0, 0.85), false}}) {
+    Game game;
+    game.SetPlayMode(PlayMode::kPlayOn);
+    EXPECT_EQ(game.Update(kDt, ball, kNobody).goal, goal) << ball.transpose();
+  }
 }
 
 TEST(GameFlow, GoalInTheLeftGoalScoresForRight) {
