@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
+#include <array>
 
 #include <exception>
 #include <filesystem>
@@ -49,6 +50,14 @@ void ReadField(MapReader m, Field3d* f) {
   m.Number("ball_radius", &f->ball_radius);
   m.Number("ball_mass", &f->ball_mass);
   m.Point("ball_start", &f->ball_x, &f->ball_y);
+  m.Numbers("ball_friction", f->ball_friction.data(), 3);
+  m.Int("ball_condim", &f->ball_condim);
+  m.Numbers("ball_solref", f->ball_solref.data(), 2);
+  std::array<double, 2> drag{f->ball_linear_drag, f->ball_angular_drag};
+  if (m.Numbers("ball_drag", drag.data(), 2)) {
+    f->ball_linear_drag = drag[0];
+    f->ball_angular_drag = drag[1];
+  }
   m.Number("wall_distance", &f->wall_distance);
   m.Bool("walls", &f->walls);
   m.Finish();
@@ -193,6 +202,8 @@ void ReadScene(MapReader m, const std::string& base_dir, LeggedScene* s, Errors*
   yaml::ReadPhysics(m.Map("physics"), &s->physics, [&](yaml::MapReader& p) {
     p.Bool("sensors_after_step", &s->physics.sensors_after_step);
     p.Number("motor_impulse_window", &s->physics.motor_impulse_window);
+    p.Number("fluid_density", &s->physics.fluid_density);
+    p.Number("fluid_viscosity", &s->physics.fluid_viscosity);
   });
   {
     MapReader r = m.Map("rates");

@@ -6,10 +6,13 @@
 // units, angles in degrees in keys ending in _deg):
 //   kind: legged                      (required: tells turf-sim which world to run)
 //   name: simspark-3d   seed: 1   ground_friction: 1.0
-//   physics: {step, solver_iterations, sensors_after_step, motor_impulse_window}
+//   physics: {step, solver_iterations, sensors_after_step, motor_impulse_window,
+//             fluid_density, fluid_viscosity (MuJoCo's air on every body; default 0: none)}
 //   rates: {joint_state_hz}
 //   field: {length, width, goal_width, goal_depth, goal_height, goal_wall,
 //           ball_radius, ball_mass, ball_start: [x, y], wall_distance,
+//           ball_friction: [slide, torsion, roll], ball_condim, ball_solref: [a, b] (the ball geom's MuJoCo
+//           contact), ball_drag: [linear N s/m, angular N m s/rad] (a force -c v and torque -c w),
 //           walls (default true: the four outer walls at wall_distance)}
 //       present = the RoboCup 3D soccer field with goals and ball
 //   robots:                            one entry per placed robot

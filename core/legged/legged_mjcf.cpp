@@ -116,11 +116,12 @@ std::string FieldXml(const Field3d& f, double friction) {
                    "\n"
                    R"(      <inertial pos="0 0 0" mass="{:.6g}" diaginertia="{:.6g} {:.6g} {:.6g}"/>)"
                    "\n"
-                   R"(      <geom name="ball" type="sphere" size="{:.6g}" friction="0.6 0.005 0.0001" )"
-                   R"(rgba="1 0.5 0 1"/>)"
+                   R"(      <geom name="ball" type="sphere" size="{:.6g}" friction="{:.6g} {:.6g} {:.6g}" )"
+                   R"(condim="{}" solref="{:.6g} {:.6g}" rgba="1 0.5 0 1"/>)"
                    "\n    </body>\n",
                    kLeggedBall, f.ball_x, f.ball_y, f.ball_radius, f.ball_mass, inertia, inertia, inertia,
-                   f.ball_radius);
+                   f.ball_radius, f.ball_friction[0], f.ball_friction[1], f.ball_friction[2], f.ball_condim,
+                   f.ball_solref[0], f.ball_solref[1]);
   return x;
 }
 
@@ -131,8 +132,11 @@ std::string SceneXml(const LeggedScene& s) {
   x += fmt::format("<mujoco model=\"turf_{}\">\n", s.name);
   x += "  <compiler autolimits=\"true\" angle=\"radian\"/>\n";
   // rcssserver3d's contact law rewrites the rows of an elliptic cone (ode_contacts.h).
-  x += fmt::format("  <option timestep=\"{}\" iterations=\"{}\" gravity=\"0 0 -9.81\" integrator=\"Euler\"{}/>\n",
-                   s.physics.step, s.physics.solver_iterations, s.contacts.enabled ? " cone=\"elliptic\"" : "");
+  x += fmt::format(
+      "  <option timestep=\"{}\" iterations=\"{}\" gravity=\"0 0 -9.81\" integrator=\"Euler\" density=\"{:.6g}\" "
+      "viscosity=\"{:.6g}\"{}/>\n",
+      s.physics.step, s.physics.solver_iterations, s.physics.fluid_density, s.physics.fluid_viscosity,
+      s.contacts.enabled ? " cone=\"elliptic\"" : "");
   x += fmt::format("  <size nconmax=\"{}\" njmax=\"{}\"/>\n", nconmax, 6 * nconmax);
   x += "  <default/>\n  <asset/>\n  <worldbody>\n";
   const double half = s.field.enabled ? s.field.wall_distance : 50.0;

@@ -49,6 +49,18 @@ std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
       if (!Positive(v)) e.push_back("field: every size and the ball's mass must be positive");
     }
     if (!(std::isfinite(f.ball_x) && std::isfinite(f.ball_y))) e.push_back("field: ball start must be finite");
+    for (double v :
+         {f.ball_friction[0], f.ball_friction[1], f.ball_friction[2], f.ball_linear_drag, f.ball_angular_drag})
+      if (!NonNegative(v)) e.push_back("field: the ball's friction and drag must be finite and not negative");
+    if (f.ball_condim != 1 && f.ball_condim != 3 && f.ball_condim != 4 && f.ball_condim != 6)
+      e.push_back("field: ball_condim must be 1, 3, 4 or 6");
+    const bool time_constant = Positive(f.ball_solref[0]) && Positive(f.ball_solref[1]);
+    const bool direct = f.ball_solref[0] < 0 && f.ball_solref[1] <= 0 && std::isfinite(f.ball_solref[0]) &&
+                        std::isfinite(f.ball_solref[1]);
+    if (!time_constant && !direct)
+      e.push_back(
+          "field: ball_solref must be a positive time constant and damping ratio, or negative stiffness "
+          "and damping");
   }
   if (s.robots.empty()) e.push_back("robots: at least one robot");
   std::set<std::string> names;

@@ -25,6 +25,10 @@ struct LeggedPhysics {
   // time elapsed in it), so a physics step may make up what the window's earlier steps left unspent, as ODE's
   // motor bounds the force of one whole step (the reference's 20 ms; rcssserver3d's scenes).
   double motor_impulse_window = 0.0;
+  // MuJoCo's fluid forces on every body (<option density viscosity>): RCSSServerMJ's air, 1.2 kg/m^3 and
+  // 2e-5 Pa s. 0 = none (SimSpark has no air).
+  double fluid_density = 0.0;
+  double fluid_viscosity = 0.0;
 };
 
 struct LeggedRates {
@@ -110,6 +114,15 @@ struct Field3d {
   double ball_mass = 0.026;
   double ball_x = 0.0;
   double ball_y = 0.0;
+  // The ball's MuJoCo contact: geom friction (sliding, torsional, rolling), condim, solref (RCSSServerMJ's ball:
+  // 0.4 0.01 0.01, 6, -5000 -20; a contact takes the larger friction and condim of its two geoms).
+  std::array<double, 3> ball_friction{0.6, 0.005, 0.0001};
+  int ball_condim = 3;
+  std::array<double, 2> ball_solref{0.02, 1.0};
+  // Drag on the ball: a force -linear v and a torque -angular w (SimSpark's DragController on its ball: 0.01 N s/m
+  // and 0.00005 N m s/rad), as the damping of the ball's free joint (MuJoCo integrates it implicitly).
+  double ball_linear_drag = 0.0;
+  double ball_angular_drag = 0.0;
   double wall_distance = 25.0;  // |x|, |y| of the outer walls' centres
   // The four outer walls. RCSSServerMJ's field has none (nothing stops a ball or robot leaving the field); its scene
   // turns them off, which also saves their collision tests against every robot geom in each step.

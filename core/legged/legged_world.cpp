@@ -94,7 +94,14 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
   const mjModel* m = model_.get();
   step_ns_ = std::llround(m->opt.timestep * 1e9);
   ball_body_ = scene_.field.enabled ? mj_name2id(m, mjOBJ_BODY, kLeggedBall) : -1;
-  if (ball_body_ >= 0) ball_qvel_ = m->jnt_dofadr[m->body_jntadr[ball_body_]];
+  if (ball_body_ >= 0) {
+    ball_qvel_ = m->jnt_dofadr[m->body_jntadr[ball_body_]];
+    // The ball's drag as its free joint's damping: linear dofs first, then angular (MJCF has one damping per joint).
+    for (int k = 0; k < 3; ++k) {
+      model_->dof_damping[ball_qvel_ + k] = scene_.field.ball_linear_drag;
+      model_->dof_damping[ball_qvel_ + 3 + k] = scene_.field.ball_angular_drag;
+    }
+  }
 
   for (const LeggedRobot& spec : scene_.robots) {
     RobotSlot slot;

@@ -1,0 +1,87 @@
+// The ball of each league's shipped scenes, as its reference simulator has it: measured rolling, in simulation time.
+//
+// rcssserver3d (configs/scenes/simspark_match.yaml): a DragController on the ball, a force -c_l v and a torque
+// -c_a w (c_l = 0.01 N s/m, c_a = 0.00005 N m s/rad; shared/protocols/simspark.md). A ball rolling without slip
+// (w = v / r, inertia 0.4 m r^2) obeys 1.4 m dv/dt = -(c_l + c_a / r^2) v: its speed decays as exp(-k t) with
+// k = (0.01 + 0.00005 / 0.042^2) / (1.4 x 0.026) = 1.053 /s, so a ball kicked to 2 m/s rolls about 1.4 m.
+//
+// RCSSServerMJ (configs/scenes/rcssservermj_fifa_1v1.yaml): friction 0.4 / 0.01 / 0.01 with condim 6, solref
+// (-5000, -20), air 1.2 kg/m^3 (shared/protocols/rcssservermj.md). Rolling friction bounds the rolling torque by
+// 0.01 m x the normal force, so a slow ball (air drag negligible) slows at most at 0.01 g / (1.4 r) = 0.64 m/s^2;
+// MuJoCo's soft constraint with that solref gives less (measured: 0.26 m/s^2 in MuJoCo 2.2.2; RCSSServerMJ runs
+// MuJoCo 3.4, not in Debian 12, so its own figure is not measured here).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "core/legged/legged_mjcf.h"
+#include "core/legged/legged_world.h"
+#include "loader/legged_scene_yaml.h"
+
+namespace turf {
+namespace {
+
+LeggedScene Shipped(const std::string& file) {
+  LeggedSceneLoadResult r = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/" + file);
+  if (!r.scene) throw std::runtime_error(r.errors.front());
+  return std::move(*r.scene);
+}
+
+// Steps until the simulation time reaches `t` s; the ball's speed on the ground plane then.
+double BallSpeedAt(LeggedWorld& w, double t) {
+  while (w.State().time_ns < std::llround(t * 1e9)) w.Step();
+  const LeggedWorldState s = w.State();
+  return std::hypot(s.ball_velocity[0], s.ball_velocity[1]);
+}
+
+TEST(Ball, SimSparkBallRollsOutWithTheReferencesDrag) {
+  LeggedWorld w(Shipped("simspark_match.yaml"));
+  const double r = 0.042;
+  ASSERT_EQ(w.PlaceBall({0.0, 5.0, r}, {2.0, 0.0, 0.0}), PlacementError::kOk);
+  const double v1 = BallSpeedAt(w, 0.5);  // sliding has turned into rolling
+  const double v2 = BallSpeedAt(w, 1.5);
+  const double k = (0.01 + 0.00005 / (r * r)) / (1.4 * 0.026);
+  std::printf("SimSpark ball: %.3f m/s at 0.5 s, %.3f at 1.5 s: decay %.3f /s (reference %.3f /s)\n", v1, v2,
+              std::log(v1 / v2), k);
+  ASSERT_GT(v1, 0.5);
+  EXPECT_NEAR(std::log(v1 / v2), k, 0.05 * k);
+  const double x = w.State().ball_position[0];
+  for (int i = 0; i < 1000; ++i) w.Step();
+  EXPECT_NEAR(w.State().ball_position[0] - x, v2 / k, 0.1 * v2 / k) << "what is left of the roll";
+}
+
+// The deceleration of a slow ball (1.2 m/s at the start) over 0.5 s, m/s^2.
+double SlowBallDeceleration(LeggedScene scene) {
+  LeggedWorld w(std::move(scene));
+  if (w.PlaceBall({0.0, 5.0, 0.11}, {1.2, 0.0, 0.0}) != PlacementError::kOk) return NAN;
+  const double v1 = BallSpeedAt(w, 0.3);
+  const double v2 = BallSpeedAt(w, 0.8);
+  return (v1 - v2) / 0.5;
+}
+
+TEST(Ball, RcssServerMjBallSlowsByItsRollingFriction) {
+  const double shipped = SlowBallDeceleration(Shipped("rcssservermj_fifa_1v1.yaml"));
+  LeggedScene without = Shipped("rcssservermj_fifa_1v1.yaml");
+  without.field.ball_condim = 3;  // no torsional or rolling friction
+  const double sliding_only = SlowBallDeceleration(without);
+  const double bound = 0.01 * 9.81 / (1.4 * 0.11);
+  std::printf("RCSSServerMJ ball at 1.2 m/s: %.3f m/s^2 (condim 3: %.3f; a hard rolling bound would give %.3f)\n",
+              shipped, sliding_only, bound);
+  // MuJoCo's soft rolling constraint (solref -5000 -20) stays below the bound of a hard one.
+  EXPECT_GT(shipped - sliding_only, 0.2 * bound);
+  EXPECT_LT(shipped, 1.05 * bound);
+  EXPECT_LT(std::abs(sliding_only), 0.05) << "without rolling friction a slow ball keeps its speed";
+}
+
+TEST(Ball, SceneFilesCarryTheBallsContactAndTheAir) {
+  const std::string mj = ComposeLeggedMjcf(Shipped("rcssservermj_fifa_1v1.yaml")).xml;
+  EXPECT_NE(mj.find(R"(friction="0.4 0.01 0.01" condim="6" solref="-5000 -20")"), std::string::npos);
+  EXPECT_NE(mj.find(R"(density="1.2" viscosity="2e-05")"), std::string::npos);
+  const std::string ss = ComposeLeggedMjcf(Shipped("simspark_match.yaml")).xml;
+  EXPECT_NE(ss.find(R"(density="0" viscosity="0")"), std::string::npos) << "no air in SimSpark";
+}
+
+}  // namespace
+}  // namespace turf
