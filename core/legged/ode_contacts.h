@@ -11,9 +11,11 @@
 // get the R and aref that make that law hold implicitly over MuJoCo's step h:
 //   normal      R = 1 / (h (k h + c))    aref = -(k r / (k h + c) + v) / h    (r <= 0: penetration beyond the layer)
 //   tangential  R = slip / h             aref = -v / h                        (then v' = -slip F)
-// and a friction coefficient so large that the cone never binds. Contacts with a surface that sets nothing (the
-// ball, goals, walls) keep MuJoCo's own law. Not modelled: ODE's bounce (no surface between robots and ground sets
-// it), torsional and rolling friction (ODE has none: those rows carry no force).
+// and a friction coefficient so large that the cone never binds. Contacts of the ball, goals and walls keep MuJoCo's
+// own law. Not modelled: the ball's own surface (rsg/agent/ball.rsg: soft ERP 0.5, CFM 0.05, slip 0.6, bounce 0.8
+// above 0.8 m/s; under `law: ode_friction` it would only make the ball's tangential contacts slip, at 0.3 m/(s N)
+// mixed with the ground's or a robot's), ODE's bounce (no surface between robots and ground sets it), torsional and
+// rolling friction (ODE has none: those rows carry no force).
 // `law: ode_friction` (OdeContactLaw::ode_normal false) rewrites only the tangential rows and keeps MuJoCo's normal
 // row: with it UT Austin Villa's agents stay upright 64-77 % of a 4-agent match (full law 35 %, MuJoCo's 50-55 %;
 // README, issue 12).
