@@ -52,6 +52,7 @@ void ReadField(MapReader m, Field3d* f) {
   m.Point("ball_start", &f->ball_x, &f->ball_y);
   m.Numbers("ball_friction", f->ball_friction.data(), 3);
   m.Int("ball_condim", &f->ball_condim);
+  m.Int("ball_priority", &f->ball_priority);
   m.Numbers("ball_solref", f->ball_solref.data(), 2);
   std::array<double, 2> drag{f->ball_linear_drag, f->ball_angular_drag};
   if (m.Numbers("ball_drag", drag.data(), 2)) {

@@ -11,8 +11,8 @@
 //   rates: {joint_state_hz}
 //   field: {length, width, goal_width, goal_depth, goal_height, goal_wall,
 //           ball_radius, ball_mass, ball_start: [x, y], wall_distance,
-//           ball_friction: [slide, torsion, roll], ball_condim, ball_solref: [a, b] (the ball geom's MuJoCo
-//           contact), ball_drag: [linear N s/m, angular N m s/rad] (a force -c v and torque -c w),
+//           ball_friction: [slide, torsion, roll], ball_condim, ball_solref: [a, b], ball_priority (the ball
+//           geom's MuJoCo contact), ball_drag: [linear N s/m, angular N m s/rad] (a force -c v and torque -c w),
 //           walls (default true: the four outer walls at wall_distance)}
 //       present = the RoboCup 3D soccer field with goals and ball
 //   robots:                            one entry per placed robot

@@ -117,11 +117,11 @@ std::string FieldXml(const Field3d& f, double friction) {
                    R"(      <inertial pos="0 0 0" mass="{:.6g}" diaginertia="{:.6g} {:.6g} {:.6g}"/>)"
                    "\n"
                    R"(      <geom name="ball" type="sphere" size="{:.6g}" friction="{:.6g} {:.6g} {:.6g}" )"
-                   R"(condim="{}" solref="{:.6g} {:.6g}" rgba="1 0.5 0 1"/>)"
+                   R"(condim="{}" solref="{:.6g} {:.6g}" priority="{}" rgba="1 0.5 0 1"/>)"
                    "\n    </body>\n",
                    kLeggedBall, f.ball_x, f.ball_y, f.ball_radius, f.ball_mass, inertia, inertia, inertia,
                    f.ball_radius, f.ball_friction[0], f.ball_friction[1], f.ball_friction[2], f.ball_condim,
-                   f.ball_solref[0], f.ball_solref[1]);
+                   f.ball_solref[0], f.ball_solref[1], f.ball_priority);
   return x;
 }
 

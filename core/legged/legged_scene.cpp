@@ -52,6 +52,7 @@ std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
     for (double v :
          {f.ball_friction[0], f.ball_friction[1], f.ball_friction[2], f.ball_linear_drag, f.ball_angular_drag})
       if (!NonNegative(v)) e.push_back("field: the ball's friction and drag must be finite and not negative");
+    if (f.ball_priority < 0) e.push_back("field: ball_priority must not be negative");
     if (f.ball_condim != 1 && f.ball_condim != 3 && f.ball_condim != 4 && f.ball_condim != 6)
       e.push_back("field: ball_condim must be 1, 3, 4 or 6");
     const bool time_constant = Positive(f.ball_solref[0]) && Positive(f.ball_solref[1]);

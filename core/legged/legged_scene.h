@@ -119,6 +119,7 @@ struct Field3d {
   std::array<double, 3> ball_friction{0.6, 0.005, 0.0001};
   int ball_condim = 3;
   std::array<double, 2> ball_solref{0.02, 1.0};
+  int ball_priority = 0;  // MuJoCo's geom priority: 1 = the ball's own parameters rule its contacts (RCSSServerMJ's)
   // Drag on the ball: a force -linear v and a torque -angular w (SimSpark's DragController on its ball: 0.01 N s/m
   // and 0.00005 N m s/rad), as the damping of the ball's free joint (MuJoCo integrates it implicitly).
   double ball_linear_drag = 0.0;

@@ -6,10 +6,11 @@
 // k = (0.01 + 0.00005 / 0.042^2) / (1.4 x 0.026) = 1.053 /s, so a ball kicked to 2 m/s rolls about 1.4 m.
 //
 // RCSSServerMJ (configs/scenes/rcssservermj_fifa_1v1.yaml): friction 0.4 / 0.01 / 0.01 with condim 6, solref
-// (-5000, -20), air 1.2 kg/m^3 (shared/protocols/rcssservermj.md). Rolling friction bounds the rolling torque by
-// 0.01 m x the normal force, so a slow ball (air drag negligible) slows at most at 0.01 g / (1.4 r) = 0.64 m/s^2;
-// MuJoCo's soft constraint with that solref gives less (measured: 0.26 m/s^2 in MuJoCo 2.2.2; RCSSServerMJ runs
-// MuJoCo 3.4, not in Debian 12, so its own figure is not measured here).
+// (-5000, -20) and priority 1 (its world.xml: the ball's parameters rule its contacts), air 1.2 kg/m^3
+// (shared/protocols/rcssservermj.md). Rolling friction bounds the rolling torque by 0.01 m x the normal force, so
+// a slow ball (air drag negligible) slows at most at 0.01 g / (1.4 r) = 0.64 m/s^2; MuJoCo's soft constraint
+// reaches most of it (measured 0.59 m/s^2 in MuJoCo 2.2.2; without the priority the ground's softer solref mixes
+// in and it is 0.26). RCSSServerMJ runs MuJoCo 3.4, not in Debian 12: its own figure is not measured here.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -69,15 +70,14 @@ TEST(Ball, RcssServerMjBallSlowsByItsRollingFriction) {
   const double bound = 0.01 * 9.81 / (1.4 * 0.11);
   std::printf("RCSSServerMJ ball at 1.2 m/s: %.3f m/s^2 (condim 3: %.3f; a hard rolling bound would give %.3f)\n",
               shipped, sliding_only, bound);
-  // MuJoCo's soft rolling constraint (solref -5000 -20) stays below the bound of a hard one.
-  EXPECT_GT(shipped - sliding_only, 0.2 * bound);
-  EXPECT_LT(shipped, 1.05 * bound);
+  // MuJoCo's soft rolling constraint (solref -5000 -20) comes close to the bound of a hard one.
+  EXPECT_NEAR(shipped, bound, 0.15 * bound);
   EXPECT_LT(std::abs(sliding_only), 0.05) << "without rolling friction a slow ball keeps its speed";
 }
 
 TEST(Ball, SceneFilesCarryTheBallsContactAndTheAir) {
   const std::string mj = ComposeLeggedMjcf(Shipped("rcssservermj_fifa_1v1.yaml")).xml;
-  EXPECT_NE(mj.find(R"(friction="0.4 0.01 0.01" condim="6" solref="-5000 -20")"), std::string::npos);
+  EXPECT_NE(mj.find(R"(friction="0.4 0.01 0.01" condim="6" solref="-5000 -20" priority="1")"), std::string::npos);
   EXPECT_NE(mj.find(R"(density="1.2" viscosity="2e-05")"), std::string::npos);
   const std::string ss = ComposeLeggedMjcf(Shipped("simspark_match.yaml")).xml;
   EXPECT_NE(ss.find(R"(density="0" viscosity="0")"), std::string::npos) << "no air in SimSpark";
