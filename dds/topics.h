@@ -20,51 +20,51 @@
 //  - direction, as turf-sim sees it: kPublished, kLatched (published; a late reader gets the last sample),
 //    kSubscribed.
 // Descriptions are Markdown (they go into README.md) and must not contain '|'.
-#define TURF_DDS_TOPICS(X)                                                                                           \
-  X(kClock, Clock, "clock", "turf.state", kPublished,                                                                \
-    "with every world state: sim time, frame, paused, time mode, measured real-time factor, run epoch (Unix ns of "  \
-    "sim time 0)")                                                                                                   \
-  X(kWorldState, WorldState, "world_state", "turf.state", kPublished,                                                \
-    "every 1/`rates.world_state_hz` of sim time (100 Hz): ball and every robot's pose and velocity")                 \
-  X(kSslField, SslField, "ssl/field", "turf.field", kLatched, "field geometry, ball model, camera layout")           \
-  X(kSslCamera, CameraFrame, "ssl/camera", "turf.sensor", kPublished,                                                \
-    "one sample per camera per frame (60 Hz), keyed by camera: what that camera sees")                               \
-  X(kSslCommandBlue, SslRobotCommand, "ssl/command/blue", "turf.command", kSubscribed,                               \
-    "blue robots' commands; the newest command per robot counts")                                                    \
-  X(kSslCommandYellow, SslRobotCommand, "ssl/command/yellow", "turf.command", kSubscribed,                           \
-    "yellow robots' commands; the newest command per robot counts")                                                  \
-  X(kSslFeedbackBlue, SslRobotFeedback, "ssl/feedback/blue", "turf.feedback", kPublished,                            \
-    "on change: blue robots' ball contact, kick count")                                                              \
-  X(kSslFeedbackYellow, SslRobotFeedback, "ssl/feedback/yellow", "turf.feedback", kPublished,                        \
-    "on change: yellow robots' ball contact, kick count")                                                            \
-  X(kControl, SimControl, "control", "turf.control", kSubscribed,                                                    \
-    "teleport ball/robot (incl. on/off field), pause, resume, step N, reset, time mode")                             \
-  X(kControlReply, SimControlReply, "control_reply", "turf.reply", kPublished,                                       \
-    "one per request: OK, or REJECTED with the reason")                                                              \
-  X(kStats, SensorStats, "stats", "turf.state", kPublished,                                                          \
-    "every second of sim time: rate, loss and latency of each modelled stream")                                      \
-  X(kRobotJointState, JointState, "robots/joint_state", "turf.state", kPublished,                                    \
-    "legged scenes, every 1/`rates.joint_state_hz` of sim time (50 Hz), through the joints' modelled link: each "    \
-    "robot's joints, keyed by robot")                                                                                \
-  X(kRobotImu, ImuState, "robots/imu", "turf.state", kPublished,                                                     \
-    "legged scenes, at the joint-state rate, through the IMU's modelled link: gyro, accelerometer, orientation; "    \
-    "the root body's true pose and velocity")                                                                        \
-  X(kRobotForce, ForceState, "robots/force", "turf.state", kPublished,                                               \
-    "legged scenes, at the joint-state rate, through the touch sensors' modelled link: touch and force sensors")     \
-  X(kRobotJointCommand, JointCommand, "robots/joint_command", "turf.command", kSubscribed,                           \
-    "legged scenes: joint targets, keyed by robot")                                                                  \
-  X(kRobotLinks, LinkState, "robots/links", "turf.state", kPublished,                                                \
-    "legged scenes, at the joint-state rate: each robot's body poses, keyed by robot")                               \
-  X(kLeggedScene, LeggedSceneInfo, "legged/scene", "turf.field", kLatched,                                           \
-    "legged scenes: the robots' shapes, 3D field size")                                                              \
-  X(kSimRun, SimRun, "sim/run", "turf.field", kLatched,                                                              \
-    "once, latched: the scene file's text and directory, realism and seed, for `turf replay --resimulate`")          \
-  X(kAppliedInputs, AppliedInputs, "sim/applied_inputs", "turf.control", kPublished,                                 \
-    "before a step, when inputs were taken since the last: the step count, sim time and each input sample's "        \
-    "CDR, in the order applied")                                                                                     \
-  X(kRobotsState, LeggedState, "robots/state", "turf.state", kPublished,                                             \
-    "legged scenes, at the joint-state rate: all robots' joints, IMU, forces and links of one frame, with the ball " \
-    "and the pairs of robots touching")
+#define TURF_DDS_TOPICS(X)                                                                                            \
+  X(kClock, Clock, "clock", "turf.state", kPublished,                                                                 \
+    "with every world state: sim time, frame, paused, time mode, measured real-time factor, run epoch (Unix ns of "   \
+    "sim time 0)")                                                                                                    \
+  X(kWorldState, WorldState, "world_state", "turf.state", kPublished,                                                 \
+    "every 1/`rates.world_state_hz` of sim time (100 Hz): ball and every robot's pose and velocity")                  \
+  X(kSslField, SslField, "ssl/field", "turf.field", kLatched, "field geometry, ball model, camera layout")            \
+  X(kSslCamera, CameraFrame, "ssl/camera", "turf.sensor", kPublished,                                                 \
+    "one sample per camera per frame (60 Hz), keyed by camera: what that camera sees")                                \
+  X(kSslCommandBlue, SslRobotCommand, "ssl/command/blue", "turf.command", kSubscribed,                                \
+    "blue robots' commands; the newest command per robot counts")                                                     \
+  X(kSslCommandYellow, SslRobotCommand, "ssl/command/yellow", "turf.command", kSubscribed,                            \
+    "yellow robots' commands; the newest command per robot counts")                                                   \
+  X(kSslFeedbackBlue, SslRobotFeedback, "ssl/feedback/blue", "turf.feedback", kPublished,                             \
+    "on change: blue robots' ball contact, kick count")                                                               \
+  X(kSslFeedbackYellow, SslRobotFeedback, "ssl/feedback/yellow", "turf.feedback", kPublished,                         \
+    "on change: yellow robots' ball contact, kick count")                                                             \
+  X(kControl, SimControl, "control", "turf.control", kSubscribed,                                                     \
+    "teleport ball/robot (incl. on/off field), pause, resume, step N, reset, time mode")                              \
+  X(kControlReply, SimControlReply, "control_reply", "turf.reply", kPublished,                                        \
+    "one per request: OK, or REJECTED with the reason")                                                               \
+  X(kStats, SensorStats, "stats", "turf.state", kPublished,                                                           \
+    "every second of sim time: rate, loss and latency of each modelled stream")                                       \
+  X(kRobotJointState, JointState, "robots/joint_state", "turf.state", kPublished,                                     \
+    "legged scenes, every 1/`rates.joint_state_hz` of sim time (50 Hz), through the joints' modelled link: each "     \
+    "robot's joints, keyed by robot")                                                                                 \
+  X(kRobotImu, ImuState, "robots/imu", "turf.state", kPublished,                                                      \
+    "legged scenes, at the joint-state rate, through the IMU's modelled link: gyro, accelerometer, orientation; "     \
+    "the root body's true pose and velocity")                                                                         \
+  X(kRobotForce, ForceState, "robots/force", "turf.state", kPublished,                                                \
+    "legged scenes, at the joint-state rate, through the touch sensors' modelled link: touch and force sensors")      \
+  X(kRobotJointCommand, JointCommand, "robots/joint_command", "turf.command", kSubscribed,                            \
+    "legged scenes: joint targets, keyed by robot")                                                                   \
+  X(kRobotLinks, LinkState, "robots/links", "turf.state", kPublished,                                                 \
+    "legged scenes, at the joint-state rate: each robot's body poses, keyed by robot")                                \
+  X(kLeggedScene, LeggedSceneInfo, "legged/scene", "turf.field", kLatched,                                            \
+    "legged scenes: the robots' shapes, 3D field size")                                                               \
+  X(kSimRun, SimRun, "sim/run", "turf.field", kLatched,                                                               \
+    "once, latched: the scene file's text and directory, realism and seed, for `turf replay --resimulate`")           \
+  X(kAppliedInputs, AppliedInputs, "sim/applied_inputs", "turf.control", kPublished,                                  \
+    "before a step, when inputs were taken since the last: the step count, sim time and each input sample's "         \
+    "CDR, in the order applied")                                                                                      \
+  X(kRobotsState, LeggedState, "robots/state", "turf.state", kPublished,                                              \
+    "legged scenes, at the joint-state rate: all robots' joints, IMU, forces and links of one frame, with the ball, " \
+    "the pairs of robots touching and each robot's last touch of the ball")
 
 namespace turf::idl {
 #define TURF_TOPIC_DECLARE_PUBSUB(constant, type, ...) \

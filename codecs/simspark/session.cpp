@@ -20,10 +20,8 @@ namespace turf::simspark {
 namespace {
 
 constexpr double kDeg = 180.0 / M_PI;
+constexpr double kSimCycle = 0.02;   // s, one SimSpark cycle
 constexpr double kBeamHeight = 0.4;  // m, torso centre after beam / init (SimSpark)
-// A player touches the ball when one of its bodies' origins comes this close
-// to the ball's centre (the Nao's feet and shanks are ~0.04 m half thick).
-constexpr double kTouchDistance = 0.15;  // m
 constexpr const char* kSeenParts[] = {"head", "rlowerarm", "llowerarm", "rfoot", "lfoot"};
 
 // The Nao's forward is its model +y: a robot facing `facing_deg` (from field
@@ -434,23 +432,21 @@ void Session::Trainer(const std::string& payload, TrainerRole role) {
 }
 
 void Session::Advance(WorldSnapshot snapshot) {
+  // The cycle's touches are the ones after the last look (the first cycle: within one cycle).
+  const double since = last_ ? last_->time : snapshot.time - kSimCycle;
   last_ = std::move(snapshot);
   const WorldSnapshot& world = *last_;
   ++cycle_;
   RecordTorsoPoses(world);
-  // The players touching the ball: a body of the player near the ball.
+  // The players touching the ball: a body of the player touched it in a physics step of the cycle (the
+  // reference's ball recorder: its collisions of the whole step).
   std::vector<Toucher> touchers;
   for (const auto& [id, a] : agents_) {
     if (!a.inited || a.robot < 0) continue;
     const RobotSnapshot* robot = world.Find(robots_[a.robot]);
-    if (robot == nullptr) continue;
-    const bool near = std::any_of(robot->links.begin(), robot->links.end(), [&](const RobotSnapshot::Link& l) {
-      return (l.position - world.ball).norm() < kTouchDistance;
-    });
-    if (near) touchers.push_back(Toucher{a.side, a.unum});
+    if (robot != nullptr && robot->ball_touch_time > since) touchers.push_back(Toucher{a.side, a.unum});
   }
-  const bool touched = !touchers.empty();
-  const GameUpdate update = game_.Update(0.02, world.ball, touchers);
+  const GameUpdate update = game_.Update(kSimCycle, world.ball, touchers);
   if (update.place_ball) requests_.ball = BallMove{*update.place_ball, Eigen::Vector3d::Zero()};
   CheckSelfCollisions(world);
   RefereeView view = ViewOf(world, touchers);
@@ -471,7 +467,7 @@ void Session::Advance(WorldSnapshot snapshot) {
   }
   for (auto& [id, a] : agents_) {
     if (a.robot < 0) continue;
-    outputs_.emplace_back(id, Perceive(&a, world, touched));
+    outputs_.emplace_back(id, Perceive(&a, world));
   }
   radio_.EndCycle();
   if (cycle_ % 2 == 0) monitor_ = FormatMonitorGame(MonitorState(game_), nullptr);
@@ -607,7 +603,7 @@ std::optional<Eigen::Vector3d> Session::ReferenceAcc(const std::string& robot) c
   return p[2].orientation.inverse() * (change + Eigen::Vector3d(0.0, 0.0, kGravity));
 }
 
-std::string Session::Perceive(Agent* a, const WorldSnapshot& world, bool /*touched*/) {
+std::string Session::Perceive(Agent* a, const WorldSnapshot& world) {
   Perception p;
   p.time = world.time;
   if (a->announce) {
@@ -689,7 +685,7 @@ std::string Session::TakeMonitorOutput() { return std::exchange(monitor_, {}); }
 
 namespace {
 
-constexpr uint32_t kLeagueVersion = 5;
+constexpr uint32_t kLeagueVersion = 6;
 constexpr size_t kMaxItems = 4096;  // robots, joints, links, moves, players: far above any scene
 constexpr size_t kMaxName = 256;    // a robot, joint, link or team name
 
@@ -719,6 +715,7 @@ void SaveWorld(const WorldSnapshot& w, StateWriter& out) {
       PutQuaternion(l.orientation, out);
     }
     PutVector(r.velocity, out);
+    out.Put(r.ball_touch_time);
   }
   out.Put<uint64_t>(w.robot_contacts.size());
   for (const RobotTouch& t : w.robot_contacts) {
@@ -755,6 +752,7 @@ WorldSnapshot RestoreWorld(StateReader& in) {
       l.orientation = GetQuaternion(in);
     }
     r.velocity = GetVector(in);
+    r.ball_touch_time = GetFinite(in);
     if (!in.ok()) break;
   }
   w.robot_contacts.resize(in.Count(kMaxItems));

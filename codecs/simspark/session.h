@@ -59,6 +59,9 @@ struct RobotSnapshot {
   };
   std::vector<Link> links;
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s of the torso, world frame
+  // s: the end of the last physics step in which the robot touched the ball (-1: never); a touch in the cycle is
+  // one after the previous snapshot's time.
+  double ball_touch_time = -1.0;
   const Link* FindLink(const std::string& link) const;
 };
 
@@ -208,7 +211,7 @@ class Session {
   void LeaveTeam(Agent* agent);
   void Kick(Agent* agent);
   void PlaceAgent(Agent* agent, const Pose2& pose);
-  std::string Perceive(Agent* agent, const WorldSnapshot& world, bool touched);
+  std::string Perceive(Agent* agent, const WorldSnapshot& world);
   SeeItems See(const Agent& agent, const RobotSnapshot& robot, const WorldSnapshot& world);
   const std::vector<int>& HingeIndex(int type, const RobotSnapshot& robot);
   void CheckSelfCollisions(const WorldSnapshot& world);

@@ -169,6 +169,7 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
     }
     robots_.push_back(std::move(slot));
   }
+  ball_touch_ns_.assign(robots_.size(), -1);
   robot_of_body_.assign(m->nbody, -1);
   for (size_t r = 0; r < robots_.size(); ++r) {
     for (int b : robots_[r].bodies) robot_of_body_[b] = static_cast<int>(r);
@@ -320,6 +321,7 @@ void LeggedWorld::Save(StateWriter& out) const {
   out.Put(health_.solver_capped_steps);
   out.Put(steps_since_stop_test_);
   out.Put<uint8_t>(commanded_ ? 1 : 0);
+  for (int64_t t : ball_touch_ns_) out.Put(t);
   for (const RobotSlot& r : robots_) {
     for (const JointSlot& j : r.joints) {
       out.Put(j.command.mode);
@@ -354,6 +356,13 @@ void LeggedWorld::Restore(StateReader& in) {
   if (steps_since_stop_test_ < 0 || steps_since_stop_test_ > 1'000'000) {
     in.Fail("stop step counter out of range");
     steps_since_stop_test_ = 0;
+  }
+  for (int64_t& t : ball_touch_ns_) {
+    t = in.Get<int64_t>();
+    if (t < -1 || t > time_ns()) {
+      in.Fail("ball touch time out of range");
+      t = -1;
+    }
   }
   for (RobotSlot& r : robots_) {
     for (JointSlot& j : r.joints) {
@@ -390,6 +399,7 @@ void LeggedWorld::Reset() {
   frame_ = 0;
   steps_since_stop_test_ = 0;
   commanded_ = false;
+  std::fill(ball_touch_ns_.begin(), ball_touch_ns_.end(), -1);
   mj_forward(model_.get(), data_.get());
   ResetCommands();
   AcceptState();
@@ -721,6 +731,7 @@ void LeggedWorld::Step() {
   StageServos();
   if (StagePhysics()) {
     AcceptState();
+    RecordBallTouches();
   } else {
     // Stage 3: undo a step that blew up, at rest, and hold every joint there.
     ++health_.instability_recoveries;
@@ -768,6 +779,21 @@ void LeggedWorld::ContactWrench(int site, ForceReading* out) const {
   for (int k = 0; k < 3; ++k) {
     out->force[k] = r[k] * force[0] + r[3 + k] * force[1] + r[6 + k] * force[2];
     out->point[k] = weight > 0 ? r[k] * rel[0] + r[3 + k] * rel[1] + r[6 + k] * rel[2] : 0.0;
+  }
+}
+
+void LeggedWorld::RecordBallTouches() {
+  if (ball_body_ < 0) return;
+  const mjModel* m = model_.get();
+  const mjData* d = data_.get();
+  const int64_t end = static_cast<int64_t>(frame_ + 1) * step_ns_;
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& c = d->contact[i];
+    const int b1 = m->geom_bodyid[c.geom1];
+    const int b2 = m->geom_bodyid[c.geom2];
+    if (b1 != ball_body_ && b2 != ball_body_) continue;
+    const int robot = robot_of_body_[b1 == ball_body_ ? b2 : b1];
+    if (robot >= 0) ball_touch_ns_[robot] = end;
   }
 }
 
@@ -838,6 +864,7 @@ void LeggedWorld::State(LeggedWorldState* out) const {
       s.forces[f].values.assign(d->sensordata + r.forces[f].adr, d->sensordata + r.forces[f].adr + r.forces[f].dim);
       ContactWrench(r.forces[f].site, &s.forces[f]);
     }
+    s.ball_touch_ns = ball_touch_ns_[i];
     s.links.resize(r.bodies.size());
     for (size_t b = 0; b < r.bodies.size(); ++b) {
       LinkPose& link = s.links[b];

@@ -130,6 +130,10 @@ struct LeggedRobotState {
   std::array<double, 4> orientation{1, 0, 0, 0};  // framequat sensor, or the base's
   std::vector<ForceReading> forces;
   std::vector<LinkPose> links;  // every body of the robot, model order
+  // The simulation time at the end of the last physics step in which a body of the robot touched the ball (-1:
+  // never). A referee compares it with its last look, so no touch in any step is missed (rcssserver3d records
+  // the ball's collisions of its whole 20 ms step).
+  int64_t ball_touch_ns = -1;
 };
 
 // Two robots touching in the last physics step (a referee's input: rcssserver3d's charging foul).
@@ -225,6 +229,7 @@ class LeggedWorld : Pinned {
   void AcceptState();  // the current state is the last good one
   void ContactWrench(int site, ForceReading* out) const;
   void RobotContacts(std::vector<RobotContact>* out) const;
+  void RecordBallTouches();  // after a step: every robot with a body in contact with the ball
 
   LeggedScene scene_;
   std::string mjcf_;
@@ -232,6 +237,7 @@ class LeggedWorld : Pinned {
   MjDataPtr data_;
   std::vector<RobotSlot> robots_;
   std::vector<int> robot_of_body_;                 // body -> index into robots_, -1 for none
+  std::vector<int64_t> ball_touch_ns_;             // per robot, LeggedRobotState::ball_touch_ns
   std::vector<std::pair<int, int>> motor_of_dof_;  // dof -> (robot, joint), -1 for none
   std::unique_ptr<OdeContacts> ode_contacts_;      // the scene's contact law, when it asks for rcssserver3d's
   int impulse_steps_ = 0;  // physics steps per motor impulse window (scene physics.motor_impulse_window), 0 = off

@@ -31,13 +31,15 @@
 // The counts are kept per side and number, also after a player leaves (the reference's arrays). A player whose
 // torso or velocity is not finite counts nothing, is judged for nothing and moved nowhere.
 //
+// The game's own moves of players (clearing.h) come before Update, which sees where they put the players; Moved()
+// gives such a player the same 1 s without a charging judgement. The players touching the ball are the caller's
+// (the SimSpark session: a body of the player in contact with the ball in a physics step of the cycle, as the
+// reference's ball recorder).
+//
 // Not modelled: illegal defence (a fourth defender entering its own penalty area is moved out of it: it needs more
-// than three players a side), crowding (off in naosoccersim.rb); the 1 s without a charging judgement
-// after the game's own moves of players (clearing them at kick-offs and set pieces, which turf's Game does not do
-// either); contacts and touch groups that pile up while the game is paused (here each cycle has its own), and the
-// empty groups of the reference's first cycles of a match (no touching foul before its second cycle of play). The
-// players touching the ball are the caller's (the SimSpark session: a body within 0.15 m of the ball's centre; the
-// reference: a collision with the ball).
+// than three players a side), crowding (off in naosoccersim.rb); contacts and touch groups that pile up while the
+// game is paused (here each cycle has its own), and the empty groups of the reference's first cycles of a match (no
+// touching foul before its second cycle of play).
 #pragma once
 
 #include <Eigen/Core>

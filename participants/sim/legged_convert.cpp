@@ -100,6 +100,14 @@ void FillState(const LeggedWorldState& state, idl::LeggedState* out) {
     contact.point(V3(in.point));
     contact.points(static_cast<uint32_t>(in.points));
   }
+  out->ball_touches().clear();
+  for (const LeggedRobotState& r : state.robots) {
+    if (r.ball_touch_ns < 0) continue;
+    idl::BallTouch touch;
+    touch.robot(r.name);
+    touch.sim_time_ns(r.ball_touch_ns);
+    out->ball_touches().push_back(touch);
+  }
 }
 
 bool FromIdl(const idl::JointTarget& in, JointCommand* out) {

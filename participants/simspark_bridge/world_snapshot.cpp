@@ -24,6 +24,10 @@ simspark::WorldSnapshot SimSparkWorld::SnapshotOf(const idl::LeggedState& state)
     return r;
   });
   w.ball_velocity = ToEigen(state.ball_velocity());
+  for (const idl::BallTouch& t : state.ball_touches()) {
+    for (simspark::RobotSnapshot& r : w.robots)
+      if (r.name == t.robot()) r.ball_touch_time = static_cast<double>(t.sim_time_ns()) * 1e-9;
+  }
   for (const idl::RobotContact& c : state.robot_contacts())
     w.robot_contacts.push_back({c.robot_a(), c.robot_b(), ToEigen(c.point())});
   return w;

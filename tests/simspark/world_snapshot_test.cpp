@@ -1,6 +1,6 @@
-// What the SimSpark referee reads of turf-sim's robots/state sample: robots touching each other and each torso's
-// velocity, from the legged world through the published sample (participants/sim/legged_convert.h) into the
-// league's world (participants/simspark_bridge/world_snapshot.h).
+// What the SimSpark referee reads of turf-sim's robots/state sample: robots touching each other, each torso's
+// velocity and each robot's last touch of the ball, from the legged world through the published sample
+// (participants/sim/legged_convert.h) into the league's world (participants/simspark_bridge/world_snapshot.h).
 #include "participants/simspark_bridge/world_snapshot.h"
 
 #include <gtest/gtest.h>
@@ -34,6 +34,22 @@ TEST(SimSparkWorldSnapshot, CarriesRobotContactsByNameAndTorsoVelocities) {
   ASSERT_NE(nao_3, nullptr);
   EXPECT_LT(nao_3->velocity.z(), -0.1) << "falling";
   EXPECT_EQ(nao_3->velocity.z(), state.robots[2].base_velocity[2]);
+}
+
+TEST(SimSparkWorldSnapshot, CarriesEachRobotsLastBallTouchInSeconds) {
+  LeggedWorld w(testing::NaoScene(2, /*field=*/true));
+  ASSERT_EQ(w.PlaceBall({-2.0, -0.3, 0.042}, {0.0, 1.0, 0.0}), PlacementError::kOk);  // into nao_1's feet
+  int steps = 0;
+  for (; steps < 500 && w.State().robots[0].ball_touch_ns < 0; ++steps) w.Step();
+  const LeggedWorldState state = w.State();
+  ASSERT_GE(state.robots[0].ball_touch_ns, 0);
+  ASSERT_EQ(state.robots[1].ball_touch_ns, -1);
+  idl::LeggedState sample;
+  FillState(state, &sample);
+  ASSERT_EQ(sample.ball_touches().size(), 1u) << "only robots that touched it";
+  const simspark::WorldSnapshot world = SimSparkWorld::SnapshotOf(sample);
+  EXPECT_DOUBLE_EQ(world.Find("nao_1")->ball_touch_time, static_cast<double>(state.robots[0].ball_touch_ns) * 1e-9);
+  EXPECT_EQ(world.Find("nao_2")->ball_touch_time, -1.0);
 }
 
 }  // namespace

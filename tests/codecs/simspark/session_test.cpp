@@ -32,6 +32,7 @@ class FakeWorld {
     bool right_contact = true;
     std::vector<RobotSnapshot::Link> posed;  // links placed by a test, in the world frame (before the others)
     Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // the torso's
+    double ball_touch_time = -1.0;                       // s, the last step it touched the ball in
   };
 
   explicit FakeWorld(int n) {
@@ -83,12 +84,14 @@ class FakeWorld {
     }
   }
 
+  // The world after one more cycle. A robot touches the ball (its contact, for the referee) when one of its bodies'
+  // centres is within 0.15 m of the ball's centre.
   WorldSnapshot Snapshot() {
     time_ += 0.02;
     WorldSnapshot w;
     w.time = time_;
     w.ball = ball_;
-    for (const Robot& r : robots_) {
+    for (Robot& r : robots_) {
       RobotSnapshot s;
       s.name = r.name;
       for (const NaoJoint& j : NaoJoints(0)) s.joint_names.push_back(j.perceptor);
@@ -106,6 +109,9 @@ class FakeWorld {
       for (const auto& [name, offset] : links)
         s.links.push_back({name, r.position + r.orientation * offset, r.orientation});
       s.velocity = r.velocity;
+      for (const RobotSnapshot::Link& l : s.links)
+        if ((l.position - ball_).norm() < 0.15) r.ball_touch_time = time_;
+      s.ball_touch_time = r.ball_touch_time;
       w.robots.push_back(s);
     }
     w.robot_contacts = contacts;

@@ -109,6 +109,38 @@ TEST(LeggedPlacementTest, PlaceBallSetsPositionAndVelocity) {
   EXPECT_LT(travelled, 1.01);
 }
 
+// Each robot's last touch of the ball (for referees): the end of the physics step whose contacts had one of its
+// bodies against the ball; a ball rolling past 0.3 m away never touches.
+TEST(LeggedPlacementTest, BallTouchIsTheLastStepARobotTouchedTheBall) {
+  for (const double x : {-2.0, -1.7}) {  // at the feet (x = -2 -+ 0.055), beside them
+    LeggedWorld w(NaoScene(1, /*field=*/true));
+    ASSERT_EQ(w.PlaceBall({x, -1.0, 0.042}, {0.0, 1.5, 0.0}), PlacementError::kOk);
+    int64_t first = -1;
+    double distance_at_first = 0.0;
+    for (int i = 0; i < 1000 && first < 0; ++i) {  // 2 s
+      w.Step();
+      const LeggedWorldState s = w.State();
+      first = s.robots[0].ball_touch_ns;
+      if (first >= 0) {
+        EXPECT_EQ(first, s.time_ns) << "the step just made";
+        const LinkPose* foot = Link(s.robots[0], "lfoot");
+        ASSERT_NE(foot, nullptr);
+        distance_at_first = std::hypot(s.ball_position[0] - foot->position[0], s.ball_position[1] - foot->position[1]);
+      }
+    }
+    if (x == -2.0) {
+      ASSERT_GE(first, 0) << "rolled into the feet";
+      EXPECT_GT(first, 400'000'000) << "not before it got there (1 m at 1.5 m/s, slowing)";
+      EXPECT_LT(distance_at_first, 0.2);
+      const int64_t touched = first;
+      for (int i = 0; i < 10; ++i) w.Step();
+      EXPECT_GE(w.State().robots[0].ball_touch_ns, touched) << "kept (or later) after the touch";
+    } else {
+      EXPECT_EQ(first, -1) << "rolled past";
+    }
+  }
+}
+
 TEST(LeggedPlacementTest, GeomsDescribeTheNaosShapes) {
   LeggedWorld w(NaoScene());
   const std::vector<LeggedGeom> geoms = w.RobotGeoms(0);
