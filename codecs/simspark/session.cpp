@@ -95,15 +95,6 @@ FoulRules FoulRulesOf(const GameRules& game) {
   return rules;
 }
 
-SafeSpotRules SpotRulesOf(const GameRules& game) {
-  SafeSpotRules rules;
-  rules.field_length = game.field_length;
-  rules.goal_width = game.goal_width;
-  rules.penalty_depth = game.penalty_depth;
-  rules.penalty_width = game.penalty_width;
-  return rules;
-}
-
 }  // namespace
 
 // The players as the referee sees them after a cycle, and the robots they are in.
@@ -512,7 +503,7 @@ void Session::ClearPlayers(const std::vector<Clearing>& clearings, RefereeView* 
   if (clearings.empty()) return;
   std::vector<SpotPlayer> spots;
   for (const RefereePlayer& p : view->players) spots.push_back({p.side, p.unum, p.torso, p.box});
-  SpotBoard board(std::move(spots), clearings.front().ball, SpotRulesOf(options_.rules));
+  SpotBoard board(std::move(spots), clearings.front().ball, SpotRulesOf(FoulRulesOf(options_.rules)));
   for (const ClearingMove& m : Clear(clearings, options_.rules.field_length, &board)) {
     for (RefereePlayer& p : view->players) {
       if (p.side != m.side || p.unum != m.unum) continue;

@@ -27,6 +27,15 @@ void Tick(int* count) { *count = std::min(*count + 1, kMaxCount); }
 
 }  // namespace
 
+SafeSpotRules SpotRulesOf(const FoulRules& rules) {
+  SafeSpotRules spot;
+  spot.field_length = rules.field_length;
+  spot.goal_width = rules.goal_width;
+  spot.penalty_depth = rules.penalty_depth;
+  spot.penalty_width = rules.penalty_width;
+  return spot;
+}
+
 const char* FoulName(Foul foul) {
   switch (foul) {
     case Foul::kNone:
@@ -208,12 +217,7 @@ std::vector<RefereeMove> FoulReferee::Update(bool paused, const std::vector<Refe
     spots.push_back(
         {p.side, p.unum, p.torso,
          p.box.isEmpty() || !p.box.min().allFinite() || !p.box.max().allFinite() ? Eigen::AlignedBox3d() : p.box});
-  SafeSpotRules spot;
-  spot.field_length = rules_.field_length;
-  spot.goal_width = rules_.goal_width;
-  spot.penalty_depth = rules_.penalty_depth;
-  spot.penalty_width = rules_.penalty_width;
-  board_.emplace(std::move(spots), ball, spot);
+  board_.emplace(std::move(spots), ball, SpotRulesOf(rules_));
   for (const RefereePlayer& p : players) {
     Counts& c = counts_[{p.side, p.unum}];
     std::rotate(c.velocities.rbegin(), c.velocities.rbegin() + 1, c.velocities.rend());

@@ -72,6 +72,9 @@ struct FoulRules {
   ChargingRules charging;
 };
 
+// The safe-spot search on the referee's field.
+SafeSpotRules SpotRulesOf(const FoulRules& rules);
+
 enum class Foul : uint8_t { kNone, kIncapable, kCharging, kTouching };
 const char* FoulName(Foul foul);  // "none", "incapable", "charging", "touching"
 
