@@ -530,7 +530,12 @@ void Session::CheckFouls(const RefereeView& view, const WorldSnapshot& world, co
   }
   for (const RefereeMove& m : fouls_.Update(game_.paused(), view.players, contacts, ball)) {
     requests_.moves.push_back(view.MoveTo(m.side, m.unum, m.position));
-    if (m.foul == Foul::kTouching) {
+    if (m.foul == Foul::kIllegalDefence) {
+      notes_.push_back(
+          fmt::format("player {} {} moved out of its penalty area (the referee's illegal defence: a fourth "
+                      "player of its team in it) to ({:.2f}, {:.2f})",
+                      SideName(m.side), m.unum, m.position.x(), m.position.y()));
+    } else if (m.foul == Foul::kTouching) {
       notes_.push_back(
           fmt::format("player {} {} pushed out of a group of {} players touching (the referee's touching "
                       "foul) to ({:.2f}, {:.2f})",
@@ -676,7 +681,7 @@ std::string Session::TakeMonitorOutput() { return std::exchange(monitor_, {}); }
 
 namespace {
 
-constexpr uint32_t kLeagueVersion = 6;
+constexpr uint32_t kLeagueVersion = 7;
 constexpr size_t kMaxItems = 4096;  // robots, joints, links, moves, players: far above any scene
 constexpr size_t kMaxName = 256;    // a robot, joint, link or team name
 

@@ -21,6 +21,9 @@ constexpr double kOutsideSpacing = 0.6;   // m along x per uniform number
 constexpr size_t kMaxPlayers = 64;
 constexpr int kMaxUnum = 99;
 constexpr int kMaxCount = 1 << 30;
+constexpr int kTeamSize = 11;            // the reference's arrays: numbers 1..11
+constexpr int kMaxInOwnArea = 3;         // MaxPlayersInsideOwnArea
+constexpr double kFarFromGoal = 1000.0;  // the reference's "not ranked" distance
 
 int Cycles(double seconds) { return static_cast<int>(std::lround(seconds / kCycle)); }
 void Tick(int* count) { *count = std::min(*count + 1, kMaxCount); }
@@ -46,6 +49,8 @@ const char* FoulName(Foul foul) {
       return "charging";
     case Foul::kTouching:
       return "touching";
+    case Foul::kIllegalDefence:
+      return "illegal_defence";
   }
   return "?";
 }
@@ -181,13 +186,103 @@ bool FoulReferee::Incapable(int unum, const Counts& c) const {
   return c.ground > ground / kCycle || c.not_standing > not_standing / kCycle;
 }
 
+// The referee's penalty box (PenaltyLength by PenaltyWidth from the goal line), edges included.
+bool FoulReferee::InOwnArea(Side side, const Eigen::Vector3d& torso) const {
+  const double line = rules_.field_length / 2;
+  const double front = line - rules_.penalty_depth;
+  const double x = side == Side::kLeft ? -torso.x() : torso.x();
+  return x >= front && x <= line && std::abs(torso.y()) <= rules_.penalty_width / 2;
+}
+
+// PenalizeIllegelDefenseFoul: to the nearer of the box's x and y edges, AgentRadius (0.4 m) beyond it, not into the
+// goal.
+Eigen::Vector3d FoulReferee::OutOfOwnArea(Side side, const Eigen::Vector3d& torso) const {
+  constexpr double kPad = 0.4;
+  const double line = rules_.field_length / 2;
+  const double front = line - rules_.penalty_depth;
+  const double min_x = side == Side::kLeft ? -line : front;
+  const double max_x = side == Side::kLeft ? -front : line;
+  const double half_width = rules_.penalty_width / 2;
+  const double to_x = std::abs(min_x - torso.x()) < std::abs(max_x - torso.x()) ? min_x - kPad : max_x + kPad;
+  const double to_y =
+      std::abs(-half_width - torso.y()) < std::abs(half_width - torso.y()) ? -half_width - kPad : half_width + kPad;
+  Eigen::Vector3d to = torso;
+  if (std::abs(to_y - torso.y()) < std::abs(to_x - torso.x())) {
+    to.y() = to_y;
+  } else {
+    to.x() = to_x;
+  }
+  if (std::abs(to.x()) > line && std::abs(to.y()) < rules_.goal_width / 2 + kPad)
+    to.y() = (rules_.goal_width / 2 + kPad + 0.001) * (to.y() < 0 ? -1.0 : 1.0);
+  return to;
+}
+
+// CalculateDistanceArrays' own-area counts and AnalyseFouls' illegal defence: with more than three players of a
+// team (no foul) in its own penalty area, a field player that has just entered it, or, when the goalie has just
+// entered, the one ranked fourth from the goal of those that were in it, is moved out at once. The numbers are
+// taken in a random order (the count drops with each move).
+std::vector<RefereeMove> FoulReferee::JudgeIllegalDefence(Side side, const std::vector<RefereePlayer>& players) {
+  std::array<const RefereePlayer*, kTeamSize + 1> player{};
+  std::array<bool, kTeamSize + 1> entered{};
+  std::array<double, kTeamSize + 1> from_goal;
+  from_goal.fill(kFarFromGoal);
+  int inside = 0;
+  bool goalie_entered = false;
+  const Eigen::Vector2d goal(side == Side::kLeft ? -rules_.field_length / 2 : rules_.field_length / 2, 0.0);
+  for (const RefereePlayer& p : players) {
+    if (p.side != side || p.unum < 1 || p.unum > kTeamSize) continue;
+    player[p.unum] = &p;
+    Counts& c = counts_.at({p.side, p.unum});
+    const bool was_in = c.in_own_area;
+    c.in_own_area = c.foul == Foul::kNone && InOwnArea(side, p.torso);
+    if (!c.in_own_area) continue;
+    ++inside;
+    entered[p.unum] = !was_in;
+    if (p.unum == 1) {
+      from_goal[p.unum] = 0.0;
+      goalie_entered = !was_in;
+    } else if (was_in) {
+      from_goal[p.unum] = (p.torso.head<2>() - goal).norm();
+    }
+  }
+  // SimpleOrder: rank by distance from the goal among the numbers without a foul (ties: the lower number after).
+  std::array<int, kTeamSize + 1> rank;
+  rank.fill(1);
+  const auto fouled = [&](int unum) { return player[unum] != nullptr && counts_.at({side, unum}).foul != Foul::kNone; };
+  for (int a = 1; a <= kTeamSize; ++a) {
+    if (fouled(a)) continue;
+    for (int b = a + 1; b <= kTeamSize; ++b) {
+      if (fouled(b)) continue;
+      ++rank[from_goal[a] >= from_goal[b] ? a : b];
+    }
+  }
+  std::vector<int> order;
+  for (int unum = 1; unum <= kTeamSize; ++unum) order.push_back(unum);
+  Shuffle(&order, rng_);
+  std::vector<RefereeMove> moves;
+  for (const int unum : order) {
+    if (player[unum] == nullptr || unum == 1) continue;
+    Counts& c = counts_.at({side, unum});
+    if (c.foul != Foul::kNone || !c.in_own_area || inside <= kMaxInOwnArea) continue;
+    if (!entered[unum] && !(goalie_entered && rank[unum] == kMaxInOwnArea + 1)) continue;
+    --inside;
+    c.foul = Foul::kIllegalDefence;
+    c.foul_time = 1;
+    c.since_moved = 0;
+    const Eigen::Vector3d to = board_->Place(side, unum, OutOfOwnArea(side, player[unum]->torso), true);
+    moves.push_back({side, unum, to, false, Foul::kIllegalDefence});
+  }
+  return moves;
+}
+
 // ClearPlayersAutomatic and RepositionOutsidePos.
 std::vector<RefereeMove> FoulReferee::Enforce(const std::vector<RefereePlayer>& players, const Eigen::Vector3d& ball) {
   std::vector<RefereeMove> moves;
   for (const RefereePlayer& p : players) {
     Counts& c = counts_.at({p.side, p.unum});
     if (c.foul == Foul::kNone) continue;
-    if (c.foul == Foul::kTouching) {  // pushed already (JudgeTouching); not cleared, only its counts reset
+    // Pushed already (JudgeTouching, JudgeIllegalDefence): not cleared, only its counts reset.
+    if (c.foul == Foul::kTouching || c.foul == Foul::kIllegalDefence) {
       ResetCounts(&c);
       continue;
     }
@@ -233,6 +328,9 @@ std::vector<RefereeMove> FoulReferee::Update(bool paused, const std::vector<Refe
     if (p.touching_ball) c.since_ball = 0;  // UpdateTimesSinceLastBallTouch
   }
   if (ball.allFinite()) JudgeCharging(players, contacts, ball);
+  std::vector<RefereeMove> moves;
+  for (const Side side : {Side::kLeft, Side::kRight})
+    for (const RefereeMove& m : JudgeIllegalDefence(side, players)) moves.push_back(m);
   for (const RefereePlayer& p : players) {
     Counts& c = counts_.at({p.side, p.unum});
     if (c.foul != Foul::kNone) continue;  // a foul being enforced is not judged again (HaveEnforceableFoul)
@@ -240,7 +338,7 @@ std::vector<RefereeMove> FoulReferee::Update(bool paused, const std::vector<Refe
     c.foul_time = incapable ? 1 : 0;
     c.foul = incapable ? Foul::kIncapable : Foul::kNone;
   }
-  std::vector<RefereeMove> moves = JudgeTouching(players, contacts);
+  for (const RefereeMove& m : JudgeTouching(players, contacts)) moves.push_back(m);
   for (RefereeMove& m : Enforce(players, ball)) moves.push_back(m);
   return moves;
 }
@@ -256,6 +354,7 @@ void FoulReferee::Save(StateWriter& out) const {
                   c.last_group_size})
       out.Put<int32_t>(v);
     out.Put(c.foul);
+    out.Put(c.in_own_area);
     for (const Eigen::Vector3d& v : c.velocities)
       for (int k = 0; k < 3; ++k) out.Put(v[k]);
   }
@@ -277,7 +376,8 @@ void FoulReferee::Restore(StateReader& in) {
       *v = in.Get<int32_t>();
       if (*v < 0 || *v > kMaxCount) in.Fail("referee count out of range");
     }
-    c.foul = in.Enum(static_cast<Foul>(4));
+    c.foul = in.Enum(static_cast<Foul>(static_cast<int>(Foul::kIllegalDefence) + 1));
+    c.in_own_area = in.Bool();
     for (Eigen::Vector3d& v : c.velocities) {
       for (int k = 0; k < 3; ++k) v[k] = in.Get<double>();
       if (!v.allFinite()) in.Fail("referee velocity not finite");

@@ -1,7 +1,8 @@
 // rcssserver3d's automatic referee for fouls of single players (SoccerRuleAspect's ProcessAgentState,
 // UpdateTimesSinceLastBallTouch, AnalyseChargingFouls, AnalyseFouls, AnalyseTouchGroups, ClearPlayersAutomatic and
 // RepositionOutsidePos with naosoccersim.rb's settings): the incapable foul and charging, after which a player is
-// held in the air for 0.5 s, then put outside the field, and touching, after which it is pushed out of a crowd.
+// held in the air for 0.5 s, then put outside the field; touching, after which it is pushed out of a crowd; and
+// illegal defence, after which it is moved out of its own penalty area.
 //
 // Every cycle each present player's torso velocity joins its last three (paused or not). While the game is paused
 // (Game::paused()) every count and foul ends and nothing is judged. Otherwise, in the reference's order:
@@ -18,6 +19,13 @@
 //   penalty area (the box PenaltyLength 1.8 by PenaltyWidth 3.9 and behind the goal line), touched the ball within
 //   1 s, or had a contact that was not charging within 0.2 s. A contact in which nobody charged restarts both
 //   players' time since a contact.
+// - Illegal defence (CalculateDistanceArrays, AnalyseFouls, PenalizeIllegelDefenseFoul; MaxPlayersInsideOwnArea 3,
+//   IllegalDefenseBeamPenalty false), per team, numbers in a random order: with more than three of its players
+//   without a foul in its own penalty area (torso in the box, edges included), a field player that entered it this
+//   cycle, or, in the cycle the goalie entered it, the one of those already in it ranked fourth from the goal, is
+//   moved out at once (one fewer counted): to the nearer of the box's x and y edges, 0.4 m beyond it (not into the
+//   goal), or the safe spot nearest that; its counts start again. After a pause everyone in the box has just
+//   entered it.
 // - Incapable, for each player without a foul: a field player more than 15 s on the ground or 30 s not standing
 //   (the goalie, number 1: 30 s and 60 s).
 // - Touching (touch_groups.h): in a group of more than two players touching, one is pushed 0.4 m away from the
@@ -36,8 +44,7 @@
 // (the SimSpark session: a body of the player in contact with the ball in a physics step of the cycle, as the
 // reference's ball recorder).
 //
-// Not modelled: illegal defence (a fourth defender entering its own penalty area is moved out of it: it needs more
-// than three players a side), crowding (off in naosoccersim.rb); contacts and touch groups that pile up while the
+// Not modelled: crowding (off in naosoccersim.rb); contacts and touch groups that pile up while the
 // game is paused (here each cycle has its own), and the empty groups of the reference's first cycles of a match (no
 // touching foul before its second cycle of play).
 #pragma once
@@ -75,8 +82,9 @@ struct FoulRules {
 // The safe-spot search on the referee's field.
 SafeSpotRules SpotRulesOf(const FoulRules& rules);
 
-enum class Foul : uint8_t { kNone, kIncapable, kCharging, kTouching };
-const char* FoulName(Foul foul);  // "none", "incapable", "charging", "touching"
+enum class Foul : uint8_t { kNone, kIncapable, kCharging, kTouching, kIllegalDefence };
+// "none", "incapable", "charging", "touching", "illegal_defence"
+const char* FoulName(Foul foul);
 
 // A player after the cycle.
 struct RefereePlayer {
@@ -132,10 +140,11 @@ class FoulReferee {
     int standing = 250;    // cycles standing in a row (5 s after a reset, as the reference's)
     int foul_time = 0;     // cycles of the foul; the move out comes when it passes the hold time
     Foul foul = Foul::kNone;
-    int since_ball = 50;      // cycles since it touched the ball (1 s after a reset)
-    int since_contact = 10;   // cycles since a contact that was not charging (0.2 s after a reset)
-    int since_moved = 50;     // cycles since the referee moved it (1 s at first; a reset keeps it)
-    int last_group_size = 1;  // players touching it, itself included, at the end of the cycle before
+    int since_ball = 50;       // cycles since it touched the ball (1 s after a reset)
+    int since_contact = 10;    // cycles since a contact that was not charging (0.2 s after a reset)
+    int since_moved = 50;      // cycles since the referee moved it (1 s at first; a reset keeps it)
+    int last_group_size = 1;   // players touching it, itself included, at the end of the cycle before
+    bool in_own_area = false;  // its torso was in its own penalty area (without a foul) at the last count
     std::array<Eigen::Vector3d, kVelocities> velocities{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
                                                         Eigen::Vector3d::Zero()};
   };
@@ -146,6 +155,9 @@ class FoulReferee {
   std::vector<RefereeMove> JudgeTouching(const std::vector<RefereePlayer>& players,
                                          const std::vector<PlayerContact>& contacts);
   bool Incapable(int unum, const Counts& c) const;
+  std::vector<RefereeMove> JudgeIllegalDefence(Side side, const std::vector<RefereePlayer>& players);
+  bool InOwnArea(Side side, const Eigen::Vector3d& torso) const;
+  Eigen::Vector3d OutOfOwnArea(Side side, const Eigen::Vector3d& torso) const;
   bool GoalieInOwnArea(Side side, int unum, const Eigen::Vector3d& torso) const;
   std::vector<RefereeMove> Enforce(const std::vector<RefereePlayer>& players, const Eigen::Vector3d& ball);
   static void ResetCounts(Counts* c);

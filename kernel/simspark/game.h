@@ -5,7 +5,7 @@
 // caller applies what an update asks for (ball placement, the clearings of
 // players, clearing.h). The automatic referee's player rules have files of
 // their own (self_collision.h, fouls.h). Not modelled: the positional fouls
-// (crowding, illegal defence), offside, the pass mode's score ban and the
+// (crowding, off in naosoccersim.rb), offside, the pass mode's score ban and the
 // agents' pass command.
 //
 // Flow, as rcssserver3d's soccer plugin runs it with naosoccersim.rb's

@@ -334,3 +334,75 @@ TEST(FoulReferee, TheSpotOutsideAvoidsARobotStandingOnIt) {
 
 }  // namespace
 }  // namespace turf::simspark
+
+namespace turf::simspark {
+namespace {
+
+// Left players standing in their own penalty area (x from -15 to -13.2, |y| <= 1.95) and around it.
+RefereePlayer Standing(int unum, double x, double y, Side side = Side::kLeft) {
+  return {side, unum, {x, y, 0.35}, Eigen::Vector3d::Zero(), false};
+}
+
+// AnalyseFouls' illegal defence (MaxPlayersInsideOwnArea 3, IllegalDefenseBeamPenalty false): a fourth field player
+// entering its own penalty area is moved out at once, to the nearer edge's side 0.4 m beyond it, with a note's
+// foul; three in it is allowed, and the same player outside is left alone.
+TEST(FoulReferee, AFourthPlayerEnteringItsOwnPenaltyAreaIsMovedOut) {
+  FoulReferee referee;
+  std::vector<RefereePlayer> team{Standing(2, -14.5, -1.0), Standing(3, -14.5, 0.0), Standing(4, -14.5, 1.0),
+                                  Standing(5, -12.9, 0.5)};
+  for (int i = 0; i < 10; ++i) ASSERT_TRUE(referee.Update(false, team, {}, kBall).empty()) << "three inside";
+  team[3] = Standing(5, -13.4, 0.5);  // steps in, 0.2 m behind the front edge
+  const std::vector<RefereeMove> m = referee.Update(false, team, {}, kBall);
+  ASSERT_EQ(m.size(), 1u);
+  EXPECT_EQ(m[0].unum, 5);
+  EXPECT_EQ(m[0].foul, Foul::kIllegalDefence);
+  EXPECT_FALSE(m[0].outside);
+  EXPECT_NEAR(m[0].position.x(), -13.2 + 0.4, 1e-9) << "beyond the front edge, the nearer one";
+  EXPECT_NEAR(m[0].position.y(), 0.5, 1e-9);
+  EXPECT_NEAR(m[0].position.z(), 0.35, 1e-9);
+  team[3] = Standing(5, m[0].position.x(), m[0].position.y());
+  for (int i = 0; i < 10; ++i) EXPECT_TRUE(referee.Update(false, team, {}, kBall).empty()) << "out again";
+}
+
+// The right team's area mirrored, and a player nearer a side edge goes out sideways.
+TEST(FoulReferee, IllegalDefenceGoesOutOverTheNearerEdge) {
+  FoulReferee referee;
+  std::vector<RefereePlayer> team{Standing(2, 14.5, -1.0, Side::kRight), Standing(3, 14.5, 0.0, Side::kRight),
+                                  Standing(4, 14.5, 1.0, Side::kRight), Standing(6, 13.6, 2.5, Side::kRight)};
+  referee.Update(false, team, {}, kBall);
+  team[3] = Standing(6, 13.6, 1.8, Side::kRight);  // 0.15 m inside the side edge
+  const std::vector<RefereeMove> m = referee.Update(false, team, {}, kBall);
+  ASSERT_EQ(m.size(), 1u);
+  EXPECT_EQ(m[0].side, Side::kRight);
+  EXPECT_NEAR(m[0].position.x(), 13.6, 1e-9);
+  EXPECT_NEAR(m[0].position.y(), 1.95 + 0.4, 1e-9);
+}
+
+// The goalie is never moved for it; when it enters a box with three team mates in it, the one of them ranked fourth
+// from the goal (the farthest) goes out.
+TEST(FoulReferee, WhenTheGoalieEntersTheFarthestOfTheOthersGoesOut) {
+  FoulReferee referee;
+  std::vector<RefereePlayer> team{Standing(1, -12.5, 0.0), Standing(2, -14.6, -0.5), Standing(3, -13.5, 1.5),
+                                  Standing(4, -14.2, 0.6)};
+  for (int i = 0; i < 5; ++i) ASSERT_TRUE(referee.Update(false, team, {}, kBall).empty());
+  team[0] = Standing(1, -14.8, 0.0);
+  const std::vector<RefereeMove> m = referee.Update(false, team, {}, kBall);
+  ASSERT_EQ(m.size(), 1u);
+  EXPECT_EQ(m[0].unum, 3) << "farthest from the goal (-15, 0)";
+  EXPECT_NEAR(m[0].position.x(), -13.2 + 0.4, 1e-9);
+}
+
+// While the game is paused nobody is judged, and the areas are counted afresh after it: four in the box at the
+// restart are all newcomers, so field players go out until three are left.
+TEST(FoulReferee, AfterAPauseEveryoneInTheAreaHasJustEntered) {
+  FoulReferee referee;
+  const std::vector<RefereePlayer> team{Standing(2, -14.6, -1.5), Standing(3, -14.6, -0.5), Standing(4, -14.6, 0.5),
+                                        Standing(5, -14.6, 1.5)};
+  EXPECT_TRUE(referee.Update(true, team, {}, kBall).empty());
+  const std::vector<RefereeMove> m = referee.Update(false, team, {}, kBall);
+  ASSERT_EQ(m.size(), 1u);
+  EXPECT_EQ(m[0].foul, Foul::kIllegalDefence);
+}
+
+}  // namespace
+}  // namespace turf::simspark
