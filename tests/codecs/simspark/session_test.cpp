@@ -638,6 +638,32 @@ TEST(SessionGame, AKickOffClearsThePlayersFromTheOtherHalf) {
   EXPECT_NEAR(home->position.y(), 3.0, 1e-9);
 }
 
+// The referee's illegal defence (kernel/simspark/fouls.h): a fourth Alpha player walking into its own penalty area
+// is moved out over the nearer edge, with a note.
+TEST(SessionReferee, AFourthDefenderInThePenaltyAreaIsMovedOut) {
+  Harness h(4);
+  for (int unum : {2, 3, 4, 5}) h.JoinAndCycle("Alpha", unum);
+  h.session.Trainer("(playMode PlayOn)", TrainerRole::kOperator);
+  h.world.robot("nao_1").position = Eigen::Vector3d(-14.5, -1.0, 0.35);
+  h.world.robot("nao_2").position = Eigen::Vector3d(-14.5, 0.0, 0.35);
+  h.world.robot("nao_3").position = Eigen::Vector3d(-14.5, 1.0, 0.35);
+  h.world.robot("nao_4").position = Eigen::Vector3d(-12.9, 0.5, 0.35);
+  WorldRequests taken;
+  for (int i = 0; i < 3; ++i) {
+    h.Cycle(&taken);
+    ASSERT_TRUE(taken.moves.empty()) << "three in the area";
+  }
+  h.world.robot("nao_4").position = Eigen::Vector3d(-13.4, 0.5, 0.35);
+  h.Cycle();
+  h.Cycle(&taken);
+  ASSERT_EQ(taken.moves.size(), 1u);
+  EXPECT_EQ(taken.moves[0].robot, "nao_4");
+  EXPECT_NEAR(taken.moves[0].position.x(), -13.2 + 0.4, 1e-9);
+  const std::vector<std::string> notes = h.session.TakeNotes();
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_TRUE(Contains(notes[0], "player left 5 moved out of its penalty area")) << notes[0];
+}
+
 TEST(SessionEffectors, HingeVelocitiesByModelJointNameClampedForType0) {
   Harness h(1);
   const int a = h.Join("Alpha", 1);
