@@ -371,7 +371,7 @@ struct TrainerCommandVisitor {
   }
   void operator()(const SetPlayModeCmd& c) const { s->game_.SetPlayMode(c.mode); }
   void operator()(const KickOffCmd& c) const { s->game_.KickOff(SideOf(c.team), &s->beam_rng_); }
-  void operator()(const DropBallCmd&) const { s->game_.DropBall(); }
+  void operator()(const DropBallCmd&) const { s->DropBall(); }
   void operator()(const RequestFullState&) const {}  // every monitor frame is full
   void operator()(const SetGameTime& c) const { s->game_.SetGameTime(c.time); }
   void operator()(const SetScoreCmd& c) const { s->game_.SetScore(c.left, c.right); }
@@ -479,6 +479,17 @@ void Session::CheckSelfCollisions(const WorldSnapshot& world) {
     notes_.push_back(fmt::format(
         "self-collision of player {} {}: {} and {} overlap by {:.3f} m; joints {} frozen for {} s", SideName(c.side),
         c.unum, c.link1, c.link2, c.depth, fmt::join(c.frozen, " "), kSelfCollisionFrozenTime));
+}
+
+// The trainer's dropBall at once, on the last cycle's world (the reference's monitor commands act before the next
+// step): the ball placed and both teams cleared from it.
+void Session::DropBall() {
+  const Eigen::Vector3d ball = last_ ? last_->ball : Eigen::Vector3d(0, 0, game_.rules().ball_radius);
+  const GameUpdate update = game_.DropBall(ball);
+  if (update.place_ball) requests_.ball = BallMove{*update.place_ball, Eigen::Vector3d::Zero()};
+  if (!last_) return;
+  RefereeView view = ViewOf(*last_, {});
+  ClearPlayers(update.clearings, &view);
 }
 
 Session::RefereeView Session::ViewOf(const WorldSnapshot& world, const std::vector<Toucher>& touchers) const {

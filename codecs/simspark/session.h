@@ -215,6 +215,7 @@ class Session {
   SeeItems See(const Agent& agent, const RobotSnapshot& robot, const WorldSnapshot& world);
   const std::vector<int>& HingeIndex(int type, const RobotSnapshot& robot);
   void CheckSelfCollisions(const WorldSnapshot& world);
+  void DropBall();
   struct RefereeView;
   RefereeView ViewOf(const WorldSnapshot& world, const std::vector<Toucher>& touchers) const;
   void ClearPlayers(const std::vector<Clearing>& clearings, RefereeView* view);

@@ -285,10 +285,6 @@ struct Game::Cycle {
 
 GameUpdate Game::Update(double dt, const Eigen::Vector3d& ball, const std::vector<Toucher>& touchers) {
   Cycle c{{}, ball};
-  if (pending_drop_) {
-    pending_drop_ = false;
-    DropBallAt(c, ball);
-  }
   // GameStateAspect::UpdateTime: game time stops in BeforeKickOff and GameOver.
   if (mode_ != PlayMode::kBeforeKickOff && mode_ != PlayMode::kGameOver) {
     game_time_ += dt;
@@ -641,10 +637,10 @@ void Game::SetScore(std::optional<int> left, std::optional<int> right) {
   if (right) score_[1] = *right;
 }
 
-void Game::DropBall() {
-  pending_drop_ = true;
-  ResetKickChecks();  // SoccerRuleAspect::DropBall -> ResetKickChecks
-  ChangeMode(PlayMode::kPlayOn);
+GameUpdate Game::DropBall(const Eigen::Vector3d& ball) {
+  Cycle c{{}, ball};
+  DropBallAt(c, ball);
+  return c.update;  // play_mode_changed: reported by the next Update
 }
 
 }  // namespace turf::simspark
@@ -687,7 +683,6 @@ void Game::Save(StateWriter& out) const {
   PutOptional(kick_off_team_no_score_, out, [&](Side side) { out.Put(side); });
   out.Put<int32_t>(score_[0]);
   out.Put<int32_t>(score_[1]);
-  out.Put(pending_drop_);
   PutOptional(last_toucher_, out, put_toucher);
   out.Put(last_touch_time_);
   PutVector(last_on_field_, out);
@@ -735,7 +730,6 @@ void Game::Restore(StateReader& in) {
   g.score_[0] = in.Get<int32_t>();
   g.score_[1] = in.Get<int32_t>();
   if (g.score_[0] < 0 || g.score_[1] < 0) in.Fail("negative score");
-  g.pending_drop_ = in.Bool();
   if (in.Bool()) g.last_toucher_ = get_toucher();
   g.last_touch_time_ = GetFinite(in);
   g.last_on_field_ = GetVector(in);

@@ -204,7 +204,9 @@ class Game {
   void KickOff(std::optional<Side> side, Rng* rng);
   void SetGameTime(double t);  // clamped to >= 0
   void SetScore(std::optional<int> left, std::optional<int> right);
-  void DropBall();  // PlayOn now; the next Update places the ball (drop position of where it is)
+  // The trainer's dropBall, at once (before the next step, as the reference's monitor commands): the ball at its
+  // drop position of `ball` (where it is), both teams cleared from it, PlayOn.
+  GameUpdate DropBall(const Eigen::Vector3d& ball);
 
   PlayMode play_mode() const { return mode_; }
   double game_time() const { return game_time_; }
@@ -293,7 +295,6 @@ class Game {
   // The kick-off taker's team while it may not score (nullopt: may score).
   std::optional<Side> kick_off_team_no_score_;
   int score_[2] = {0, 0};
-  bool pending_drop_ = false;
   // The ball: its last toucher and the game time of that touch, where it last was on the field.
   std::optional<Toucher> last_toucher_;
   double last_touch_time_ = 0.0;

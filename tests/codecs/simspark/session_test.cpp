@@ -613,6 +613,28 @@ TEST(SessionGame, AKickInHoldsTheBallAndClearsThePlayersAroundTheSpot) {
   }
 }
 
+// The trainer's dropBall acts at once, before the next step (as the reference's monitor commands): the ball placed
+// where it is and the players within 2 m of it moved 2.5 m away, in the same requests.
+TEST(SessionGame, ADropBallClearsThePlayersAroundTheBallAtOnce) {
+  Harness h(2);
+  h.JoinAndCycle("Alpha", 2);
+  h.JoinAndCycle("Beta", 3);
+  h.session.Trainer("(playMode PlayOn)", TrainerRole::kOperator);
+  h.world.robot("nao_1").position = Eigen::Vector3d(3.5, 1.3, 0.4);
+  h.world.robot("nao_2").position = Eigen::Vector3d(6.5, 1.0, 0.4);  // its box 2.3 m from the ball
+  h.session.Trainer("(ball (pos 4 1 0.042))", TrainerRole::kOperator);
+  h.Cycle();
+  h.session.Trainer("(dropBall)", TrainerRole::kOperator);
+  const WorldRequests requests = h.session.TakeRequests();
+  ASSERT_TRUE(requests.ball.has_value());
+  EXPECT_TRUE(requests.ball->position.isApprox(Eigen::Vector3d(4, 1, 0.042)));
+  ASSERT_EQ(requests.moves.size(), 1u) << "only the player within 2 m";
+  EXPECT_EQ(requests.moves[0].robot, "nao_1");
+  EXPECT_NEAR(requests.moves[0].position.x(), 4.0 - 2.5, 1e-9);
+  EXPECT_NEAR(requests.moves[0].position.y(), 1.3, 1e-9);
+  EXPECT_EQ(h.session.game().play_mode(), PlayMode::kPlayOn);
+}
+
 // ClearPlayersBeforeKickOff: at the other team's kick-off, a player in the kick-off team's half goes 2.5 m into its
 // own; a kick-off team's player wholly in the centre circle stays, one beyond it in the other half is moved back.
 TEST(SessionGame, AKickOffClearsThePlayersFromTheOtherHalf) {

@@ -755,8 +755,7 @@ TEST(GameClearings, KickOffBeforeKickOffAndDropBall) {
   EXPECT_EQ(u.clearings[2].team, Side::kLeft);
   EXPECT_EQ(u.clearings[2].box.min().x(), 0.0);
   EXPECT_DOUBLE_EQ(u.clearings[2].keep_in_circle, 2.0);
-  game.DropBall();
-  u = game.Update(kDt, {4, 2, 0.042}, kNobody);
+  u = game.DropBall({4, 2, 0.042});
   ASSERT_EQ(u.clearings.size(), 2u);
   EXPECT_NE(u.clearings[0].team, u.clearings[1].team);
   for (const Clearing& c : u.clearings) {
@@ -791,11 +790,12 @@ TEST(GameFlow, DropPositionLeavesPenaltyAreas) {
 TEST(GameTrainer, DropBallScoreTimeAndModes) {
   Game game;
   game.KickOff(Side::kLeft, nullptr);
-  game.DropBall();
+  const GameUpdate u = game.DropBall({-14, 0, 0.042});  // at once, before the next step
   EXPECT_EQ(game.play_mode(), PlayMode::kPlayOn);
-  const GameUpdate u = game.Update(kDt, {-14, 0, 0.042}, kNobody);
   ASSERT_TRUE(u.place_ball.has_value());
+  EXPECT_TRUE(u.dropped_ball);
   EXPECT_TRUE(u.place_ball->isApprox(Eigen::Vector3d(-13.2, 1.95, 0.042)));
+  EXPECT_TRUE(game.Update(kDt, *u.place_ball, kNobody).play_mode_changed) << "reported by the next update";
   game.SetScore(2, std::nullopt);
   game.SetScore(std::nullopt, 5);
   EXPECT_EQ(game.score(Side::kLeft), 2);
