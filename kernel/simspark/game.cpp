@@ -36,10 +36,15 @@ double NormalizeDeg(double deg) {
 
 Side Opponent(Side side) { return side == Side::kLeft ? Side::kRight : Side::kLeft; }
 
+// rcssserver3d's times are floats (TTime): its game clock sums 0.02f each cycle and its rules compare float sums
+// and differences, so they fire on those (an untouched kick-off's 15 s are over after 750 cycles, at 15.00015; the
+// first half ends after 15001, at 300.01). turf's clock keeps the same float values (in doubles).
+float F(double x) { return static_cast<float>(x); }
+
 // A touch 0.1 s after the kick is a second kick (SoccerRuleAspect::
-// WasLastKickFromFreeKick: "kick duration = 0.1"); the tolerance absorbs the
-// sum of 0.02 s cycles.
-constexpr double kKickDuration = 0.1 - 1e-6;
+// WasLastKickFromFreeKick: "kickTime - mLastFreeKickKickTime < 0.1", floats
+// against a double).
+constexpr double kKickDuration = 0.1;
 // A set piece's touch counts when it comes more than the pause plus 0.03 s
 // into the mode (SoccerRuleAspect::UpdateKickIn / UpdateFreeKick /
 // UpdateCornerKick / UpdateGoalKick: time > lastChange + mKickInPauseTime + 0.03).
@@ -173,7 +178,7 @@ double Game::mode_time() const {
   // GameStateAspect::GetModeTime: mLeadTime in BeforeKickOff, mFupTime in
   // GameOver, else mTime - mLastModeChange (game time).
   if (mode_ == PlayMode::kBeforeKickOff || mode_ == PlayMode::kGameOver) return idle_time_;
-  return game_time_ - mode_start_;
+  return F(F(game_time_) - F(mode_start_));
 }
 
 void Game::ChangeMode(PlayMode mode) {
@@ -230,10 +235,10 @@ Eigen::AlignedBox2d Game::PenaltyArea(Side side) const {
 
 void Game::CheckHalfTime() {
   // SoccerRuleAspect::CheckTime (SingleHalfTime false, ChangeSidesInSecondHalf false).
-  if (half_ == 1 && game_time_ >= rules_.half_time) {
+  if (half_ == 1 && F(game_time_) >= F(rules_.half_time)) {
     half_ = 2;
     ChangeMode(PlayMode::kBeforeKickOff);
-  } else if (half_ == 2 && game_time_ >= 2.0 * rules_.half_time) {
+  } else if (half_ == 2 && F(game_time_) >= 2.0F * F(rules_.half_time)) {
     ChangeMode(PlayMode::kGameOver);
   }
 }
@@ -253,7 +258,7 @@ void Game::ResetKickChecks() {
 
 bool Game::LastTouchIsTheKick() const {
   return kick_taker_ && last_toucher_ && *last_toucher_ == *kick_taker_ &&
-         last_touch_time_ - kick_time_ < kKickDuration;
+         F(F(last_touch_time_) - F(kick_time_)) < kKickDuration;
 }
 
 void Game::UpdateKickChecks(const Eigen::Vector3d& ball, const std::vector<Toucher>& touchers) {
@@ -287,9 +292,9 @@ GameUpdate Game::Update(double dt, const Eigen::Vector3d& ball, const std::vecto
   Cycle c{{}, ball};
   // GameStateAspect::UpdateTime: game time stops in BeforeKickOff and GameOver.
   if (mode_ != PlayMode::kBeforeKickOff && mode_ != PlayMode::kGameOver) {
-    game_time_ += dt;
+    game_time_ = F(F(game_time_) + F(dt));
   } else {
-    idle_time_ += dt;
+    idle_time_ = F(F(idle_time_) + F(dt));
   }
   // BallStateAspect::Update: the last toucher, whether the ball is on the field, where it last was.
   if (!touchers.empty()) {
@@ -412,8 +417,9 @@ void Game::UpdateSetPiece(Cycle& c) {
     return;
   }
   if ((goal_kick || corner) && !last_toucher_) return;  // never touched: the ball is not held
-  const bool taken =
-      last_toucher_ && last_touch_time_ > mode_start_ + rules_.kick_in_pause + kSetPieceTouchMargin && !repel_for_kick_;
+  const bool taken = last_toucher_ &&
+                     F(last_touch_time_) > F(F(mode_start_) + F(rules_.kick_in_pause)) + kSetPieceTouchMargin &&
+                     !repel_for_kick_;
   if (goal_kick && taken) {
     // PlayOn once the ball, touched, is out of the team's penalty area: beyond its front edge or wider than it
     // (strictly), or off the field.
@@ -630,7 +636,7 @@ void Game::KickOff(std::optional<Side> side, Rng* rng) {
   StartKickOff(*side);
 }
 
-void Game::SetGameTime(double t) { game_time_ = std::max(0.0, t); }
+void Game::SetGameTime(double t) { game_time_ = F(std::max(0.0, t)); }
 
 void Game::SetScore(std::optional<int> left, std::optional<int> right) {
   if (left) score_[0] = *left;

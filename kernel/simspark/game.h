@@ -15,7 +15,9 @@
 // plugin/soccer/ballstateaspect/ballstateaspect.cpp; settings in
 // rcssserver3d/naosoccersim.rb):
 // - Game time runs in every mode except BeforeKickOff and GameOver
-//   (GameStateAspect::UpdateTime); a mode's time is the game time since the
+//   (GameStateAspect::UpdateTime), on the reference's float clock (TTime:
+//   sums of 0.02f, and the rules compare float sums and differences, so they
+//   fire on the same cycles as the reference's); a mode's time is the game time since the
 //   mode began (GameStateAspect::GetModeTime), the simulation time in those
 //   two. The halves are checked before the mode's rule each cycle
 //   (SoccerRuleAspect::Update -> CheckTime): half 1 ends in BeforeKickOff of
