@@ -176,6 +176,7 @@ void ReadContacts(MapReader m, OdeContactLaw* c) {
   m.Number("world_cfm", &c->world_cfm);
   if (m.Has("robot")) ReadOdeSurface(m.Map("robot"), &c->robot);
   if (m.Has("ground")) ReadOdeSurface(m.Map("ground"), &c->ground);
+  if (m.Has("ball")) ReadOdeSurface(m.Map("ball"), &c->ball);
   m.Finish();
 }
 

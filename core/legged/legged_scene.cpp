@@ -29,7 +29,7 @@ std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
     if (!Positive(c.reference_step) || !NonNegative(c.surface_layer) || !Positive(c.world_erp) || c.world_erp > 1 ||
         !Positive(c.world_cfm))
       e.push_back("contacts: reference_step and world_cfm positive, surface_layer >= 0, world_erp in (0, 1]");
-    for (const OdeSurface* surface : {&c.robot, &c.ground}) {
+    for (const OdeSurface* surface : {&c.robot, &c.ground, &c.ball}) {
       // Negative = not set; a set ERP is in (0, 1], a set CFM positive.
       if (!std::isfinite(surface->erp) || !std::isfinite(surface->cfm) || !std::isfinite(surface->slip) ||
           surface->erp == 0 || surface->erp > 1 || surface->cfm == 0)

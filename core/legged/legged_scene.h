@@ -149,6 +149,7 @@ struct OdeContactLaw {
   double world_cfm = 1e-5;
   OdeSurface robot;   // every robot geom
   OdeSurface ground;  // the floor
+  OdeSurface ball;    // the ball (nothing set: its contacts keep MuJoCo's own law)
 };
 
 // rcssserver3d's hinge stops (ODE's joint limit with the Nao's parameters, rsg/agent/nao/hingejoint.rsg), in

@@ -186,7 +186,9 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
   if (scene_.contacts.enabled) {
     std::vector<int> roots;
     for (const RobotSlot& r : robots_) roots.push_back(r.base_body);
-    ode_contacts_ = std::make_unique<OdeContacts>(m, scene_.contacts, roots, mj_name2id(m, mjOBJ_GEOM, kLeggedFloor));
+    const int ball_geom = ball_body_ >= 0 ? m->body_geomadr[ball_body_] : -1;
+    ode_contacts_ =
+        std::make_unique<OdeContacts>(m, scene_.contacts, roots, mj_name2id(m, mjOBJ_GEOM, kLeggedFloor), ball_geom);
   }
   Reset();
 }

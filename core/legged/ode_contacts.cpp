@@ -23,7 +23,7 @@ constexpr double kStiffCompliance = 1e-4;
 }  // namespace
 
 OdeContacts::OdeContacts(const mjModel* model, const OdeContactLaw& law, const std::vector<int>& robot_roots,
-                         int floor_geom)
+                         int floor_geom, int ball_geom)
     : law_(law), surface_of_geom_(model->ngeom, Surface::kNone) {
   for (int g = 0; g < model->ngeom; ++g) {
     const int root = model->body_rootid[model->geom_bodyid[g]];
@@ -31,6 +31,8 @@ OdeContacts::OdeContacts(const mjModel* model, const OdeContactLaw& law, const s
       surface_of_geom_[g] = Surface::kRobot;
   }
   if (floor_geom >= 0) surface_of_geom_[floor_geom] = Surface::kGround;
+  const OdeSurface& b = law.ball;
+  if (ball_geom >= 0 && (b.erp >= 0 || b.cfm >= 0 || b.slip >= 0)) surface_of_geom_[ball_geom] = Surface::kBall;
 }
 
 OdeMixed MixOdeSurfaces(const OdeContactLaw& law, const OdeSurface& a, const OdeSurface& b) {

@@ -11,11 +11,10 @@
 // get the R and aref that make that law hold implicitly over MuJoCo's step h:
 //   normal      R = 1 / (h (k h + c))    aref = -(k r / (k h + c) + v) / h    (r <= 0: penetration beyond the layer)
 //   tangential  R = slip / h             aref = -v / h                        (then v' = -slip F)
-// and a friction coefficient so large that the cone never binds. Contacts of the ball, goals and walls keep MuJoCo's
-// own law. Not modelled: the ball's own surface (rsg/agent/ball.rsg: soft ERP 0.5, CFM 0.05, slip 0.6, bounce 0.8
-// above 0.8 m/s; under `law: ode_friction` it would only make the ball's tangential contacts slip, at 0.3 m/(s N)
-// mixed with the ground's or a robot's), ODE's bounce (no surface between robots and ground sets it), torsional and
-// rolling friction (ODE has none: those rows carry no force).
+// and a friction coefficient so large that the cone never binds. The ball's contacts follow the law when the scene
+// sets a ball surface (rsg/agent/ball.rsg: soft ERP 0.5, CFM 0.05, slip 0.6; mixed with the ground's or a robot's,
+// it slips at 0.30 m/(s N)); contacts of the goals and walls keep MuJoCo's own law. Not modelled: ODE's bounce (the
+// ball's 0.8 above 0.8 m/s), torsional and rolling friction (ODE has none: those rows carry no force).
 // `law: ode_friction` (OdeContactLaw::ode_normal false) rewrites only the tangential rows and keeps MuJoCo's normal
 // row: with it UT Austin Villa's agents stay upright 64-77 % of a 4-agent match (full law 35 %, MuJoCo's 50-55 %;
 // README, issue 12).
@@ -40,15 +39,18 @@ OdeMixed MixOdeSurfaces(const OdeContactLaw& law, const OdeSurface& a, const Ode
 
 class OdeContacts {
  public:
-  // Sorts the model's geoms: the robots' (robot_roots: their base bodies) and the floor's.
-  OdeContacts(const mjModel* model, const OdeContactLaw& law, const std::vector<int>& robot_roots, int floor_geom);
+  // Sorts the model's geoms: the robots' (robot_roots: their base bodies), the floor's and the ball's (-1: none).
+  OdeContacts(const mjModel* model, const OdeContactLaw& law, const std::vector<int>& robot_roots, int floor_geom,
+              int ball_geom);
 
   // After mj_step1, before the solver (mj_step2): rewrites the rows of every contact the law covers.
   void Apply(const mjModel* model, mjData* data) const;
 
  private:
-  enum class Surface : uint8_t { kNone, kRobot, kGround };
-  const OdeSurface& Of(Surface s) const { return s == Surface::kRobot ? law_.robot : law_.ground; }
+  enum class Surface : uint8_t { kNone, kRobot, kGround, kBall };
+  const OdeSurface& Of(Surface s) const {
+    return s == Surface::kRobot ? law_.robot : s == Surface::kBall ? law_.ball : law_.ground;
+  }
 
   OdeContactLaw law_;
   std::vector<Surface> surface_of_geom_;

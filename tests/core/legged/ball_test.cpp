@@ -53,6 +53,26 @@ TEST(Ball, SimSparkBallRollsOutWithTheReferencesDrag) {
   EXPECT_NEAR(w.State().ball_position[0] - x, v2 / k, 0.1 * v2 / k) << "what is left of the roll";
 }
 
+// rcssserver3d's ball surface (slip 0.6, mixed with the ground's 5e-3: 0.30 m/(s N), no Coulomb bound): a ball
+// launched without spin turns to rolling (5/7 of its speed) within milliseconds, where MuJoCo's Coulomb friction
+// (the larger of the ball's 0.6 and the ground's) lets it slide for up to 2/7 v / (mu g) = 0.1 s first.
+TEST(Ball, SimSparkBallTakesToRollingAtOnceOnItsSurface) {
+  const auto speed_at_50ms = [](LeggedScene scene) -> double {
+    LeggedWorld w(std::move(scene));
+    if (w.PlaceBall({0.0, 5.0, 0.042}, {2.0, 0.0, 0.0}) != PlacementError::kOk) return NAN;
+    return BallSpeedAt(w, 0.05);
+  };
+  const double with_surface = speed_at_50ms(Shipped("simspark_match.yaml"));
+  LeggedScene mujoco = Shipped("simspark_match.yaml");
+  mujoco.contacts.ball = OdeSurface{};
+  const double without = speed_at_50ms(mujoco);
+  const double rolling = 2.0 * 5.0 / 7.0 * std::exp(-1.053 * 0.05);
+  std::printf("SimSpark ball 50 ms after a 2 m/s launch: %.3f m/s (rolling %.3f); MuJoCo's friction: %.3f\n",
+              with_surface, rolling, without);
+  EXPECT_NEAR(with_surface, rolling, 0.03 * rolling);
+  EXPECT_GT(without, rolling + 0.15) << "still sliding";
+}
+
 // The deceleration of a slow ball (1.2 m/s at the start) over 0.5 s, m/s^2.
 double SlowBallDeceleration(LeggedScene scene) {
   LeggedWorld w(std::move(scene));
