@@ -157,6 +157,8 @@ void ReadOdeSurface(MapReader m, OdeSurface* s) {
   m.Number("erp", &s->erp);
   m.Number("cfm", &s->cfm);
   m.Number("slip", &s->slip);
+  m.Number("bounce", &s->bounce);
+  m.Number("bounce_vel", &s->bounce_vel);
   m.Finish();
 }
 

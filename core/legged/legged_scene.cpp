@@ -32,8 +32,11 @@ std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
     for (const OdeSurface* surface : {&c.robot, &c.ground, &c.ball}) {
       // Negative = not set; a set ERP is in (0, 1], a set CFM positive.
       if (!std::isfinite(surface->erp) || !std::isfinite(surface->cfm) || !std::isfinite(surface->slip) ||
-          surface->erp == 0 || surface->erp > 1 || surface->cfm == 0)
-        e.push_back("contacts: a surface's erp must be in (0, 1], cfm positive, slip >= 0 (or left out)");
+          surface->erp == 0 || surface->erp > 1 || surface->cfm == 0 || !std::isfinite(surface->bounce) ||
+          surface->bounce > 1 || !std::isfinite(surface->bounce_vel))
+        e.push_back(
+            "contacts: a surface's erp must be in (0, 1], cfm positive, slip >= 0, bounce in [0, 1], "
+            "bounce_vel >= 0 (or left out)");
     }
   }
   if (s.joint_stops.enabled) {

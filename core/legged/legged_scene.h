@@ -132,9 +132,11 @@ struct Field3d {
 
 // One surface's contact parameters in ODE's terms (core/legged/ode_contacts.h); negative = not set.
 struct OdeSurface {
-  double erp = -1.0;   // soft ERP
-  double cfm = -1.0;   // soft CFM
-  double slip = -1.0;  // force-dependent slip, m/(s N)
+  double erp = -1.0;         // soft ERP
+  double cfm = -1.0;         // soft CFM
+  double slip = -1.0;        // force-dependent slip, m/(s N)
+  double bounce = -1.0;      // restitution in [0, 1]: a contact leaves at least bounce x the speed it came in at
+  double bounce_vel = -1.0;  // m/s: ... when it came in faster than this
 };
 
 // rcssserver3d's contact law for robots on the ground (ode_contacts.h). Off: MuJoCo's own contacts.

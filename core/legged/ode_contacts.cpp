@@ -42,6 +42,8 @@ OdeMixed MixOdeSurfaces(const OdeContactLaw& law, const OdeSurface& a, const Ode
   m.k = erp / (law.reference_step * cfm);
   m.c = (1.0 - erp) / cfm;
   m.slip = MixValue(a.slip, b.slip, 0.0);
+  m.bounce = MixValue(a.bounce, b.bounce, 0.0);
+  m.bounce_vel = MixValue(a.bounce_vel, b.bounce_vel, 0.0);
   return m;
 }
 
@@ -61,6 +63,15 @@ void OdeContacts::Apply(const mjModel* model, mjData* data) const {
       const double khc = mixed.k * h + mixed.c;
       data->efc_R[n] = 1.0 / (h * khc);
       data->efc_aref[n] = -(mixed.k * r / khc + data->efc_vel[n]) / h;
+    }
+    // ODE's bounce (dContactBounce): coming in faster than bounce_vel, leave at least bounce times that speed.
+    const double incoming = -data->efc_vel[n];
+    if (mixed.bounce > 0 && incoming > mixed.bounce_vel) {
+      const double aref = (mixed.bounce * incoming - data->efc_vel[n]) / h;
+      if (aref > data->efc_aref[n]) {
+        data->efc_aref[n] = aref;
+        data->efc_R[n] = data->efc_diagApprox[n] * kStiffCompliance;
+      }
     }
     // Tangential rows: force-dependent slip. Rows beyond them (torsion, rolling) carry no force, as in ODE.
     for (int j = 1; j < con.dim; ++j) {

@@ -11,10 +11,13 @@
 // get the R and aref that make that law hold implicitly over MuJoCo's step h:
 //   normal      R = 1 / (h (k h + c))    aref = -(k r / (k h + c) + v) / h    (r <= 0: penetration beyond the layer)
 //   tangential  R = slip / h             aref = -v / h                        (then v' = -slip F)
-// and a friction coefficient so large that the cone never binds. The ball's contacts follow the law when the scene
-// sets a ball surface (rsg/agent/ball.rsg: soft ERP 0.5, CFM 0.05, slip 0.6; mixed with the ground's or a robot's,
-// it slips at 0.30 m/(s N)); contacts of the goals and walls keep MuJoCo's own law. Not modelled: ODE's bounce (the
-// ball's 0.8 above 0.8 m/s), torsional and rolling friction (ODE has none: those rows carry no force).
+// and a friction coefficient so large that the cone never binds. ODE's bounce, in either law: a contact coming in
+// faster than bounce_vel gets a normal row that leaves at least bounce times that speed (stiff, aref to it). The
+// ball's contacts follow the law when the scene sets a ball surface (rsg/agent/ball.rsg: soft ERP 0.5, CFM 0.05,
+// slip 0.6, bounce 0.8 above 0.8 m/s; mixed with the ground's or a robot's, which set no bounce, it slips at
+// 0.30 m/(s N) and bounces at 0.8; its ERP and CFM act only under `law: ode`); contacts of the goals and walls keep
+// MuJoCo's own law (the reference's posts have a default surface: not modelled). Not modelled: torsional and
+// rolling friction (ODE has none: those rows carry no force).
 // `law: ode_friction` (OdeContactLaw::ode_normal false) rewrites only the tangential rows and keeps MuJoCo's normal
 // row: with it UT Austin Villa's agents stay upright 64-77 % of a 4-agent match (full law 35 %, MuJoCo's 50-55 %;
 // README, issue 12).
@@ -31,9 +34,11 @@ namespace turf {
 
 // The parameters of a contact between two surfaces, mixed as ODE does, as a spring, a damper and a slip.
 struct OdeMixed {
-  double k = 0.0;     // N/m
-  double c = 0.0;     // N s/m
-  double slip = 0.0;  // m/(s N); 0: no slip
+  double k = 0.0;           // N/m
+  double c = 0.0;           // N s/m
+  double slip = 0.0;        // m/(s N); 0: no slip
+  double bounce = 0.0;      // 0: none
+  double bounce_vel = 0.0;  // m/s
 };
 OdeMixed MixOdeSurfaces(const OdeContactLaw& law, const OdeSurface& a, const OdeSurface& b);
 

@@ -73,6 +73,32 @@ TEST(Ball, SimSparkBallTakesToRollingAtOnceOnItsSurface) {
   EXPECT_GT(without, rolling + 0.15) << "still sliding";
 }
 
+// ball.rsg's bounce (0.8 above 0.8 m/s; the ground sets none, so the ball's holds): dropped from 1 m, the ball
+// leaves the ground at 0.8 of the speed it hit it with; with MuJoCo's own contact it hardly bounces.
+TEST(Ball, SimSparkBallBouncesAtEightTenths) {
+  const auto rebound = [](LeggedScene scene) -> double {
+    LeggedWorld w(std::move(scene));
+    if (w.PlaceBall({0.0, 5.0, 1.0}, {0.0, 0.0, 0.0}) != PlacementError::kOk) return NAN;
+    double down = 0.0;
+    double up = 0.0;
+    while (w.time_ns() < 800'000'000) {  // the fall takes 0.44 s
+      w.Step();
+      const double vz = w.State().ball_velocity[2];
+      down = std::max(down, -vz);
+      up = std::max(up, vz);
+    }
+    return up / down;
+  };
+  const double shipped = rebound(Shipped("simspark_match.yaml"));
+  LeggedScene mujoco = Shipped("simspark_match.yaml");
+  mujoco.contacts.ball = OdeSurface{};
+  const double without = rebound(mujoco);
+  std::printf("SimSpark ball dropped from 1 m: leaves at %.3f of its impact speed (MuJoCo's contact: %.3f)\n", shipped,
+              without);
+  EXPECT_NEAR(shipped, 0.8, 0.03);
+  EXPECT_LT(without, 0.3);
+}
+
 // The deceleration of a slow ball (1.2 m/s at the start) over 0.5 s, m/s^2.
 double SlowBallDeceleration(LeggedScene scene) {
   LeggedWorld w(std::move(scene));

@@ -57,6 +57,13 @@ TEST(OdeContacts, MixesParametersAsOdeDoes) {
   const OdeMixed none = MixOdeSurfaces(law, OdeSurface{}, OdeSurface{});
   EXPECT_DOUBLE_EQ(none.k, law.world_erp / (0.02 * law.world_cfm));
   EXPECT_DOUBLE_EQ(none.slip, 0.0);
+  // rcssserver3d's ball on its ground: slip the mean, bounce the ball's alone.
+  const OdeSurface ball{0.5, 0.05, 0.6, 0.8, 0.8};
+  const OdeMixed ball_ground = MixOdeSurfaces(law, ball, law.ground);
+  EXPECT_DOUBLE_EQ(ball_ground.slip, 0.5 * (0.6 + 5e-3));
+  EXPECT_DOUBLE_EQ(ball_ground.bounce, 0.8);
+  EXPECT_DOUBLE_EQ(ball_ground.bounce_vel, 0.8);
+  EXPECT_DOUBLE_EQ(robot_ground.bounce, 0.0) << "none set: no bounce";
 }
 
 class OdeBoxTest : public ::testing::TestWithParam<double> {};
