@@ -109,6 +109,14 @@ struct Session::RefereeView {
   RobotMove MoveTo(Side side, int unum, const Eigen::Vector3d& to) const {
     return {robot_of.at({side, unum}), to, orientation_of.at({side, unum}), false};
   }
+  // The player's torso (and its box) where a move put it.
+  void Moved(Side side, int unum, const Eigen::Vector3d& to) {
+    for (RefereePlayer& p : players) {
+      if (p.side != side || p.unum != unum) continue;
+      if (!p.box.isEmpty()) p.box.translate(to - p.torso);
+      p.torso = to;
+    }
+  }
 };
 
 Session::Session(SessionOptions options, std::vector<std::string> robots, std::vector<RobotMove> park)
@@ -481,14 +489,20 @@ void Session::CheckSelfCollisions(const WorldSnapshot& world) {
         c.unum, c.link1, c.link2, c.depth, fmt::join(c.frozen, " "), kSelfCollisionFrozenTime));
 }
 
-// The trainer's dropBall at once, on the last cycle's world (the reference's monitor commands act before the next
-// step): the ball placed and both teams cleared from it.
+// The trainer's dropBall at once, on the last cycle's world with the moves asked since (the reference's monitor
+// commands act before the next step, on the bodies where earlier commands put them): the ball placed and both
+// teams cleared from it.
 void Session::DropBall() {
-  const Eigen::Vector3d ball = last_ ? last_->ball : Eigen::Vector3d(0, 0, game_.rules().ball_radius);
+  Eigen::Vector3d ball = last_ ? last_->ball : Eigen::Vector3d(0, 0, game_.rules().ball_radius);
+  if (requests_.ball) ball = requests_.ball->position;
   const GameUpdate update = game_.DropBall(ball);
   if (update.place_ball) requests_.ball = BallMove{*update.place_ball, Eigen::Vector3d::Zero()};
   if (!last_) return;
   RefereeView view = ViewOf(*last_, {});
+  for (const RobotMove& m : requests_.moves) {
+    const auto who = view.player_of.find(m.robot);
+    if (who != view.player_of.end()) view.Moved(who->second.first, who->second.second, m.position);
+  }
   ClearPlayers(update.clearings, &view);
 }
 
@@ -516,11 +530,7 @@ void Session::ClearPlayers(const std::vector<Clearing>& clearings, RefereeView* 
   for (const RefereePlayer& p : view->players) spots.push_back({p.side, p.unum, p.torso, p.box});
   SpotBoard board(std::move(spots), clearings.front().ball, SpotRulesOf(FoulRulesOf(options_.rules)));
   for (const ClearingMove& m : Clear(clearings, options_.rules.field_length, &board)) {
-    for (RefereePlayer& p : view->players) {
-      if (p.side != m.side || p.unum != m.unum) continue;
-      if (!p.box.isEmpty()) p.box.translate(m.position - p.torso);
-      p.torso = m.position;
-    }
+    view->Moved(m.side, m.unum, m.position);
     fouls_.Moved(m.side, m.unum);
     requests_.moves.push_back(view->MoveTo(m.side, m.unum, m.position));
     notes_.push_back(

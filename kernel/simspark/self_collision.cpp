@@ -112,6 +112,15 @@ std::vector<SelfCollision> SelfCollisionRule::Update(bool paused, double game_ti
   return out;
 }
 
+namespace {
+
+// The reference's times are floats (TTime): its game time minus a float time, in float.
+double FloatSince(double now, double then) {
+  return static_cast<float>(static_cast<float>(now) - static_cast<float>(then));
+}
+
+}  // namespace
+
 // Each joint of both boxes' limbs that may freeze (never frozen, or more than the frozen and thaw times ago).
 std::vector<std::string> SelfCollisionRule::Freeze(const Player& player, const NaoBox& a, const NaoBox& b,
                                                    double game_time) {
@@ -120,7 +129,8 @@ std::vector<std::string> SelfCollisionRule::Freeze(const Player& player, const N
   for (const std::vector<std::string>* names : {&a.freeze, &b.freeze}) {
     for (const std::string& name : *names) {
       const auto it = joints.find(name);
-      if (it != joints.end() && game_time - it->second.frozen_at <= kSelfCollisionFrozenTime + kSelfCollisionThawTime)
+      if (it != joints.end() &&
+          FloatSince(game_time, it->second.frozen_at) <= kSelfCollisionFrozenTime + kSelfCollisionThawTime)
         continue;
       joints[name] = {game_time, true};
       frozen.push_back(name);
@@ -134,7 +144,7 @@ std::vector<std::string> SelfCollisionRule::Freeze(const Player& player, const N
 void SelfCollisionRule::Thaw(double game_time) {
   for (auto player = joints_.begin(); player != joints_.end();) {
     for (auto joint = player->second.begin(); joint != player->second.end();) {
-      const double since = game_time - joint->second.frozen_at;
+      const double since = FloatSince(game_time, joint->second.frozen_at);
       if (since >= kSelfCollisionFrozenTime) joint->second.frozen = false;
       joint =
           since >= kSelfCollisionFrozenTime + kSelfCollisionThawTime ? player->second.erase(joint) : std::next(joint);

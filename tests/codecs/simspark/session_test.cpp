@@ -633,6 +633,16 @@ TEST(SessionGame, ADropBallClearsThePlayersAroundTheBallAtOnce) {
   EXPECT_NEAR(requests.moves[0].position.x(), 4.0 - 2.5, 1e-9);
   EXPECT_NEAR(requests.moves[0].position.y(), 1.3, 1e-9);
   EXPECT_EQ(h.session.game().play_mode(), PlayMode::kPlayOn);
+  // A trainer's ball move and agent move earlier in the same message count (the reference moves the bodies at once).
+  h.Cycle();
+  h.session.Trainer("(ball (pos -5 -3 0.042))(agent (unum 3) (team Right) (pos -5.5 -3.2 0.4))(dropBall)",
+                    TrainerRole::kOperator);
+  const WorldRequests second = h.session.TakeRequests();
+  ASSERT_TRUE(second.ball.has_value());
+  EXPECT_TRUE(second.ball->position.isApprox(Eigen::Vector3d(-5, -3, 0.042)));
+  ASSERT_FALSE(second.moves.empty());
+  EXPECT_EQ(second.moves.back().robot, "nao_2");
+  EXPECT_NEAR(second.moves.back().position.x(), -5.0 + 2.5, 1e-9) << "the right team away towards its goal";
 }
 
 // ClearPlayersBeforeKickOff: at the other team's kick-off, a player in the kick-off team's half goes 2.5 m into its
