@@ -19,7 +19,8 @@ pyb::array_t<double> Array(const std::array<double, N>& v) {
   return Copy(v.data(), static_cast<pyb::ssize_t>(N));
 }
 
-// One robot's readings: joints, IMU, base pose and velocity, and every force sensor's values with its contact flag.
+// One robot's readings: joints, IMU, base pose and velocity, every force sensor's values with its contact flag, and
+// its last touch of the ball.
 pyb::dict RobotDict(const LeggedRobotState& r) {
   pyb::dict d;
   d["name"] = r.name;
@@ -39,6 +40,8 @@ pyb::dict RobotDict(const LeggedRobotState& r) {
   }
   d["force"] = Array(force);
   d["contact"] = Array(contact);
+  // When a body of the robot last touched the ball (the end of that physics step, s; -1: never), one element.
+  d["ball_touch_time"] = Array(std::array<double, 1>{r.ball_touch_ns < 0 ? -1.0 : r.ball_touch_ns * 1e-9});
   return d;
 }
 

@@ -9,7 +9,7 @@ position, orientation and velocity, force values, contacts) and the ball (6, sce
 import numpy as np
 
 LEGGED_FIELDS = ("joint_position", "joint_velocity", "joint_effort", "orientation", "gyro", "accelerometer",
-                 "base_position", "base_orientation", "base_velocity", "force", "contact")
+                 "base_position", "base_orientation", "base_velocity", "force", "contact", "ball_touch_time")
 
 
 def ssl_layout(sim, n_worlds):

@@ -82,3 +82,22 @@ def test_bad_joint_commands_raise_and_change_nothing():
             call()
         assert e.value.error == error, e.value
     assert sim.save() == before
+
+
+def test_ball_touches_from_contacts():
+    """A ball rolled into one T1 is touched by it, at a time inside the step that touched; the other never."""
+    sim = turf.Sim("rcssservermj_fifa_1v1", seed=1)
+    o = sim.observation()
+    assert [r["ball_touch_time"][0] for r in o["truth"]] == [-1.0, -1.0]
+    base = o["truth"][0]["base_position"]
+    sim.teleport_ball([base[0] + 0.6, base[1], 0.11], [-3.0, 0.0, 0.0])
+    before = o["time"]
+    for _ in range(50):  # 1 s of sim time at most
+        o = sim.step(None, 4)
+        touch = o["truth"][0]["ball_touch_time"][0]
+        if touch >= 0:
+            break
+        before = o["time"]
+    assert before < touch <= o["time"], (before, touch, o["time"])
+    assert o["robots"][0]["ball_touch_time"][0] == touch  # a fact of the contacts, not a noisy reading
+    assert o["truth"][1]["ball_touch_time"][0] == -1.0
