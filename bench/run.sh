@@ -264,8 +264,8 @@ record() {
 # Optional: only with the agent's binary and source directory (bench/ut_agents/run_match.sh --help).
 ut_agents() {
   echo "UT Austin Villa base agents on turf (turf launch simspark), 60 s of sim time from the kick-off"
-  echo "| match | mean upright % | falls | best approach m | ball moved |"
-  echo "| --- | --- | --- | --- | --- |"
+  echo "| match | seed | mean upright % | falls | best approach m | ball moved |"
+  echo "| --- | --- | --- | --- | --- | --- |"
   bench/ut_agents/run_match.sh "$@" --agents 4 --label "4 agents (2 v 2), type 0, sync mode"
   bench/ut_agents/run_match.sh "$@" --agents 4 --realtime --label "4 agents (2 v 2), type 0, real time"
   for type in 1 2 3 4; do

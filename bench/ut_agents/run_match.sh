@@ -2,21 +2,25 @@
 # One measured match of real SimSpark agents (UT Austin Villa's base agent, `agentspark`) on turf (issue 12):
 # `turf launch simspark` and turf-viewer on a private DDS domain, prefix and ports; N agents; measure.py from the
 # kick-off for SECONDS of sim time; everything stopped at the end (also on Ctrl-C). Prints one Markdown table row:
-#   | label | mean upright % | falls | best approach m | ball moved |
+#   | label | seed | mean upright % | falls | best approach m | ball moved |
 # The agent is not part of turf: build it from its public repository (LARG/utaustinvilla3d; see issue 12 for the
 # steps) and give the binary and its source directory (it reads ./skills and ./paramfiles from there).
 #
 # usage: run_match.sh --ut-agent PATH --agent-dir DIR [--agents 4] [--layout split|one] [--realtime]
-#                     [--type 0..4] [--seconds 60] [--label TEXT] [--keep DIR] [--trace] [--scene FILE]
+#                     [--type 0..4] [--seconds 60] [--label TEXT] [--keep DIR] [--trace] [--scene FILE] [--seed N]
 #   split: unums 1..N/2 on team UTA (left), 1..N/2 on UTB (right); one: 1..N on UTA
 #   default sync mode (turf waits for every agent: results do not depend on the machine's load)
 #   --keep DIR: keep the logs and measure.py's CSV and JSON there
 #   --trace: each agent through proxy.py, its messages kept as trace_<team>_<unum>.jsonl (with --keep)
 #   --scene FILE: a variant of configs/scenes/simspark_match.yaml to measure (same robots; default that file)
+#   --seed N: the SimSpark league's seed (vision and beam noise, each agent's calibration error, the game's draws);
+#     default a fresh one per run, as rcssserver3d draws its own (randomServer.seed(0)): with one fixed seed every
+#     run repeats the same noise and the runs are not independent samples. The row names it, to repeat a run.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
 scene=configs/scenes/simspark_match.yaml agent="" agent_dir="" n=4 layout=split sync=true type=0 seconds=60 label="" keep="" trace=false
+seed=$(( (RANDOM << 15 | RANDOM) + 1 ))
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --ut-agent) agent=$2; shift 2 ;;
@@ -30,6 +34,7 @@ while [[ $# -gt 0 ]]; do
     --keep) keep=$2; shift 2 ;;
     --trace) trace=true; shift ;;
     --scene) scene=$2; shift 2 ;;
+    --seed) seed=$2; shift 2 ;;
     -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
     *) echo "run_match.sh: unknown argument $1 (--help)" >&2; exit 2 ;;
   esac
@@ -63,7 +68,7 @@ sed -e "s/nao_type: [0-4]/nao_type: $type/" -e "s|\.\./robots/nao\.xml|$PWD/conf
 sed "s|^scene: .*|scene: $work/scene.yaml|" configs/launch/simspark.yaml > "$work/simspark.yaml"
 "$BUILD_DIR/participants/launcher/turf" launch "$work/simspark.yaml" --domain "$domain" --prefix "$prefix" \
   --set simspark.listen=127.0.0.1 --set simspark.agent-port="$port" --set simspark.monitor-port=$((port + 1)) \
-  --set simspark.sync="$sync" > "$work/turf.log" 2>&1 &
+  --set simspark.sync="$sync" --set simspark.seed="$seed" > "$work/turf.log" 2>&1 &
 pids+=($!)
 "$BUILD_DIR/participants/viewer/turf-viewer" --domain "$domain" --prefix "$prefix" --port "$viewer_port" \
   --rate 50 > "$work/viewer.log" 2>&1 &
@@ -94,11 +99,11 @@ for ((i = 1; i <= n; ++i)); do
   sleep 1  # the reference server needs agents one by one; turf does not, but the agents' scripts do it so
 done
 wait "$measure" || { echo "run_match.sh: measure.py failed:" >&2; cat "$work/measure.log" >&2; exit 1; }
-python3 - "$work/result.json" "$label" <<'PY'
+python3 - "$work/result.json" "$label" "$seed" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))
 rows = r["robots"]
 up = sum(x["upright_pct"] for x in rows) / len(rows)
-print(f"| {sys.argv[2]} | {up:.1f} | {sum(x['falls'] for x in rows)} | "
+print(f"| {sys.argv[2]} | {sys.argv[3]} | {up:.1f} | {sum(x['falls'] for x in rows)} | "
       f"{min(x['closest'] for x in rows):.2f} | {'yes' if r['ball_moved'] else 'no'} ({r['ball_max_disp']:.2f} m) |")
 PY
