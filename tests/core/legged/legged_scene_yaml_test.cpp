@@ -77,9 +77,9 @@ TEST(LeggedSceneYamlTest, SimSparkMatchSceneParks22NaosOffTheField) {
   LeggedSceneLoadResult r = LoadLeggedSceneFile(kScenes + "simspark_match.yaml");
   ASSERT_TRUE(r.scene) << r.errors.front();
   ASSERT_EQ(r.scene->robots.size(), 22u);
-  EXPECT_NEAR(r.scene->physics.step, 0.02 / 3, 1e-12);
+  EXPECT_EQ(r.scene->physics.step, 0.02);  // one step per SimSpark cycle, as the reference steps ODE
   LeggedWorld w(std::move(*r.scene));
-  for (int i = 0; i < 150; ++i) w.Step();  // 1 s
+  while (w.time_ns() < 1'000'000'000) w.Step();
   const LeggedScene& scene = w.scene();
   constexpr double kSoleBelowTorso[5] = {0.385, 0.42164, 0.385, 0.440737, 0.385};  // robot types 0..4 (facts)
   int of_type[5] = {0, 0, 0, 0, 0};
@@ -95,18 +95,22 @@ TEST(LeggedSceneYamlTest, SimSparkMatchSceneParks22NaosOffTheField) {
   for (int t = 1; t < 5; ++t) EXPECT_EQ(of_type[t], 2) << "type " << t;
 }
 
-// The match scene carries rcssserver3d's contact parameters with its tangential law on (`law: ode_friction`);
-// `law: ode` turns the whole law on and a Nao stands on it.
+// The match scene carries rcssserver3d's contact parameters with its whole law on (`law: ode`; a Nao stands on it
+// at 2 ms too); `law: ode_friction` keeps MuJoCo's normal contact.
 TEST(LeggedSceneYamlTest, ContactLawBlockLoadsAndIsChecked) {
   LeggedSceneLoadResult r = LoadLeggedSceneFile(kScenes + "simspark_match.yaml");
   ASSERT_TRUE(r.scene) << r.errors.front();
   const OdeContactLaw& c = r.scene->contacts;
   EXPECT_TRUE(c.enabled);
-  EXPECT_FALSE(c.ode_normal);
+  EXPECT_TRUE(c.ode_normal);
   EXPECT_EQ(c.robot.slip, 5e-3);
   EXPECT_EQ(c.robot.erp, 0.6);
   EXPECT_EQ(c.robot.cfm, 1e-4);
   EXPECT_EQ(c.ground.cfm, -1.0);  // not set
+  r = ParseNaoScene("contacts: {law: ode_friction}\n");
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_TRUE(r.scene->contacts.enabled);
+  EXPECT_FALSE(r.scene->contacts.ode_normal);
   r = ParseNaoScene("contacts: {law: ode, robot: {erp: 0.6, cfm: 1.0e-4, slip: 5.0e-3}}\n");
   ASSERT_TRUE(r.scene) << r.errors.front();
   EXPECT_TRUE(r.scene->contacts.enabled);
