@@ -55,11 +55,11 @@ ssl() {
 simspark_run() {
   local agents=$1 mode=$2 motion=$3 header=${4:-} where=${5:-bridge}
   local domain=$((90 + RANDOM % 9)) port=$((23100 + RANDOM % 500))
-  local prefix="bench$$"
+  local prefix="bench$$" scene=${TURF_BENCH_SIMSPARK_SCENE:-configs/scenes/simspark_match.yaml}
   local sync_flag="" label="$agents agents, $mode, $motion"
   if [[ "$where" == in-process ]]; then
     [[ "$mode" == sync ]] && sync_flag="--simspark-sync"
-    "$BUILD_DIR/participants/sim/turf-sim" --scene configs/scenes/simspark_match.yaml -d "$domain" -p "$prefix" \
+    "$BUILD_DIR/participants/sim/turf-sim" --scene "$scene" -d "$domain" -p "$prefix" \
       --lockstep --simspark --simspark-agent-port "$port" --simspark-monitor-port $((port + 1)) $sync_flag \
       --log-level warn &
     local sim=$!
@@ -69,7 +69,7 @@ simspark_run() {
     wait "$sim" 2>/dev/null || true
     return
   fi
-  "$BUILD_DIR/participants/sim/turf-sim" --scene configs/scenes/simspark_match.yaml -d "$domain" -p "$prefix" \
+  "$BUILD_DIR/participants/sim/turf-sim" --scene "$scene" -d "$domain" -p "$prefix" \
     --lockstep --log-level warn &
   local sim=$!
   [[ "$mode" == sync ]] && sync_flag="--sync"
@@ -84,7 +84,7 @@ simspark_run() {
 }
 
 simspark() {
-  echo "SimSpark agents -> turf-simspark-bridge -> turf-sim (22 Naos, 3 steps of 6.67 ms per 20 ms cycle);"
+  echo "SimSpark agents -> turf-simspark-bridge -> turf-sim (22 Naos, one 20 ms step per cycle, as the reference);"
   echo "each agent answers every perception with 22 hinge velocities and (syn): 'all' sways every joint (the"
   echo "robots fall and lie, many contacts), 'upper' only head and arms (they stand); $(nproc) cores"
   simspark_run 22 sync all --header
