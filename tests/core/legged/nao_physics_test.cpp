@@ -5,10 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "core/legged/legged_world.h"
+#include "loader/legged_scene_yaml.h"
 #include "tests/core/legged/nao_fixture.h"
 
 namespace turf {
@@ -20,9 +22,11 @@ double JointAngle(const LeggedWorld& w, int robot, const std::string& joint) {
   return w.State().robots[robot].joint_positions[w.JointIndex(robot, joint)];
 }
 
-// Every test runs at the default 2 ms step, at 5 ms, and at the 6.67 ms step
-// of the SimSpark match scene (configs/scenes/simspark_match.yaml: 3 steps per
-// 20 ms cycle).
+// Every test runs at the default 2 ms step, at 5 ms and 6.67 ms with MuJoCo's contacts, and at the SimSpark match
+// scene's 20 ms step with its physics and contact law (configs/scenes/simspark_match.yaml: rcssserver3d's whole
+// ODE law at the reference's step).
+constexpr double kMatchStep = 0.02;
+
 class NaoPhysicsTest : public ::testing::TestWithParam<double> {
  protected:
   double step() const { return GetParam(); }
@@ -30,6 +34,13 @@ class NaoPhysicsTest : public ::testing::TestWithParam<double> {
   LeggedScene Scene(int robots = 1, bool field = false) const {
     LeggedScene s = NaoScene(robots, field);
     s.physics.step = step();
+    if (step() == kMatchStep) {
+      LeggedSceneLoadResult match = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/simspark_match.yaml");
+      if (!match.scene) throw std::runtime_error(match.errors.front());
+      EXPECT_EQ(match.scene->physics.step, kMatchStep);
+      s.physics = match.scene->physics;
+      s.contacts = match.scene->contacts;
+    }
     return s;
   }
   struct Phase {
@@ -246,7 +257,7 @@ TEST_P(NaoPhysicsTest, DeterministicAndResettable) {
   EXPECT_EQ(again.robots[0].joint_positions, sa.robots[0].joint_positions);
 }
 
-INSTANTIATE_TEST_SUITE_P(Steps, NaoPhysicsTest, ::testing::Values(0.002, 0.005, 0.02 / 3),
+INSTANTIATE_TEST_SUITE_P(Steps, NaoPhysicsTest, ::testing::Values(0.002, 0.005, 0.02 / 3, kMatchStep),
                          [](const ::testing::TestParamInfo<double>& p) {
                            return std::to_string(static_cast<int>(std::lround(p.param * 1e6))) + "us";
                          });
