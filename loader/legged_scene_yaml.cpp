@@ -208,6 +208,11 @@ void ReadScene(MapReader m, const std::string& base_dir, LeggedScene* s, Errors*
     p.Number("motor_impulse_window", &s->physics.motor_impulse_window);
     p.Number("fluid_density", &s->physics.fluid_density);
     p.Number("fluid_viscosity", &s->physics.fluid_viscosity);
+    std::array<double, 2> drag{s->physics.body_linear_drag, s->physics.body_angular_drag};
+    if (p.Numbers("body_drag", drag.data(), 2)) {
+      s->physics.body_linear_drag = drag[0];
+      s->physics.body_angular_drag = drag[1];
+    }
   });
   {
     MapReader r = m.Map("rates");

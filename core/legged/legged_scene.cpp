@@ -21,6 +21,8 @@ std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
     e.push_back("physics.solver_iterations must be 1..1000");
   if (!(s.physics.motor_impulse_window >= 0.0 && s.physics.motor_impulse_window <= 1.0))
     e.push_back("physics.motor_impulse_window must be in [0, 1] s");
+  if (!NonNegative(s.physics.body_linear_drag) || !NonNegative(s.physics.body_angular_drag))
+    e.push_back("physics.body_drag must be finite and not negative");
   if (!Positive(s.rates.joint_state_hz) || s.rates.joint_state_hz * s.physics.step > 1.0)
     e.push_back("rates.joint_state_hz must be positive and at most 1/physics.step");
   if (!Positive(s.ground_friction)) e.push_back("ground_friction must be positive");

@@ -29,6 +29,11 @@ struct LeggedPhysics {
   // 2e-5 Pa s. 0 = none (SimSpark has no air).
   double fluid_density = 0.0;
   double fluid_viscosity = 0.0;
+  // rcssserver3d's DragController on every body of a robot (rsg/agent/nao/dragcontroller.rsg): before each step a
+  // force -linear v (N s/m, v the body's centre-of-mass velocity) and a torque -angular w (N m s/rad), both in the
+  // world frame. 0 = none.
+  double body_linear_drag = 0.0;
+  double body_angular_drag = 0.0;
 };
 
 struct LeggedRates {

@@ -626,6 +626,25 @@ void LeggedWorld::ServoPd(JointSlot* j) {
   if (j->row >= 0) d->efc_frictionloss[j->row] = j->frictionloss;
 }
 
+// Stage 1b (after mj_step1, which computed the velocities): rcssserver3d's DragController on every robot body, a
+// force and a torque against its velocity, applied at its centre of mass for this step (scene physics.body_drag).
+void LeggedWorld::StageDrag() {
+  const double linear = scene_.physics.body_linear_drag;
+  const double angular = scene_.physics.body_angular_drag;
+  if (linear == 0.0 && angular == 0.0) return;
+  const mjModel* m = model_.get();
+  mjData* d = data_.get();
+  for (int b = 1; b < m->nbody; ++b) {
+    if (robot_of_body_[b] < 0) continue;
+    mjtNum velocity[6];  // angular, then linear; world frame, at the body's centre of mass
+    mj_objectVelocity(m, d, mjOBJ_BODY, b, velocity, 0);
+    for (int k = 0; k < 3; ++k) {
+      d->xfrc_applied[6 * b + k] = -linear * velocity[3 + k];
+      d->xfrc_applied[6 * b + 3 + k] = -angular * velocity[k];
+    }
+  }
+}
+
 // Stage 2: the rest of the MuJoCo step (mj_step2: constraint solver and
 // integration); false if it produced a non-finite state.
 bool LeggedWorld::StagePhysics() {
@@ -731,6 +750,7 @@ void LeggedWorld::Step() {
   mj_step1(model_.get(), data_.get());
   if (ode_contacts_) ode_contacts_->Apply(model_.get(), data_.get());
   StageServos();
+  StageDrag();
   if (StagePhysics()) {
     AcceptState();
     RecordBallTouches();

@@ -221,6 +221,7 @@ class LeggedWorld : Pinned {
   void StopMotor(JointSlot* joint, double command, double torque);
   double ImpulseBound(JointSlot* joint) const;
   void StageServos();
+  void StageDrag();
   void ServoPd(JointSlot* joint);
   static void ApplyStartJoints(const LeggedRobot& spec, std::vector<JointSlot>* joints);
   bool StagePhysics();

@@ -130,12 +130,17 @@ TEST(LeggedSceneYamlTest, PhysicsBlockCarriesSensorTimingAndTheMotorImpulseWindo
   ASSERT_TRUE(r.scene) << r.errors.front();
   EXPECT_TRUE(r.scene->physics.sensors_after_step);
   EXPECT_EQ(r.scene->physics.motor_impulse_window, 0.02);
+  EXPECT_EQ(r.scene->physics.body_linear_drag, 0.01);  // rsg/agent/nao/dragcontroller.rsg
+  EXPECT_EQ(r.scene->physics.body_angular_drag, 0.01);
   r = ParseNaoScene("");
   ASSERT_TRUE(r.scene) << r.errors.front();
   EXPECT_FALSE(r.scene->physics.sensors_after_step);
   EXPECT_EQ(r.scene->physics.motor_impulse_window, 0.0);
   EXPECT_TRUE(HasError(ParseNaoScene("physics: {motor_impulse_window: -0.02}\n"), "motor_impulse_window"));
   EXPECT_TRUE(HasError(ParseNaoScene("physics: {motor_impulse_window: .nan}\n"), "motor_impulse_window"));
+  EXPECT_EQ(r.scene->physics.body_linear_drag, 0.0);
+  EXPECT_TRUE(HasError(ParseNaoScene("physics: {body_drag: [-0.01, 0.01]}\n"), "body_drag"));
+  EXPECT_TRUE(HasError(ParseNaoScene("physics: {body_drag: [0.01]}\n"), "body_drag"));
 }
 
 // rcssserver3d's hinge stops (core/legged/legged_scene.h: OdeJointStops): off unless asked for (the match scene

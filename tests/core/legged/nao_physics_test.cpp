@@ -257,6 +257,33 @@ TEST_P(NaoPhysicsTest, DeterministicAndResettable) {
   EXPECT_EQ(again.robots[0].joint_positions, sa.robots[0].joint_positions);
 }
 
+// rcssserver3d's DragController on every body (physics.body_drag, as in the match scene): a Nao falling freely (its
+// joints held, so all bodies move as one) slows as dv/dt = g - k v with k = bodies x 0.01 / 4.6071 kg; without drag
+// it falls at g.
+TEST(NaoDrag, AFallingNaoSlowsByEachBodysDrag) {
+  const auto fall_speed = [](double linear_drag) {
+    LeggedScene s = NaoScene(1, false);
+    s.physics.step = 0.005;
+    s.physics.body_linear_drag = linear_drag;
+    s.physics.body_angular_drag = linear_drag;
+    LeggedWorld w(std::move(s));
+    RobotPlacement high;
+    high.position = {0.0, 0.0, 20.0};
+    EXPECT_EQ(w.PlaceRobot(0, high), PlacementError::kOk);
+    while (w.time_ns() < 500'000'000) w.Step();
+    return std::pair{-w.State().robots[0].base_velocity[2], w.State().robots[0].links.size()};
+  };
+  const auto [free, bodies] = fall_speed(0.0);
+  const auto [dragged, same_bodies] = fall_speed(0.01);
+  const double k = bodies * 0.01 / 4.6071;
+  const double predicted = 9.81 / k * (1.0 - std::exp(-k * 0.5));
+  std::printf("after 0.5 s of fall: %.4f m/s free, %.4f m/s with drag (predicted %.4f, %zu bodies)\n", free, dragged,
+              predicted, bodies);
+  EXPECT_NEAR(free, 9.81 * 0.5, 0.002);
+  EXPECT_NEAR(dragged, predicted, 0.002);
+  EXPECT_GT(free - dragged, 0.05);
+}
+
 INSTANTIATE_TEST_SUITE_P(Steps, NaoPhysicsTest, ::testing::Values(0.002, 0.005, 0.02 / 3, kMatchStep),
                          [](const ::testing::TestParamInfo<double>& p) {
                            return std::to_string(static_cast<int>(std::lround(p.param * 1e6))) + "us";
