@@ -93,6 +93,7 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
   data_.reset(mj_makeData(model_.get()));
   const mjModel* m = model_.get();
   step_ns_ = std::llround(m->opt.timestep * 1e9);
+  compiled_jnt_margin_.assign(m->jnt_margin, m->jnt_margin + m->njnt);
   ball_body_ = scene_.field.enabled ? mj_name2id(m, mjOBJ_BODY, kLeggedBall) : -1;
   if (ball_body_ >= 0) {
     ball_qvel_ = m->jnt_dofadr[m->body_jntadr[ball_body_]];
@@ -394,6 +395,9 @@ void LeggedWorld::Restore(StateReader& in) {
 }
 
 void LeggedWorld::Reset() {
+  // The joint stops rewrite the model's margins each step (StageStops): back to the compiled ones, so that a reset
+  // world starts bit for bit as a new one (its first solve warm-starts from the forward pass below).
+  std::copy(compiled_jnt_margin_.begin(), compiled_jnt_margin_.end(), model_->jnt_margin);
   mj_resetData(model_.get(), data_.get());
   for (const RobotSlot& r : robots_) {
     for (const JointSlot& j : r.joints) data_->qpos[j.qpos] = j.start_position;

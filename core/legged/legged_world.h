@@ -243,6 +243,7 @@ class LeggedWorld : Pinned {
   std::unique_ptr<OdeContacts> ode_contacts_;      // the scene's contact law, when it asks for rcssserver3d's
   int impulse_steps_ = 0;  // physics steps per motor impulse window (scene physics.motor_impulse_window), 0 = off
   int stop_steps_ = 0;     // physics steps per ODE step with the scene's joint_stops, 0 = MuJoCo's limits
+  std::vector<mjtNum> compiled_jnt_margin_;  // the model's joint margins as compiled (the stops change them)
   int steps_since_stop_test_ = 0;
   bool commanded_ = false;  // a joint command came in since the last step
   int ball_body_ = -1;

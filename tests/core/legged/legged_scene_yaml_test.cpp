@@ -143,11 +143,14 @@ TEST(LeggedSceneYamlTest, PhysicsBlockCarriesSensorTimingAndTheMotorImpulseWindo
   EXPECT_TRUE(HasError(ParseNaoScene("physics: {body_drag: [0.01]}\n"), "body_drag"));
 }
 
-// rcssserver3d's hinge stops (core/legged/legged_scene.h: OdeJointStops): off unless asked for (the match scene
-// keeps MuJoCo's limits: with them UT agents fell more often, nao-findings 2026-11-26), the reference's values by
-// default, checked.
+// rcssserver3d's hinge stops (core/legged/legged_scene.h: OdeJointStops): off unless asked for (the match scene asks,
+// at the reference's step with its contact law), the reference's values by default, checked.
 TEST(LeggedSceneYamlTest, JointStopsBlockLoadsAndIsChecked) {
   LeggedSceneLoadResult r = LoadLeggedSceneFile(kScenes + "simspark_match.yaml");
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_TRUE(r.scene->joint_stops.enabled);
+  EXPECT_EQ(r.scene->joint_stops.step, r.scene->physics.step);
+  r = ParseNaoScene("");
   ASSERT_TRUE(r.scene) << r.errors.front();
   EXPECT_FALSE(r.scene->joint_stops.enabled);
   r = ParseNaoScene("joint_stops: {law: ode}\n");

@@ -23,8 +23,8 @@ double JointAngle(const LeggedWorld& w, int robot, const std::string& joint) {
 }
 
 // Every test runs at the default 2 ms step, at 5 ms and 6.67 ms with MuJoCo's contacts, and at the SimSpark match
-// scene's 20 ms step with its physics and contact law (configs/scenes/simspark_match.yaml: rcssserver3d's whole
-// ODE law at the reference's step).
+// scene's 20 ms step with its physics, contact law and joint stops (configs/scenes/simspark_match.yaml:
+// rcssserver3d's whole ODE law and hinge stops at the reference's step).
 constexpr double kMatchStep = 0.02;
 
 class NaoPhysicsTest : public ::testing::TestWithParam<double> {
@@ -40,6 +40,7 @@ class NaoPhysicsTest : public ::testing::TestWithParam<double> {
       EXPECT_EQ(match.scene->physics.step, kMatchStep);
       s.physics = match.scene->physics;
       s.contacts = match.scene->contacts;
+      s.joint_stops = match.scene->joint_stops;
     }
     return s;
   }
@@ -157,9 +158,12 @@ TEST_P(NaoPhysicsTest, PositionCommandReachesTarget) {
   EXPECT_NEAR(a, -1.0, 0.05);
 }
 
-// hj2's range is -45..45 deg.
+// hj2's range is -45..45 deg. MuJoCo's limit holds a joint driven into it; the reference's stop (the match
+// scene's) is elastic, the joint bouncing about it by a few degrees (tests/core/legged/nao_stops_test.cpp).
 TEST_P(NaoPhysicsTest, JointsStopAtTheirLimits) {
-  EXPECT_NEAR(AngleAfter({{{"hj2", JointMode::kVelocity, 6.0}, steps_per_second()}}), M_PI / 4, 0.02);
+  const double angle = AngleAfter({{{"hj2", JointMode::kVelocity, 6.0}, steps_per_second()}});
+  std::printf("hj2 driven at 6 rad/s into its 45 deg stop for 1 s: %.2f deg\n", angle * 180 / M_PI);
+  EXPECT_NEAR(angle, M_PI / 4, step() == kMatchStep ? 0.09 : 0.02);  // 20 ms: 41.3 deg at this instant
 }
 
 TEST_P(NaoPhysicsTest, RefusesBadCommands) {
