@@ -14,7 +14,8 @@
 namespace turf::test {
 
 // A scripted match: `Match` derives from LeagueScript<Match> and has Inputs(i) (cycle i's inputs, the same on every
-// run) and Cycle() (runs a cycle, returns what it produced as text).
+// run), Cycle() (runs a cycle, returns what it produced as text), session() (the league's session) and world() (the
+// fake world it steps, copyable: the kernel's snapshot in a real run). The checks return "" or what went wrong.
 template <class Match>
 class LeagueScript {
  public:
@@ -27,6 +28,49 @@ class LeagueScript {
     std::string log;
     for (int i = from; i < to; ++i) log += Step(i);
     return log;
+  }
+  // The league saved after cycles [0, cycles).
+  std::string SaveAfter(int cycles) {
+    Run(0, cycles);
+    return self().session().SaveLeague();
+  }
+
+  // Saved after `at` cycles and restored (with the world as it was), the match sends cycles [at, to) again byte for
+  // byte; without the league's state it does not. The script must exercise every one of `parts`.
+  std::string RestoredMatchSendsTheSameBytes(int at, int to, std::initializer_list<const char*> parts) {
+    const std::string snapshot = SaveAfter(at);
+    const auto world = self().world();
+    const std::string first = Run(at, to);
+    for (const char* part : parts)
+      if (first.find(part) == std::string::npos) return std::string("the script does not exercise ") + part;
+    self().world() = world;
+    if (Run(at, to) == first) return "the match went on the same without the league's state";
+    self().world() = world;
+    if (std::string why = self().session().RestoreLeague(snapshot); !why.empty()) return "refused: " + why;
+    if (self().session().cycle() != static_cast<uint64_t>(at))
+      return "restored at cycle " + std::to_string(self().session().cycle());
+    return Run(at, to) == first ? "" : "the restored match sent other bytes";
+  }
+
+  // Saved between cycle `at`'s inputs (and `pending()`'s) and its step: the match goes on to `to` the same.
+  template <class Pending>
+  std::string SavedWithInputsPendingGoesOnTheSame(int at, int to, const Pending& pending) {
+    Run(0, at);
+    self().Inputs(at);
+    pending();
+    const std::string snapshot = self().session().SaveLeague();
+    const auto world = self().world();
+    const std::string first = self().Cycle() + Run(at + 1, to);
+    self().world() = world;
+    if (std::string why = self().session().RestoreLeague(snapshot); !why.empty()) return "refused: " + why;
+    return self().Cycle() + Run(at + 1, to) == first ? "" : "the restored match sent other bytes";
+  }
+
+  // A snapshot restored over the state it was saved from saves as the same bytes.
+  std::string SnapshotOfTheSameStateIsTheSameBytes(int at) {
+    const std::string snapshot = SaveAfter(at);
+    if (std::string why = self().session().RestoreLeague(snapshot); !why.empty()) return "refused: " + why;
+    return self().session().SaveLeague() == snapshot ? "" : "saved as other bytes";
   }
 
  private:
@@ -62,11 +106,20 @@ std::string DamagedSnapshotsChangeNothing(const std::string& snapshot, const std
   return "";
 }
 
+// One 20 ms cycle of a fuzz target's league session over the world `world(t)` builds for the cycle's end time.
+template <class Session, class World>
+void FuzzCycle(Session& session, const World& world) {
+  session.TakeRequests();
+  session.Advance(world(0.02 * static_cast<double>(session.cycle() + 1)));
+  session.TakeOutputs();
+}
+
 // A libFuzzer step: `match.start` (the session's own snapshot) with the input's tail spliced in at the position
 // its first two bytes choose, so deep sections get exercised too. A refused restore must change nothing; an
-// accepted one must leave a session that runs a cycle and takes `match.start` back. Aborts otherwise.
-template <class Match>
-void FuzzSplicedRestore(Match& match, const uint8_t* data, size_t size) {
+// accepted one must leave a session that runs a cycle (FuzzCycle over `world`) and takes `match.start` back.
+// Aborts otherwise.
+template <class Match, class World>
+void FuzzSplicedRestore(Match& match, const World& world, const uint8_t* data, size_t size) {
   const auto require = [](bool ok) {
     if (!ok) std::abort();
   };
@@ -76,7 +129,7 @@ void FuzzSplicedRestore(Match& match, const uint8_t* data, size_t size) {
   const std::string spliced = start.substr(0, cut) + std::string(reinterpret_cast<const char*>(data) + 2, size - 2);
   const std::string before = match.session.SaveLeague();
   if (match.session.RestoreLeague(spliced).empty()) {
-    match.Cycle();
+    FuzzCycle(match.session, world);
     require(match.session.RestoreLeague(match.start).empty());
   } else {
     require(match.session.SaveLeague() == before);

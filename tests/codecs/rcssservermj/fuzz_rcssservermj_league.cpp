@@ -58,11 +58,7 @@ struct Match {
     session.Receive(c, "(he1 10 0 5 1 0)");
     start = session.SaveLeague();
   }
-  void Cycle() {
-    session.TakeRequests();
-    session.Advance(World(0.02 * static_cast<double>(session.cycle() + 1)));
-    session.TakeOutputs();
-  }
+  void Cycle() { turf::test::FuzzCycle(session, World); }
   mj::Session session;
   std::string start;
 };
@@ -78,6 +74,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     referee.Restore(in);
     if (in.ok()) referee.Update(0.02, Eigen::Vector3d(0, 0, 0.11), std::nullopt);
   }
-  turf::test::FuzzSplicedRestore(match, data, size);
+  turf::test::FuzzSplicedRestore(match, World, data, size);
   return 0;
 }

@@ -45,11 +45,7 @@ struct Match {
     session.Trainer("(kickOff Left)", ss::TrainerRole::kOperator);
     start = session.SaveLeague();
   }
-  void Cycle() {
-    session.TakeRequests();
-    session.Advance(World(0.02 * static_cast<double>(session.cycle() + 1)));
-    session.TakeOutputs();
-  }
+  void Cycle() { turf::test::FuzzCycle(session, World); }
   ss::Session session;
   std::string start;
 };
@@ -65,6 +61,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     game.Restore(in);
     if (in.ok()) game.Update(0.02, Eigen::Vector3d(0, 0, 0.042), {ss::Toucher{ss::Side::kLeft, 1}});
   }
-  turf::test::FuzzSplicedRestore(match, data, size);
+  turf::test::FuzzSplicedRestore(match, World, data, size);
   return 0;
 }
