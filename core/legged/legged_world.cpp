@@ -25,6 +25,12 @@ namespace {
 // the motor is at its bound resets the reference to where the joint is: ODE's
 // motor, overpowered, loses the angle for good.
 constexpr double kStiffCompliance = 1e-4;
+// ... and at most this much (1 / (kg m^2)): a light body's relative compliance is a large absolute one. The type-4
+// Nao's toe (22 g; inverse inertia 1.3e5) would give 12.6, through which a push-off's 3 N m bends it 0.8 deg in one
+// 20 ms step, where ODE's motor (joint CFM 1e-8) holds it at exactly 0 (rcssserver3d's traces); the Nao's other
+// rows range from 0.014 (hip roll) to 1.2 (elbow yaw).
+constexpr double kMaxStiffCompliance = 0.5;
+double StiffCompliance(double diag_approx) { return std::min(diag_approx * kStiffCompliance, kMaxStiffCompliance); }
 constexpr double kCreepTime = 0.1;   // s
 constexpr double kCreepLead = 0.01;  // rad
 // A joint margin no joint reaches: MuJoCo instantiates no limit row (ODE stops between their tests).
@@ -589,7 +595,7 @@ void LeggedWorld::StageServos() {
       // The row's force is -(J qacc - aref) / R inside the bound: R = 1 / (dt
       // gain) makes it gain (target - qd'); a stiff row uses MuJoCo's largest
       // impedance (mjMAXIMP).
-      d->efc_R[i] = gain > 0 ? 1.0 / (dt * gain) : d->efc_diagApprox[i] * kStiffCompliance;
+      d->efc_R[i] = gain > 0 ? 1.0 / (dt * gain) : StiffCompliance(d->efc_diagApprox[i]);
       d->efc_D[i] = 1.0 / d->efc_R[i];
     }
   }

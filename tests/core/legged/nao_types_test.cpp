@@ -159,6 +159,36 @@ TEST(NaoType4, ToeFollowsAVelocityCommand) {
   EXPECT_NEAR(w.State().robots[0].joint_positions[j], 0.4, 0.05);
 }
 
+// rcssserver3d's toe motor (ODE, joint CFM 1e-8) holds an uncommanded toe at exactly 0 through every push-off of
+// UT Austin Villa's walk (its HJ reads 0.00). In the match scene's physics: ankles pressing the toes into the ground
+// load each toe hinge with several N m, and the toes stay within 0.05 deg (a relative compliance alone, 12.6 for the
+// 22 g toe, bent them 0.8 deg in one step).
+TEST(NaoType4, ToesHoldUnderLoadAsTheReferencesMotor) {
+  LeggedScene s = TypedScene(4);
+  LeggedSceneLoadResult match = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/simspark_match.yaml");
+  ASSERT_TRUE(match.scene.has_value()) << match.errors.front();
+  s.physics = match.scene->physics;
+  s.contacts = match.scene->contacts;
+  s.joint_stops = match.scene->joint_stops;
+  LeggedWorld w(s);
+  for (const char* ankle : {"rlj5", "llj5"})
+    ASSERT_EQ(w.SetJointCommand(0, {ankle, JointMode::kVelocity, -1.0}), JointCommandError::kOk);
+  double max_load = 0.0;
+  double max_bend = 0.0;
+  for (int i = 0; i < 15; ++i) {  // 0.3 s
+    w.Step();
+    const LeggedRobotState r = w.State().robots[0];
+    for (const char* toe : {"rlj7", "llj7"}) {
+      const int j = w.JointIndex(0, toe);
+      ASSERT_GE(j, 0) << toe;
+      max_load = std::max(max_load, std::abs(r.joint_efforts[j]));
+      max_bend = std::max(max_bend, std::abs(r.joint_positions[j]));
+    }
+  }
+  EXPECT_GT(max_load, 1.0) << "the toes carry a load (N m)";
+  EXPECT_LT(max_bend * 180 / M_PI, 0.05) << "max load " << max_load << " N m";
+}
+
 TEST(NaoTypes, RefusesWhatIsNotATypeOrNotANao) {
   const std::string nao = testing::ReadNaoXml();
   EXPECT_FALSE(NaoTypeMjcf(nao, 5).error.empty());
