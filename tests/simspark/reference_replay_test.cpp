@@ -312,7 +312,7 @@ TEST(ReferenceReplay, AWalkingRobotMovesAsItDoesAloneWhileThreeOthersWalk) {
 }
 
 // ut_walk: a field player's walk from its kick-off (no beams after cycle 4); its feet land as the reference's, a
-// short hard contact each step (feet 32 N RMS from the reference's forces cycle by cycle at one 20 ms step with the
+// short hard contact each step (feet 33 N RMS from the reference's forces cycle by cycle at one 20 ms step with the
 // whole ODE law; 47 N at three 6.67 ms steps with its friction alone, the scene before 2026-11-27, session 14).
 // ut_hover: an agent's first 60 cycles, beaming every cycle with its stance commands (UT's 2.25 s "hover"), closed loop
 // on the reference: its ACC reads gravity there (a free-fall 0 fails both the ACC bound and the fall check); the legs
