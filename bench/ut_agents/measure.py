@@ -158,11 +158,15 @@ def main():
     ap.add_argument("--wait-timeout", type=float, default=120.0, help="wall seconds to wait for the robots")
     ap.add_argument("--csv", default=None, help="write every sample (t, robot, x, y, z, upz, ball, play mode, heading in deg) here")
     ap.add_argument("--json", default=None, help="write the result table as JSON here")
+    ap.add_argument("--feet-csv", default=None,
+                    help="write each measured robot's feet (and type 4's toes) here: t, robot, body, x, y, z")
     a = ap.parse_args()
 
     tr = Trainer(a.host, a.monitor_port)
     ws = WS(a.host, a.viewer_port)
     torso_idx = {}
+    feet_idx = {}  # robot -> {body name: index in its links}
+    fw = csv.writer(open(a.feet_csv, "w", newline="")) if a.feet_csv else None
     cw = csv.writer(open(a.csv, "w", newline="")) if a.csv else None
     if cw:
         cw.writerow(["t", "robot", "x", "y", "z", "upz", "ball_x", "ball_y", "ball_z", "play_mode", "heading"])
@@ -190,6 +194,9 @@ def main():
                 idx = [i for i, b in enumerate(bodies) if b == "torso" or b.endswith("torso")]
                 if idx:
                     torso_idx[r["name"]] = idx[0]
+                for i, b in enumerate(bodies):
+                    if b.split("/")[-1] in ("lfoot", "rfoot", "ltoe", "rtoe"):
+                        feet_idx.setdefault(r["name"], {})[b.split("/")[-1]] = i
             continue
         if m.get("type") != "state" or not torso_idx:
             continue
@@ -262,6 +269,11 @@ def main():
                 s["cand_t"] = None
             if cw:
                 cw.writerow([f"{t:.3f}", n, p[0], p[1], p[2], f"{uz:.4f}", bp[0], bp[1], bp[2], mode, f"{heading(q):.1f}"])
+            if fw:
+                links = m.get("links", {}).get(n, [])
+                for b, i in feet_idx.get(n, {}).items():
+                    if len(links) >= 7 * (i + 1):
+                        fw.writerow([f"{t:.3f}", n, b, links[7 * i], links[7 * i + 1], links[7 * i + 2]])
 
     span = (t_last or 0) - (t_start or 0)
     rows = []

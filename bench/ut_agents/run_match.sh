@@ -10,7 +10,7 @@
 #                     [--type 0..4] [--seconds 60] [--label TEXT] [--keep DIR] [--trace] [--scene FILE] [--seed N]
 #   split: unums 1..N/2 on team UTA (left), 1..N/2 on UTB (right); one: 1..N on UTA
 #   default sync mode (turf waits for every agent: results do not depend on the machine's load)
-#   --keep DIR: keep the logs and measure.py's CSV and JSON there
+#   --keep DIR: keep the logs and measure.py's CSVs (torso and ball; feet) and JSON there
 #   --trace: each agent through proxy.py, its messages kept as trace_<team>_<unum>.jsonl (with --keep)
 #   --scene FILE: a variant of configs/scenes/simspark_match.yaml to measure (same robots; default that file)
 #   --seed N: the SimSpark league's seed (vision and beam noise, each agent's calibration error, the game's draws);
@@ -78,7 +78,7 @@ for _ in $(seq 1 120); do grep -q "agents: TCP" "$work/turf.log" && break; sleep
 grep -q "agents: TCP" "$work/turf.log" || { echo "run_match.sh: turf did not start (log: $work/turf.log)" >&2; exit 1; }
 
 python3 bench/ut_agents/measure.py --viewer-port "$viewer_port" --monitor-port $((port + 1)) --expect "$n" \
-  --settle 5 --duration "$seconds" --csv "$work/samples.csv" --json "$work/result.json" > "$work/measure.log" 2>&1 &
+  --settle 5 --duration "$seconds" --csv "$work/samples.csv" --feet-csv "$work/samples_feet.csv" --json "$work/result.json" > "$work/measure.log" 2>&1 &
 measure=$!
 half=$(( (n + 1) / 2 ))
 for ((i = 1; i <= n; ++i)); do
