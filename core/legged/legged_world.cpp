@@ -97,6 +97,10 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
   mjcf_ = std::move(composed.xml);
   model_.reset(CompileLeggedMjcf(mjcf_));
   data_.reset(mj_makeData(model_.get()));
+  // The air is applied in StageBodyForces (the same forces, in one pass), not by MuJoCo's mj_passive.
+  air_ = FluidOf(model_.get());
+  model_->opt.density = 0.0;
+  model_->opt.viscosity = 0.0;
   const mjModel* m = model_.get();
   step_ns_ = std::llround(m->opt.timestep * 1e9);
   compiled_jnt_margin_.assign(m->jnt_margin, m->jnt_margin + m->njnt);
@@ -636,23 +640,32 @@ void LeggedWorld::ServoPd(JointSlot* j) {
   if (j->row >= 0) d->efc_frictionloss[j->row] = j->frictionloss;
 }
 
-// Stage 1b (after mj_step1, which computed the velocities): rcssserver3d's DragController on every robot body, a
-// force and a torque against its velocity, applied at its centre of mass for this step (scene physics.body_drag).
-void LeggedWorld::StageDrag() {
+// Stage 1b (after mj_step1, which computed the velocities): forces on bodies at their centres of mass, for this
+// step, as generalized forces next to MuJoCo's passive ones (core/legged/body_forces.h): rcssserver3d's
+// DragController on every robot body, a force and a torque against its velocity (scene physics.body_drag), and
+// the scene's air on every body (physics.fluid_*), MuJoCo's inertia-box model, which the model's options would
+// otherwise apply far more slowly.
+void LeggedWorld::StageBodyForces() {
   const double linear = scene_.physics.body_linear_drag;
   const double angular = scene_.physics.body_angular_drag;
-  if (linear == 0.0 && angular == 0.0) return;
+  const bool drag = linear != 0.0 || angular != 0.0;
+  if (!drag && !air_.enabled()) return;
   const mjModel* m = model_.get();
   mjData* d = data_.get();
+  body_wrenches_.assign(6 * m->nbody, 0.0);
   for (int b = 1; b < m->nbody; ++b) {
-    if (robot_of_body_[b] < 0) continue;
-    mjtNum velocity[6];  // angular, then linear; world frame, at the body's centre of mass
-    mj_objectVelocity(m, d, mjOBJ_BODY, b, velocity, 0);
-    for (int k = 0; k < 3; ++k) {
-      d->xfrc_applied[6 * b + k] = -linear * velocity[3 + k];
-      d->xfrc_applied[6 * b + 3 + k] = -angular * velocity[k];
+    mjtNum* wrench = &body_wrenches_[6 * b];  // torque, then force
+    if (drag && robot_of_body_[b] >= 0) {
+      mjtNum velocity[6];  // angular, then linear; world frame, at the body's centre of mass
+      mj_objectVelocity(m, d, mjOBJ_BODY, b, velocity, 0);
+      for (int k = 0; k < 3; ++k) {
+        wrench[k] = -angular * velocity[k];
+        wrench[3 + k] = -linear * velocity[3 + k];
+      }
     }
+    AddInertiaBoxFluid(m, d, air_, b, wrench);
   }
+  AddBodyWrenches(m, d, body_wrenches_, &wrench_scratch_, d->qfrc_passive);
 }
 
 // Stage 2: the rest of the MuJoCo step (mj_step2: constraint solver and
@@ -760,7 +773,7 @@ void LeggedWorld::Step() {
   mj_step1(model_.get(), data_.get());
   if (ode_contacts_) ode_contacts_->Apply(model_.get(), data_.get());
   StageServos();
-  StageDrag();
+  StageBodyForces();
   if (StagePhysics()) {
     AcceptState();
     RecordBallTouches();

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/legged/body_forces.h"
 #include "core/legged/legged_scene.h"
 #include "core/legged/ode_contacts.h"
 #include "core/mj_state.h"
@@ -221,7 +222,7 @@ class LeggedWorld : Pinned {
   void StopMotor(JointSlot* joint, double command, double torque);
   double ImpulseBound(JointSlot* joint) const;
   void StageServos();
-  void StageDrag();
+  void StageBodyForces();
   void ServoPd(JointSlot* joint);
   static void ApplyStartJoints(const LeggedRobot& spec, std::vector<JointSlot>* joints);
   bool StagePhysics();
@@ -240,7 +241,10 @@ class LeggedWorld : Pinned {
   std::vector<int> robot_of_body_;                 // body -> index into robots_, -1 for none
   std::vector<int64_t> ball_touch_ns_;             // per robot, LeggedRobotState::ball_touch_ns
   std::vector<std::pair<int, int>> motor_of_dof_;  // dof -> (robot, joint), -1 for none
-  std::unique_ptr<OdeContacts> ode_contacts_;      // the scene's contact law, when it asks for rcssserver3d's
+  Fluid air_;                                      // the scene's air (StageBodyForces), off in the model
+  std::vector<mjtNum> body_wrenches_;              // per body, StageBodyForces' scratch
+  std::vector<mjtNum> wrench_scratch_;
+  std::unique_ptr<OdeContacts> ode_contacts_;  // the scene's contact law, when it asks for rcssserver3d's
   int impulse_steps_ = 0;  // physics steps per motor impulse window (scene physics.motor_impulse_window), 0 = off
   int stop_steps_ = 0;     // physics steps per ODE step with the scene's joint_stops, 0 = MuJoCo's limits
   std::vector<mjtNum> compiled_jnt_margin_;  // the model's joint margins as compiled (the stops change them)

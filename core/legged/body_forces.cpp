@@ -1,0 +1,112 @@
+#include "core/legged/body_forces.h"
+
+#include <cmath>
+
+namespace turf {
+
+namespace {
+
+double Dot3(const mjtNum* a, const mjtNum* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+void Cross3(const mjtNum* a, const mjtNum* b, mjtNum* out) {
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// v in the frame whose axes are the columns of the row-major `mat`: mat^T v.
+void ToLocal(const mjtNum* mat, const mjtNum* v, mjtNum* out) {
+  for (int i = 0; i < 3; ++i) out[i] = mat[i] * v[0] + mat[3 + i] * v[1] + mat[6 + i] * v[2];
+}
+
+// A local vector in the world: mat v.
+void ToWorld(const mjtNum* mat, const mjtNum* v, mjtNum* out) {
+  for (int i = 0; i < 3; ++i) out[i] = Dot3(mat + 3 * i, v);
+}
+
+// The sides of the uniform box with the body's mass and principal inertia.
+void InertiaBox(const mjModel* m, int body, mjtNum box[3]) {
+  const mjtNum* inertia = m->body_inertia + 3 * body;
+  const mjtNum mass = m->body_mass[body];
+  for (int i = 0; i < 3; ++i) {
+    const mjtNum twice = inertia[(i + 1) % 3] + inertia[(i + 2) % 3] - inertia[i];
+    box[i] = std::sqrt(std::max(mjMINVAL, twice) / mass * 6.0);
+  }
+}
+
+}  // namespace
+
+Fluid FluidOf(const mjModel* m) {
+  return {m->opt.density, m->opt.viscosity, {m->opt.wind[0], m->opt.wind[1], m->opt.wind[2]}};
+}
+
+void AddInertiaBoxFluid(const mjModel* m, const mjData* d, const Fluid& fluid, int body, mjtNum wrench[6]) {
+  if (m->body_mass[body] < mjMINVAL || !fluid.enabled()) return;
+  mjtNum box[3];
+  InertiaBox(m, body, box);
+  // The body's velocity at its centre of mass, relative to the wind, in its inertial frame (cvel is about the
+  // tree's centre of mass: angular, then linear).
+  const mjtNum* cvel = d->cvel + 6 * body;
+  const mjtNum* com = d->xipos + 3 * body;
+  const mjtNum* root = d->subtree_com + 3 * m->body_rootid[body];
+  const mjtNum* mat = d->ximat + 9 * body;
+  const mjtNum arm[3] = {com[0] - root[0], com[1] - root[1], com[2] - root[2]};
+  mjtNum spin[3];
+  Cross3(cvel, arm, spin);  // w x (p - c)
+  const mjtNum world_lin[3] = {cvel[3] + spin[0] - fluid.wind[0], cvel[4] + spin[1] - fluid.wind[1],
+                               cvel[5] + spin[2] - fluid.wind[2]};
+  mjtNum w[3], v[3];
+  ToLocal(mat, cvel, w);
+  ToLocal(mat, world_lin, v);
+
+  mjtNum torque[3] = {0, 0, 0}, force[3] = {0, 0, 0};
+  if (fluid.viscosity > 0) {
+    const mjtNum diameter = (box[0] + box[1] + box[2]) / 3.0;
+    for (int i = 0; i < 3; ++i) {
+      torque[i] -= mjPI * diameter * diameter * diameter * fluid.viscosity * w[i];
+      force[i] -= 3.0 * mjPI * diameter * fluid.viscosity * v[i];
+    }
+  }
+  if (fluid.density > 0) {
+    for (int i = 0; i < 3; ++i) {
+      const mjtNum a = box[(i + 1) % 3], b = box[(i + 2) % 3];
+      force[i] -= 0.5 * fluid.density * a * b * std::abs(v[i]) * v[i];
+      torque[i] -= fluid.density * box[i] * (a * a * a * a + b * b * b * b) * std::abs(w[i]) * w[i] / 64.0;
+    }
+  }
+  mjtNum world[3];
+  ToWorld(mat, torque, world);
+  for (int k = 0; k < 3; ++k) wrench[k] += world[k];
+  ToWorld(mat, force, world);
+  for (int k = 0; k < 3; ++k) wrench[3 + k] += world[k];
+}
+
+// Each body's wrench as a spatial force about its tree's centre of mass (the frame of cdof), summed over its
+// subtree from the leaves up (a child's id is above its parent's), then projected on the body's own dofs.
+void AddBodyWrenches(const mjModel* m, const mjData* d, const std::vector<mjtNum>& wrenches,
+                     std::vector<mjtNum>* scratch, mjtNum* qfrc) {
+  scratch->assign(6 * m->nbody, 0.0);
+  mjtNum* s = scratch->data();
+  for (int b = 1; b < m->nbody; ++b) {
+    const mjtNum* w = wrenches.data() + 6 * b;
+    const mjtNum* com = d->xipos + 3 * b;
+    const mjtNum* root = d->subtree_com + 3 * m->body_rootid[b];
+    const mjtNum arm[3] = {com[0] - root[0], com[1] - root[1], com[2] - root[2]};
+    mjtNum moment[3];
+    Cross3(arm, w + 3, moment);
+    for (int k = 0; k < 3; ++k) {
+      s[6 * b + k] += w[k] + moment[k];
+      s[6 * b + 3 + k] += w[3 + k];
+    }
+  }
+  for (int b = m->nbody - 1; b > 0; --b) {
+    const mjtNum* sb = s + 6 * b;
+    for (int j = m->body_dofadr[b]; j < m->body_dofadr[b] + m->body_dofnum[b]; ++j)
+      qfrc[j] += Dot3(d->cdof + 6 * j, sb) + Dot3(d->cdof + 6 * j + 3, sb + 3);
+    const int parent = m->body_parentid[b];
+    if (parent > 0)
+      for (int k = 0; k < 6; ++k) s[6 * parent + k] += sb[k];
+  }
+}
+
+}  // namespace turf
