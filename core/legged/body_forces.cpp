@@ -1,28 +1,11 @@
 #include "core/legged/body_forces.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace turf {
 
 namespace {
-
-double Dot3(const mjtNum* a, const mjtNum* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-void Cross3(const mjtNum* a, const mjtNum* b, mjtNum* out) {
-  out[0] = a[1] * b[2] - a[2] * b[1];
-  out[1] = a[2] * b[0] - a[0] * b[2];
-  out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-// v in the frame whose axes are the columns of the row-major `mat`: mat^T v.
-void ToLocal(const mjtNum* mat, const mjtNum* v, mjtNum* out) {
-  for (int i = 0; i < 3; ++i) out[i] = mat[i] * v[0] + mat[3 + i] * v[1] + mat[6 + i] * v[2];
-}
-
-// A local vector in the world: mat v.
-void ToWorld(const mjtNum* mat, const mjtNum* v, mjtNum* out) {
-  for (int i = 0; i < 3; ++i) out[i] = Dot3(mat + 3 * i, v);
-}
 
 // The sides of the uniform box with the body's mass and principal inertia.
 void InertiaBox(const mjModel* m, int body, mjtNum box[3]) {
@@ -50,14 +33,13 @@ void AddInertiaBoxFluid(const mjModel* m, const mjData* d, const Fluid& fluid, i
   const mjtNum* com = d->xipos + 3 * body;
   const mjtNum* root = d->subtree_com + 3 * m->body_rootid[body];
   const mjtNum* mat = d->ximat + 9 * body;
-  const mjtNum arm[3] = {com[0] - root[0], com[1] - root[1], com[2] - root[2]};
-  mjtNum spin[3];
-  Cross3(cvel, arm, spin);  // w x (p - c)
-  const mjtNum world_lin[3] = {cvel[3] + spin[0] - fluid.wind[0], cvel[4] + spin[1] - fluid.wind[1],
-                               cvel[5] + spin[2] - fluid.wind[2]};
-  mjtNum w[3], v[3];
-  ToLocal(mat, cvel, w);
-  ToLocal(mat, world_lin, v);
+  mjtNum arm[3], world_lin[3], w[3], v[3];
+  mju_sub3(arm, com, root);
+  mju_cross(world_lin, cvel, arm);  // w x (p - c)
+  mju_addTo3(world_lin, cvel + 3);
+  mju_subFrom3(world_lin, fluid.wind.data());
+  mju_rotVecMatT(w, cvel, mat);
+  mju_rotVecMatT(v, world_lin, mat);
 
   mjtNum torque[3] = {0, 0, 0}, force[3] = {0, 0, 0};
   if (fluid.viscosity > 0) {
@@ -75,10 +57,10 @@ void AddInertiaBoxFluid(const mjModel* m, const mjData* d, const Fluid& fluid, i
     }
   }
   mjtNum world[3];
-  ToWorld(mat, torque, world);
-  for (int k = 0; k < 3; ++k) wrench[k] += world[k];
-  ToWorld(mat, force, world);
-  for (int k = 0; k < 3; ++k) wrench[3 + k] += world[k];
+  mju_rotVecMat(world, torque, mat);
+  mju_addTo3(wrench, world);
+  mju_rotVecMat(world, force, mat);
+  mju_addTo3(wrench + 3, world);
 }
 
 // Each body's wrench as a spatial force about its tree's centre of mass (the frame of cdof), summed over its
@@ -91,9 +73,9 @@ void AddBodyWrenches(const mjModel* m, const mjData* d, const std::vector<mjtNum
     const mjtNum* w = wrenches.data() + 6 * b;
     const mjtNum* com = d->xipos + 3 * b;
     const mjtNum* root = d->subtree_com + 3 * m->body_rootid[b];
-    const mjtNum arm[3] = {com[0] - root[0], com[1] - root[1], com[2] - root[2]};
-    mjtNum moment[3];
-    Cross3(arm, w + 3, moment);
+    mjtNum arm[3], moment[3];
+    mju_sub3(arm, com, root);
+    mju_cross(moment, arm, w + 3);
     for (int k = 0; k < 3; ++k) {
       s[6 * b + k] += w[k] + moment[k];
       s[6 * b + 3 + k] += w[3 + k];
@@ -102,7 +84,7 @@ void AddBodyWrenches(const mjModel* m, const mjData* d, const std::vector<mjtNum
   for (int b = m->nbody - 1; b > 0; --b) {
     const mjtNum* sb = s + 6 * b;
     for (int j = m->body_dofadr[b]; j < m->body_dofadr[b] + m->body_dofnum[b]; ++j)
-      qfrc[j] += Dot3(d->cdof + 6 * j, sb) + Dot3(d->cdof + 6 * j + 3, sb + 3);
+      qfrc[j] += mju_dot(d->cdof + 6 * j, sb, 6);
     const int parent = m->body_parentid[b];
     if (parent > 0)
       for (int k = 0; k < 6; ++k) s[6 * parent + k] += sb[k];
