@@ -7,13 +7,14 @@ namespace turf {
 
 namespace {
 
-// The sides of the uniform box with the body's mass and principal inertia.
+// The sides of the uniform box with the body's mass and principal inertia: for such a box of mass m and sides s,
+// I_j + I_k - I_i = m s_i^2 / 6.
 void InertiaBox(const mjModel* m, int body, mjtNum box[3]) {
   const mjtNum* inertia = m->body_inertia + 3 * body;
   const mjtNum mass = m->body_mass[body];
   for (int i = 0; i < 3; ++i) {
-    const mjtNum twice = inertia[(i + 1) % 3] + inertia[(i + 2) % 3] - inertia[i];
-    box[i] = std::sqrt(std::max(mjMINVAL, twice) / mass * 6.0);
+    const mjtNum side_term = inertia[(i + 1) % 3] + inertia[(i + 2) % 3] - inertia[i];
+    box[i] = std::sqrt(std::max(mjMINVAL, side_term) / mass * 6.0);
   }
 }
 
