@@ -124,6 +124,27 @@ TEST(Ball, RcssServerMjBallSlowsByItsRollingFriction) {
   EXPECT_LT(std::abs(sliding_only), 0.05) << "without rolling friction a slow ball keeps its speed";
 }
 
+// RCSSServerMJ's air on a ball in flight (LeggedWorld applies it itself, core/legged/body_forces.h): MuJoCo's
+// inertia-box model gives a solid sphere the box of side r sqrt(2.4) and a drag 0.5 rho s^2 v^2 along each of the
+// box's axes (the sphere's, which stay the world's with no spin), so a ball thrown level at v0 obeys
+// dv/dt = -k v^2, k = 0.5 rho s^2 / m, and has v0 / (1 + k v0 t) after t. Viscosity adds 3 pi d mu v, under
+// 0.1 % of it. Without the air the ball would keep its 10 m/s.
+TEST(Ball, RcssServerMjBallInFlightSlowsByTheAirsDrag) {
+  LeggedWorld w(Shipped("rcssservermj_fifa_1v1.yaml"));
+  const double r = 0.11, m = 0.41, v0 = 10.0, t = 0.2;
+  const double side = r * std::sqrt(2.4);
+  const double k = 0.5 * 1.2 * side * side / m;
+  ASSERT_EQ(w.PlaceBall({0.0, 0.0, 20.0}, {v0, 0.0, 0.0}), PlacementError::kOk);
+  while (w.State().time_ns < std::llround(t * 1e9)) w.Step();
+  const LeggedWorldState s = w.State();
+  ASSERT_GT(s.ball_position[2], 1.0) << "still in flight";
+  const double predicted = v0 / (1.0 + k * v0 * t);
+  std::printf("ball thrown at %.1f m/s: %.4f m/s after %.1f s of flight (predicted %.4f)\n", v0, s.ball_velocity[0], t,
+              predicted);
+  EXPECT_NEAR(s.ball_velocity[0], predicted, 0.01);
+  EXPECT_LT(s.ball_velocity[0], v0 - 0.5) << "the air slows it";
+}
+
 TEST(Ball, SceneFilesCarryTheBallsContactAndTheAir) {
   const std::string mj = ComposeLeggedMjcf(Shipped("rcssservermj_fifa_1v1.yaml")).xml;
   EXPECT_NE(mj.find(R"(friction="0.4 0.01 0.01" condim="6" solref="-5000 -20" priority="1")"), std::string::npos);
