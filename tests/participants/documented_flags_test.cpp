@@ -56,7 +56,7 @@ TEST(DocumentedFlags, EachParticipantsReadmeNamesOnlyFlagsItsHelpLists) {
   }
 }
 
-TEST(DocumentedFlags, EveryFlagOfTheMainReadmeExists) {
+TEST(DocumentedFlags, EveryFlagOfTheMainReadmeAndDocsExists) {
   std::set<std::string> offered;
   for (const char* executable :
        {"sim/turf-sim", "grsim_bridge/turf-grsim-bridge", "vision_bridge/turf-vision-bridge",
@@ -72,8 +72,12 @@ TEST(DocumentedFlags, EveryFlagOfTheMainReadmeExists) {
     const std::set<std::string> flags = LongFlags(SourceFile(script));
     offered.insert(flags.begin(), flags.end());
   }
-  const std::set<std::string> documented = LongFlags(SourceFile("README.md"));
-  for (const std::string& flag : documented) EXPECT_TRUE(offered.count(flag)) << "README.md documents " << flag;
+  // The README and the records it points to (docs/).
+  for (const char* doc : {"README.md", "docs/performance.md", "docs/fidelity-nao.md"}) {
+    const std::set<std::string> documented = LongFlags(SourceFile(doc));
+    EXPECT_FALSE(documented.empty()) << doc;
+    for (const std::string& flag : documented) EXPECT_TRUE(offered.count(flag)) << doc << " documents " << flag;
+  }
 }
 
 // The check itself can fail: a flag no executable has is not found.
