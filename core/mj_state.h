@@ -32,6 +32,13 @@ uint64_t ModelFingerprint(const mjModel_* m);
 
 // The last frame whose time (frame x step) a snapshot may carry: 2^62 ns.
 inline uint64_t MaxFrame(int64_t step_ns) { return (uint64_t{1} << 62) / static_cast<uint64_t>(step_ns); }
+// A world's frame counter read back from a snapshot: past MaxFrame fails the reader and gives 0.
+inline uint64_t RestoreFrame(StateReader& in, int64_t step_ns) {
+  const uint64_t frame = in.Get<uint64_t>();
+  if (frame <= MaxFrame(step_ns)) return frame;
+  in.Fail("frame out of range");
+  return 0;
+}
 
 // The positions of the last step that stayed finite.
 class LastGoodState {

@@ -134,11 +134,7 @@ void World::Save(StateWriter& out) const {
 void World::Restore(StateReader& in) {
   in.Tag(StateTag("SSLW"));
   RestoreMjData(model_.get(), data_.get(), in);
-  frame_ = in.Get<uint64_t>();
-  if (frame_ > MaxFrame(step_ns_)) {
-    in.Fail("frame out of range");
-    frame_ = 0;
-  }
+  frame_ = RestoreFrame(in, step_ns_);
   floor_normal_force_ = in.Get<double>();
   last_good_.Restore(in);
   health_.containment_corrections = in.Get<uint64_t>();

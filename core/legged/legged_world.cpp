@@ -288,11 +288,7 @@ void LeggedWorld::Save(StateWriter& out) const {
 void LeggedWorld::Restore(StateReader& in) {
   in.Tag(StateTag("LEGW"));
   RestoreMjData(model_.get(), data_.get(), in);
-  frame_ = in.Get<uint64_t>();
-  if (frame_ > MaxFrame(step_ns_)) {
-    in.Fail("frame out of range");
-    frame_ = 0;
-  }
+  frame_ = RestoreFrame(in, step_ns_);
   last_good_.Restore(in);
   health_.instability_recoveries = in.Get<uint64_t>();
   health_.solver_capped_steps = in.Get<uint64_t>();

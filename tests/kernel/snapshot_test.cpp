@@ -2,6 +2,7 @@
 // mismatched snapshot is refused with a reason and changes nothing.
 #include <gtest/gtest.h>
 
+#include "core/mj_state.h"
 #include "core/rng.h"
 #include "core/state_io.h"
 #include "tests/kernel/kernel_fixtures.h"
@@ -66,6 +67,24 @@ TEST(SnapshotTest, CorruptedValuesAreRefusedNotObeyed) {
     }
   }
   EXPECT_GT(refused, 0);
+}
+
+// `frame` written and read back through RestoreFrame: the value read and the reader's error ("" if none).
+std::pair<uint64_t, std::string> ReadFrame(uint64_t frame, int64_t step_ns) {
+  StateWriter out;
+  out.Put(frame);
+  const std::string bytes = out.Take();
+  StateReader in(bytes);
+  const uint64_t read = RestoreFrame(in, step_ns);
+  return {read, in.error()};
+}
+
+// A world's frame counter whose time would pass 2^62 ns is refused and read as 0; the last one allowed reads back.
+TEST(SnapshotTest, AFramePastTheLastTimeIsRefused) {
+  const int64_t step_ns = 2'000'000;
+  for (const uint64_t frame : {uint64_t{0}, uint64_t{12345}, MaxFrame(step_ns)})
+    EXPECT_EQ(ReadFrame(frame, step_ns), std::make_pair(frame, std::string())) << frame;
+  EXPECT_EQ(ReadFrame(MaxFrame(step_ns) + 1, step_ns), std::make_pair(uint64_t{0}, std::string("frame out of range")));
 }
 
 // An all-zero generator state is never reached from a seed and would make Normal() wait forever for a non-zero
