@@ -9,7 +9,9 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "dds/participant.h"
 #include "loader/legged_scene_yaml.h"
@@ -139,10 +141,25 @@ int RunSsl(const SimCommandLine& command_line) {
   return RunLoaded(LoadSceneFile(command_line.scene_path), command_line, "scene", /*legged=*/false);
 }
 
+// A front-end served in this process, `--NAME [ADDRESS]`: whether it was given, and the address it binds.
+struct ServedHere {
+  CLI::Option* option;
+  bool* given;
+  std::string* listen;
+};
+
+// Adds `--NAME [ADDRESS]`; given without an address (CLI11 then leaves it empty), it binds 127.0.0.1.
+ServedHere AddServedHere(CLI::App& app, const std::string& flag, const std::string& help, std::string* listen,
+                         bool* given) {
+  *listen = "127.0.0.1";
+  return {app.add_option(flag, *listen, help)->expected(0, 1)->type_name("[ADDRESS]"), given, listen};
+}
+
 }  // namespace
 
 void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
   CLI::App& app = participant.app();
+  std::vector<ServedHere> served;
   SimNodeOptions& node = command_line.node;
   command_line.scene_path = std::string(TURF_SOURCE_DIR) + "/configs/scenes/ssl_div_a.yaml";
   app.add_option("-s,--scene", command_line.scene_path, "scene file (YAML)")->capture_default_str();
@@ -166,27 +183,23 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
   // The SSL simulation protocol in this process (sim_host.h): the same ports as turf-simproto-bridge.
   SimprotoBridgeOptions& sp = command_line.simproto_options;
   sp.name = "turf-sim/simproto";
-  sp.listen = "127.0.0.1";
-  CLI::Option* simproto = app.add_option("--simproto", sp.listen,
-                                         "serve the SSL simulation protocol (UDP: control, blue, yellow and sync "
-                                         "ports) in this process, with no DDS hop to the physics; binds ADDRESS "
-                                         "(default 127.0.0.1; 0.0.0.0: every interface). turf-simproto-bridge "
-                                         "still works as a separate process")
-                              ->expected(0, 1)
-                              ->type_name("[ADDRESS]");
+  served.push_back(
+      AddServedHere(app, "--simproto",
+                    "serve the SSL simulation protocol (UDP: control, blue, yellow and sync ports) in this "
+                    "process, with no DDS hop to the physics; binds ADDRESS (default 127.0.0.1; 0.0.0.0: "
+                    "every interface). turf-simproto-bridge still works as a separate process",
+                    &sp.listen, &command_line.simproto));
   AddSimprotoPortFlags(app, sp, "simproto-", "with --simproto: ");
   AddSimprotoAllowFlags(app, sp, "simproto-", "with --simproto: ");
 
   // SimSpark agents and monitors in this process (sim_host.h): the same ports as turf-simspark-bridge.
   SimSparkBridgeOptions& ss = command_line.simspark_options;
   ss.name = "turf-sim/simspark";
-  ss.listen = "127.0.0.1";
-  CLI::Option* simspark = app.add_option("--simspark", ss.listen,
-                                         "legged scenes: serve SimSpark agents and monitors (TCP) in this process, "
-                                         "with no DDS hop to the physics; binds ADDRESS (default 127.0.0.1). "
-                                         "turf-simspark-bridge still works as a separate process")
-                              ->expected(0, 1)
-                              ->type_name("[ADDRESS]");
+  served.push_back(AddServedHere(app, "--simspark",
+                                 "legged scenes: serve SimSpark agents and monitors (TCP) in this process, with no "
+                                 "DDS hop to the physics; binds ADDRESS (default 127.0.0.1). turf-simspark-bridge "
+                                 "still works as a separate process",
+                                 &ss.listen, &command_line.simspark));
   app.add_option("--simspark-agent-port", ss.agent_port, "with --simspark: TCP port for agents")->capture_default_str();
   app.add_option("--simspark-monitor-port", ss.monitor_port, "with --simspark: TCP port for monitors and trainers")
       ->capture_default_str();
@@ -202,17 +215,13 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
   // turf-rcssservermj-bridge's, prefixed.
   RcssServerMjOptions& mj = command_line.rcssservermj_options;
   mj.name = "turf-sim/rcssservermj";
-  CLI::Option* rcssservermj =
-      app.add_option("--rcssservermj", mj.listen,
-                     "legged scenes of T1/K1 robots: serve RCSSServerMJ (2026 3D league) agents and monitor commands "
-                     "(TCP) in this process; binds ADDRESS (default 127.0.0.1). turf-rcssservermj-bridge still works "
-                     "as a separate process")
-          ->expected(0, 1)
-          ->type_name("[ADDRESS]");
+  served.push_back(AddServedHere(app, "--rcssservermj",
+                                 "legged scenes of T1/K1 robots: serve RCSSServerMJ (2026 3D league) agents and "
+                                 "monitor commands (TCP) in this process; binds ADDRESS (default 127.0.0.1). "
+                                 "turf-rcssservermj-bridge still works as a separate process",
+                                 &mj.listen, &command_line.rcssservermj));
   AddRcssServerMjFlags(app, mj, "rcssservermj-", "with --rcssservermj: ");
 
-  // An empty --simproto, --simspark or --rcssservermj (no ADDRESS) leaves the default; count() tells whether it was
-  // given at all.
   // The Booster SDK's DDS topics in this process (participants/booster_bridge/booster_sdk_bridge.h).
   BoosterSdkOptions& bo = command_line.booster_options;
   CLI::Option* booster = app.add_option("--booster-sdk", bo.domain,
@@ -227,14 +236,12 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
                  "with --booster-sdk: a joint_ctrl sample older than this (ms, by its source timestamp) is refused")
       ->capture_default_str();
 
-  app.parse_complete_callback([&command_line, simproto, simspark, rcssservermj, booster] {
+  app.parse_complete_callback([&command_line, served, booster] {
     command_line.booster = booster->count() > 0;
-    command_line.simproto = simproto->count() > 0;
-    if (command_line.simproto_options.listen.empty()) command_line.simproto_options.listen = "127.0.0.1";
-    command_line.simspark = simspark->count() > 0;
-    if (command_line.simspark_options.listen.empty()) command_line.simspark_options.listen = "127.0.0.1";
-    command_line.rcssservermj = rcssservermj->count() > 0;
-    if (command_line.rcssservermj_options.listen.empty()) command_line.rcssservermj_options.listen = "127.0.0.1";
+    for (const ServedHere& s : served) {
+      *s.given = s.option->count() > 0;
+      if (s.listen->empty()) *s.listen = "127.0.0.1";
+    }
   });
 }
 
