@@ -50,6 +50,15 @@ class LeagueHandle : public FrontEndHandle<Impl, Options, StatsT> {
   uint16_t monitor_port() const;
 };
 
+// Where a 3D-league front-end's cycles spent their wall time, summed: the world (turf-sim stepping and publishing,
+// the DDS or in-memory hops, and what the league sends meanwhile), the front-end after it (the session's cycle, its
+// answers out) and waiting (sync mode: for the agents' answers; real time: the 20 ms pacing).
+struct CycleSplit {
+  using Duration = std::chrono::steady_clock::duration;
+  Duration world{}, front_end{}, waiting{};
+  uint64_t cycles = 0;
+};
+
 // What a 3D-league front-end counts (league_front_end.h keeps them up to date).
 struct LeagueStats {
   uint64_t cycles = 0;
@@ -58,6 +67,7 @@ struct LeagueStats {
   uint64_t dropped_clients = 0;
   uint64_t refused = 0;  // refused input of every kind
   std::map<std::string, uint64_t> refused_by_kind;
+  CycleSplit split;  // since the start
 };
 
 }  // namespace turf

@@ -17,9 +17,10 @@
 //   CountAgents(Stats&)                       the agent counts into the stats
 //   AdmitMonitor(client, address, greeting)   a monitor-port client (FrontEndServer::Hooks::admit)
 //   FromMonitor(client, payload)              a monitor's message
-//   MatchStatus(), ReportSplit()              the match for the status line (agents with a robot, play mode,
-//                                             clock, score); optional: a line before it
-// Stats has cycles, sim_time, agents, dropped_clients, refused, refused_by_kind; Options has the fields used below.
+//   MatchStatus()                             the match for the status line (agents with a robot, play mode,
+//                                             clock, score)
+// Stats has LeagueStats' fields (front_end_handle.h); Options has the fields used below. Each status line is
+// preceded by where the cycles since the last one spent their wall time (CycleSplit).
 #pragma once
 
 #include <fmt/format.h>
@@ -89,7 +90,7 @@ class LeagueFrontEnd {
     hooks.cycles = [&] { return session_->cycle(); };
     hooks.quit = [&] { return session_->quit_requested(); };
     hooks.status = [&] { ReportStatus(); };
-    hooks.waited = [&](std::chrono::steady_clock::duration d) { self().Waited(d); };
+    hooks.waited = [&](std::chrono::steady_clock::duration d) { split_.waiting += d; };
     if (!RunCycleLoop(loop, hooks, stop)) return false;
     if (session_->quit_requested()) spdlog::info("a {} sent (killsim): stopping", L::kNames.monitor);
     ReportStatus();
@@ -108,10 +109,6 @@ class LeagueFrontEnd {
                                                  &rejects_, MakeHooks())) {}
   ~LeagueFrontEnd() = default;
 
-  // Sync mode's wait, for the league's per-cycle split, and that split before the status line (optional).
-  void Waited(std::chrono::steady_clock::duration) {}
-  void ReportSplit() {}
-
   void DropAgent(int agent, const std::string& why) { server_->DropAgent(agent, why); }
 
   // Sends a perception or message framed to an agent.
@@ -127,6 +124,9 @@ class LeagueFrontEnd {
   WatchedStats<Stats> stats_;
 
  private:
+  CycleSplit split_;     // since the start
+  CycleSplit reported_;  // split_ at the last status line
+
   L& self() { return static_cast<L&>(*this); }
 
   static FrontEndServer::Options ServerOptions(const Options& o) {
@@ -158,6 +158,7 @@ class LeagueFrontEnd {
     // The world after the step is converted in the step's job too: a league that steps on a thread of its own
     // (RCSSServerMJ's parallel loop) converts it while the last cycle's perceptions go out.
     std::optional<decltype(World::SnapshotOf(link_->state()))> world;
+    const auto start = std::chrono::steady_clock::now();
     const bool stepped = self().WhileStepping([&] {
       if (!link_->Step(SendRequests(requests), steps_, options_.step_timeout, stop, &error, &warnings)) return false;
       world = World::SnapshotOf(link_->state());
@@ -170,10 +171,15 @@ class LeagueFrontEnd {
       return Attach(stop) || stop();
     }
     const double sim_time = world->time;
+    const auto stepped_at = std::chrono::steady_clock::now();
     session_->Advance(std::move(*world));
     self().SendOutputs();
+    split_.world += stepped_at - start;
+    split_.front_end += std::chrono::steady_clock::now() - stepped_at;
+    ++split_.cycles;
     ReportIssues();
     stats_.Update([&](Stats& s) {
+      s.split = split_;
       s.cycles = session_->cycle();
       s.sim_time = sim_time;
       self().CountAgents(s);
@@ -207,9 +213,22 @@ class LeagueFrontEnd {
 
   void ReportStatus() {
     if (!session_) return;
-    self().ReportSplit();
+    ReportSplit();
     spdlog::info("cycle {} agents {} {} refused {}", session_->cycle(), session_->agents(), self().MatchStatus(),
                  rejects_.Total());
+  }
+
+  // Where the cycles since the last status line spent their wall time.
+  void ReportSplit() {
+    const uint64_t cycles = split_.cycles - reported_.cycles;
+    if (cycles == 0) return;
+    const auto ms = [&](CycleSplit::Duration CycleSplit::*part) {
+      return std::chrono::duration<double, std::milli>(split_.*part - reported_.*part).count() /
+             static_cast<double>(cycles);
+    };
+    spdlog::info("per cycle: world {:.2f} ms, front-end {:.2f} ms, waiting {:.2f} ms ({} cycles)",
+                 ms(&CycleSplit::world), ms(&CycleSplit::front_end), ms(&CycleSplit::waiting), cycles);
+    reported_ = split_;
   }
 
   FrontEndServer::Hooks MakeHooks() {

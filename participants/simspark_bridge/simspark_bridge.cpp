@@ -15,7 +15,6 @@ namespace turf {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 // A monitor's FrontEndClient::role: from an operator's address?
 simspark::TrainerRole RoleOf(const FrontEndClient& c) { return static_cast<simspark::TrainerRole>(c.role); }
@@ -48,7 +47,6 @@ class SimSparkBridgeImpl : public LeagueFrontEnd<SimSparkBridgeImpl, SimSparkWor
   std::chrono::milliseconds AgentTimeout() const { return options_.sync_timeout; }
   // Sync mode without agents: the world waits (a run is the agents' stream alone).
   bool Idle() const { return session_->agents_with_robot() == 0; }
-  void Waited(Clock::duration d) { split_.waiting += d; }
 
   std::unique_ptr<simspark::Session> Start() {
     std::vector<std::string> robots;
@@ -73,12 +71,7 @@ class SimSparkBridgeImpl : public LeagueFrontEnd<SimSparkBridgeImpl, SimSparkWor
 
   template <class Step>
   bool WhileStepping(Step&& step) {
-    const auto start = Clock::now();
-    const bool stepped = step();
-    stepped_at_ = Clock::now();
-    split_.world += stepped_at_ - start;
-    ++split_.cycles;
-    return stepped;
+    return step();
   }
 
   void SendOutputs() {
@@ -91,7 +84,6 @@ class SimSparkBridgeImpl : public LeagueFrontEnd<SimSparkBridgeImpl, SimSparkWor
         if (c.monitor) server_->Send(fd, framed);
     }
     server_->FlushDrops();
-    split_.bridge += Clock::now() - stepped_at_;
   }
 
   void CountAgents(SimSparkBridgeStats& s) const { s.agents = session_->agents(); }
@@ -105,31 +97,12 @@ class SimSparkBridgeImpl : public LeagueFrontEnd<SimSparkBridgeImpl, SimSparkWor
 
   void FromMonitor(FrontEndClient& c, const std::string& payload) { session_->Trainer(payload, RoleOf(c)); }
 
-  // Where a cycle's wall time went, before the status line.
-  void ReportSplit() {
-    if (split_.cycles > 0) {
-      // Where a cycle's wall time went: turf-sim stepping and publishing (with the DDS hops), the bridge's
-      // perceptions, and waiting (agents' answers in sync mode, the 20 ms pacing in real time).
-      auto ms = [&](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count() / split_.cycles; };
-      spdlog::info("per cycle: world {:.2f} ms, bridge {:.2f} ms, waiting {:.2f} ms ({} cycles)", ms(split_.world),
-                   ms(split_.bridge), ms(split_.waiting), split_.cycles);
-      split_ = {};
-    }
-  }
-
   std::string MatchStatus() const {
     const simspark::Game& g = session_->game();
     return fmt::format("({} with robots) play mode {} game time {:.2f} score {}:{}", session_->agents_with_robot(),
                        simspark::PlayModeName(g.play_mode()), g.game_time(), g.score(simspark::Side::kLeft),
                        g.score(simspark::Side::kRight));
   }
-
- private:
-  Clock::time_point stepped_at_;
-  struct {
-    Clock::duration world{}, bridge{}, waiting{};
-    uint64_t cycles = 0;
-  } split_;
 };
 
 template class FrontEndHandle<SimSparkBridgeImpl, SimSparkBridgeOptions, SimSparkBridgeStats>;

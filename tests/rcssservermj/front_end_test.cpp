@@ -231,6 +231,7 @@ TEST(RcssServerMjFrontEnd, SeeHasTheFactsGrammar) {
 }
 
 TEST(RcssServerMjFrontEnd, SyncModeAdvancesOneCyclePerRoundOfActions) {
+  const auto started = std::chrono::steady_clock::now();
   Match match(Fast(false));
   AgentClient a = match.Connect(), b = match.Connect();
   ASSERT_TRUE(a.Send("(init T1 blue 1)"));
@@ -262,6 +263,18 @@ TEST(RcssServerMjFrontEnd, SyncModeAdvancesOneCyclePerRoundOfActions) {
     EXPECT_EQ(qa->now, qb->now);
     now = qa->now;
   }
+  // Where the cycles' wall time went (the status line's split), once the cycle after the last round is counted. In
+  // each round the server waited at least the 100 ms the second answer was held back, less what was left of the
+  // cycle that was stepping meanwhile (the parallel loop sends a perception while the next cycle steps).
+  const CycleSplit split =
+      match.bridge()
+          .WaitForStats([&](const RcssServerMjStats& s) { return s.sim_time >= now + 0.02 - 1e-6; }, 20s)
+          .split;
+  EXPECT_GE(split.waiting, 5 * 100ms - split.world - split.front_end);
+  EXPECT_GT(split.waiting, 0s);
+  EXPECT_GT(split.world, 0s);
+  EXPECT_GT(split.front_end, 0s);
+  EXPECT_LT(split.world + split.front_end + split.waiting, std::chrono::steady_clock::now() - started);
 }
 
 // Each agent answers every perception it gets, in whatever order they come (like separate agent processes): an
