@@ -15,7 +15,6 @@ namespace turf {
 
 namespace {
 
-
 // A monitor's FrontEndClient::role: from an operator's address?
 simspark::TrainerRole RoleOf(const FrontEndClient& c) { return static_cast<simspark::TrainerRole>(c.role); }
 
