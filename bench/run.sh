@@ -105,17 +105,24 @@ rcssservermj_run() {
   local domain=$((90 + RANDOM % 9)) port=$((24100 + RANDOM % 500))
   local flags=(--rcssservermj-no-realtime)
   [[ "$mode" == sync ]] || flags=(--rcssservermj-realtime)
+  local log
+  log=$(mktemp)
   "$BUILD_DIR/participants/sim/turf-sim" --scene "configs/scenes/$scene.yaml" -d "$domain" -p "bench$$" \
     --lockstep --rcssservermj --rcssservermj-agent-port "$port" --rcssservermj-monitor-port $((port + 1)) \
-    "${flags[@]}" --log-level warn &
+    "${flags[@]}" --log-level info >"$log" 2>&1 &
   local sim=$!
   "$BUILD_DIR/bench/turf-bench-rcssservermj" --port "$port" --agents "$agents" --seconds "$SECONDS_SIM" \
     --motion "$motion" --label "$label" --server-pid "$sim" $header || true
   kill -INT "$sim" 2>/dev/null || true
   wait "$sim" 2>/dev/null || true
+  # turf-sim's own account of the run's cycles (its status line's split, printed as it stops).
+  SPLITS+=("$label: $(grep -o 'per cycle: .*' "$log" | tail -1)")
+  grep -E '\[(error|critical)\]' "$log" >&2 || true
+  rm -f "$log"
 }
 
 rcssservermj() {
+  SPLITS=()
   echo "RCSSServerMJ agents -> turf-sim --rcssservermj (22 T1 in the scene, 4 steps of 5 ms per 20 ms cycle); each"
   echo "agent answers every perception with PD commands for its 23 joints: 'upper' sways head, arms and waist with"
   echo "the legs held, 'all' sways every joint; $(nproc) cores"
@@ -124,7 +131,10 @@ rcssservermj() {
   rcssservermj_run 2 sync upper "" rcssservermj_fifa_1v1
   rcssservermj_run 22 sync all
   rcssservermj_run 22 real-time upper
+  printf '%s\n' "${SPLITS[@]}"
   echo "RTF: simulated seconds per wall second over the measured stretch (sync: as fast as the agents answer)."
+  echo "per cycle: turf-sim's split of the run's cycles (its last 10 s of wall time at most): world = its 4 physics steps with the"
+  echo "perceptions sent meanwhile, front-end = the session's work after them, waiting = for the agents' answers."
   echo "server / agents ms/cyc: CPU time (user + system) per 20 ms cycle of turf-sim (all its threads) and of the"
   echo "agents' process, over the same stretch: steadier than RTF on a loaded machine."
   echo "The parked robots of the scene are simulated too (22 T1; the 1v1 scene, rcssservermj_fifa_1v1.yaml, has 2, as"
