@@ -133,8 +133,8 @@ rcssservermj() {
   rcssservermj_run 22 real-time upper
   printf '%s\n' "${SPLITS[@]}"
   echo "RTF: simulated seconds per wall second over the measured stretch (sync: as fast as the agents answer)."
-  echo "per cycle: turf-sim's split of the run's cycles (its last 10 s of wall time at most): world = its 4 physics steps with the"
-  echo "perceptions sent meanwhile, front-end = the session's work after them, waiting = for the agents' answers."
+  echo "per cycle: turf-sim's split of the run's cycles (its last 10 s of wall time at most): world = its 4 physics"
+  echo "steps with the perceptions sent meanwhile, front-end = the session's work after them, waiting = for the agents."
   echo "server / agents ms/cyc: CPU time (user + system) per 20 ms cycle of turf-sim (all its threads) and of the"
   echo "agents' process, over the same stretch: steadier than RTF on a loaded machine."
   echo "The parked robots of the scene are simulated too (22 T1; the 1v1 scene, rcssservermj_fifa_1v1.yaml, has 2, as"
