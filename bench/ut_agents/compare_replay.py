@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Compares two replays of one message stream (replay.py's output, one per server), perception by perception.
 usage: compare_replay.py REF.jsonl OTHER.jsonl [--from K] [--to K] [--window 50]
-Prints, per window of cycles: the RMS difference of the leg joints' angles (deg), of GYR (deg/s, vector), the mean
-ACC z of each (m/s^2) and whether each has stayed upright so far (the agent's low-pass of ACC z above 7 in
+Prints, per window of cycles: the RMS difference of the leg joints' angles (deg), of GYR (deg/s, vector), how far
+each torso turned about its z axis (GYR z summed over the window's 20 ms cycles, deg; counter-clockwise positive),
+the mean ACC z of each (m/s^2) and whether each has stayed upright so far (the agent's low-pass of ACC z above 7 in
 every cycle since --from).
 """
 import argparse, json, math, os, sys
@@ -30,11 +31,12 @@ n = min(len(R), len(O)) if a.k1 is None else min(a.k1, len(R), len(O))
 legs = [j for j in R[0]['hj'] if 'lj' in j]
 lp = {'r': None, 'o': None}
 up = {'r': True, 'o': True}  # upright so far (the agent's low-pass of ACC z above 7 in every cycle)
-print('| cycles | t ref | legs RMS deg | worst joint | GYR RMS deg/s | ACC z ref / other | upright ref / other |')
-print('| --- | --- | --- | --- | --- | --- | --- |')
+print('| cycles | t ref | legs RMS deg | worst joint | GYR RMS deg/s | turn deg ref / other | ACC z ref / other '
+      '| upright ref / other |')
+print('| --- | --- | --- | --- | --- | --- | --- | --- |')
 for w0 in range(a.k0, n, a.window):
     w1 = min(n, w0 + a.window)
-    se, per, ge, az = 0.0, {}, 0.0, [0.0, 0.0]
+    se, per, ge, az, turn = 0.0, {}, 0.0, [0.0, 0.0], [0.0, 0.0]
     for k in range(w0, w1):
         r, o = R[k], O[k]
         for j in legs:
@@ -44,10 +46,12 @@ for w0 in range(a.k0, n, a.window):
         for i, (key, p) in enumerate((('r', r), ('o', o))):
             z = p.get('acc', [0, 0, 0])[2]
             az[i] += z
+            turn[i] += p.get('gyr', [0, 0, 0])[2] * 0.02
             lp[key] = z if lp[key] is None else 0.9 * lp[key] + 0.1 * z
             up[key] = up[key] and lp[key] > 7
     m = w1 - w0
     worst = max(per, key=per.get)
     print(f'| {w0}-{w1 - 1} | {R[w0].get("t", 0):.2f} | {math.sqrt(se / m / len(legs)):.2f} | '
-          f'{worst} {math.sqrt(per[worst] / m):.1f} | {math.sqrt(ge / m):.1f} | {az[0] / m:.1f} / {az[1] / m:.1f} | '
+          f'{worst} {math.sqrt(per[worst] / m):.1f} | {math.sqrt(ge / m):.1f} | {turn[0]:+.1f} / {turn[1]:+.1f} | '
+          f'{az[0] / m:.1f} / {az[1] / m:.1f} | '
           f'{"yes" if up["r"] else "no"} / {"yes" if up["o"] else "no"} |')
