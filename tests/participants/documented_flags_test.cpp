@@ -68,7 +68,8 @@ TEST(DocumentedFlags, EveryFlagOfTheMainReadmeAndDocsExists) {
     offered.insert(flags.begin(), flags.end());
   }
   for (const char* script :
-       {"scripts/soak-tests.sh", "scripts/run.sh", "scripts/test.sh", "scripts/check-format.sh", "bench/run.sh"}) {
+       {"scripts/soak-tests.sh", "scripts/run.sh", "scripts/test.sh", "scripts/check-format.sh", "bench/run.sh",
+        "bench/ut_agents/run_match.sh", "bench/ut_agents/replay.py", "bench/ut_agents/compare_replay.py"}) {
     const std::set<std::string> flags = LongFlags(SourceFile(script));
     offered.insert(flags.begin(), flags.end());
   }
