@@ -8,8 +8,11 @@ answered with nothing; from then on the messages the agent sent in the next reco
 cyc; `(syn)` for a cycle in which it sent nothing), then the perception they step to. Both servers so take every message at
 the same perception index, whatever the machine's speed; needs the server's sync mode. Prints the replay cycle of the
 recorded kick-off (from there the agent walks), for make_replay.py --walk-from.
+--reference-freezes: the stream was recorded on rcssserver3d, which skips a resting robot's step every tenth cycle
+while it hovers (ODE's auto-disable: the perception reads GYR exactly 0 and no joint moved); the hinge commands that
+stepped into such a perception are sent as 0, so another server's joints lose that step's motion too.
 """
-import argparse, json, socket, struct, sys, time
+import argparse, json, re, socket, struct, sys, time
 
 ap = argparse.ArgumentParser()
 ap.add_argument('--port', type=int, required=True)
@@ -17,19 +20,34 @@ ap.add_argument('--host', default='127.0.0.1')
 ap.add_argument('--stream', required=True)
 ap.add_argument('--out', required=True)
 ap.add_argument('--grace', type=int, default=5)
+ap.add_argument('--reference-freezes', action='store_true')
 a = ap.parse_args()
+GYR = re.compile(r'\(GYR \(n torso\) \(rt ([-\d.e]+) ([-\d.e]+) ([-\d.e]+)\)\)')
+HINGE = re.compile(r'\(((?:he|lae|rae|lle|rle)\d+) [-\d.e]+\)')
 
-first, groups, kickoff = None, {}, None
+
+def frozen(msg):
+    """A hovering perception of a skipped step: before the kick-off, GYR exactly 0."""
+    m = GYR.search(msg)
+    return '(pm BeforeKickOff)' in msg and m is not None and all(float(v) == 0 for v in m.groups())
+
+first, groups, kickoff, skipped = None, {}, None, set()
 for line in open(a.stream):
     r = json.loads(line)
     if r['dir'] != 'a2s':
         if kickoff is None and '(pm ' in r['msg'] and '(pm BeforeKickOff)' not in r['msg']:
             kickoff = r['cyc']
+        if a.reference_freezes and frozen(r['msg']):
+            skipped.add(r['cyc'] - 1)  # the messages sent after the perception before it stepped into it
         continue
     if first is None:
         first = r['msg']
         continue
     groups.setdefault(r['cyc'], []).append(r['msg'])
+for c in skipped:
+    groups[c] = [HINGE.sub(r'(\1 0)', m) for m in groups.get(c, [])]
+if a.reference_freezes:
+    print(f'{len(skipped)} skipped steps of the reference: their hinge commands sent as 0', file=sys.stderr)
 cycles = list(range(min(groups), max(groups) + 1))
 
 s = socket.create_connection((a.host, a.port))
