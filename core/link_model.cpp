@@ -78,49 +78,4 @@ std::optional<int64_t> Link::TransmitAcknowledged(int64_t send_ns, int64_t retry
   return std::nullopt;
 }
 
-void SaveLinkParams(const LinkParams& p, StateWriter& out) {
-  out.Put(p.latency);
-  out.Put(p.jitter);
-  out.Put(p.jitter_kind);
-  out.Put(p.loss);
-  out.Put(p.burst.enabled);
-  out.Put(p.burst.p_good_to_bad);
-  out.Put(p.burst.p_bad_to_good);
-  out.Put(p.burst.loss_good);
-  out.Put(p.burst.loss_bad);
-}
-
-LinkParams RestoreLinkParams(StateReader& in) {
-  LinkParams p;
-  p.latency = in.Get<double>();
-  p.jitter = in.Get<double>();
-  p.jitter_kind = in.Enum(JitterKind::kCount);
-  p.loss = in.Get<double>();
-  p.burst.enabled = in.Bool();
-  p.burst.p_good_to_bad = in.Get<double>();
-  p.burst.p_bad_to_good = in.Get<double>();
-  p.burst.loss_good = in.Get<double>();
-  p.burst.loss_bad = in.Get<double>();
-  if (in.ok() && CheckLinkParams(p)[0] != '\0') in.Fail("invalid link parameters");
-  return p;
-}
-
-void Link::Save(StateWriter& out) const {
-  SaveLinkParams(params_, out);
-  rng_.Save(out);
-  out.Put(bad_);
-  out.Put(last_arrival_ns_);
-  out.Put(counters_.sent);
-  out.Put(counters_.lost);
-}
-
-void Link::Restore(StateReader& in) {
-  params_ = RestoreLinkParams(in);
-  rng_.Restore(in);
-  bad_ = in.Bool();
-  last_arrival_ns_ = in.Get<int64_t>();
-  counters_.sent = in.Get<uint64_t>();
-  counters_.lost = in.Get<uint64_t>();
-}
-
 }  // namespace turf

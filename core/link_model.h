@@ -35,8 +35,12 @@ struct LinkParams {
 // Why link parameters are unusable; empty when they are fine.
 const char* CheckLinkParams(const LinkParams& params);
 
-void SaveLinkParams(const LinkParams& params, StateWriter& out);
-LinkParams RestoreLinkParams(StateReader& in);
+template <class Io>
+void Fields(Io& io, IoRef<Io, LinkParams> p) {
+  io(p.latency, p.jitter, InRange(p.jitter_kind, JitterKind::kCount), p.loss, p.burst.enabled, p.burst.p_good_to_bad,
+     p.burst.p_bad_to_good, p.burst.loss_good, p.burst.loss_bad);
+  io.Check(CheckLinkParams(p)[0] == '\0', "invalid link parameters");
+}
 
 struct LinkCounters {
   uint64_t sent = 0;
@@ -59,10 +63,14 @@ class Link {
   // Restarts the stream from `seed` (a world reset).
   void Reset(uint64_t seed);
   // Parameters, random stream, burst state and order guarantee, for snapshots.
-  void Save(StateWriter& out) const;
-  void Restore(StateReader& in);
+  void Save(StateWriter& out) const { Fields(out, *this); }
+  void Restore(StateReader& in) { Fields(in, *this); }
 
  private:
+  template <class Io, class Self>
+  static void Fields(Io& io, Self& self) {
+    io(self.params_, self.rng_, self.bad_, self.last_arrival_ns_, self.counters_.sent, self.counters_.lost);
+  }
   bool Lost();
   double Delay();
 

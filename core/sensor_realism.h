@@ -52,5 +52,6 @@ struct SensorRealism {
 
 // Why the parameters are unusable; empty when they are fine.
 const char* CheckRealism(const SensorRealism& realism);
+const char* CheckCameraRealism(const CameraRealism& camera);
 
 }  // namespace turf

@@ -184,41 +184,18 @@ void SslCameraSystem::Reset() {
   }
 }
 
-void SslCameraSystem::Save(StateWriter& out) const {
-  out.Tag(StateTag("CAMS"));
-  SensorRealism wrapper;
-  wrapper.camera = realism_;
-  SaveRealism(wrapper, out);
-  for (const Stream& s : streams_) {
-    s.values.Save(out);
-    s.link.Save(out);
-    s.stats.Save(out);
-  }
-  out.Put<uint64_t>(pending_.size());
-  for (const Pending& p : pending_) {
-    out.Put(p.arrival_ns);
-    SaveCameraFrame(p.frame, out);
-  }
-  out.Put(captures_);
-  out.Put(next_capture_ns_);
+// Listed once (core/state_io.h).
+template <class Io, class Self>
+void SslCameraSystem::Fields(Io& io, Self& self) {
+  constexpr size_t kMaxPending = 4096;
+  io.Tag(StateTag("CAMS"));
+  io(self.realism_);
+  for (auto& s : self.streams_) io(s.values, s.link, s.stats);
+  io(Sized(self.pending_, kMaxPending), self.captures_, self.next_capture_ns_);
 }
 
-void SslCameraSystem::Restore(StateReader& in) {
-  constexpr size_t kMaxPending = 4096;
-  in.Tag(StateTag("CAMS"));
-  realism_ = RestoreRealism(in).camera;
-  for (Stream& s : streams_) {
-    s.values.Restore(in);
-    s.link.Restore(in);
-    s.stats.Restore(in);
-  }
-  pending_.resize(in.Count(kMaxPending));
-  for (Pending& p : pending_) {
-    p.arrival_ns = in.Get<int64_t>();
-    p.frame = RestoreCameraFrame(in);
-  }
-  captures_ = in.Get<uint64_t>();
-  next_capture_ns_ = in.Get<int64_t>();
-}
+void SslCameraSystem::Save(StateWriter& out) const { Fields(out, *this); }
+
+void SslCameraSystem::Restore(StateReader& in) { Fields(in, *this); }
 
 }  // namespace turf

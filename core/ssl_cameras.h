@@ -98,7 +98,14 @@ class SslCameraSystem {
   struct Pending {
     int64_t arrival_ns;
     CameraFrame frame;
+    template <class Io>
+    friend void Fields(Io& io, IoRef<Io, Pending> p) {
+      io(p.arrival_ns, p.frame);
+    }
   };
+
+  template <class Io, class Self>
+  static void Fields(Io& io, Self& self);
 
   Scene scene_;
   std::vector<CameraSpec> cameras_;

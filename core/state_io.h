@@ -5,8 +5,20 @@
 // exactly; a snapshot is for the same build of turf on the same kind of host.
 // Structs are written field by field (never their padding), so equal states
 // give equal bytes.
+//
+// A struct's fields are listed once, for both directions (cereal's serialize(),
+// in small): `io(a, b, c)` saves them on a StateWriter and restores them on a
+// StateReader. A class lists its fields in a static member template,
+//   template <class Io, class Self> static void Fields(Io& io, Self& self);
+// called from Save (Self const) and Restore; a plain struct in a free overload,
+//   template <class Io> void Fields(Io& io, IoRef<Io, LinkParams> p);
+// which `io(...)` also finds for a nested field. Enums go through InRange(),
+// doubles that must be finite through FiniteValue(), and `io.Check(valid, why)`
+// fails a restore on a combination no save writes.
 #pragma once
 
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -16,8 +28,67 @@
 
 namespace turf {
 
+class StateWriter;
+class StateReader;
+
+// An enum field and the count its values stay below (a restore fails past it).
+template <class E>
+struct Ranged {
+  E& value;
+  std::remove_const_t<E> count;
+};
+template <class E>
+Ranged<E> InRange(E& value, std::remove_const_t<E> count) {
+  return {value, count};
+}
+
+// A double field that a restore requires to be finite.
+template <class D>
+struct FiniteField {
+  D& value;
+};
+template <class D>
+FiniteField<D> FiniteValue(D& value) {
+  return {value};
+}
+
+// A vector field, its length first; a restore fails past `max` elements, or
+// (Exactly) on any length but `n` (a vector whose size the model fixes).
+template <class V>
+struct SizedField {
+  V& items;
+  size_t max;
+  bool exact;
+};
+template <class V>
+SizedField<V> Sized(V& items, size_t max) {
+  return {items, max, false};
+}
+template <class V>
+SizedField<V> Exactly(V& items, size_t n) {
+  return {items, n, true};
+}
+
+// The field type an Io visits: const when saving.
+template <class Io, class T>
+using IoRef = std::conditional_t<Io::kSaving, const T&, T&>;
+
+template <class T, class = void>
+struct HasSaveRestore : std::false_type {};
+template <class T>
+struct HasSaveRestore<T, std::void_t<decltype(&T::Save), decltype(&T::Restore)>> : std::true_type {};
+
 class StateWriter {
  public:
+  static constexpr bool kSaving = true;
+
+  // Saves the fields in order (see the top of this file).
+  template <class... T>
+  void operator()(const T&... fields) {
+    (Field(fields), ...);
+  }
+  void Check(bool /*valid*/, const char* /*why*/) {}
+
   template <class T>
   void Put(T value) {
     static_assert(std::is_arithmetic_v<T> || std::is_enum_v<T>, "fields one by one");
@@ -40,12 +111,52 @@ class StateWriter {
   size_t size() const { return bytes_.size(); }
 
  private:
+  template <class T>
+  void Field(const T& v) {
+    if constexpr (std::is_arithmetic_v<T> || std::is_enum_v<T>) {
+      Put(v);
+    } else if constexpr (HasSaveRestore<T>::value) {
+      v.Save(*this);
+    } else {
+      Fields(*this, v);
+    }
+  }
+  template <class T, size_t N>
+  void Field(const std::array<T, N>& v) {
+    for (const T& x : v) Field(x);
+  }
+  template <class E>
+  void Field(const Ranged<E>& r) {
+    Put(r.value);
+  }
+  template <class D>
+  void Field(const FiniteField<D>& f) {
+    Put(f.value);
+  }
+  template <class V>
+  void Field(const SizedField<V>& v) {
+    Put<uint64_t>(v.items.size());
+    for (const auto& x : v.items) Field(x);
+  }
+
   std::string bytes_;
 };
 
 class StateReader {
  public:
+  static constexpr bool kSaving = false;
+
   explicit StateReader(std::string_view bytes) : bytes_(bytes) {}
+
+  // Restores the fields in order (see the top of this file).
+  template <class... T>
+  void operator()(T&&... fields) {
+    (Field(fields), ...);
+  }
+  // Fails the restore with `why` unless `valid` (checked once the fields read so far are whole).
+  void Check(bool valid, const char* why) {
+    if (ok() && !valid) Fail(why);
+  }
 
   // False once any read failed; the first failure is kept.
   bool ok() const { return error_ == nullptr; }
@@ -109,6 +220,40 @@ class StateReader {
   }
 
  private:
+  template <class T>
+  void Field(T& v) {
+    static_assert(!std::is_enum_v<T>, "enums through InRange()");
+    if constexpr (std::is_same_v<T, bool>) {
+      v = Bool();
+    } else if constexpr (std::is_arithmetic_v<T>) {
+      v = Get<T>();
+    } else if constexpr (HasSaveRestore<T>::value) {
+      v.Restore(*this);
+    } else {
+      Fields(*this, v);
+    }
+  }
+  template <class T, size_t N>
+  void Field(std::array<T, N>& v) {
+    for (T& x : v) Field(x);
+  }
+  template <class E>
+  void Field(Ranged<E>& r) {
+    r.value = Enum(r.count);
+  }
+  template <class D>
+  void Field(FiniteField<D>& f) {
+    f.value = Get<D>();
+    if (!std::isfinite(f.value)) Fail("value not finite");
+  }
+  template <class V>
+  void Field(SizedField<V>& v) {
+    const size_t n = Count(v.max);
+    if (v.exact && n != v.max) Fail("wrong vector length");
+    v.items.resize(v.exact ? v.max : n);
+    for (auto& x : v.items) Field(x);
+  }
+
   std::string_view bytes_;
   size_t pos_ = 0;
   const char* error_ = nullptr;

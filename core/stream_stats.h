@@ -26,20 +26,8 @@ class StreamStats {
     sum_ += latency_s;
     sum_sq_ += latency_s * latency_s;
   }
-  void Save(StateWriter& out) const {
-    out.Put(sent_);
-    out.Put(lost_);
-    out.Put(delivered_);
-    out.Put(sum_);
-    out.Put(sum_sq_);
-  }
-  void Restore(StateReader& in) {
-    sent_ = in.Get<uint64_t>();
-    lost_ = in.Get<uint64_t>();
-    delivered_ = in.Get<uint64_t>();
-    sum_ = in.Get<double>();
-    sum_sq_ = in.Get<double>();
-  }
+  void Save(StateWriter& out) const { Fields(out, *this); }
+  void Restore(StateReader& in) { Fields(in, *this); }
   // The window so far; starts a new one.
   StreamWindow Take() {
     StreamWindow w{sent_, lost_, delivered_, 0.0, 0.0};
@@ -53,6 +41,11 @@ class StreamStats {
   }
 
  private:
+  template <class Io, class Self>
+  static void Fields(Io& io, Self& self) {
+    io(self.sent_, self.lost_, self.delivered_, self.sum_, self.sum_sq_);
+  }
+
   uint64_t sent_ = 0, lost_ = 0, delivered_ = 0;
   double sum_ = 0.0, sum_sq_ = 0.0;
 };

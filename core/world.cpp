@@ -110,47 +110,29 @@ void World::Reset() {
   last_good_.Accept(model_.get(), data_.get());
 }
 
+// The fields after the frame counter, listed once (core/state_io.h).
+template <class Io, class Self>
+void World::Fields(Io& io, Self& self) {
+  io(self.floor_normal_force_, self.last_good_, self.health_.containment_corrections,
+     self.health_.instability_recoveries, self.health_.solver_capped_steps);
+  for (auto& slot : self.robots_) {
+    io(slot.on_field, slot.command, slot.command_time_ns, slot.has_command, slot.kick, slot.ball_contact,
+       slot.kick_count, InRange(slot.last_kick, kKickEnd));
+  }
+}
+
 void World::Save(StateWriter& out) const {
   out.Tag(StateTag("SSLW"));
   SaveMjData(model_.get(), data_.get(), out);
   out.Put(frame_);
-  out.Put(floor_normal_force_);
-  last_good_.Save(out);
-  out.Put(health_.containment_corrections);
-  out.Put(health_.instability_recoveries);
-  out.Put(health_.solver_capped_steps);
-  for (const RobotSlot& slot : robots_) {
-    out.Put(slot.on_field);
-    SaveCommand(slot.command, out);
-    out.Put(slot.command_time_ns);
-    out.Put(slot.has_command);
-    SaveArmedKick(slot.kick, out);
-    out.Put(slot.ball_contact);
-    out.Put(slot.kick_count);
-    out.Put(slot.last_kick);
-  }
+  Fields(out, *this);
 }
 
 void World::Restore(StateReader& in) {
   in.Tag(StateTag("SSLW"));
   RestoreMjData(model_.get(), data_.get(), in);
   frame_ = RestoreFrame(in, step_ns_);
-  floor_normal_force_ = in.Get<double>();
-  last_good_.Restore(in);
-  health_.containment_corrections = in.Get<uint64_t>();
-  health_.instability_recoveries = in.Get<uint64_t>();
-  health_.solver_capped_steps = in.Get<uint64_t>();
-  for (RobotSlot& slot : robots_) {
-    slot.on_field = in.Bool();
-    slot.command = RestoreCommand(in);
-    if (in.ok() && CheckCommand(slot.command) != InputError::kOk) in.Fail("invalid command");
-    slot.command_time_ns = in.Get<int64_t>();
-    slot.has_command = in.Bool();
-    slot.kick = RestoreArmedKick(in);
-    slot.ball_contact = in.Bool();
-    slot.kick_count = in.Get<uint32_t>();
-    slot.last_kick = in.Enum(static_cast<KickKind>(3));
-  }
+  Fields(in, *this);
 }
 
 void World::PlaceRobot(RobotSlot& slot, double x, double y, double yaw, const Vec3& velocity) {

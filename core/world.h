@@ -88,6 +88,9 @@ class World : Pinned {
  private:
   struct RobotSlot;
 
+  template <class Io, class Self>
+  static void Fields(Io& io, Self& self);
+
   RobotKinematics Kinematics(const RobotSlot& slot) const;
   BallState Ball() const;
   double FloorNormalForce() const;

@@ -32,60 +32,24 @@ std::string StreamName(const LeggedScene& scene, int robot, LeggedStream s) {
   return "legged/" + scene.robots[robot].name + "/" + LeggedStreamName(s);
 }
 
-// The stream's fields of a sample (legged_kernel.h says which), in one order
-// for saving and restoring: `io` is a SampleWriter (State: const) or a
-// SampleReader, whose robot_state already has the robot's structure.
-template <class State, class Io>
-void SampleFields(LeggedStream stream, State& r, Io& io) {
+// The stream's fields of a sample (legged_kernel.h says which), listed once
+// (core/state_io.h); restored into a robot_state that already has the robot's
+// structure.
+template <class Io, class State>
+void SampleFields(Io& io, LeggedStream stream, State& r) {
+  const size_t joints = r.joint_names.size();
   switch (stream) {
     case LeggedStream::kJoints:
-      io.Joints(r.joint_positions, r.joint_names.size());
-      io.Joints(r.joint_velocities, r.joint_names.size());
-      io.Joints(r.joint_efforts, r.joint_names.size());
+      io(Exactly(r.joint_positions, joints), Exactly(r.joint_velocities, joints), Exactly(r.joint_efforts, joints));
       break;
     case LeggedStream::kImu:
-      io.Array(r.orientation);
-      io.Array(r.gyro);
-      io.Array(r.accelerometer);
-      io.Array(r.base_position);
-      io.Array(r.base_orientation);
-      io.Array(r.base_velocity);
+      io(r.orientation, r.gyro, r.accelerometer, r.base_position, r.base_orientation, r.base_velocity);
       break;
     default:
-      for (auto& f : r.forces) {
-        io.Values(f.values);
-        io.Flag(f.contact);
-        io.Array(f.force);
-        io.Array(f.point);
-      }
+      for (auto& f : r.forces) io(Sized(f.values, kMaxValues), f.contact, f.force, f.point);
       break;
   }
 }
-
-struct SampleWriter {
-  StateWriter& out;
-  void Joints(const std::vector<double>& v, size_t) { out.Doubles(v); }
-  void Values(const std::vector<double>& v) { out.Doubles(v); }
-  void Flag(bool b) { out.Put(b); }
-  template <size_t N>
-  void Array(const std::array<double, N>& a) {
-    for (double v : a) out.Put(v);
-  }
-};
-
-struct SampleReader {
-  StateReader& in;
-  void Joints(std::vector<double>& v, size_t n) { in.Doubles(&v, n); }
-  void Values(std::vector<double>& v) {
-    v.resize(in.Count(kMaxValues));
-    in.Bytes(v.data(), v.size() * sizeof(double));
-  }
-  void Flag(bool& b) { b = in.Bool(); }
-  template <size_t N>
-  void Array(std::array<double, N>& a) {
-    for (double& v : a) v = in.Get<double>();
-  }
-};
 
 // The sample of one stream: the robot's name, id and has_imu and that stream's fields, nothing else (the joint
 // stream carries no links, the IMU no joints): three whole copies of every robot at every frame cost more than the
@@ -241,52 +205,38 @@ void LeggedKernel::CollectStats() {
   });
 }
 
+// The sections before the samples in flight, listed once (core/state_io.h).
+template <class Io, class Self>
+void LeggedKernel::Fields(Io& io, Self& self) {
+  io(self.world_, self.realism_);
+  io.Tag(StateTag("LSTR"));
+  for (auto& s : self.streams_) io(s.link, s.stats);
+}
+
 void LeggedKernel::SaveTo(StateWriter& out) const {
-  world_.Save(out);
-  SaveRealism(realism_, out);
-  out.Tag(StateTag("LSTR"));
-  for (const Stream& s : streams_) {
-    s.link.Save(out);
-    s.stats.Save(out);
-  }
+  Fields(out, *this);
   out.Put<uint64_t>(in_flight_.size());
   for (const InFlight& f : in_flight_) {
-    out.Put(f.arrival_ns);
-    out.Put(f.sample.stream);
-    out.Put(f.sample.robot);
-    out.Put(f.sample.time_ns);
-    out.Put(f.sample.frame);
-    SampleWriter writer{out};
-    SampleFields(f.sample.stream, f.sample.robot_state, writer);
+    out(f.arrival_ns, f.sample.stream, f.sample.robot, f.sample.time_ns, f.sample.frame);
+    SampleFields(out, f.sample.stream, f.sample.robot_state);
   }
-  stats_.Save(out);
+  out(stats_);
 }
 
 void LeggedKernel::RestoreFrom(StateReader& in) {
-  world_.Restore(in);
-  realism_ = RestoreRealism(in);
-  in.Tag(StateTag("LSTR"));
-  for (Stream& s : streams_) {
-    s.link.Restore(in);
-    s.stats.Restore(in);
-  }
+  Fields(in, *this);
   world_.State(&scratch_);  // each robot's structure, for the samples
   in_flight_.resize(in.Count(kMaxInFlight));
   for (InFlight& f : in_flight_) {
-    f.arrival_ns = in.Get<int64_t>();
-    f.sample.stream = in.Enum(LeggedStream::kCount);
-    f.sample.robot = in.Get<int>();
-    f.sample.time_ns = in.Get<int64_t>();
-    f.sample.frame = in.Get<uint64_t>();
+    in(f.arrival_ns, InRange(f.sample.stream, LeggedStream::kCount), f.sample.robot, f.sample.time_ns, f.sample.frame);
     if (f.sample.robot < 0 || f.sample.robot >= world_.RobotCount()) {
       in.Fail("sample of an unknown robot");
       return;
     }
     f.sample.robot_state = StreamFields(scratch_.robots[f.sample.robot], f.sample.stream);
-    SampleReader reader{in};
-    SampleFields(f.sample.stream, f.sample.robot_state, reader);
+    SampleFields(in, f.sample.stream, f.sample.robot_state);
   }
-  stats_.Restore(in);
+  in(stats_);
   released_.clear();
 }
 

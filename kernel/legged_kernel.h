@@ -98,6 +98,8 @@ class LeggedKernel : public Snapshots<LeggedKernel, KernelKind::kLegged> {
   void SendSensorFrame();
   void Release();
   void CollectStats();
+  template <class Io, class Self>
+  static void Fields(Io& io, Self& self);
   void SaveTo(StateWriter& out) const;
   void RestoreFrom(StateReader& in);
 

@@ -130,51 +130,26 @@ void SslKernel::CollectStats() {
   });
 }
 
+// The sections before the last feedback, listed once (core/state_io.h).
+template <class Io, class Self>
+void SslKernel::Fields(Io& io, Self& self) {
+  io(self.world_, self.cameras_, self.realism_);
+  io.Tag(StateTag("RADI"));
+  for (int t = 0; t < kTeamCount; ++t)
+    io(self.command_links_[t], self.command_stats_[t], Sized(self.pending_[t], kMaxPendingCommands));
+  io(self.stats_);
+}
+
 void SslKernel::SaveTo(StateWriter& out) const {
-  world_.Save(out);
-  cameras_.Save(out);
-  SaveRealism(realism_, out);
-  out.Tag(StateTag("RADI"));
-  for (int t = 0; t < kTeamCount; ++t) {
-    command_links_[t].Save(out);
-    command_stats_[t].Save(out);
-    out.Put<uint64_t>(pending_[t].size());
-    for (const PendingCommand& p : pending_[t]) {
-      out.Put(p.due_ns);
-      out.Put(p.sent_ns);
-      SaveCommand(p.command, out);
-    }
-  }
-  stats_.Save(out);
-  for (const RobotSnapshot& r : last_feedback_) {
-    out.Put(r.ball_contact);
-    out.Put(r.kick_count);
-  }
+  Fields(out, *this);
+  for (const RobotSnapshot& r : last_feedback_) out(r.ball_contact, r.kick_count);
 }
 
 void SslKernel::RestoreFrom(StateReader& in) {
-  world_.Restore(in);
-  cameras_.Restore(in);
-  realism_ = RestoreRealism(in);
-  in.Tag(StateTag("RADI"));
-  for (int t = 0; t < kTeamCount; ++t) {
-    command_links_[t].Restore(in);
-    command_stats_[t].Restore(in);
-    pending_[t].resize(in.Count(kMaxPendingCommands));
-    for (PendingCommand& p : pending_[t]) {
-      p.due_ns = in.Get<int64_t>();
-      p.sent_ns = in.Get<int64_t>();
-      p.command = RestoreCommand(in);
-      if (in.ok() && CheckCommand(p.command) != InputError::kOk) in.Fail("invalid pending command");
-    }
-  }
-  stats_.Restore(in);
+  Fields(in, *this);
   world_.Snapshot(&state_);
   last_feedback_ = state_.robots;
-  for (RobotSnapshot& r : last_feedback_) {
-    r.ball_contact = in.Bool();
-    r.kick_count = in.Get<uint32_t>();
-  }
+  for (RobotSnapshot& r : last_feedback_) in(r.ball_contact, r.kick_count);
   camera_frames_.clear();
   feedback_.clear();
 }

@@ -80,8 +80,14 @@ class SslKernel : public Snapshots<SslKernel, KernelKind::kSsl> {
     int64_t due_ns;
     int64_t sent_ns;
     RobotCommand command;
+    template <class Io>
+    friend void Fields(Io& io, IoRef<Io, PendingCommand> p) {
+      io(p.due_ns, p.sent_ns, p.command);
+    }
   };
 
+  template <class Io, class Self>
+  static void Fields(Io& io, Self& self);
   void SaveTo(StateWriter& out) const;
   void RestoreFrom(StateReader& in);
   void StagePre();

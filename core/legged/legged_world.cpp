@@ -257,79 +257,42 @@ std::vector<LeggedGeom> LeggedWorld::RobotGeoms(int robot) const {
   return out;
 }
 
+// The fields after the frame counter, listed once (core/state_io.h).
+template <class Io, class Self>
+void LeggedWorld::Fields(Io& io, Self& self) {
+  io(self.last_good_, self.health_.instability_recoveries, self.health_.solver_capped_steps,
+     self.steps_since_stop_test_, self.commanded_);
+  io.Check(self.steps_since_stop_test_ >= 0 && self.steps_since_stop_test_ <= 1'000'000,
+           "stop step counter out of range");
+  for (auto& t : self.ball_touch_ns_) {
+    io(t);
+    io.Check(t >= -1 && t <= self.time_ns(), "ball touch time out of range");
+  }
+  for (auto& r : self.robots_) {
+    for (auto& j : r.joints) {
+      io(InRange(j.command.mode, static_cast<JointMode>(kJointModeCount)), j.command.value, j.command.kp, j.command.kd,
+         j.command.dq, j.command.tau, j.reference, j.effort, j.row);
+      io.Check(j.row >= -1 && j.row < self.model_->njmax, "motor row out of range");
+      io(j.stop, j.stop_target);
+      io.Check(j.stop >= 0 && j.stop <= 2 && std::isfinite(j.stop_target), "joint stop out of range");
+      io(j.impulse);
+      io.Check(j.impulse >= 0.0 && j.impulse <= 1e6, "motor impulse out of range");
+    }
+  }
+}
+
 void LeggedWorld::Save(StateWriter& out) const {
   out.Tag(StateTag("LEGW"));
   SaveMjData(model_.get(), data_.get(), out);
   out.Put(frame_);
-  last_good_.Save(out);
-  out.Put(health_.instability_recoveries);
-  out.Put(health_.solver_capped_steps);
-  out.Put(steps_since_stop_test_);
-  out.Put<uint8_t>(commanded_ ? 1 : 0);
-  for (int64_t t : ball_touch_ns_) out.Put(t);
-  for (const RobotSlot& r : robots_) {
-    for (const JointSlot& j : r.joints) {
-      out.Put(j.command.mode);
-      out.Put(j.command.value);
-      out.Put(j.command.kp);
-      out.Put(j.command.kd);
-      out.Put(j.command.dq);
-      out.Put(j.command.tau);
-      out.Put(j.reference);
-      out.Put(j.effort);
-      out.Put(j.row);
-      out.Put(j.stop);
-      out.Put(j.stop_target);
-      out.Put(j.impulse);
-    }
-  }
+  Fields(out, *this);
 }
 
 void LeggedWorld::Restore(StateReader& in) {
   in.Tag(StateTag("LEGW"));
   RestoreMjData(model_.get(), data_.get(), in);
   frame_ = RestoreFrame(in, step_ns_);
-  last_good_.Restore(in);
-  health_.instability_recoveries = in.Get<uint64_t>();
-  health_.solver_capped_steps = in.Get<uint64_t>();
-  steps_since_stop_test_ = in.Get<int>();
-  commanded_ = in.Bool();
-  if (steps_since_stop_test_ < 0 || steps_since_stop_test_ > 1'000'000) {
-    in.Fail("stop step counter out of range");
-    steps_since_stop_test_ = 0;
-  }
-  for (int64_t& t : ball_touch_ns_) {
-    t = in.Get<int64_t>();
-    if (t < -1 || t > time_ns()) {
-      in.Fail("ball touch time out of range");
-      t = -1;
-    }
-  }
-  for (RobotSlot& r : robots_) {
-    for (JointSlot& j : r.joints) {
-      j.command.mode = in.Enum(static_cast<JointMode>(kJointModeCount));
-      j.command.value = in.Get<double>();
-      j.command.kp = in.Get<double>();
-      j.command.kd = in.Get<double>();
-      j.command.dq = in.Get<double>();
-      j.command.tau = in.Get<double>();
-      j.reference = in.Get<double>();
-      j.effort = in.Get<double>();
-      j.row = in.Get<int>();
-      if (j.row < -1 || j.row >= model_->njmax) in.Fail("motor row out of range");
-      j.stop = in.Get<int>();
-      j.stop_target = in.Get<double>();
-      if (j.stop < 0 || j.stop > 2 || !std::isfinite(j.stop_target)) {
-        in.Fail("joint stop out of range");
-        j.stop = 0;
-      }
-      j.impulse = in.Get<double>();
-      if (!(j.impulse >= 0.0 && j.impulse <= 1e6)) {
-        in.Fail("motor impulse out of range");
-        j.impulse = 0.0;
-      }
-    }
-  }
+  Fields(in, *this);
 }
 
 void LeggedWorld::Reset() {

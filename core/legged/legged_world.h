@@ -216,6 +216,9 @@ class LeggedWorld : Pinned {
   struct SensorRef;
   struct RobotSlot;
 
+  template <class Io, class Self>
+  static void Fields(Io& io, Self& self);
+
   void StageStops();
   void LatchStop(JointSlot* joint) const;
   void StopRow(const JointSlot& joint, int row);

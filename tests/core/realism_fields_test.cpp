@@ -28,7 +28,7 @@ double ValidValue(const RealismFieldInfo& info, size_t i, double avoid) {
 
 std::string Snapshot(const SensorRealism& r) {
   StateWriter out;
-  SaveRealism(r, out);
+  out(r);
   return out.Take();
 }
 

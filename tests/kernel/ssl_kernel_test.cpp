@@ -28,7 +28,7 @@ void RecordOutputs(const SslKernel& k, StateWriter& out) {
     out.Put(r.ball_contact);
     out.Put(r.kick_count);
   }
-  for (const CameraFrame& f : k.camera_frames()) SaveCameraFrame(f, out);
+  for (const CameraFrame& f : k.camera_frames()) out(f);
   for (const RobotSnapshot& r : k.feedback()) {
     out.Put(r.id);
     out.Put(r.kick_count);
