@@ -40,6 +40,27 @@ inline uint64_t RestoreFrame(StateReader& in, int64_t step_ns) {
   return 0;
 }
 
+// A world's MuJoCo data and frame counter as one snapshot field (state_io.h): `Frame` is const when saving.
+template <class Frame>
+struct MjWorldState {
+  const mjModel_* model;
+  mjData_* data;
+  Frame& frame;
+  int64_t step_ns;
+  void Save(StateWriter& out) const {
+    SaveMjData(model, data, out);
+    out.Put(frame);
+  }
+  void Restore(StateReader& in) {
+    RestoreMjData(model, data, in);
+    frame = RestoreFrame(in, step_ns);
+  }
+};
+template <class Frame>
+MjWorldState<Frame> MjWorld(const MjModelPtr& model, const MjDataPtr& data, Frame& frame, int64_t step_ns) {
+  return {model.get(), data.get(), frame, step_ns};
+}
+
 // The positions of the last step that stayed finite.
 class LastGoodState {
  public:

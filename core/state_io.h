@@ -12,8 +12,13 @@
 //   template <class Io, class Self> static void Fields(Io& io, Self& self);
 // called from Save (Self const) and Restore; a plain struct in a free overload,
 //   template <class Io> void Fields(Io& io, IoRef<Io, LinkParams> p);
-// which `io(...)` also finds for a nested field. Enums go through InRange(),
-// doubles that must be finite through FiniteValue(), and `io.Check(valid, why)`
+// which `io(...)` also finds for a nested field. Also visited: std::array,
+// std::optional (a presence flag first), std::pair, std::string (at most
+// kMaxSnapshotString bytes), Eigen's fixed-size vectors and quaternions (finite
+// on restore), vectors and maps through Sized()/Exactly() (the length first;
+// a map refuses a key twice). An enum is checked below its kCount, or below
+// the count an EnumCount(E) overload next to it names, or InRange() gives;
+// doubles that must be finite go through FiniteValue(); `io.Check(valid, why)`
 // fails a restore on a combination no save writes.
 #pragma once
 
@@ -21,15 +26,26 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace turf {
 
 class StateWriter;
 class StateReader;
+
+inline constexpr size_t kMaxSnapshotString = 256;  // a name or message in a snapshot
+
+// The count an enum's values stay below: its kCount; an enum without one
+// declares `constexpr E EnumCount(E)` next to it (found by ADL).
+template <class E>
+constexpr auto EnumCount(E) -> decltype(E::kCount) {
+  return E::kCount;
+}
 
 // An enum field and the count its values stay below (a restore fails past it).
 template <class E>
@@ -78,6 +94,22 @@ struct HasSaveRestore : std::false_type {};
 template <class T>
 struct HasSaveRestore<T, std::void_t<decltype(&T::Save), decltype(&T::Restore)>> : std::true_type {};
 
+// Eigen's fixed-size vectors (their coefficients) and quaternions (x, y, z, w), told apart without Eigen.
+template <class T, class = void>
+struct IsFixedVector : std::false_type {};
+template <class T>
+struct IsFixedVector<T, std::enable_if_t<(T::SizeAtCompileTime > 0)>> : std::true_type {};
+template <class T, class = void>
+struct IsQuaternion : std::false_type {};
+template <class T>
+struct IsQuaternion<T, std::void_t<decltype(std::declval<T&>().coeffs()), decltype(std::declval<T&>().w())>>
+    : std::true_type {};
+
+template <class T, class = void>
+struct IsMap : std::false_type {};
+template <class T>
+struct IsMap<T, std::void_t<typename T::key_type, typename T::mapped_type>> : std::true_type {};
+
 class StateWriter {
  public:
   static constexpr bool kSaving = true;
@@ -115,15 +147,30 @@ class StateWriter {
   void Field(const T& v) {
     if constexpr (std::is_arithmetic_v<T> || std::is_enum_v<T>) {
       Put(v);
+    } else if constexpr (IsQuaternion<T>::value) {
+      for (int k = 0; k < 4; ++k) Put(v.coeffs()[k]);
+    } else if constexpr (IsFixedVector<T>::value) {
+      for (int k = 0; k < T::SizeAtCompileTime; ++k) Put(v[k]);
     } else if constexpr (HasSaveRestore<T>::value) {
       v.Save(*this);
     } else {
       Fields(*this, v);
     }
   }
+  void Field(const std::string& v) { Str(v); }
   template <class T, size_t N>
   void Field(const std::array<T, N>& v) {
     for (const T& x : v) Field(x);
+  }
+  template <class T>
+  void Field(const std::optional<T>& v) {
+    Put(v.has_value());
+    if (v) Field(*v);
+  }
+  template <class A, class B>
+  void Field(const std::pair<A, B>& v) {
+    Field(v.first);
+    Field(v.second);
   }
   template <class E>
   void Field(const Ranged<E>& r) {
@@ -222,20 +269,42 @@ class StateReader {
  private:
   template <class T>
   void Field(T& v) {
-    static_assert(!std::is_enum_v<T>, "enums through InRange()");
     if constexpr (std::is_same_v<T, bool>) {
       v = Bool();
+    } else if constexpr (std::is_enum_v<T>) {
+      v = Enum(EnumCount(v));
     } else if constexpr (std::is_arithmetic_v<T>) {
       v = Get<T>();
+    } else if constexpr (IsQuaternion<T>::value) {
+      for (int k = 0; k < 4; ++k) v.coeffs()[k] = Finite();
+    } else if constexpr (IsFixedVector<T>::value) {
+      for (int k = 0; k < T::SizeAtCompileTime; ++k) v[k] = Finite();
     } else if constexpr (HasSaveRestore<T>::value) {
       v.Restore(*this);
     } else {
       Fields(*this, v);
     }
   }
+  void Field(std::string& v) { v = Str(kMaxSnapshotString); }
   template <class T, size_t N>
   void Field(std::array<T, N>& v) {
     for (T& x : v) Field(x);
+  }
+  template <class T>
+  void Field(std::optional<T>& v) {
+    v.reset();
+    if (!Bool()) return;
+    Field(v.emplace());
+  }
+  template <class A, class B>
+  void Field(std::pair<A, B>& v) {
+    Field(v.first);
+    Field(v.second);
+  }
+  double Finite() {
+    const double v = Get<double>();
+    if (!std::isfinite(v)) Fail("value not finite");
+    return v;
   }
   template <class E>
   void Field(Ranged<E>& r) {
@@ -243,15 +312,23 @@ class StateReader {
   }
   template <class D>
   void Field(FiniteField<D>& f) {
-    f.value = Get<D>();
-    if (!std::isfinite(f.value)) Fail("value not finite");
+    f.value = Finite();
   }
   template <class V>
   void Field(SizedField<V>& v) {
     const size_t n = Count(v.max);
     if (v.exact && n != v.max) Fail("wrong vector length");
-    v.items.resize(v.exact ? v.max : n);
-    for (auto& x : v.items) Field(x);
+    if constexpr (IsMap<V>::value) {
+      v.items.clear();
+      for (size_t i = 0; i < n && ok(); ++i) {
+        std::pair<typename V::key_type, typename V::mapped_type> item;
+        Field(item);
+        if (!v.items.insert(std::move(item)).second) Fail("a key twice");
+      }
+    } else {
+      v.items.resize(v.exact ? v.max : n);
+      for (auto& x : v.items) Field(x);
+    }
   }
 
   std::string_view bytes_;

@@ -110,9 +110,11 @@ void World::Reset() {
   last_good_.Accept(model_.get(), data_.get());
 }
 
-// The fields after the frame counter, listed once (core/state_io.h).
+// Listed once (core/state_io.h).
 template <class Io, class Self>
 void World::Fields(Io& io, Self& self) {
+  io.Tag(StateTag("SSLW"));
+  io(MjWorld(self.model_, self.data_, self.frame_, self.step_ns_));
   io(self.floor_normal_force_, self.last_good_, self.health_.containment_corrections,
      self.health_.instability_recoveries, self.health_.solver_capped_steps);
   for (auto& slot : self.robots_) {
@@ -121,19 +123,9 @@ void World::Fields(Io& io, Self& self) {
   }
 }
 
-void World::Save(StateWriter& out) const {
-  out.Tag(StateTag("SSLW"));
-  SaveMjData(model_.get(), data_.get(), out);
-  out.Put(frame_);
-  Fields(out, *this);
-}
+void World::Save(StateWriter& out) const { Fields(out, *this); }
 
-void World::Restore(StateReader& in) {
-  in.Tag(StateTag("SSLW"));
-  RestoreMjData(model_.get(), data_.get(), in);
-  frame_ = RestoreFrame(in, step_ns_);
-  Fields(in, *this);
-}
+void World::Restore(StateReader& in) { Fields(in, *this); }
 
 void World::PlaceRobot(RobotSlot& slot, double x, double y, double yaw, const Vec3& velocity) {
   data_->qpos[slot.qpos] = x;

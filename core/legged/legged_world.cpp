@@ -257,9 +257,11 @@ std::vector<LeggedGeom> LeggedWorld::RobotGeoms(int robot) const {
   return out;
 }
 
-// The fields after the frame counter, listed once (core/state_io.h).
+// Listed once (core/state_io.h).
 template <class Io, class Self>
 void LeggedWorld::Fields(Io& io, Self& self) {
+  io.Tag(StateTag("LEGW"));
+  io(MjWorld(self.model_, self.data_, self.frame_, self.step_ns_));
   io(self.last_good_, self.health_.instability_recoveries, self.health_.solver_capped_steps,
      self.steps_since_stop_test_, self.commanded_);
   io.Check(self.steps_since_stop_test_ >= 0 && self.steps_since_stop_test_ <= 1'000'000,
@@ -281,19 +283,9 @@ void LeggedWorld::Fields(Io& io, Self& self) {
   }
 }
 
-void LeggedWorld::Save(StateWriter& out) const {
-  out.Tag(StateTag("LEGW"));
-  SaveMjData(model_.get(), data_.get(), out);
-  out.Put(frame_);
-  Fields(out, *this);
-}
+void LeggedWorld::Save(StateWriter& out) const { Fields(out, *this); }
 
-void LeggedWorld::Restore(StateReader& in) {
-  in.Tag(StateTag("LEGW"));
-  RestoreMjData(model_.get(), data_.get(), in);
-  frame_ = RestoreFrame(in, step_ns_);
-  Fields(in, *this);
-}
+void LeggedWorld::Restore(StateReader& in) { Fields(in, *this); }
 
 void LeggedWorld::Reset() {
   // The joint stops rewrite the model's margins each step (StageStops): back to the compiled ones, so that a reset
