@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -39,6 +40,7 @@ class StateWriter;
 class StateReader;
 
 inline constexpr size_t kMaxSnapshotString = 256;  // a name or message in a snapshot
+inline constexpr size_t kMaxSnapshotItems = 4096;  // a vector or map without Sized(): robots, joints, moves
 
 // The count an enum's values stay below: its kCount; an enum without one
 // declares `constexpr E EnumCount(E)` next to it (found by ADL).
@@ -58,7 +60,7 @@ Ranged<E> InRange(E& value, std::remove_const_t<E> count) {
   return {value, count};
 }
 
-// A double field that a restore requires to be finite.
+// A double field (or array of doubles) that a restore requires to be finite.
 template <class D>
 struct FiniteField {
   D& value;
@@ -68,8 +70,9 @@ FiniteField<D> FiniteValue(D& value) {
   return {value};
 }
 
-// A vector field, its length first; a restore fails past `max` elements, or
-// (Exactly) on any length but `n` (a vector whose size the model fixes).
+// A vector or map field, its length first; a restore fails past `max` elements
+// (kMaxSnapshotItems without Sized()), or (Exactly) on any length but `n` (a
+// vector whose size the model fixes).
 template <class V>
 struct SizedField {
   V& items;
@@ -178,7 +181,15 @@ class StateWriter {
   }
   template <class D>
   void Field(const FiniteField<D>& f) {
-    Put(f.value);
+    Field(f.value);
+  }
+  template <class T, class A>
+  void Field(const std::vector<T, A>& v) {
+    Field(Sized(v, kMaxSnapshotItems));
+  }
+  template <class K, class T, class C, class A>
+  void Field(const std::map<K, T, C, A>& v) {
+    Field(Sized(v, kMaxSnapshotItems));
   }
   template <class V>
   void Field(const SizedField<V>& v) {
@@ -312,7 +323,21 @@ class StateReader {
   }
   template <class D>
   void Field(FiniteField<D>& f) {
-    f.value = Finite();
+    if constexpr (std::is_arithmetic_v<D>) {
+      f.value = Finite();
+    } else {
+      for (auto& x : f.value) x = Finite();
+    }
+  }
+  template <class T, class A>
+  void Field(std::vector<T, A>& v) {
+    SizedField<std::vector<T, A>> sized = Sized(v, kMaxSnapshotItems);
+    Field(sized);
+  }
+  template <class K, class T, class C, class A>
+  void Field(std::map<K, T, C, A>& v) {
+    SizedField<std::map<K, T, C, A>> sized = Sized(v, kMaxSnapshotItems);
+    Field(sized);
   }
   template <class V>
   void Field(SizedField<V>& v) {

@@ -251,6 +251,10 @@ class Session {
   struct TorsoPose {
     Eigen::Vector3d position = Eigen::Vector3d::Zero();
     Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+    template <class Io>
+    friend void Fields(Io& io, IoRef<Io, TorsoPose> t) {
+      io(t.position, t.orientation);
+    }
   };
   std::map<std::string, std::vector<TorsoPose>> torso_poses_;
   void RecordTorsoPoses(const WorldSnapshot& world);

@@ -14,145 +14,59 @@ namespace turf::simspark {
 namespace {
 
 constexpr uint32_t kLeagueVersion = 7;
-constexpr size_t kMaxItems = 4096;  // robots, joints, links, moves, players: far above any scene
-constexpr size_t kMaxName = 256;    // a robot, joint, link or team name
-
-void SaveWorld(const WorldSnapshot& w, StateWriter& out) {
-  out.Put(w.time);
-  PutVector(w.ball, out);
-  PutVector(w.ball_velocity, out);
-  out.Put<uint64_t>(w.robots.size());
-  for (const RobotSnapshot& r : w.robots) {
-    out.Str(r.name);
-    out.Put<uint64_t>(r.joint_names.size());
-    for (const std::string& j : r.joint_names) out.Str(j);
-    out.Doubles(r.joint_positions);
-    PutArray(r.gyro, out);
-    PutArray(r.accelerometer, out);
-    out.Put<uint64_t>(r.feet.size());
-    for (const RobotSnapshot::Foot& f : r.feet) {
-      out.Str(f.name);
-      out.Put(f.contact);
-      PutArray(f.point, out);
-      PutArray(f.force, out);
-    }
-    out.Put<uint64_t>(r.links.size());
-    for (const RobotSnapshot::Link& l : r.links) {
-      out.Str(l.name);
-      PutVector(l.position, out);
-      PutQuaternion(l.orientation, out);
-    }
-    PutVector(r.velocity, out);
-    out.Put(r.ball_touch_time);
-  }
-  out.Put<uint64_t>(w.robot_contacts.size());
-  for (const RobotTouch& t : w.robot_contacts) {
-    out.Str(t.robot_a);
-    out.Str(t.robot_b);
-    PutVector(t.point, out);
-  }
-}
-
-WorldSnapshot RestoreWorld(StateReader& in) {
-  WorldSnapshot w;
-  w.time = GetFinite(in);
-  w.ball = GetVector(in);
-  w.ball_velocity = GetVector(in);
-  w.robots.resize(in.Count(kMaxItems));
-  for (RobotSnapshot& r : w.robots) {
-    r.name = in.Str(kMaxName);
-    r.joint_names.resize(in.Count(kMaxItems));
-    for (std::string& j : r.joint_names) j = in.Str(kMaxName);
-    in.Doubles(&r.joint_positions, r.joint_names.size());
-    r.gyro = GetArray<3>(in);
-    r.accelerometer = GetArray<3>(in);
-    r.feet.resize(in.Count(kMaxItems));
-    for (RobotSnapshot::Foot& f : r.feet) {
-      f.name = in.Str(kMaxName);
-      f.contact = in.Bool();
-      f.point = GetArray<3>(in);
-      f.force = GetArray<3>(in);
-    }
-    r.links.resize(in.Count(kMaxItems));
-    for (RobotSnapshot::Link& l : r.links) {
-      l.name = in.Str(kMaxName);
-      l.position = GetVector(in);
-      l.orientation = GetQuaternion(in);
-    }
-    r.velocity = GetVector(in);
-    r.ball_touch_time = GetFinite(in);
-    if (!in.ok()) break;
-  }
-  w.robot_contacts.resize(in.Count(kMaxItems));
-  for (RobotTouch& t : w.robot_contacts) {
-    t.robot_a = in.Str(kMaxName);
-    t.robot_b = in.Str(kMaxName);
-    t.point = GetVector(in);
-    if (!in.ok()) break;
-  }
-  return w;
-}
-
-void SaveJoints(const std::map<std::string, std::vector<JointVelocity>>& joints, StateWriter& out) {
-  out.Put<uint64_t>(joints.size());
-  for (const auto& [robot, targets] : joints) {
-    out.Str(robot);
-    out.Put<uint64_t>(targets.size());
-    for (const JointVelocity& t : targets) {
-      out.Str(t.joint);
-      out.Put(t.velocity);
-    }
-  }
-}
-
-std::map<std::string, std::vector<JointVelocity>> RestoreJoints(StateReader& in) {
-  std::map<std::string, std::vector<JointVelocity>> joints;
-  const size_t n = in.Count(kMaxItems);
-  for (size_t i = 0; i < n && in.ok(); ++i) {
-    const std::string robot = in.Str(kMaxName);
-    std::vector<JointVelocity> targets(in.Count(kMaxItems));
-    for (JointVelocity& t : targets) {
-      t.joint = in.Str(kMaxName);
-      t.velocity = GetFinite(in);
-    }
-    if (!joints.emplace(robot, std::move(targets)).second) in.Fail("robot twice");
-  }
-  return joints;
-}
+constexpr size_t kMaxTorsoPoses = 4;  // RecordTorsoPoses keeps the last four
 
 }  // namespace
+
+// The world and requests the session keeps, each struct's fields listed once (core/state_io.h).
+template <class Io>
+void Fields(Io& io, IoRef<Io, RobotSnapshot::Foot> f) {
+  io(f.name, f.contact, FiniteValue(f.point), FiniteValue(f.force));
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, RobotSnapshot::Link> l) {
+  io(l.name, l.position, l.orientation);
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, RobotSnapshot> r) {
+  io(r.name, r.joint_names);
+  io(Exactly(r.joint_positions, r.joint_names.size()), FiniteValue(r.gyro), FiniteValue(r.accelerometer), r.feet,
+     r.links, r.velocity, FiniteValue(r.ball_touch_time));
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, RobotTouch> t) {
+  io(t.robot_a, t.robot_b, t.point);
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, WorldSnapshot> w) {
+  io(FiniteValue(w.time), w.ball, w.ball_velocity, w.robots, w.robot_contacts);
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, RobotMove> m) {
+  io(m.robot, m.position, m.orientation, m.reset_joints);
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, BallMove> b) {
+  io(b.position, b.velocity);
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, JointVelocity> j) {
+  io(j.joint, FiniteValue(j.velocity));
+}
 
 std::string Session::SaveLeague() const {
   StateWriter out;
   out.Tag(StateTag("TSLG"));
-  out.Put(kLeagueVersion);
-  out.Put(cycle_);
-  game_.Save(out);
-  self_collision_.Save(out);
-  fouls_.Save(out);
-  radio_.Save(out);
-  beam_rng_.Save(out);
+  out(kLeagueVersion, cycle_, game_, self_collision_, fouls_, radio_, beam_rng_);
   out.Tag(StateTag("SREQ"));
-  out.Put<uint64_t>(requests_.moves.size());
-  for (const RobotMove& m : requests_.moves) PutMove(m, out);
-  out.Put(requests_.ball.has_value());
-  if (requests_.ball) {
-    PutVector(requests_.ball->position, out);
-    PutVector(requests_.ball->velocity, out);
-  }
-  SaveJoints(requests_.joints, out);
-  SaveJoints(held_joints_, out);
-  out.Put(last_.has_value());
-  if (last_) SaveWorld(*last_, out);
-  out.Put<uint64_t>(torso_poses_.size());
-  for (const auto& [robot, poses] : torso_poses_) {
-    out.Str(robot);
-    out.Put<uint64_t>(poses.size());
-    for (const TorsoPose& t : poses) {
-      PutVector(t.position, out);
-      PutQuaternion(t.orientation, out);
-    }
-  }
+  out(requests_.moves, requests_.ball, requests_.joints, held_joints_, last_, torso_poses_);
   out.Tag(StateTag("SPLY"));
   std::vector<const Agent*> players;
   for (const auto& [id, a] : agents_)
@@ -163,16 +77,8 @@ std::string Session::SaveLeague() const {
   });
   out.Put<uint64_t>(players.size());
   for (const Agent* a : players) {
-    out.Put(a->side);
-    out.Put<int32_t>(a->unum);
-    out.Str(a->team);
-    out.Put<int32_t>(a->type);
-    out.Str(a->robot >= 0 ? robots_[a->robot] : std::string());
-    out.Put(a->announce);
-    out.Put(a->scene_cycle);
-    out.Put(a->perceptions);
-    PutVector(a->calibration, out);
-    a->rng.Save(out);
+    out(a->side, a->unum, a->team, a->type, a->robot >= 0 ? robots_[a->robot] : std::string(), a->announce,
+        a->scene_cycle, a->perceptions, a->calibration, a->rng);
   }
   return out.Take();
 }
@@ -182,64 +88,44 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
   if (in.Get<uint32_t>() != StateTag("TSLG") || !in.ok()) return "not a SimSpark league snapshot";
   if (in.Get<uint32_t>() != kLeagueVersion || !in.ok()) return "league snapshot format version differs";
   // Everything into copies first: a refused snapshot changes nothing.
-  const uint64_t cycle = in.Get<uint64_t>();
+  uint64_t cycle = 0;
   Game game = game_;
-  game.Restore(in);
   SelfCollisionRule self_collision = self_collision_;
-  self_collision.Restore(in);
   FoulReferee fouls = fouls_;
-  fouls.Restore(in);
   Radio radio = radio_;
-  radio.Restore(in);
   Rng beam_rng;
-  beam_rng.Restore(in);
+  in(cycle, game, self_collision, fouls, radio, beam_rng);
   in.Tag(StateTag("SREQ"));
+  WorldRequests requests;
+  std::map<std::string, std::vector<JointVelocity>> held;
+  std::optional<WorldSnapshot> last;
+  std::map<std::string, std::vector<TorsoPose>> torso_poses;
+  in(requests.moves, requests.ball, requests.joints, held, last, torso_poses);
   const auto known_robot = [&](const std::string& name) {
     if (std::find(robots_.begin(), robots_.end(), name) == robots_.end()) in.Fail("a robot not in the scene");
   };
-  WorldRequests requests;
-  requests.moves.resize(in.Count(kMaxItems));
-  for (RobotMove& m : requests.moves) {
-    m = GetMove<RobotMove>(in, kMaxName);
-    known_robot(m.robot);
-  }
-  if (in.Bool()) requests.ball = BallMove{GetVector(in), GetVector(in)};
-  requests.joints = RestoreJoints(in);
-  std::map<std::string, std::vector<JointVelocity>> held = RestoreJoints(in);
+  for (const RobotMove& m : requests.moves) known_robot(m.robot);
   for (const auto* joints : {&requests.joints, &held})
     for (const auto& [robot, targets] : *joints) known_robot(robot);
-  std::optional<WorldSnapshot> last;
-  if (in.Bool()) last = RestoreWorld(in);
-  std::map<std::string, std::vector<TorsoPose>> torso_poses;
-  const size_t posed = in.Count(kMaxItems);
-  for (size_t i = 0; i < posed && in.ok(); ++i) {
-    const std::string robot = in.Str(kMaxName);
+  for (const auto& [robot, poses] : torso_poses) {
     known_robot(robot);
-    std::vector<TorsoPose>& poses = torso_poses[robot];
-    poses.resize(in.Count(4));
-    for (TorsoPose& t : poses) {
-      t.position = GetVector(in);
-      t.orientation = GetQuaternion(in);
-    }
+    if (poses.size() > kMaxTorsoPoses) in.Fail("length out of range");
   }
   in.Tag(StateTag("SPLY"));
   // Each player of the snapshot onto the connected agent that is that player.
   std::map<int, Agent> players;  // by agent id: the agent with its league state replaced
   std::string refused;
-  const size_t n = in.Count(kMaxItems);
+  const size_t n = in.Count(kMaxSnapshotItems);
   for (size_t i = 0; i < n && in.ok() && refused.empty(); ++i) {
-    const Side side = in.Enum(static_cast<Side>(2));
-    const int unum = in.Get<int32_t>();
-    const std::string team = in.Str(kMaxName);
-    const int type = in.Get<int32_t>();
-    const std::string robot = in.Str(kMaxName);
-    if (type < 0 || type >= kRobotTypes) in.Fail("robot type out of range");
+    Side side = Side::kLeft;
+    int unum = 0;
+    std::string team;
+    int type = 0;
+    std::string robot;
     Agent state;
-    state.announce = in.Bool();
-    state.scene_cycle = in.Get<uint64_t>();
-    state.perceptions = in.Get<uint64_t>();
-    state.calibration = GetVector(in);
-    state.rng.Restore(in);
+    in(side, unum, team, type, robot, state.announce, state.scene_cycle, state.perceptions, state.calibration,
+       state.rng);
+    if (type < 0 || type >= kRobotTypes) in.Fail("robot type out of range");
     if (!in.ok()) break;
     const std::string who = fmt::format("player {} {}", SideName(side), unum);
     const Agent* a = nullptr;

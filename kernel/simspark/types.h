@@ -11,7 +11,8 @@
 namespace turf::simspark {
 
 enum class Side { kLeft, kRight };
-const char* SideName(Side side);  // "left", "right" (GS)
+constexpr Side EnumCount(Side) { return static_cast<Side>(2); }  // snapshots (core/state_io.h)
+const char* SideName(Side side);                                 // "left", "right" (GS)
 
 // Play modes with the monitor's indices (shared/protocols/simspark.md).
 enum class PlayMode {
