@@ -13,15 +13,11 @@ namespace turf::rcssservermj {
 namespace {
 
 constexpr uint32_t kLeagueVersion = 1;
-constexpr size_t kMaxItems = 4096;       // robots, joints, moves, players, markers: far above any scene
-constexpr size_t kMaxName = 256;         // a robot, joint, model, team, marker or play mode name
 constexpr size_t kMaxMonitor = 1 << 20;  // a queued monitor message (bytes)
 constexpr double kRad = M_PI / 180.0;
 constexpr double kSlack = 1e-9;  // rad: a bound converted from degrees, read back
 
 using Player = std::pair<Side, int>;  // (side, number): a player across reconnections
-
-// --- world requests ---
 
 // The bounds the action parser enforces (codecs/rcssservermj/actions.h), in radians.
 bool WithinActionBounds(double q, double dq, double kp, double kd, double tau) {
@@ -29,167 +25,73 @@ bool WithinActionBounds(double q, double dq, double kp, double kd, double tau) {
          kp <= kMaxKp && kd >= 0 && kd <= kMaxKd && std::abs(tau) <= kMaxAbsTau;
 }
 
-void PutPd(const PdCommand& c, StateWriter& out) {
-  out.Str(c.joint);
-  for (double v : {c.q, c.dq, c.kp, c.kd, c.tau}) out.Put(v);
-}
-
-PdCommand GetPd(StateReader& in) {
-  PdCommand c;
-  c.joint = in.Str(kMaxName);
-  for (double* v : {&c.q, &c.dq, &c.kp, &c.kd, &c.tau}) *v = GetFinite(in);
-  if (!WithinActionBounds(c.q, c.dq, c.kp, c.kd, c.tau)) in.Fail("motor command out of range");
-  return c;
-}
-
-void PutPds(const std::vector<PdCommand>& commands, StateWriter& out) {
-  out.Put<uint64_t>(commands.size());
-  for (const PdCommand& c : commands) PutPd(c, out);
-}
-
-std::vector<PdCommand> GetPds(StateReader& in) {
-  std::vector<PdCommand> commands(in.Count(kMaxItems));
-  for (PdCommand& c : commands) c = GetPd(in);
-  return commands;
-}
-
-// --- agent messages not yet taken ---
-
-void PutMessage(const ActionMessage& m, StateWriter& out) {
-  out.Put<uint64_t>(m.motors.size());
-  for (const MotorAction& a : m.motors) {
-    out.Put<int32_t>(a.joint);
-    for (double v : {a.q, a.dq, a.kp, a.kd, a.tau}) out.Put(v);
-  }
-  PutOptional(m.beam, out, [&](const BeamAction& b) {
-    for (double v : {b.x, b.y, b.theta_deg}) out.Put(v);
-  });
-  out.Put(m.say);
-  out.Put(m.syn);
-}
-
-ActionMessage GetMessage(StateReader& in, const MjRobotModel& model) {
-  ActionMessage m;
-  m.motors.resize(in.Count(kMaxItems));
-  for (MotorAction& a : m.motors) {
-    a.joint = in.Get<int32_t>();
-    for (double* v : {&a.q, &a.dq, &a.kp, &a.kd, &a.tau}) *v = GetFinite(in);
-    if (a.joint < 0 || static_cast<size_t>(a.joint) >= model.joints.size()) in.Fail("joint index out of range");
-    if (!WithinActionBounds(a.q, a.dq, a.kp, a.kd, a.tau)) in.Fail("motor command out of range");
-  }
-  m.beam = GetOptional<BeamAction>(in, [&] {
-    BeamAction b{GetFinite(in), GetFinite(in), GetFinite(in)};
-    if (std::abs(b.x) > kMaxAbsBeam || std::abs(b.y) > kMaxAbsBeam) in.Fail("beam out of range");
-    return b;
-  });
-  m.say = in.Bool();
-  m.syn = in.Bool();
-  return m;
-}
-
-// --- perceptions not yet released (the parallel loop's) ---
-
-void PutMarkers(const std::vector<SeenMarker>& markers, StateWriter& out) {
-  out.Put<uint64_t>(markers.size());
-  for (const SeenMarker& m : markers) {
-    out.Str(m.name);
-    for (double v : {m.pol.distance, m.pol.azimuth, m.pol.elevation}) out.Put(v);
-  }
-}
-
-std::vector<SeenMarker> GetMarkers(StateReader& in) {
-  std::vector<SeenMarker> markers(in.Count(kMaxItems));
-  for (SeenMarker& m : markers) {
-    m.name = in.Str(kMaxName);
-    for (double* v : {&m.pol.distance, &m.pol.azimuth, &m.pol.elevation}) *v = GetFinite(in);
-  }
-  return markers;
-}
-
-void PutPerception(const MjPerception& p, StateWriter& out) {
-  out.Put(p.time);
-  out.Put(p.game.play_time);
-  out.Str(p.game.play_mode);
-  for (const auto* team : {&p.game.team_left, &p.game.team_right})
-    PutOptional(*team, out, [&](const std::string& t) { out.Str(t); });
-  out.Put<int32_t>(p.game.score_left);
-  out.Put<int32_t>(p.game.score_right);
-  out.Put(p.has_robot);
-  PutArray(p.quat, out);
-  PutArray(p.pos, out);
-  PutArray(p.gyro, out);
-  PutArray(p.acc, out);
-  out.Put<uint64_t>(p.joints.size());
-  for (const JointReading& j : p.joints) {
-    out.Str(j.name);
-    out.Put(j.position);
-    out.Put(j.velocity);
-  }
-  PutOptional(p.see, out, [&](const SeeItems& see) {
-    PutMarkers(see.markers, out);
-    out.Put<uint64_t>(see.players.size());
-    for (const SeenPlayer& player : see.players) {
-      out.Str(player.team);
-      out.Put<int32_t>(player.number);
-      PutMarkers(player.parts, out);
-    }
-  });
-}
-
-MjPerception GetPerception(StateReader& in) {
-  MjPerception p;
-  p.time = GetFinite(in);
-  p.game.play_time = GetFinite(in);
-  p.game.play_mode = in.Str(kMaxName);
-  for (auto* team : {&p.game.team_left, &p.game.team_right})
-    *team = GetOptional<std::string>(in, [&] { return in.Str(kMaxName); });
-  p.game.score_left = in.Get<int32_t>();
-  p.game.score_right = in.Get<int32_t>();
-  p.has_robot = in.Bool();
-  p.quat = GetArray<4>(in);
-  p.pos = GetArray<3>(in);
-  p.gyro = GetArray<3>(in);
-  p.acc = GetArray<3>(in);
-  p.joints.resize(in.Count(kMaxItems));
-  for (JointReading& j : p.joints) {
-    j.name = in.Str(kMaxName);
-    j.position = GetFinite(in);
-    j.velocity = GetFinite(in);
-  }
-  p.see = GetOptional<SeeItems>(in, [&] {
-    SeeItems see;
-    see.markers = GetMarkers(in);
-    see.players.resize(in.Count(kMaxItems));
-    for (SeenPlayer& player : see.players) {
-      player.team = in.Str(kMaxName);
-      player.number = in.Get<int32_t>();
-      player.parts = GetMarkers(in);
-    }
-    return see;
-  });
-  return p;
-}
-
 }  // namespace
+
+// Requests, agents' messages not yet taken and perceptions not yet released (the parallel loop's): each struct's
+// fields listed once (core/state_io.h), refused when not finite or beyond what the parsers accept.
+template <class Io>
+void Fields(Io& io, IoRef<Io, PdCommand> c) {
+  io(c.joint, FiniteValue(c.q), FiniteValue(c.dq), FiniteValue(c.kp), FiniteValue(c.kd), FiniteValue(c.tau));
+  io.Check(WithinActionBounds(c.q, c.dq, c.kp, c.kd, c.tau), "motor command out of range");
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, RobotMove> m) {
+  io(m.robot, m.position, m.orientation, m.reset_joints);
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, MotorAction> a) {
+  io(a.joint, FiniteValue(a.q), FiniteValue(a.dq), FiniteValue(a.kp), FiniteValue(a.kd), FiniteValue(a.tau));
+  io.Check(WithinActionBounds(a.q, a.dq, a.kp, a.kd, a.tau), "motor command out of range");
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, BeamAction> b) {
+  io(FiniteValue(b.x), FiniteValue(b.y), FiniteValue(b.theta_deg));
+  io.Check(std::abs(b.x) <= kMaxAbsBeam && std::abs(b.y) <= kMaxAbsBeam, "beam out of range");
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, ActionMessage> m) {
+  io(m.motors, m.beam, m.say, m.syn);
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, SeenMarker> m) {
+  io(m.name, FiniteValue(m.pol.distance), FiniteValue(m.pol.azimuth), FiniteValue(m.pol.elevation));
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, SeenPlayer> p) {
+  io(p.team, p.number, p.parts);
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, SeeItems> see) {
+  io(see.markers, see.players);
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, JointReading> j) {
+  io(j.name, FiniteValue(j.position), FiniteValue(j.velocity));
+}
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, MjPerception> p) {
+  io(FiniteValue(p.time), FiniteValue(p.game.play_time), p.game.play_mode, p.game.team_left, p.game.team_right,
+     p.game.score_left, p.game.score_right, p.has_robot, FiniteValue(p.quat), FiniteValue(p.pos), FiniteValue(p.gyro),
+     FiniteValue(p.acc), p.joints, p.see);
+}
 
 std::string Session::SaveLeague() const {
   StateWriter out;
   out.Tag(StateTag("TMJL"));
-  out.Put(kLeagueVersion);
-  out.Put(cycle_);
-  referee_.Save(out);
-  rng_.Save(out);
+  out(kLeagueVersion, cycle_, referee_, rng_);
   out.Put<uint64_t>(monitor_queue_.size());
   for (const std::string& m : monitor_queue_) out.Str(m);
   out.Tag(StateTag("MREQ"));
-  out.Put<uint64_t>(requests_.moves.size());
-  for (const RobotMove& m : requests_.moves) PutMove(m, out);
-  PutOptional(requests_.ball, out, [&](const Eigen::Vector3d& b) { PutVector(b, out); });
-  out.Put<uint64_t>(requests_.joints.size());
-  for (const auto& [robot, commands] : requests_.joints) {
-    out.Str(robot);
-    PutPds(commands, out);
-  }
+  out(requests_.moves, requests_.ball, requests_.joints);
   out.Tag(StateTag("MPLY"));
   // By (side, number), not by connection: the same league gives the same bytes.
   std::vector<const Agent*> players;
@@ -199,15 +101,9 @@ std::string Session::SaveLeague() const {
             [](const Agent* x, const Agent* y) { return Player(x->side, x->number) < Player(y->side, y->number); });
   out.Put<uint64_t>(players.size());
   for (const Agent* a : players) {
-    out.Put(a->side);
-    out.Put<int32_t>(a->number);
-    out.Str(a->model->name);
-    out.Str(robots_[a->robot].name);
-    PutPds(a->motors, out);
-    out.Put(a->perceptions);
-    out.Put(a->answers);
+    out(a->side, a->number, std::string(a->model->name), robots_[a->robot].name, a->motors, a->perceptions, a->answers);
     out.Put<uint64_t>(a->queue.size());
-    for (const ActionMessage& m : a->queue) PutMessage(m, out);
+    for (const ActionMessage& m : a->queue) out(m);
   }
   out.Tag(StateTag("MPND"));
   std::vector<const std::pair<int, MjPerception>*> pending;
@@ -218,9 +114,7 @@ std::string Session::SaveLeague() const {
   out.Put<uint64_t>(pending.size());
   for (const auto* entry : pending) {
     const Agent& a = agents_.at(entry->first);
-    out.Put(a.side);
-    out.Put<int32_t>(a.number);
-    PutPerception(entry->second, out);
+    out(a.side, a.number, entry->second);
   }
   return out.Take();
 }
@@ -230,47 +124,42 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
   if (in.Get<uint32_t>() != StateTag("TMJL") || !in.ok()) return "not an RCSSServerMJ league snapshot";
   if (in.Get<uint32_t>() != kLeagueVersion || !in.ok()) return "league snapshot format version differs";
   // Everything into copies first: a refused snapshot changes nothing.
-  const uint64_t cycle = in.Get<uint64_t>();
+  uint64_t cycle = 0;
   Referee referee = referee_;
-  referee.Restore(in);
   Rng rng = rng_;
-  rng.Restore(in);
-  std::vector<std::string> monitor(in.Count(kMaxItems));
+  in(cycle, referee, rng);
+  std::vector<std::string> monitor(in.Count(kMaxSnapshotItems));
   for (std::string& m : monitor) m = in.Str(kMaxMonitor);
+  in.Tag(StateTag("MREQ"));
+  WorldRequests requests;
+  in(requests.moves, requests.ball, requests.joints);
   const auto known_robot = [&](const std::string& name) {
     const bool known = std::any_of(robots_.begin(), robots_.end(), [&](const SceneRobot& r) { return r.name == name; });
     if (!known) in.Fail("a robot not in the scene");
   };
-  in.Tag(StateTag("MREQ"));
-  WorldRequests requests;
-  requests.moves.resize(in.Count(kMaxItems));
-  for (RobotMove& m : requests.moves) {
-    m = GetMove<RobotMove>(in, kMaxName);
-    known_robot(m.robot);
-  }
-  requests.ball = GetOptional<Eigen::Vector3d>(in, [&] { return GetVector(in); });
-  const size_t commanded = in.Count(kMaxItems);
-  for (size_t i = 0; i < commanded && in.ok(); ++i) {
-    const std::string robot = in.Str(kMaxName);
-    known_robot(robot);
-    if (!requests.joints.emplace(robot, GetPds(in)).second) in.Fail("robot twice");
-  }
+  for (const RobotMove& m : requests.moves) known_robot(m.robot);
+  for (const auto& [robot, commands] : requests.joints) known_robot(robot);
   in.Tag(StateTag("MPLY"));
   // Each player of the snapshot onto the connected agent that is that player.
   std::map<int, Agent> players;  // by agent id: the agent with its league state replaced
   std::map<Player, int> ids;
   std::string refused;
-  const size_t n = in.Count(kMaxItems);
+  const size_t n = in.Count(kMaxSnapshotItems);
   for (size_t i = 0; i < n && in.ok() && refused.empty(); ++i) {
-    const Player player{in.Enum(static_cast<Side>(2)), in.Get<int32_t>()};
-    const MjRobotModel* model = FindModel(in.Str(kMaxName));
-    const std::string robot = in.Str(kMaxName);
+    Player player;
+    std::string model_name, robot;
+    std::vector<PdCommand> motors;
+    uint64_t perceptions = 0, answers = 0;
+    in(player.first, player.second, model_name, robot, motors, perceptions, answers);
+    const MjRobotModel* model = FindModel(model_name);
     if (model == nullptr) in.Fail("no such robot model");
-    std::vector<PdCommand> motors = GetPds(in);
-    const uint64_t perceptions = in.Get<uint64_t>();
-    const uint64_t answers = in.Get<uint64_t>();
     std::deque<ActionMessage> queue(in.Count(options_.max_queued + 1));
-    for (ActionMessage& m : queue) m = GetMessage(in, model != nullptr ? *model : Models().front());
+    for (ActionMessage& m : queue) {
+      in(m);
+      const size_t joints = model != nullptr ? model->joints.size() : 0;
+      for (const MotorAction& a : m.motors)
+        if (a.joint < 0 || static_cast<size_t>(a.joint) >= joints) in.Fail("joint index out of range");
+    }
     if (model != nullptr && motors.size() != model->joints.size()) in.Fail("motor count differs from the model");
     if (!in.ok()) break;
     const std::string who = fmt::format("player {} {}", player.first == Side::kLeft ? "left" : "right", player.second);
@@ -294,10 +183,10 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
   std::vector<std::pair<int, MjPerception>> pending;
   if (refused.empty()) {
     in.Tag(StateTag("MPND"));
-    pending.resize(in.Count(kMaxItems));
+    pending.resize(in.Count(kMaxSnapshotItems));
     for (auto& [id, perception] : pending) {
-      const Player player{in.Enum(static_cast<Side>(2)), in.Get<int32_t>()};
-      perception = GetPerception(in);
+      Player player;
+      in(player.first, player.second, perception);
       const auto it = ids.find(player);
       if (in.ok() && it == ids.end()) in.Fail("a perception for a player not in the snapshot");
       id = it == ids.end() ? -1 : it->second;

@@ -36,6 +36,7 @@
 namespace turf::rcssservermj {
 
 enum class Side : uint8_t { kLeft, kRight };
+constexpr Side EnumCount(Side) { return static_cast<Side>(2); }  // snapshots (core/state_io.h)
 
 #define TURF_MJ_PLAY_MODES(X)                       \
   X(kBeforeKickOff, "BeforeKickOff")                \
