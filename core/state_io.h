@@ -12,7 +12,7 @@
 //   template <class Io, class Self> static void Fields(Io& io, Self& self);
 // called from Save (Self const) and Restore; a plain struct in a free overload,
 //   template <class Io> void Fields(Io& io, IoRef<Io, LinkParams> p);
-// which `io(...)` also finds for a nested field. Also visited: std::array,
+// which `io(...)` also finds for a nested field. Also visited: arrays,
 // std::optional (a presence flag first), std::pair, std::string (at most
 // kMaxSnapshotString bytes), Eigen's fixed-size vectors and quaternions (finite
 // on restore), vectors and maps through Sized()/Exactly() (the length first;
@@ -165,6 +165,10 @@ class StateWriter {
   void Field(const std::array<T, N>& v) {
     for (const T& x : v) Field(x);
   }
+  template <class T, size_t N>
+  void Field(const T (&v)[N]) {
+    for (const T& x : v) Field(x);
+  }
   template <class T>
   void Field(const std::optional<T>& v) {
     Put(v.has_value());
@@ -299,6 +303,10 @@ class StateReader {
   void Field(std::string& v) { v = Str(kMaxSnapshotString); }
   template <class T, size_t N>
   void Field(std::array<T, N>& v) {
+    for (T& x : v) Field(x);
+  }
+  template <class T, size_t N>
+  void Field(T (&v)[N]) {
     for (T& x : v) Field(x);
   }
   template <class T>

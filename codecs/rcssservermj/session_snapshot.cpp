@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "codecs/rcssservermj/session.h"
-#include "core/state_io_eigen.h"
+#include "core/state_io.h"
 
 namespace turf::rcssservermj {
 

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "codecs/simspark/session.h"
-#include "core/state_io_eigen.h"
+#include "core/state_io.h"
 
 namespace turf::simspark {
 

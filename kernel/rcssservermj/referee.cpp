@@ -4,8 +4,6 @@
 #include <cmath>
 #include <utility>
 
-#include "core/state_io_eigen.h"
-
 namespace turf::rcssservermj {
 
 namespace {
@@ -27,7 +25,6 @@ const RuleBook kRuleBooks[] = {
 };
 
 constexpr size_t kModeCount = sizeof(kModeNames) / sizeof(kModeNames[0]);
-constexpr size_t kMaxTeamName = 256;  // far above any team name an init accepts
 constexpr int kMaxScore = 1'000'000;
 constexpr int64_t kMaxTimeMs = 24LL * 3600 * 1000;  // a day: far beyond any match's halves
 
@@ -173,44 +170,24 @@ std::optional<Eigen::Vector3d> Referee::Update(double dt, const Eigen::Vector3d&
   return place;
 }
 
-void Referee::Save(StateWriter& out) const {
-  out.Tag(StateTag("MREF"));
-  out.Put(mode_);
-  for (const std::optional<std::string>& team : teams_)
-    PutOptional(team, out, [&](const std::string& t) { out.Str(t); });
-  for (int score : score_) out.Put<int32_t>(score);
-  out.Put(time_ms_);
-  out.Put(mode_ms_);
-  out.Put<int32_t>(half_);
-  PutOptional(last_touch_, out, [&](Side side) { out.Put(side); });
-  PutOptional(placed_, out, [&](const Eigen::Vector3d& v) { PutVector(v, out); });
-  out.Put(conceded_);
-  PutOptional(pending_place_, out, [&](const Eigen::Vector3d& v) { PutVector(v, out); });
+// Listed once (core/state_io.h).
+template <class Io, class Self>
+void Referee::Fields(Io& io, Self& r) {
+  io.Tag(StateTag("MREF"));
+  io(InRange(r.mode_, static_cast<PlayMode>(kModeCount)), r.teams_, r.score_, r.time_ms_, r.mode_ms_, r.half_,
+     r.last_touch_, r.placed_, r.conceded_, r.pending_place_);
+  io.Check(!r.teams_[0] || r.teams_[0] != r.teams_[1], "one team on both sides");
+  for (int score : r.score_) io.Check(score >= 0 && score <= kMaxScore, "score out of range");
+  io.Check(r.time_ms_ >= 0 && r.mode_ms_ >= 0 && r.time_ms_ <= kMaxTimeMs && r.mode_ms_ <= kMaxTimeMs,
+           "time out of range");
+  io.Check(r.half_ >= 1 && r.half_ <= 2, "half out of range");
 }
+
+void Referee::Save(StateWriter& out) const { Fields(out, *this); }
 
 void Referee::Restore(StateReader& in) {
   Referee r = *this;
-  const auto side = [&] { return in.Enum(static_cast<Side>(2)); };
-  const auto vector = [&] { return GetVector(in); };
-  in.Tag(StateTag("MREF"));
-  r.mode_ = in.Enum(static_cast<PlayMode>(kModeCount));
-  for (std::optional<std::string>& team : r.teams_)
-    team = GetOptional<std::string>(in, [&] { return in.Str(kMaxTeamName); });
-  if (r.teams_[0] && r.teams_[0] == r.teams_[1]) in.Fail("one team on both sides");
-  for (int& score : r.score_) {
-    score = in.Get<int32_t>();
-    if (score < 0 || score > kMaxScore) in.Fail("score out of range");
-  }
-  r.time_ms_ = in.Get<int64_t>();
-  r.mode_ms_ = in.Get<int64_t>();
-  r.half_ = in.Get<int32_t>();
-  if (r.time_ms_ < 0 || r.mode_ms_ < 0 || r.time_ms_ > kMaxTimeMs || r.mode_ms_ > kMaxTimeMs)
-    in.Fail("time out of range");
-  if (r.half_ < 1 || r.half_ > 2) in.Fail("half out of range");
-  r.last_touch_ = GetOptional<Side>(in, side);
-  r.placed_ = GetOptional<Eigen::Vector3d>(in, vector);
-  r.conceded_ = side();
-  r.pending_place_ = GetOptional<Eigen::Vector3d>(in, vector);
+  Fields(in, r);
   if (in.ok()) *this = std::move(r);
 }
 

@@ -119,6 +119,8 @@ class Referee {
   void Restore(StateReader& in);
 
  private:
+  template <class Io, class Self>
+  static void Fields(Io& io, Self& r);
   static int Index(Side side) { return side == Side::kLeft ? 0 : 1; }
   void Restart(PlayMode mode, const Eigen::Vector3d& ball);
   std::optional<Eigen::Vector3d> CheckBall(const Eigen::Vector3d& ball);

@@ -345,44 +345,19 @@ std::vector<RefereeMove> FoulReferee::Update(bool paused, const std::vector<Refe
 
 void FoulReferee::Save(StateWriter& out) const {
   out.Tag(StateTag("SFOU"));
-  rng_.Save(out);
-  out.Put<uint64_t>(counts_.size());
-  for (const auto& [player, c] : counts_) {
-    out.Put(player.first);
-    out.Put<int32_t>(player.second);
-    for (int v : {c.ground, c.not_standing, c.standing, c.foul_time, c.since_ball, c.since_contact, c.since_moved,
-                  c.last_group_size})
-      out.Put<int32_t>(v);
-    out.Put(c.foul);
-    out.Put(c.in_own_area);
-    for (const Eigen::Vector3d& v : c.velocities)
-      for (int k = 0; k < 3; ++k) out.Put(v[k]);
-  }
+  out(rng_, Sized(counts_, kMaxPlayers));
 }
 
 void FoulReferee::Restore(StateReader& in) {
   in.Tag(StateTag("SFOU"));
   Rng rng;
-  rng.Restore(in);
   std::map<Player, Counts> restored;
-  const size_t n = in.Count(kMaxPlayers);
-  for (size_t i = 0; i < n && in.ok(); ++i) {
-    const Side side = in.Enum(static_cast<Side>(2));
-    const int unum = in.Get<int32_t>();
-    if (unum < 0 || unum > kMaxUnum) in.Fail("referee count of a player number out of range");
-    Counts c;
-    for (int* v : {&c.ground, &c.not_standing, &c.standing, &c.foul_time, &c.since_ball, &c.since_contact,
-                   &c.since_moved, &c.last_group_size}) {
-      *v = in.Get<int32_t>();
-      if (*v < 0 || *v > kMaxCount) in.Fail("referee count out of range");
-    }
-    c.foul = in.Enum(static_cast<Foul>(static_cast<int>(Foul::kIllegalDefence) + 1));
-    c.in_own_area = in.Bool();
-    for (Eigen::Vector3d& v : c.velocities) {
-      for (int k = 0; k < 3; ++k) v[k] = in.Get<double>();
-      if (!v.allFinite()) in.Fail("referee velocity not finite");
-    }
-    if (!restored.emplace(Player{side, unum}, c).second) in.Fail("a player twice");
+  in(rng, Sized(restored, kMaxPlayers));
+  for (const auto& [player, c] : restored) {
+    if (player.second < 0 || player.second > kMaxUnum) in.Fail("referee count of a player number out of range");
+    for (int v : {c.ground, c.not_standing, c.standing, c.foul_time, c.since_ball, c.since_contact, c.since_moved,
+                  c.last_group_size})
+      if (v < 0 || v > kMaxCount) in.Fail("referee count out of range");
   }
   if (!in.ok()) return;
   rng_ = rng;

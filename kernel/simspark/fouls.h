@@ -83,6 +83,7 @@ struct FoulRules {
 SafeSpotRules SpotRulesOf(const FoulRules& rules);
 
 enum class Foul : uint8_t { kNone, kIncapable, kCharging, kTouching, kIllegalDefence };
+constexpr Foul EnumCount(Foul) { return static_cast<Foul>(5); }  // snapshots (core/state_io.h)
 // "none", "incapable", "charging", "touching", "illegal_defence"
 const char* FoulName(Foul foul);
 
@@ -147,6 +148,11 @@ class FoulReferee {
     bool in_own_area = false;  // its torso was in its own penalty area (without a foul) at the last count
     std::array<Eigen::Vector3d, kVelocities> velocities{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
                                                         Eigen::Vector3d::Zero()};
+    template <class Io>
+    friend void Fields(Io& io, IoRef<Io, Counts> c) {
+      io(c.ground, c.not_standing, c.standing, c.foul_time, c.since_ball, c.since_contact, c.since_moved,
+         c.last_group_size, c.foul, c.in_own_area, c.velocities);
+    }
   };
   using Player = std::pair<Side, int>;
   void Count(const RefereePlayer& p, Counts* c) const;

@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "core/state_io_eigen.h"
+#include "core/state_io.h"
 
 namespace turf::simspark {
 
@@ -653,95 +653,34 @@ GameUpdate Game::DropBall(const Eigen::Vector3d& ball) {
 
 namespace turf::simspark {
 
-namespace {
-
-constexpr size_t kMaxTeamName = 256;  // far above any team name an init accepts
-
-}  // namespace
-
-void Game::Save(StateWriter& out) const {
-  out.Tag(StateTag("SGAM"));
-  for (const Team& team : teams_) {
-    PutOptional(team.name, out, [&](const std::string& name) { out.Str(name); });
-    out.Put<uint64_t>(team.players.size());
-    for (const auto& [unum, type] : team.players) {
-      out.Put<int32_t>(unum);
-      out.Put<int32_t>(type);
-    }
-  }
-  out.Put(mode_);
-  out.Put(reported_mode_);
-  out.Put(game_time_);
-  out.Put(mode_start_);
-  out.Put(idle_time_);
-  out.Put<int32_t>(half_);
-  out.Put<int32_t>(last_kick_off_half_);
-  PutOptional(next_half_kick_off_, out, [&](Side side) { out.Put(side); });
-  out.Put(kick_check_);
-  out.Put<uint8_t>(paused_ ? 1 : 0);
-  const auto put_toucher = [&](const Toucher& t) {
-    out.Put(t.side);
-    out.Put<int32_t>(t.unum);
-  };
-  PutOptional(kick_taker_, out, put_toucher);
-  out.Put(kick_time_);
-  out.Put(indirect_kick_);
-  PutOptional(kick_off_team_no_score_, out, [&](Side side) { out.Put(side); });
-  out.Put<int32_t>(score_[0]);
-  out.Put<int32_t>(score_[1]);
-  PutOptional(last_toucher_, out, put_toucher);
-  out.Put(last_touch_time_);
-  PutVector(last_on_field_, out);
-  PutVector(free_kick_pos_, out);
-  out.Put(repel_for_kick_);
-  rng_.Save(out);
+template <class Io>
+void Fields(Io& io, IoRef<Io, Toucher> t) {
+  io(t.side, t.unum);
 }
+
+// Listed once (core/state_io.h).
+template <class Io, class Self>
+void Game::Fields(Io& io, Self& g) {
+  io.Tag(StateTag("SGAM"));
+  for (auto& team : g.teams_) {
+    io(team.name, Sized(team.players, static_cast<size_t>(std::max(g.rules_.max_players, 0))));
+    for (const auto& [unum, type] : team.players) io.Check(type >= 0 && type < kRobotTypes, "robot type out of range");
+    io.Check(team.players.empty() || team.name, "players in a team without a name");
+  }
+  io(g.mode_, g.reported_mode_, FiniteValue(g.game_time_), FiniteValue(g.mode_start_), FiniteValue(g.idle_time_),
+     g.half_, g.last_kick_off_half_, g.next_half_kick_off_, g.kick_check_, g.paused_, g.kick_taker_,
+     FiniteValue(g.kick_time_), g.indirect_kick_, g.kick_off_team_no_score_, g.score_, g.last_toucher_,
+     FiniteValue(g.last_touch_time_), g.last_on_field_, g.free_kick_pos_, g.repel_for_kick_, g.rng_);
+  io.Check(g.half_ >= 1 && g.half_ <= 2 && g.last_kick_off_half_ >= 0 && g.last_kick_off_half_ <= 2,
+           "half out of range");
+  io.Check(g.score_[0] >= 0 && g.score_[1] >= 0, "negative score");
+}
+
+void Game::Save(StateWriter& out) const { Fields(out, *this); }
 
 void Game::Restore(StateReader& in) {
   Game g(rules_, 0);
-  in.Tag(StateTag("SGAM"));
-  for (Team& team : g.teams_) {
-    if (in.Bool()) team.name = in.Str(kMaxTeamName);
-    const size_t n = in.Count(static_cast<size_t>(std::max(rules_.max_players, 0)));
-    for (size_t i = 0; i < n && in.ok(); ++i) {
-      const int unum = in.Get<int32_t>();
-      const int type = in.Get<int32_t>();
-      if (type < 0 || type >= kRobotTypes) in.Fail("robot type out of range");
-      if (!team.players.emplace(unum, type).second) in.Fail("player number twice in a team");
-    }
-    if (!team.players.empty() && !team.name) in.Fail("players in a team without a name");
-  }
-  g.mode_ = in.Enum(PlayMode::kCount);
-  g.reported_mode_ = in.Enum(PlayMode::kCount);
-  g.game_time_ = GetFinite(in);
-  g.mode_start_ = GetFinite(in);
-  g.idle_time_ = GetFinite(in);
-  g.half_ = in.Get<int32_t>();
-  g.last_kick_off_half_ = in.Get<int32_t>();
-  if (g.half_ < 1 || g.half_ > 2 || g.last_kick_off_half_ < 0 || g.last_kick_off_half_ > 2)
-    in.Fail("half out of range");
-  if (in.Bool()) g.next_half_kick_off_ = in.Enum(static_cast<Side>(2));
-  g.kick_check_ = in.Bool();
-  g.paused_ = in.Bool();
-  const auto get_toucher = [&]() {
-    Toucher t;
-    t.side = in.Enum(static_cast<Side>(2));
-    t.unum = in.Get<int32_t>();
-    return t;
-  };
-  if (in.Bool()) g.kick_taker_ = get_toucher();
-  g.kick_time_ = GetFinite(in);
-  g.indirect_kick_ = in.Bool();
-  if (in.Bool()) g.kick_off_team_no_score_ = in.Enum(static_cast<Side>(2));
-  g.score_[0] = in.Get<int32_t>();
-  g.score_[1] = in.Get<int32_t>();
-  if (g.score_[0] < 0 || g.score_[1] < 0) in.Fail("negative score");
-  if (in.Bool()) g.last_toucher_ = get_toucher();
-  g.last_touch_time_ = GetFinite(in);
-  g.last_on_field_ = GetVector(in);
-  g.free_kick_pos_ = GetVector(in);
-  g.repel_for_kick_ = in.Bool();
-  g.rng_.Restore(in);
+  Fields(in, g);
   if (in.ok()) *this = std::move(g);
 }
 

@@ -242,6 +242,8 @@ class Game {
     std::map<int, int> players;  // unum -> robot type
   };
 
+  template <class Io, class Self>
+  static void Fields(Io& io, Self& g);
   static int Index(Side side) { return side == Side::kLeft ? 0 : 1; }
   std::optional<std::string> CompositionError(const Team& team, int robot_type) const;
   void ChangeMode(PlayMode mode);

@@ -71,58 +71,24 @@ namespace {
 
 constexpr size_t kMaxSaid = 1024;       // speakers in one cycle
 constexpr size_t kMaxListeners = 1024;  // capacities kept
-constexpr size_t kMaxText = 256;        // a team name or a message (the say decoder allows 20)
 
 }  // namespace
 
 void Radio::Save(StateWriter& out) const {
   out.Tag(StateTag("SRAD"));
-  out.Put<uint64_t>(said_.size());
-  for (const Said& said : said_) {
-    out.Str(said.speaker.team);
-    out.Put(said.speaker.side);
-    out.Put<int32_t>(said.speaker.unum);
-    for (int k = 0; k < 3; ++k) out.Put(said.speaker.position[k]);
-    out.Str(said.message);
-    out.Put(said.game_time);
-  }
-  out.Put<uint64_t>(capacity_.size());
-  for (const auto& [key, cap] : capacity_) {
-    out.Put<int32_t>(key.first);
-    out.Put<int32_t>(key.second);
-    out.Put<int32_t>(cap.teammates);
-    out.Put<int32_t>(cap.opponents);
-    out.Put(cap.cycle);
-  }
+  out(Sized(said_, kMaxSaid), Sized(capacity_, kMaxListeners));
 }
 
 void Radio::Restore(StateReader& in) {
   in.Tag(StateTag("SRAD"));
-  std::vector<Said> said(in.Count(kMaxSaid));
-  for (Said& s : said) {
-    s.speaker.team = in.Str(kMaxText);
-    s.speaker.side = in.Enum(static_cast<Side>(2));
-    s.speaker.unum = in.Get<int32_t>();
-    for (int k = 0; k < 3; ++k) s.speaker.position[k] = in.Get<double>();
-    if (!s.speaker.position.allFinite()) in.Fail("value not finite");
-    s.message = in.Str(kMaxText);
-    s.game_time = in.Get<double>();
-    if (!in.ok()) break;
-  }
+  std::vector<Said> said;
   std::map<std::pair<int, int>, Capacity> capacity;
-  const size_t n = in.Count(kMaxListeners);
-  for (size_t i = 0; i < n && in.ok(); ++i) {
-    const int side = in.Get<int32_t>();
-    const int unum = in.Get<int32_t>();
-    Capacity cap;
-    cap.teammates = in.Get<int32_t>();
-    cap.opponents = in.Get<int32_t>();
-    cap.cycle = in.Get<uint64_t>();
-    if (side < 0 || side > 1) in.Fail("enum value out of range");
+  in(Sized(said, kMaxSaid), Sized(capacity, kMaxListeners));
+  for (const auto& [listener, cap] : capacity) {
+    if (listener.first < 0 || listener.first > 1) in.Fail("enum value out of range");
     if (cap.teammates < 0 || cap.opponents < 0 || cap.teammates > params_.capacity_max ||
         cap.opponents > params_.capacity_max)
       in.Fail("radio capacity out of range");
-    if (!capacity.emplace(std::make_pair(side, unum), cap).second) in.Fail("listener twice");
   }
   if (!in.ok()) return;
   said_ = std::move(said);

@@ -59,11 +59,19 @@ class Radio {
     Speaker speaker;
     std::string message;
     double game_time = 0.0;
+    template <class Io>
+    friend void Fields(Io& io, IoRef<Io, Said> s) {
+      io(s.speaker.team, s.speaker.side, s.speaker.unum, s.speaker.position, s.message, s.game_time);
+    }
   };
   struct Capacity {
     int teammates = 0;
     int opponents = 0;
     uint64_t cycle = 0;
+    template <class Io>
+    friend void Fields(Io& io, IoRef<Io, Capacity> c) {
+      io(c.teammates, c.opponents, c.cycle);
+    }
   };
 
   RadioParams params_;

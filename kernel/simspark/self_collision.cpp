@@ -47,7 +47,6 @@ double Margin(const PlacedBox& a, const PlacedBox& b, const Eigen::Vector3d& axi
 constexpr size_t kMaxPlayers = 64;
 constexpr int kMaxUnum = 99;
 constexpr size_t kMaxJoints = 64;
-constexpr size_t kMaxJointName = 16;
 
 }  // namespace
 
@@ -162,37 +161,16 @@ bool SelfCollisionRule::Frozen(Side side, int unum, const std::string& joint) co
 
 void SelfCollisionRule::Save(StateWriter& out) const {
   out.Tag(StateTag("SCOL"));
-  out.Put<uint64_t>(joints_.size());
-  for (const auto& [player, joints] : joints_) {
-    out.Put(player.first);
-    out.Put<int32_t>(player.second);
-    out.Put<uint64_t>(joints.size());
-    for (const auto& [name, joint] : joints) {
-      out.Str(name);
-      out.Put(joint.frozen_at);
-      out.Put<uint8_t>(joint.frozen ? 1 : 0);
-    }
-  }
+  out(Sized(joints_, kMaxPlayers));
 }
 
 void SelfCollisionRule::Restore(StateReader& in) {
   in.Tag(StateTag("SCOL"));
   std::map<Player, std::map<std::string, Joint>> restored;
-  const size_t players = in.Count(kMaxPlayers);
-  for (size_t i = 0; i < players && in.ok(); ++i) {
-    const Side side = in.Enum(static_cast<Side>(2));
-    const int unum = in.Get<int32_t>();
-    if (unum < 0 || unum > kMaxUnum) in.Fail("self-collision player number out of range");
-    std::map<std::string, Joint>& joints = restored[{side, unum}];
-    const size_t n = in.Count(kMaxJoints);
-    for (size_t j = 0; j < n && in.ok(); ++j) {
-      const std::string name = in.Str(kMaxJointName);
-      Joint joint;
-      joint.frozen_at = in.Get<double>();
-      joint.frozen = in.Bool();
-      if (!std::isfinite(joint.frozen_at)) in.Fail("self-collision time not finite");
-      joints[name] = joint;
-    }
+  in(Sized(restored, kMaxPlayers));
+  for (const auto& [player, joints] : restored) {
+    if (player.second < 0 || player.second > kMaxUnum) in.Fail("self-collision player number out of range");
+    if (joints.size() > kMaxJoints) in.Fail("length out of range");
   }
   if (!in.ok()) return;
   joints_ = std::move(restored);

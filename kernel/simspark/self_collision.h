@@ -96,6 +96,10 @@ class SelfCollisionRule {
   struct Joint {
     double frozen_at = 0.0;  // game time the joint froze
     bool frozen = false;     // commands to it turn into 0 (until frozen_at + frozen time)
+    template <class Io>
+    friend void Fields(Io& io, IoRef<Io, Joint> j) {
+      io(FiniteValue(j.frozen_at), j.frozen);
+    }
   };
   using Player = std::pair<Side, int>;
   void Thaw(double game_time);
