@@ -4,10 +4,16 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace turf {
@@ -137,6 +143,120 @@ TEST(StateIo, TheFirstFailureIsKept) {
   bytes[0] = 9;  // the colour fails first
   Record r;
   EXPECT_EQ(Restore(bytes, &r), "enum value out of range");
+}
+
+// An enum without kCount names its count next to it.
+enum class Hand { kLeft, kRight };
+constexpr Hand EnumCount(Hand) { return static_cast<Hand>(2); }
+
+struct League {
+  std::optional<std::string> name;
+  std::optional<Hand> kick_off;
+  Hand hand = Hand::kLeft;
+  int score[2] = {0, 0};
+  Eigen::Vector3d ball = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond pose = Eigen::Quaterniond::Identity();
+  std::map<std::pair<Hand, int>, std::vector<double>> players;
+};
+
+template <class Io>
+void Fields(Io& io, IoRef<Io, League> l) {
+  io(l.name, l.kick_off, l.hand, l.score, l.ball, l.pose, l.players);
+}
+
+League SampleLeague() {
+  League l;
+  l.name = "Alpha";
+  l.kick_off = Hand::kRight;
+  l.hand = Hand::kRight;
+  l.score[1] = 3;
+  l.ball = Eigen::Vector3d(1, -2, 0.04);
+  l.pose = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()));
+  l.players[{Hand::kLeft, 1}] = {0.5};
+  l.players[{Hand::kRight, 7}] = {};
+  return l;
+}
+
+template <class T>
+std::string Saved(const T& v) {
+  StateWriter out;
+  out(v);
+  return out.Take();
+}
+
+template <class T>
+std::string Restored(const std::string& bytes, T* v) {
+  StateReader in(bytes);
+  in(*v);
+  if (!in.ok()) return in.error();
+  return in.AtEnd() ? "" : "bytes left over";
+}
+
+TEST(StateIo, OptionalsStringsArraysEigenAndMapsRoundTrip) {
+  const League a = SampleLeague();
+  League b;
+  b.name.reset();
+  ASSERT_EQ(Restored(Saved(a), &b), "");
+  EXPECT_EQ(b.name, a.name);
+  EXPECT_EQ(b.kick_off, a.kick_off);
+  EXPECT_EQ(b.hand, a.hand);
+  EXPECT_EQ(b.score[1], 3);
+  EXPECT_EQ(b.ball, a.ball);
+  EXPECT_EQ(b.pose.coeffs(), a.pose.coeffs());
+  EXPECT_EQ(b.players, a.players);
+  EXPECT_EQ(Saved(b), Saved(a));
+
+  League empty = SampleLeague();
+  empty.name.reset();
+  empty.kick_off.reset();
+  League c = SampleLeague();
+  ASSERT_EQ(Restored(Saved(empty), &c), "");
+  EXPECT_FALSE(c.name.has_value());
+  EXPECT_FALSE(c.kick_off.has_value());
+}
+
+TEST(StateIo, TheSameValuesRefusedInsideOptionalsKeysAndEigen) {
+  League r;
+  League bad_enum = SampleLeague();
+  bad_enum.kick_off = static_cast<Hand>(2);
+  EXPECT_EQ(Restored(Saved(bad_enum), &r), "enum value out of range");
+
+  League bad_key = SampleLeague();
+  bad_key.players[{static_cast<Hand>(5), 1}] = {};
+  EXPECT_EQ(Restored(Saved(bad_key), &r), "enum value out of range");
+
+  League nan_ball = SampleLeague();
+  nan_ball.ball.y() = NAN;
+  EXPECT_EQ(Restored(Saved(nan_ball), &r), "value not finite");
+
+  League inf_pose = SampleLeague();
+  inf_pose.pose.w() = INFINITY;
+  EXPECT_EQ(Restored(Saved(inf_pose), &r), "value not finite");
+
+  League long_name = SampleLeague();
+  long_name.name = std::string(kMaxSnapshotString + 1, 'x');
+  EXPECT_EQ(Restored(Saved(long_name), &r), "length out of range");
+}
+
+// A map's keys come sorted from a save; the same key twice never does.
+TEST(StateIo, AMapRefusesAKeyTwice) {
+  std::map<int, int> m = {{1, 10}, {2, 20}};
+  std::string bytes = Saved(m);
+  // Rewrite the second key (after the count and the first pair) to the first's.
+  const size_t second_key = sizeof(uint64_t) + 2 * sizeof(int);
+  bytes[second_key] = 1;
+  std::map<int, int> r;
+  EXPECT_EQ(Restored(bytes, &r), "a key twice");
+}
+
+// A restore that fails part way leaves a vector no longer than what it read: a length that claims more than the
+// bytes hold fails as truncated, without reading on.
+TEST(StateIo, AClaimedLengthBeyondTheBytesIsTruncated) {
+  StateWriter out;
+  out.Put<uint64_t>(kMaxSnapshotItems);  // within the cap, far more than follows
+  out.Put(1.0);
+  std::vector<double> v;
+  EXPECT_EQ(Restored(out.Take(), &v), "truncated");
 }
 
 }  // namespace
