@@ -29,10 +29,17 @@ bool WithinActionBounds(double q, double dq, double kp, double kd, double tau) {
 
 // Requests, agents' messages not yet taken and perceptions not yet released (the parallel loop's): each struct's
 // fields listed once (core/state_io.h), refused when not finite or beyond what the parsers accept.
+// A PD command's targets and gains (a PdCommand's or a MotorAction's), within the parser's bounds.
+template <class Io, class Command>
+void PdFields(Io& io, Command& c) {
+  io(FiniteValue(c.q), FiniteValue(c.dq), FiniteValue(c.kp), FiniteValue(c.kd), FiniteValue(c.tau));
+  io.Check(WithinActionBounds(c.q, c.dq, c.kp, c.kd, c.tau), "motor command out of range");
+}
+
 template <class Io>
 void Fields(Io& io, IoRef<Io, PdCommand> c) {
-  io(c.joint, FiniteValue(c.q), FiniteValue(c.dq), FiniteValue(c.kp), FiniteValue(c.kd), FiniteValue(c.tau));
-  io.Check(WithinActionBounds(c.q, c.dq, c.kp, c.kd, c.tau), "motor command out of range");
+  io(c.joint);
+  PdFields(io, c);
 }
 
 template <class Io>
@@ -42,8 +49,8 @@ void Fields(Io& io, IoRef<Io, RobotMove> m) {
 
 template <class Io>
 void Fields(Io& io, IoRef<Io, MotorAction> a) {
-  io(a.joint, FiniteValue(a.q), FiniteValue(a.dq), FiniteValue(a.kp), FiniteValue(a.kd), FiniteValue(a.tau));
-  io.Check(WithinActionBounds(a.q, a.dq, a.kp, a.kd, a.tau), "motor command out of range");
+  io(a.joint);
+  PdFields(io, a);
 }
 
 template <class Io>

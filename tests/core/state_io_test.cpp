@@ -65,16 +65,18 @@ Record Sample() {
   return r;
 }
 
-std::string Save(const Record& r) {
+template <class T>
+std::string Save(const T& v) {
   StateWriter out;
-  out(r);
+  out(v);
   return out.Take();
 }
 
-// "" when the bytes restored whole into *r, else why not.
-std::string Restore(const std::string& bytes, Record* r) {
+// "" when the bytes restored whole into *v, else why not.
+template <class T>
+std::string Restore(const std::string& bytes, T* v) {
   StateReader in(bytes);
-  in(*r);
+  in(*v);
   if (!in.ok()) return in.error();
   return in.AtEnd() ? "" : "bytes left over";
 }
@@ -177,26 +179,11 @@ League SampleLeague() {
   return l;
 }
 
-template <class T>
-std::string Saved(const T& v) {
-  StateWriter out;
-  out(v);
-  return out.Take();
-}
-
-template <class T>
-std::string Restored(const std::string& bytes, T* v) {
-  StateReader in(bytes);
-  in(*v);
-  if (!in.ok()) return in.error();
-  return in.AtEnd() ? "" : "bytes left over";
-}
-
 TEST(StateIo, OptionalsStringsArraysEigenAndMapsRoundTrip) {
   const League a = SampleLeague();
   League b;
   b.name.reset();
-  ASSERT_EQ(Restored(Saved(a), &b), "");
+  ASSERT_EQ(Restore(Save(a), &b), "");
   EXPECT_EQ(b.name, a.name);
   EXPECT_EQ(b.kick_off, a.kick_off);
   EXPECT_EQ(b.hand, a.hand);
@@ -204,13 +191,13 @@ TEST(StateIo, OptionalsStringsArraysEigenAndMapsRoundTrip) {
   EXPECT_EQ(b.ball, a.ball);
   EXPECT_EQ(b.pose.coeffs(), a.pose.coeffs());
   EXPECT_EQ(b.players, a.players);
-  EXPECT_EQ(Saved(b), Saved(a));
+  EXPECT_EQ(Save(b), Save(a));
 
   League empty = SampleLeague();
   empty.name.reset();
   empty.kick_off.reset();
   League c = SampleLeague();
-  ASSERT_EQ(Restored(Saved(empty), &c), "");
+  ASSERT_EQ(Restore(Save(empty), &c), "");
   EXPECT_FALSE(c.name.has_value());
   EXPECT_FALSE(c.kick_off.has_value());
 }
@@ -219,34 +206,34 @@ TEST(StateIo, TheSameValuesRefusedInsideOptionalsKeysAndEigen) {
   League r;
   League bad_enum = SampleLeague();
   bad_enum.kick_off = static_cast<Hand>(2);
-  EXPECT_EQ(Restored(Saved(bad_enum), &r), "enum value out of range");
+  EXPECT_EQ(Restore(Save(bad_enum), &r), "enum value out of range");
 
   League bad_key = SampleLeague();
   bad_key.players[{static_cast<Hand>(5), 1}] = {};
-  EXPECT_EQ(Restored(Saved(bad_key), &r), "enum value out of range");
+  EXPECT_EQ(Restore(Save(bad_key), &r), "enum value out of range");
 
   League nan_ball = SampleLeague();
   nan_ball.ball.y() = NAN;
-  EXPECT_EQ(Restored(Saved(nan_ball), &r), "value not finite");
+  EXPECT_EQ(Restore(Save(nan_ball), &r), "value not finite");
 
   League inf_pose = SampleLeague();
   inf_pose.pose.w() = INFINITY;
-  EXPECT_EQ(Restored(Saved(inf_pose), &r), "value not finite");
+  EXPECT_EQ(Restore(Save(inf_pose), &r), "value not finite");
 
   League long_name = SampleLeague();
   long_name.name = std::string(kMaxSnapshotString + 1, 'x');
-  EXPECT_EQ(Restored(Saved(long_name), &r), "length out of range");
+  EXPECT_EQ(Restore(Save(long_name), &r), "length out of range");
 }
 
 // A map's keys come sorted from a save; the same key twice never does.
 TEST(StateIo, AMapRefusesAKeyTwice) {
   std::map<int, int> m = {{1, 10}, {2, 20}};
-  std::string bytes = Saved(m);
+  std::string bytes = Save(m);
   // Rewrite the second key (after the count and the first pair) to the first's.
   const size_t second_key = sizeof(uint64_t) + 2 * sizeof(int);
   bytes[second_key] = 1;
   std::map<int, int> r;
-  EXPECT_EQ(Restored(bytes, &r), "a key twice");
+  EXPECT_EQ(Restore(bytes, &r), "a key twice");
 }
 
 // A restore that fails part way leaves a vector no longer than what it read: a length that claims more than the
@@ -256,7 +243,7 @@ TEST(StateIo, AClaimedLengthBeyondTheBytesIsTruncated) {
   out.Put<uint64_t>(kMaxSnapshotItems);  // within the cap, far more than follows
   out.Put(1.0);
   std::vector<double> v;
-  EXPECT_EQ(Restored(out.Take(), &v), "truncated");
+  EXPECT_EQ(Restore(out.Take(), &v), "truncated");
 }
 
 }  // namespace
