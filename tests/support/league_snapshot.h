@@ -11,6 +11,8 @@
 #include <string_view>
 #include <utility>
 
+#include "core/state_io.h"
+
 namespace turf::test {
 
 // A scripted match: `Match` derives from LeagueScript<Match> and has Inputs(i) (cycle i's inputs, the same on every
@@ -134,6 +136,18 @@ void FuzzSplicedRestore(Match& match, const World& world, const uint8_t* data, s
   } else {
     require(match.session.SaveLeague() == before);
   }
+}
+
+// A league fuzzer's entry: the input restored into the league's rules alone (`rules(in)`: a game or a referee,
+// updated once if it took the bytes), then spliced into `Match`'s whole league snapshot (FuzzSplicedRestore).
+// Match: a session and its snapshot `start`, set up once.
+template <class Match, class World, class Rules>
+int FuzzLeague(const uint8_t* data, size_t size, const World& world, Rules rules) {
+  static Match match;
+  StateReader in(std::string_view(reinterpret_cast<const char*>(data), size));
+  rules(in);
+  FuzzSplicedRestore(match, world, data, size);
+  return 0;
 }
 
 }  // namespace turf::test

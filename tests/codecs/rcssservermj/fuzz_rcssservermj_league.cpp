@@ -66,14 +66,9 @@ struct Match {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static Match match;
-  const std::string_view bytes(reinterpret_cast<const char*>(data), size);
-  {
-    turf::StateReader in(bytes);
+  return turf::test::FuzzLeague<Match>(data, size, World, [](turf::StateReader& in) {
     mj::Referee referee(*mj::FindRuleBook("fifa"), *mj::FindField("fifa"), 0.11);
     referee.Restore(in);
     if (in.ok()) referee.Update(0.02, Eigen::Vector3d(0, 0, 0.11), std::nullopt);
-  }
-  turf::test::FuzzSplicedRestore(match, World, data, size);
-  return 0;
+  });
 }

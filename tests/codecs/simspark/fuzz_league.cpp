@@ -53,14 +53,9 @@ struct Match {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static Match match;
-  const std::string_view bytes(reinterpret_cast<const char*>(data), size);
-  {
-    turf::StateReader in(bytes);
+  return turf::test::FuzzLeague<Match>(data, size, World, [](turf::StateReader& in) {
     ss::Game game;
     game.Restore(in);
     if (in.ok()) game.Update(0.02, Eigen::Vector3d(0, 0, 0.042), {ss::Toucher{ss::Side::kLeft, 1}});
-  }
-  turf::test::FuzzSplicedRestore(match, World, data, size);
-  return 0;
+  });
 }
