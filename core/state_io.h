@@ -15,8 +15,8 @@
 // which `io(...)` also finds for a nested field. Also visited: arrays,
 // std::optional (a presence flag first), std::pair, std::string (at most
 // kMaxSnapshotString bytes), Eigen's fixed-size vectors and quaternions (finite
-// on restore), vectors and maps through Sized()/Exactly() (the length first;
-// a map refuses a key twice). An enum is checked below its kCount, or below
+// on restore), vectors and maps (the length first, at most kMaxSnapshotItems,
+// or as Sized()/Exactly() say; a map refuses a key twice). An enum is checked below its kCount, or below
 // the count an EnumCount(E) overload next to it names, or InRange() gives;
 // doubles that must be finite go through FiniteValue(); `io.Check(valid, why)`
 // fails a restore on a combination no save writes.
