@@ -200,16 +200,7 @@ void AddSimFlags(ParticipantMain& participant, SimCommandLine& command_line) {
                                  "DDS hop to the physics; binds ADDRESS (default 127.0.0.1). turf-simspark-bridge "
                                  "still works as a separate process",
                                  &ss.listen, &command_line.simspark));
-  app.add_option("--simspark-agent-port", ss.agent_port, "with --simspark: TCP port for agents")->capture_default_str();
-  app.add_option("--simspark-monitor-port", ss.monitor_port, "with --simspark: TCP port for monitors and trainers")
-      ->capture_default_str();
-  app.add_flag("--simspark-sync", ss.sync_mode,
-               "with --simspark: agent sync mode (a cycle runs when every agent has sent (syn))");
-  app.add_option("--simspark-sync-grace-cycles", ss.sync_grace_cycles,
-                 "with --simspark-sync: cycles after an agent's (scene) that run without its (syn) (rcssserver3d: 0)")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 1000));
-  AddSimSparkOperatorFlag(app, ss, "simspark-", "with --simspark: ");
+  AddSimSparkFrontEndFlags(app, ss, "simspark-", "with --simspark: ");
 
   // RCSSServerMJ agents and monitor commands in this process (sim_host.h): the same flags as
   // turf-rcssservermj-bridge's, prefixed.
