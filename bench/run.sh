@@ -8,7 +8,8 @@
 #                                        RCSSServerMJ's example T1 walking policy (example/nn_client, kept outside
 #                                        turf) on turf: distance walked, falls (issue 14's acceptance run)
 #   bench/run.sh snapshot                kernel snapshots: size, Save and Restore next to a step
-#   bench/run.sh sync [requests]         SSL sync port round trip: separate bridge over DDS vs in turf-sim's process
+#   bench/run.sh sync [requests]         SSL sync port round trip: separate bridge over DDS vs in turf-sim's process,
+#                                        on all cores, then all on one core
 #   bench/run.sh python [sim seconds]    `import turf`: env-steps/s of Sim, the Gymnasium-shaped envs and VectorSim
 #                                        against the SSL sync port, in one run (bench/python_bench.py)
 #   bench/run.sh security [sim seconds]  what DDS Security costs: the SSL bench and the DDS hop latency, off and on
@@ -285,13 +286,21 @@ ut_agents() {
   echo "91.9-100 % upright (mean 96.6 over ten runs, 4.0 falls a run), types 1-4 77.1-99.3 %; the ball moved in 18 of 19 runs."
 }
 
+# The sync port twice: where the scheduler puts each thread, then everything on one core (a lockstep loop never
+# runs the client and turf-sim at once; across cores each request pays two cross-core wake-ups).
+sync_bench() {
+  "$BUILD_DIR/bench/turf-bench-sync" --requests "${1:-1000}"
+  echo
+  "$BUILD_DIR/bench/turf-bench-sync" --requests "${1:-1000}" --cpu 0
+}
+
 case "$WHAT" in
   ssl) ssl ;;
   simspark) simspark ;;
   rcssservermj) rcssservermj ;;
   rcssservermj-nn) bench/rcssservermj_nn/run.sh "$@" ;;
   snapshot) "$BUILD_DIR/bench/turf-bench-snapshot" ;;
-  sync) "$BUILD_DIR/bench/turf-bench-sync" --requests "${1:-1000}" ;;
+  sync) sync_bench "$@" ;;
   python) PYTHONPATH="$BUILD_DIR/python" TURF_BUILD_DIR="$BUILD_DIR" /usr/bin/python3 bench/python_bench.py \
             --seconds "$SECONDS_SIM" ;;
   security) security ;;
@@ -305,7 +314,7 @@ case "$WHAT" in
     echo
     "$BUILD_DIR/bench/turf-bench-snapshot"
     echo
-    "$BUILD_DIR/bench/turf-bench-sync"
+    sync_bench
     echo
     PYTHONPATH="$BUILD_DIR/python" TURF_BUILD_DIR="$BUILD_DIR" /usr/bin/python3 bench/python_bench.py
     ;;

@@ -15,7 +15,9 @@
 // All run side by side and take one request each in turn, so load from elsewhere falls on every row alike.
 // Prints mean, p50 and p99 per request, the overhead beyond physics (each row minus (c)) and beyond the UDP floor
 // (each row minus (u)), then the 10th and 25th percentiles and the medians of the per-round differences to (c) and
-// (u), which load from elsewhere disturbs less. bench/run.sh sync.
+// (u), which load from elsewhere disturbs less. --cpu N runs every thread on core N (a lockstep client and turf-sim
+// never run at once; across cores each request pays two cross-core wake-ups). bench/run.sh sync runs both ways.
+#include <sched.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
@@ -303,6 +305,14 @@ class PhysicsOnly {
   int done_ = 0;
 };
 
+// Every thread made after this runs on `cpu` only (threads inherit the caller's affinity).
+bool PinProcessTo(int cpu) {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  CPU_SET(cpu, &set);
+  return sched_setaffinity(0, sizeof(set), &set) == 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -316,7 +326,16 @@ int main(int argc, char** argv) {
   std::string only = "abmcu";
   app.add_option("--only", only, "rows to measure: a, b, m (b'), c, u; e.g. 'bc' under a profiler")
       ->capture_default_str();
+  int cpu = -1;
+  app.add_option("--cpu", cpu,
+                 "run everything (client, turf-sim, front-ends, DDS) on this one core, as `taskset -c N` would; "
+                 "-1: wherever the scheduler puts it")
+      ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
+  if (cpu >= 0 && !PinProcessTo(cpu)) {
+    std::fprintf(stderr, "cannot run on cpu %d\n", cpu);
+    return 2;
+  }
   spdlog::set_level(spdlog::level::warn);
 
   turf::SceneLoadResult loaded = turf::LoadSceneFile(scene_path);
@@ -366,7 +385,11 @@ int main(int argc, char** argv) {
 
   std::printf("SSL sync port, %s, sim_step 1/60 s (8.33 physics steps of 2 ms), %d robots commanded; ",
               scene_path.substr(scene_path.find_last_of('/') + 1).c_str(), 2 * kCommanded);
-  std::printf("%d requests to each, in turn; %u cores\n", requests, std::thread::hardware_concurrency());
+  std::printf("%d requests to each, in turn; ", requests);
+  if (cpu >= 0)
+    std::printf("everything on cpu %d of %u\n", cpu, std::thread::hardware_concurrency());
+  else
+    std::printf("%u cores\n", std::thread::hardware_concurrency());
   std::printf(
       "| path | mean us | p50 us | p99 us | beyond physics (c): mean / p50 us | beyond the UDP floor (u): mean / p50 "
       "us "
