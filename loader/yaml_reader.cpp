@@ -1,11 +1,13 @@
 #include "loader/yaml_reader.h"
 
 #include <fmt/format.h>
+#include <yaml-cpp/eventhandler.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <system_error>
 
 namespace turf::yaml {
@@ -306,21 +308,61 @@ void MapReader::Finish() {
   }
 }
 
+namespace {
+
+// Where each YAML document of a text starts, and nothing else.
+class DocumentStarts final : public YAML::EventHandler {
+ public:
+  const std::vector<YAML::Mark>& starts() const { return starts_; }
+  // yaml-cpp 0.7 yields an empty document without consuming the token at a document's start that cannot begin
+  // one (a ','), again and again: its LoadAll never returns there. A document starting where the one before it
+  // started is that.
+  bool Stuck() const { return starts_.size() >= 2 && starts_.back().pos == starts_[starts_.size() - 2].pos; }
+
+  void OnDocumentStart(const YAML::Mark& mark) override { starts_.push_back(mark); }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+
+ private:
+  std::vector<YAML::Mark> starts_;
+};
+
+}  // namespace
+
+// The documents are counted by a parser of our own loop (not YAML::LoadAll, see DocumentStarts), then the one
+// document is loaded.
 std::optional<YAML::Node> LoadSceneDocument(const std::string& text, Errors* errors) {
-  std::vector<YAML::Node> documents;
+  DocumentStarts documents;
+  YAML::Node root;
   try {
-    documents = YAML::LoadAll(text);
+    std::istringstream in(text);
+    YAML::Parser parser(in);
+    while (parser.HandleNextDocument(documents)) {
+      if (!documents.Stuck()) continue;
+      const YAML::Mark& at = documents.starts().back();
+      errors->push_back(
+          fmt::format("malformed YAML at line {}, column {}: no document can start here", at.line + 1, at.column + 1));
+      return std::nullopt;
+    }
+    if (documents.starts().size() == 1) root = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     errors->push_back(
         fmt::format("malformed YAML at line {}, column {}: {}", e.mark.line + 1, e.mark.column + 1, e.msg));
     return std::nullopt;
   }
-  if (documents.size() != 1 || !documents[0].IsMap()) {
-    errors->push_back(documents.size() > 1 ? fmt::format("expected one YAML document, got {}", documents.size())
-                                           : "expected a map of scene settings at the top level");
+  const size_t count = documents.starts().size();
+  if (count != 1 || !root.IsMap()) {
+    errors->push_back(count > 1 ? fmt::format("expected one YAML document, got {}", count)
+                                : "expected a map of scene settings at the top level");
     return std::nullopt;
   }
-  return documents[0];
+  return root;
 }
 
 }  // namespace turf::yaml

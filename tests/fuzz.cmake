@@ -1,5 +1,5 @@
-# turf_fuzz(<name> SOURCES <files> [PROTOS <protos>] [IDL <types>] [INCLUDES <dirs>] [LIBS <libs>]
-#           [DEPENDS <targets>])
+# turf_fuzz(<name> SOURCES <files> [PROTOS <protos>] [IDL <types>] [INCLUDES <dirs>] [DEFINES <NAME=value>]
+#           [LIBS <libs>] [DEPENDS <targets>])
 # PROTOS ssl_vision ...: the generated codecs/proto/<name>.pb.cc (with protobuf); IDL Common Clock ...: the
 # generated turf/idl/<name>.cxx (with Fast CDR); their include directories and build targets come with them.
 # Builds a libFuzzer target with clang (ASan + UBSan) from the listed sources
@@ -11,7 +11,7 @@ find_program(TURF_CLANGXX NAMES clang++-14 clang++)
 set(TURF_FUZZ_SECONDS 10 CACHE STRING "seconds each fuzz test runs in ctest")
 
 function(turf_fuzz name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;PROTOS;IDL;INCLUDES;LIBS;DEPENDS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;PROTOS;IDL;INCLUDES;DEFINES;LIBS;DEPENDS" ${ARGN})
   if(ARG_PROTOS)
     set(gen ${CMAKE_BINARY_DIR}/codecs/proto/gen)
     foreach(proto ${ARG_PROTOS})
@@ -40,6 +40,9 @@ function(turf_fuzz name)
   set(includes "")
   foreach(dir ${ARG_INCLUDES} ${PROJECT_SOURCE_DIR})
     list(APPEND includes -I${dir})
+  endforeach()
+  foreach(definition ${ARG_DEFINES})
+    list(APPEND includes -D${definition})
   endforeach()
   add_custom_command(
     OUTPUT ${bin}
