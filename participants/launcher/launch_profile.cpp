@@ -37,6 +37,12 @@ std::string Absolute(const std::string& path, const std::string& base_dir) {
   return (p.is_absolute() ? p : fs::path(base_dir) / p).lexically_normal().string();
 }
 
+// A regular file there: false, not an exception, for a path the system refuses (too long, a loop, no access).
+bool IsFile(const std::string& path) {
+  std::error_code ec;
+  return fs::is_regular_file(path, ec);
+}
+
 // A realism value names a file when it looks like one; otherwise a preset.
 bool LooksLikePath(const std::string& spec) {
   return spec.find('/') != std::string::npos || (spec.size() > 5 && spec.substr(spec.size() - 5) == ".yaml");
@@ -193,7 +199,7 @@ bool ValidFlagName(const std::string& name) {
 // `turf launch --scene`: another scene of the profile's kind (its programs and flags are for that kind).
 void OverrideScene(const std::string& scene, LaunchProfile* p, Errors* errors) {
   const std::string path = fs::absolute(scene).lexically_normal().string();
-  if (!fs::is_regular_file(path)) {
+  if (!IsFile(path)) {
     errors->push_back(fmt::format("--scene: no such file: {}", path));
     return;
   }
@@ -224,7 +230,7 @@ ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::st
     if (!m.Has("scene")) m.Fail("scene", "missing: the scene file turf-sim loads");
   } else {
     p.scene = Absolute(p.scene, base_dir);
-    if (!fs::is_regular_file(p.scene)) m.Fail("scene", fmt::format("no such file: {}", p.scene));
+    if (!IsFile(p.scene)) m.Fail("scene", fmt::format("no such file: {}", p.scene));
   }
   if (!scene.empty()) OverrideScene(scene, &p, &errors);
   if (!p.scene.empty()) p.legged = IsLeggedScene(p.scene);
@@ -241,11 +247,11 @@ ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::st
     m.Fail("prefix", "letters, digits, '_', '-' and '/' only, not empty");
   if (m.String("qos", &p.qos)) {
     p.qos = Absolute(p.qos, base_dir);
-    if (!fs::is_regular_file(p.qos)) m.Fail("qos", fmt::format("no such file: {}", p.qos));
+    if (!IsFile(p.qos)) m.Fail("qos", fmt::format("no such file: {}", p.qos));
   }
   ReadDiscovery(m.Map("discovery"), &p.discovery);
   ReadFlags(m.Child("sim"), "sim", "sim", &errors, &p.sim.flags);
-  const bool scene_loads = !p.scene.empty() && fs::is_regular_file(p.scene);
+  const bool scene_loads = !p.scene.empty() && IsFile(p.scene);
   ReadBridges(m.Child("bridges"), scene_loads ? std::optional<bool>(p.legged) : std::nullopt, &errors, &p.bridges);
   ReadRestart(m.Map("restart"), &p.restart);
   if (m.Number("stop_grace", &p.stop_grace) && p.stop_grace <= 0) m.Fail("stop_grace", "must be > 0");

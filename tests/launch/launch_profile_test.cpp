@@ -110,6 +110,10 @@ TEST(LaunchProfile, FlagsKeepTheirOrderAndForm) {
 TEST(LaunchProfile, ErrorsNameTheKey) {
   ExpectError("bridges: {}\n", "scene", "missing");
   ExpectError("scene: nowhere.yaml\n", "scene", "no such file");
+  // A path the system refuses to look at (a name over NAME_MAX) is an error too, not an exception
+  // (fuzz_launch_profile).
+  ExpectError("scene: " + std::string(5000, 'a') + "\n", "scene", "no such file");
+  ExpectError("scene: ssl_div_a.yaml\nqos: " + std::string(5000, 'q') + "\n", "qos", "no such file");
   ExpectError("scene: ssl_div_a.yaml\ndomain: 300\n", "domain", "0..232");
   ExpectError("scene: ssl_div_a.yaml\ndomain: two\n", "domain", "integer");
   ExpectError("scene: ssl_div_a.yaml\nprefix: 'a b'\n", "prefix", "letters");
