@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <set>
 #include <sstream>
+#include <system_error>
 
 #include "loader/realism_yaml.h"
 #include "participants/launcher/programs.h"
@@ -18,7 +19,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool Executable(const fs::path& p) { return fs::is_regular_file(p) && access(p.c_str(), X_OK) == 0; }
+bool Executable(const fs::path& p) {
+  std::error_code ec;
+  return fs::is_regular_file(p, ec) && access(p.c_str(), X_OK) == 0;
+}
 
 }  // namespace
 
