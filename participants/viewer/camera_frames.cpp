@@ -21,28 +21,7 @@ namespace ros = sensor_msgs::msg::dds_;
 constexpr size_t kMaxCompressed = 8u << 20;
 constexpr int kJpegQuality = 80;
 
-bool Token(std::string_view s) {
-  if (s.empty() || s.size() > 64) return false;
-  for (char c : s)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
-  return true;
-}
-
 }  // namespace
-
-std::optional<CameraTarget> ParseCameraTarget(std::string_view target) {
-  target = target.substr(0, target.find('?'));
-  constexpr std::string_view kHead = "/camera/", kTail = ".jpg";
-  if (target.size() <= kHead.size() + kTail.size() || target.substr(0, kHead.size()) != kHead ||
-      target.substr(target.size() - kTail.size()) != kTail)
-    return std::nullopt;
-  const std::string_view ids = target.substr(kHead.size(), target.size() - kHead.size() - kTail.size());
-  const size_t slash = ids.find('/');
-  if (slash == std::string_view::npos) return std::nullopt;
-  CameraTarget t{std::string(ids.substr(0, slash)), std::string(ids.substr(slash + 1))};
-  if (!Token(t.robot) || !Token(t.camera)) return std::nullopt;
-  return t;
-}
 
 struct CameraFrames::Impl {
   struct Frame {

@@ -16,15 +16,9 @@
 #include <string>
 #include <string_view>
 
+#include "participants/viewer/http_rules.h"
+
 namespace turf::viewer {
-
-struct CameraTarget {
-  std::string robot;
-  std::string camera;
-};
-
-// "/camera/red_1/camera.jpg?t=12" -> {red_1, camera}; nullopt for anything else.
-std::optional<CameraTarget> ParseCameraTarget(std::string_view target);
 
 struct CameraFramesOptions {
   int domain = 0;

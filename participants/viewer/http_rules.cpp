@@ -1,5 +1,7 @@
 #include "participants/viewer/http_rules.h"
 
+#include <cctype>
+
 namespace turf::viewer {
 
 namespace {
@@ -20,6 +22,13 @@ std::string_view HostName(std::string_view host) {
   }
   const size_t colon = host.rfind(':');
   return colon == std::string_view::npos ? host : host.substr(0, colon);
+}
+
+bool Token(std::string_view s) {
+  if (s.empty() || s.size() > 64) return false;
+  for (char c : s)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+  return true;
 }
 
 }  // namespace
@@ -69,6 +78,20 @@ bool UpgradeAllowed(std::string_view host, std::string_view origin, bool loopbac
   const std::string_view kind = origin.substr(0, scheme);
   if (kind != "http" && kind != "https") return false;
   return origin.substr(scheme + 3) == host;
+}
+
+std::optional<CameraTarget> ParseCameraTarget(std::string_view target) {
+  target = target.substr(0, target.find('?'));
+  constexpr std::string_view kHead = "/camera/", kTail = ".jpg";
+  if (target.size() <= kHead.size() + kTail.size() || target.substr(0, kHead.size()) != kHead ||
+      target.substr(target.size() - kTail.size()) != kTail)
+    return std::nullopt;
+  const std::string_view ids = target.substr(kHead.size(), target.size() - kHead.size() - kTail.size());
+  const size_t slash = ids.find('/');
+  if (slash == std::string_view::npos) return std::nullopt;
+  CameraTarget t{std::string(ids.substr(0, slash)), std::string(ids.substr(slash + 1))};
+  if (!Token(t.robot) || !Token(t.camera)) return std::nullopt;
+  return t;
 }
 
 bool RateLimit::Allow(std::chrono::steady_clock::time_point now) {

@@ -16,6 +16,14 @@ namespace turf::viewer {
 // target can leave the web root.
 std::optional<std::string> StaticFile(std::string_view target);
 
+// The camera panel's image target (camera_frames.h): "/camera/red_1/camera.jpg?t=12" -> {red_1, camera}; a query
+// is ignored; both names [A-Za-z0-9_], 1..64 bytes; nullopt for anything else.
+struct CameraTarget {
+  std::string robot;
+  std::string camera;
+};
+std::optional<CameraTarget> ParseCameraTarget(std::string_view target);
+
 // The Content-Type of a served file, by extension.
 std::string ContentType(std::string_view path);
 

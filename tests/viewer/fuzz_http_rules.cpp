@@ -1,7 +1,7 @@
 // libFuzzer target for the viewer's HTTP rules (request targets and headers come from anyone reaching the web
 // port): StaticFile never names a file outside the web root (only [A-Za-z0-9._-] segments, none starting with '.',
-// at most 4 deep and 200 bytes), and no input crashes or trips a sanitizer. The bytes are split at the first two
-// NULs into a target (or Host) and an Origin.
+// at most 4 deep and 200 bytes), ParseCameraTarget only gives valid names, and no input crashes or trips a
+// sanitizer. The bytes are split at the first NUL into a target (or Host) and an Origin.
 #include <algorithm>
 #include <cctype>
 #include <cstddef>
@@ -30,6 +30,14 @@ bool InsideWebRoot(const std::string& path) {
   return segments <= 4;
 }
 
+// A camera panel name: [A-Za-z0-9_], 1..64 bytes.
+bool Name(const std::string& s) {
+  if (s.empty() || s.size() > 64) return false;
+  for (char c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+  return true;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -39,6 +47,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (const std::optional<std::string> file = turf::viewer::StaticFile(first)) {
     if (!InsideWebRoot(*file)) std::abort();
     (void)turf::viewer::ContentType(*file);
+  }
+  if (const std::optional<turf::viewer::CameraTarget> camera = turf::viewer::ParseCameraTarget(first)) {
+    if (!Name(camera->robot) || !Name(camera->camera)) std::abort();
   }
   (void)turf::viewer::UpgradeAllowed(first, rest, true);
   (void)turf::viewer::UpgradeAllowed(first, rest, false);
