@@ -4,41 +4,80 @@
 # python3-scipy, python3-torch) walks on turf-sim --rcssservermj, unchanged, through a proxy that watches its torso
 # (pose_proxy.py). Issue 14's acceptance run: the T1 must walk where the client commands (0.5 m/s forward after
 # 1 s) and stay upright for 60 s of simulated time.
-#   bench/rcssservermj_nn/run.sh --client-dir DIR [--seconds 60] [--python /usr/bin/python3] [--realtime]
+#   bench/rcssservermj_nn/run.sh --client-dir DIR [--seconds 60] [--players "1 2 3"] [--python /usr/bin/python3]
+#                                [--realtime] [--reference-mujoco DIR --reference-robot DIR]
+# --players: the client's player numbers, one run each (each beams to its own spot: the same walk from other
+# places, so the spread shows how sensitive the walk is). --reference-mujoco (the unpacked @mujoco/mujoco npm
+# package, with mujoco.js) and --reference-robot (RCSSServerMJ's src/rcsssmj/resources/robots/T1, with robot.xml
+# and meshes/), both kept outside turf: each player also walks on MuJoCo 3 with the reference's own robot file
+# (reference_server.mjs, run by Debian's nodejs), in the same table.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
-CLIENT_DIR="" SECONDS_SIM=60 PYTHON=/usr/bin/python3 REALTIME=0
+CLIENT_DIR="" SECONDS_SIM=60 PYTHON=/usr/bin/python3 REALTIME=0 PLAYERS=1 REF_MUJOCO="" REF_ROBOT=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --client-dir) CLIENT_DIR=$2; shift 2 ;;
     --seconds) SECONDS_SIM=$2; shift 2 ;;
+    --players) PLAYERS=$2; shift 2 ;;
     --python) PYTHON=$2; shift 2 ;;
     --realtime) REALTIME=1; shift ;;
+    --reference-mujoco) REF_MUJOCO=$(realpath "$2"); shift 2 ;;
+    --reference-robot) REF_ROBOT=$(realpath "$2"); shift 2 ;;
     *) echo "unknown argument $1 (see the comment at the top)" >&2; exit 2 ;;
   esac
 done
 [ -f "$CLIENT_DIR/nn_client.py" ] || { echo "--client-dir must hold nn_client.py and locomotion_nn.pth" >&2; exit 2; }
-port=$((25100 + RANDOM % 400)) proxy=$((25600 + RANDOM % 400))
-mode=(--rcssservermj-no-realtime) label="1 T1, sync, as fast as possible"
-[ "$REALTIME" = 1 ] && mode=() label="1 T1, real time"
-"$BUILD_DIR/participants/sim/turf-sim" --scene configs/scenes/rcssservermj_fifa.yaml -d $((90 + RANDOM % 9)) \
-  -p "nn$$" --lockstep --rcssservermj --rcssservermj-agent-port "$port" --rcssservermj-monitor-port $((port + 1)) \
-  "${mode[@]}" --log-level warn &
-sim=$!
-"$PYTHON" bench/rcssservermj_nn/pose_proxy.py --listen "$proxy" --server "$port" --seconds "$SECONDS_SIM" \
-  --label "$label" &
-watcher=$!
-# The proxy needs turf-sim listening before the client connects through it: wait for the port (with a deadline).
-for _ in $(seq 1 600); do
-  (exec 3<>/dev/tcp/127.0.0.1/"$port") 2>/dev/null && break
-  sleep 0.1
+if [ -n "$REF_MUJOCO$REF_ROBOT" ]; then
+  [ -f "$REF_MUJOCO/mujoco.js" ] || { echo "--reference-mujoco must hold mujoco.js (@mujoco/mujoco)" >&2; exit 2; }
+  [ -f "$REF_ROBOT/robot.xml" ] || { echo "--reference-robot must hold robot.xml and meshes/" >&2; exit 2; }
+  command -v node > /dev/null || { echo "the reference needs node (Debian: nodejs)" >&2; exit 2; }
+fi
+mode=(--rcssservermj-no-realtime) label="sync, as fast as possible"
+[ "$REALTIME" = 1 ] && mode=() label="real time"
+
+# Waits (with a deadline) until something listens on port $1.
+wait_port() {
+  for _ in $(seq 1 600); do
+    (exec 3<>/dev/tcp/127.0.0.1/"$1") 2>/dev/null && return 0
+    sleep 0.1
+  done
+  echo "nothing listens on port $1" >&2
+  return 1
+}
+
+# One walk: the server already listening on port $1, player $2, row label $3.
+walk() {
+  local proxy=$((25600 + RANDOM % 400))
+  "$PYTHON" bench/rcssservermj_nn/pose_proxy.py --listen "$proxy" --server "$1" --seconds "$SECONDS_SIM" \
+    --label "$3" &
+  local watcher=$!
+  wait_port "$proxy"  # the proxy skips a probe's connection (it sends nothing)
+  (cd "$CLIENT_DIR" && exec "$PYTHON" nn_client.py -s 127.0.0.1 -p "$proxy" -t turfA -n "$2" -r T1 >/dev/null 2>&1) &
+  local client=$!
+  wait "$watcher" || true
+  kill "$client" 2>/dev/null || true
+}
+
+echo "| run | sim s | distance m | forward (x) m | falls | lowest torso m | mean torso m | final yaw deg |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
+for player in $PLAYERS; do
+  port=$((25100 + RANDOM % 400))
+  "$BUILD_DIR/participants/sim/turf-sim" --scene configs/scenes/rcssservermj_fifa.yaml -d $((90 + RANDOM % 9)) \
+    -p "nn$$" --lockstep --rcssservermj --rcssservermj-agent-port "$port" --rcssservermj-monitor-port $((port + 1)) \
+    "${mode[@]}" --log-level warn &
+  sim=$!
+  wait_port "$port"
+  walk "$port" "$player" "turf, player $player, $label"
+  kill -INT "$sim" 2>/dev/null || true
+  wait "$sim" 2>/dev/null || true
+  [ -n "$REF_MUJOCO" ] || continue
+  port=$((26100 + RANDOM % 400))
+  node bench/rcssservermj_nn/reference_server.mjs "$port" "$REF_MUJOCO" "$REF_ROBOT" 2> /tmp/turf-nn-reference.$$.log &
+  ref=$!
+  wait_port "$port"
+  walk "$port" "$player" "reference ($(grep -o 'MuJoCo [0-9.]*' /tmp/turf-nn-reference.$$.log)), player $player"
+  kill "$ref" 2>/dev/null || true
+  wait "$ref" 2>/dev/null || true
+  rm -f /tmp/turf-nn-reference.$$.log
 done
-echo "| run | sim s | distance m | forward (x) m | falls | lowest torso m | final yaw deg |"
-echo "| --- | --- | --- | --- | --- | --- | --- |"
-(cd "$CLIENT_DIR" && exec "$PYTHON" nn_client.py -s 127.0.0.1 -p "$proxy" -t turfA -n 1 -r T1 >/dev/null 2>&1) &
-client=$!
-wait "$watcher" || true
-kill "$client" 2>/dev/null || true
-kill -INT "$sim" 2>/dev/null || true
-wait "$sim" 2>/dev/null || true

@@ -216,18 +216,6 @@ void Session::Apply(Agent* a, const ActionMessage& m) {
   if (m.beam && referee_.BeamAllowed()) Beam(a, *m.beam);  // else ignored, as the reference does
 }
 
-PdCommand Session::Clamped(const MjRobotModel& model, size_t joint, const PdCommand& c) const {
-  const MjJoint& j = model.joints[joint];
-  // Inward to 0.01 rad: inside the robot file's range, which is the facts' range rounded to 0.01 rad.
-  const double lo = std::ceil(j.lo_deg * kRad * 100.0) / 100.0;
-  const double hi = std::floor(j.hi_deg * kRad * 100.0) / 100.0;
-  PdCommand out = c;
-  out.q = std::clamp(c.q, lo, hi);
-  out.dq = std::clamp(c.dq, -kMaxTargetSpeed, kMaxTargetSpeed);
-  out.tau = std::clamp(c.tau, -j.torque, j.torque);
-  return out;
-}
-
 WorldRequests Session::TakeRequests() {
   for (auto& [id, a] : agents_)
     if (!a.active && a.init && !a.kicked) Activate(&a);
@@ -245,7 +233,7 @@ WorldRequests Session::TakeRequests() {
   for (const auto& [id, a] : agents_) {
     if (!a.active) continue;
     std::vector<PdCommand>& joints = requests_.joints[robots_[a.robot].name];
-    for (size_t j = 0; j < a.motors.size(); ++j) joints.push_back(Clamped(*a.model, j, a.motors[j]));
+    joints.insert(joints.end(), a.motors.begin(), a.motors.end());
   }
   return std::exchange(requests_, WorldRequests{});
 }

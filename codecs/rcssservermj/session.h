@@ -27,9 +27,9 @@
 // state after step k at the start of cycle k+1, after collecting actions);
 // sequential loop, in step k+1. Motor targets and gains persist
 // until replaced; before the first command every joint has targets 0 and
-// kp = kd = 1. Every cycle the whole set of each active robot is requested,
-// with q clamped into the joint's range (truncated inward to 0.01 rad),
-// |dq| to kMaxTargetSpeed and |tau| to the joint's effort limit.
+// kp = kd = 1. Every cycle the whole set of each active robot is requested as
+// sent (a target beyond the joint's range, or a tau above its effort limit,
+// acts as on the reference: only the law's torque is clamped, by the world).
 #pragma once
 
 #include <Eigen/Core>
@@ -55,8 +55,7 @@
 namespace turf::rcssservermj {
 
 inline constexpr double kCycleSeconds = 0.02;
-inline constexpr double kMaxTargetSpeed = 50.0;  // rad/s, |dq| sent to the world
-inline constexpr double kBeamHeight = 0.6745;    // m, torso after a beam (T1; K1: its torso height + 0.001)
+inline constexpr double kBeamHeight = 0.6745;  // m, torso after a beam (T1; K1: its torso height + 0.001)
 
 struct MjLink {
   std::string name;  // body name of the robot file
@@ -192,7 +191,6 @@ class Session {
   std::optional<Side> Toucher(const MjWorldSnapshot& world) const;
   MjPerception Perceive(const Agent& agent, const MjWorldSnapshot& world, const std::vector<VisiblePlayer>* players);
   std::vector<VisiblePlayer> Players(const MjWorldSnapshot& world) const;
-  PdCommand Clamped(const MjRobotModel& model, size_t joint, const PdCommand& c) const;
 
   SessionOptions options_;
   std::vector<SceneRobot> robots_;

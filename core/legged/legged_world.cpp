@@ -366,8 +366,8 @@ JointCommandError LeggedWorld::CheckJointCommand(int robot, const JointCommand& 
     case JointMode::kTorque:
       return std::abs(c.value) > j.effort_limit ? JointCommandError::kOutOfRange : JointCommandError::kOk;
     case JointMode::kPd: {
-      const bool bad = (j.limited && (c.value < j.lo || c.value > j.hi)) || std::abs(c.dq) > motors.max_speed ||
-                       std::abs(c.tau) > j.effort_limit || c.kp < 0 || c.kp > kMaxPdKp || c.kd < 0 || c.kd > kMaxPdKd;
+      const bool bad = std::abs(c.value) > kMaxPdTarget || std::abs(c.dq) > kMaxPdSpeed ||
+                       std::abs(c.tau) > kMaxPdTau || c.kp < 0 || c.kp > kMaxPdKp || c.kd < 0 || c.kd > kMaxPdKd;
       return bad ? JointCommandError::kOutOfRange : JointCommandError::kOk;
     }
   }

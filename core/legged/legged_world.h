@@ -19,6 +19,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -44,10 +45,18 @@ namespace turf {
 enum class JointMode : uint8_t { kVelocity, kPosition, kTorque, kPd };
 inline constexpr int kJointModeCount = 4;
 
-// Upper bounds of PD gains a command may carry (a guard against garbage, far
-// above any real servo's: the T1's largest SDK gain is 550 N m/rad).
-inline constexpr double kMaxPdKp = 1e4;  // N m / rad
-inline constexpr double kMaxPdKd = 1e3;  // N m s / rad
+// Bounds of what a PD command may carry: guards against garbage, far beyond any
+// real servo's (the T1's largest SDK gain is 550 N m/rad), not limits of the
+// law. A target beyond the joint's range or a feed-forward torque above its
+// effort limit is a legitimate command, as on RCSSServerMJ (whose position
+// actuators have no control range) and a real servo: the law's torque is what
+// gets clamped to the effort limit. The target bounds equal the RCSSServerMJ
+// parser's (codecs/rcssservermj/actions.h), so whatever it accepts acts as sent.
+inline constexpr double kMaxPdKp = 1e4;            // N m / rad
+inline constexpr double kMaxPdKd = 1e3;            // N m s / rad
+inline constexpr double kMaxPdTarget = 20 * M_PI;  // rad: ten turns (3600 deg)
+inline constexpr double kMaxPdSpeed = 200 * M_PI;  // rad/s (36000 deg/s)
+inline constexpr double kMaxPdTau = 1e3;           // N m, feed-forward
 
 // A command for one joint; it holds until the next command for that joint
 // (SimSpark's hinge effectors behave so). At start every joint is in velocity
@@ -65,9 +74,8 @@ struct JointCommand {
 
 // Joint commands answer kOk, kUnknownRobot, kUnknownJoint, kNotFinite or
 // kOutOfRange (beyond max speed, max torque or the joint's range; negative
-// gains; kPd: q outside the joint's range, |dq| above max speed, |tau| above
-// the joint's effort limit, kp or kd negative or above kMaxPdKp / kMaxPdKd):
-// core/errors.h.
+// gains; kPd: |q|, |dq|, |tau| above kMaxPdTarget, kMaxPdSpeed, kMaxPdTau, kp
+// or kd negative or above kMaxPdKp / kMaxPdKd): core/errors.h.
 
 // Where a robot's root body goes (a SimSpark beam, a trainer's move, parking).
 struct RobotPlacement {

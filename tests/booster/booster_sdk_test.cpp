@@ -170,7 +170,9 @@ TEST_F(BoosterSdkTest, BadCommandsAreRefusedAndTheRobotHoldsItsLastCommand) {
   EXPECT_TRUE(Send(StandWithHeadDown(), 10s, "joint_ctrl.stale"));  // a command 10 s old
   EXPECT_EQ(rig_.bridge().Stats().commands, taken);                 // none of them reached turf-sim
   bi::LowCmd_ beyond = StandWithHeadDown();
-  beyond.motor_cmd()[1].q(3.0f);  // past head pitch's range: turf-sim's validator refuses the whole message
+  // Garbage far past any joint (a target past the joint's range but within kMaxPdTarget is a command, as on a real
+  // servo): turf-sim's validator refuses the whole message.
+  beyond.motor_cmd()[1].q(1000.0f);
   ASSERT_TRUE(Send(beyond));
   Step(200);
   EXPECT_TRUE(

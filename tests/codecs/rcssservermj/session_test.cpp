@@ -110,7 +110,7 @@ TEST(MjSession, BeamPerSideOnlyBeforeKickOff) {
   EXPECT_TRUE(f.world.Cycle(&f.session).moves.empty());
 }
 
-TEST(MjSession, MotorDefaultsPersistenceAndClamping) {
+TEST(MjSession, MotorDefaultsPersistenceAndTargetsAsSent) {
   Fixture f(Sequential());
   const int a = f.Join("(init T1 a 1)");
   WorldRequests r = f.world.Cycle(&f.session);
@@ -126,13 +126,14 @@ TEST(MjSession, MotorDefaultsPersistenceAndClamping) {
   EXPECT_NEAR(knee->q, M_PI / 4, 1e-12);  // the last one wins
   EXPECT_EQ(knee->kp, 60);
   EXPECT_EQ(knee->tau, 1);
-  EXPECT_NEAR(Command(r, "t1_1", "AAHead_yaw")->q, 1.57, 1e-12);  // 200 deg into the range (90 deg, to 0.01 rad in)
+  // 200 deg, past the joint's 90: as sent (RCSSServerMJ's position actuators have no control range).
+  EXPECT_NEAR(Command(r, "t1_1", "AAHead_yaw")->q, 200 * M_PI / 180, 1e-12);
   f.session.Receive(a, "(syn)");
   r = f.world.Cycle(&f.session);
   EXPECT_NEAR(Command(r, "t1_1", "Left_Knee_Pitch")->q, M_PI / 4, 1e-12);  // persists
   f.session.Receive(a, "(lle4 0 0 1 1 500)");
   r = f.world.Cycle(&f.session);
-  EXPECT_EQ(Command(r, "t1_1", "Left_Knee_Pitch")->tau, 60);  // the knee's effort limit
+  EXPECT_EQ(Command(r, "t1_1", "Left_Knee_Pitch")->tau, 500);  // the world clamps the law's sum, not tau alone
 }
 
 // The agent answers its first perception as soon as it has it; the result is the number of steps after the one

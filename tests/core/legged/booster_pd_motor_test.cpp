@@ -47,6 +47,32 @@ TEST(BoosterPdMotorTest, TorqueIsTheLawClampedToTheEffortLimit) {
   }
 }
 
+// RCSSServerMJ's position actuators have no control range and its joints'
+// actuatorfrcrange clamps the sum of the three actuators: a target beyond the
+// joint's range pulls with the whole law, and a feed-forward tau beyond the
+// effort limit is clamped only with the rest (a policy trained there, such as
+// the example nn_client's, sends both; clamping the target instead made its T1
+// walk with the torso 10 cm lower).
+TEST(BoosterPdMotorTest, TargetsBeyondTheRangeAndTauBeyondTheLimitActAsSent) {
+  LeggedWorld w(BoosterStandScene("t1"));
+  for (int i = 0; i < 100; ++i) w.Step();
+  const int roll = w.JointIndex(0, "Left_Hip_Roll");    // range -0.2..1.57 rad, effort limit 30 N m
+  const int knee = w.JointIndex(0, "Left_Knee_Pitch");  // range 0..2.34 rad, effort limit 60 N m
+  ASSERT_EQ(w.SetJointCommand(0, Pd("Left_Hip_Roll", -0.35, 0, 25, 0.6, 0)), JointCommandError::kOk);
+  ASSERT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", 0.4, 0, 200, 0, 90)), JointCommandError::kOk);
+  for (int i = 0; i < 5; ++i) {
+    const LeggedRobotState before = w.State().robots[0];
+    w.Step();
+    const LeggedRobotState after = w.State().robots[0];
+    const double roll_law = 25 * (-0.35 - before.joint_positions[roll]) - 0.6 * before.joint_velocities[roll];
+    EXPECT_DOUBLE_EQ(after.joint_efforts[roll], std::clamp(roll_law, -30.0, 30.0)) << i;
+    EXPECT_LT(after.joint_efforts[roll], 25 * (-0.2 - before.joint_positions[roll]) - 1.0)
+        << "pulls harder than a target clamped into the range would";
+    const double knee_law = 200 * (0.4 - before.joint_positions[knee]) + 90;
+    EXPECT_DOUBLE_EQ(after.joint_efforts[knee], std::clamp(knee_law, -60.0, 60.0)) << i;
+  }
+}
+
 TEST(BoosterPdMotorTest, BadCommandsAreRefusedWithTheirNames) {
   LeggedWorld w(BoosterStandScene("t1"));
   EXPECT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", 0.4, NAN, 10, 1, 0)), JointCommandError::kNotFinite);
@@ -56,19 +82,25 @@ TEST(BoosterPdMotorTest, BadCommandsAreRefusedWithTheirNames) {
   EXPECT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", 0.4, 0, 10, -0.1, 0)), JointCommandError::kOutOfRange);
   EXPECT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", 0.4, 0, kMaxPdKp * 2, 1, 0)), JointCommandError::kOutOfRange);
   EXPECT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", 0.4, 0, 10, kMaxPdKd * 2, 0)), JointCommandError::kOutOfRange);
-  EXPECT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", -0.1, 0, 10, 1, 0)), JointCommandError::kOutOfRange);
-  EXPECT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", 0.4, 0, 10, 1, 60.5)), JointCommandError::kOutOfRange);
-  EXPECT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", 0.4, 25, 10, 1, 0)), JointCommandError::kOutOfRange);
+  EXPECT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", kMaxPdTarget * 1.01, 0, 10, 1, 0)),
+            JointCommandError::kOutOfRange);
+  EXPECT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", 0.4, 0, 10, 1, -kMaxPdTau * 1.01)),
+            JointCommandError::kOutOfRange);
+  EXPECT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", 0.4, kMaxPdSpeed * 1.01, 10, 1, 0)),
+            JointCommandError::kOutOfRange);
   EXPECT_EQ(w.SetJointCommand(0, Pd("Knee", 0.4, 0, 10, 1, 0)), JointCommandError::kUnknownJoint);
   EXPECT_EQ(w.SetJointCommand(1, Pd("Left_Knee_Pitch", 0.4, 0, 10, 1, 0)), JointCommandError::kUnknownRobot);
-  // At the limits: accepted.
-  EXPECT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", 2.34, -20, kMaxPdKp, kMaxPdKd, -60)), JointCommandError::kOk);
+  // At the guards: accepted. A target beyond the joint's range (the knee's is 0..2.34 rad), a velocity above the
+  // motors' max_speed and a tau above the effort limit are commands, as on RCSSServerMJ and a real servo.
+  EXPECT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", -kMaxPdTarget, kMaxPdSpeed, kMaxPdKp, kMaxPdKd, kMaxPdTau)),
+            JointCommandError::kOk);
+  EXPECT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", -0.3, 60, 10, 1, 75)), JointCommandError::kOk);
   // The other modes' motors are bounded by the joint's effort limit too (the Nao's: the robot's max_torque).
   EXPECT_EQ(w.SetJointCommand(0, {"Left_Knee_Pitch", JointMode::kTorque, 59.0}), JointCommandError::kOk);
   EXPECT_EQ(w.SetJointCommand(0, {"Left_Knee_Pitch", JointMode::kTorque, 61.0}), JointCommandError::kOutOfRange);
   EXPECT_EQ(w.SetJointCommand(0, {"AAHead_yaw", JointMode::kTorque, 7.5}), JointCommandError::kOutOfRange);
   // All or none: one bad command refuses the batch.
-  const std::vector<JointCommand> batch = {Pd("AAHead_yaw", 0.1, 0, 5, 0.1, 0), Pd("Head_pitch", 5.0, 0, 5, 0.1, 0)};
+  const std::vector<JointCommand> batch = {Pd("AAHead_yaw", 0.1, 0, 5, 0.1, 0), Pd("Head_pitch", 1e3, 0, 5, 0.1, 0)};
   EXPECT_EQ(w.CheckJointCommands(0, batch), JointCommandError::kOutOfRange);
 }
 
