@@ -3,48 +3,27 @@
 // RCSSServerMJ's own robot file, served the way RCSSServerMJ serves it in sync mode, so that the same unchanged
 // client walks on both and the differences are the model's and the engine's, not the protocol's. Written from the
 // facts in shared/protocols/rcssservermj.md, only as far as this client needs:
-//   - world: MuJoCo timestep 5 ms, air density 1.2 and viscosity 2e-5, the ground plane, the reference's ball;
 //   - cycle: 4 steps of 5 ms; the parallel loop (the perception of the state before a cycle's steps is sent after
 //     the actions are collected, so an answer acts one cycle after the state it saw);
-//   - activation: the first message (init) gets the first perception, and the world steps without an action;
+//   - activation: the first message (init) places the robot where RCSSServerMJ spawns it (x -(2n+1), y 37 (half
+//     the FIFA field's width and its border), the file's torso height, yaw -90 deg, joints 0), sends the first
+//     perception, and the world steps without an action;
 //   - beam: x -> -|x| (left team), z 0.6745, yaw theta, joints and velocities zeroed;
 //   - motors: (<effector> q dq kp kd tau), degrees, through the file's <effector>_pos/_vel/_tau actuators;
 //   - perceptions: time, GS, quat, pos, GYR, ACC, then every HJ, numbers truncated toward zero.
-// Not a server: no referee, no vision, one agent, no checks beyond what keeps this process alive.
+// Not a server: no referee, no vision, one agent, no checks beyond what keeps this process alive. The world:
+// reference_world.mjs.
 //   node reference_server.mjs PORT MUJOCO_JS_DIR ROBOT_DIR   (ROBOT_DIR: robot.xml and meshes/)
-import fs from 'fs';
 import net from 'net';
+
+import {loadReference, setGains} from './reference_world.mjs';
 
 const [port, mujocoDir, robotDir] = [Number(process.argv[2]), process.argv[3], process.argv[4]];
 if (!port || !mujocoDir || !robotDir) {
   console.error('usage: node reference_server.mjs PORT MUJOCO_JS_DIR ROBOT_DIR');
   process.exit(2);
 }
-const mj = await (await import(mujocoDir + '/mujoco.js')).default();
-
-function loadWorld() {
-  mj.FS.mkdir('/r');
-  mj.FS.mkdir('/r/meshes');
-  for (const f of fs.readdirSync(robotDir + '/meshes')) {
-    mj.FS.writeFile('/r/meshes/' + f, fs.readFileSync(robotDir + '/meshes/' + f));
-  }
-  mj.FS.writeFile('/r/robot.xml', fs.readFileSync(robotDir + '/robot.xml'));
-  mj.FS.writeFile('/r/world.xml', `<mujoco model="reference">
-  <option timestep="0.005" density="1.2" viscosity="0.00002"/>
-  <worldbody>
-    <geom name="pitch" type="plane" size="32 24 40"/>
-    <body name="ball" pos="0 0 0.11">
-      <freejoint/>
-      <geom type="sphere" size="0.11" mass="0.41" friction="0.4 0.01 0.01" condim="6" priority="1" solref="-5000 -20"/>
-    </body>
-  </worldbody>
-  <include file="robot.xml"/>
-</mujoco>`);
-  return mj.MjModel.mj_loadXML('/r/world.xml');
-}
-
-const m = loadWorld();
-const d = new mj.MjData(m);
+const {mj, m, d} = await loadReference(mujocoDir, robotDir, {withBall: true});
 const DEG = 180 / Math.PI;
 const kObj = mj.mjtObj;
 const id = (type, name) => {
@@ -66,9 +45,11 @@ for (const e of ['he1', 'he2', ...kSides.flatMap((s) => [1, 2, 3, 4].map((k) => 
 }
 const torso = ['torso_quat', 'torso_pos', 'torso_gyro', 'torso_acc'].map(sensor);
 
-function place(x, y, yaw) {
+const kFileTorsoHeight = m.body_pos[3 * m.jnt_bodyid[id(kObj.mjOBJ_JOINT, 'root')] + 2];
+
+function place(x, y, yaw, z = 0.6745) {
   const q = d.qpos;
-  q.set([x, y, 0.6745, Math.cos(yaw / 2), 0, 0, Math.sin(yaw / 2)], rootQpos);
+  q.set([x, y, z, Math.cos(yaw / 2), 0, 0, Math.sin(yaw / 2)], rootQpos);
   for (let i = rootQpos + 7; i < m.nq; ++i) q[i] = 0;
   for (let i = rootDof; i < m.nv; ++i) d.qvel[i] = 0;
 }
@@ -101,15 +82,16 @@ function act(message) {
     d.ctrl[pos] = q / DEG;
     d.ctrl[vel] = dq / DEG;
     d.ctrl[tau] = torque;
-    m.actuator_gainprm[pos * 10] = kp;
-    m.actuator_biasprm[pos * 10 + 1] = -kp;
-    m.actuator_gainprm[vel * 10] = kd;
-    m.actuator_biasprm[vel * 10 + 2] = -kd;
+    setGains(m, pos, vel, kp, kd);
   }
 }
 
-place(-29, 0, 0);  // wherever: the agent's beam places it
-mj.mj_forward(m, d);
+function spawn(init) {
+  const player = Number(/\(init\s+\S+\s+\S+\s+(\d+)\)/.exec(init)?.[1] ?? 1);
+  place(-(2 * player + 1), 37, -Math.PI / 2, kFileTorsoHeight);
+  mj.mj_forward(m, d);
+}
+
 console.error(`reference: MuJoCo ${mj.mj_versionString()}, ${m.nu} actuators; listening on 127.0.0.1:${port}`);
 
 net.createServer((socket) => {
@@ -136,6 +118,7 @@ net.createServer((socket) => {
       if (pending.length < 4 + n) break;
       const message = pending.subarray(4, 4 + n).toString();
       pending = pending.subarray(4 + n);
+      if (!started) spawn(message);
       cycle(started ? message : null);  // the first message is the init
       started = true;
     }
