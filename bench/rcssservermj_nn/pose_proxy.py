@@ -2,7 +2,8 @@
 """A TCP proxy between one RCSSServerMJ agent and the server that watches the agent's torso in the perceptions
 (pos, quat) and prints one table row at the end: simulated seconds, distance walked, falls (torso below
 --fall-height, counted once per fall until it is up again above --up-height), lowest and mean torso height while
-walking (the mean from --mean-from), final yaw. Bytes pass unchanged.
+walking (the mean from --mean-from), final yaw. Bytes pass unchanged; --capture FILE also writes each of the agent's
+messages, one a line (replay_agent.py sends them again).
 Usage: pose_proxy.py --listen PORT --server PORT --seconds S --label TEXT"""
 import argparse
 import math
@@ -19,6 +20,7 @@ parser.add_argument("--mean-from", type=float, default=5.0, help="sim time from 
 parser.add_argument("--fall-height", type=float, default=0.45)
 parser.add_argument("--up-height", type=float, default=0.5)
 parser.add_argument("--label", default="")
+parser.add_argument("--capture", default=None, help="file for the agent's messages, one a line")
 args = parser.parse_args()
 
 listener = socket.socket()
@@ -67,13 +69,30 @@ def watch(message):
         state["down"] = False
 
 
+def frames(buffer):
+    """The whole frames at the start of buffer, and what is left of it."""
+    out = []
+    while len(buffer) >= 4 and len(buffer) >= 4 + int.from_bytes(buffer[:4], "big"):
+        n = int.from_bytes(buffer[:4], "big")
+        out.append(buffer[4:4 + n])
+        buffer = buffer[4 + n:]
+    return out, buffer
+
+
 def to_server():
+    capture = open(args.capture, "w") if args.capture else None
+    sent = first
     try:
         while True:
+            if capture:
+                messages, sent = frames(sent)
+                capture.writelines(m.decode(errors="replace") + "\n" for m in messages)
+                capture.flush()
             data = client.recv(65536)
             if not data:
                 break
             server.sendall(data)
+            sent += data
     except OSError:
         pass
     server.close()
@@ -87,13 +106,9 @@ try:
         if not data:
             break
         client.sendall(data)
-        buffer += data
-        while len(buffer) >= 4:
-            n = int.from_bytes(buffer[:4], "big")
-            if len(buffer) < 4 + n:
-                break
-            watch(buffer[4:4 + n].decode(errors="replace"))
-            buffer = buffer[4 + n:]
+        messages, buffer = frames(buffer + data)
+        for m in messages:
+            watch(m.decode(errors="replace"))
 except OSError:
     pass
 client.close()
