@@ -171,6 +171,15 @@ void LeggedWorld::ResetCommands(RobotSlot* r) {
   }
 }
 
+void LeggedWorld::SenseJoints() {
+  for (RobotSlot& r : robots_) {
+    for (JointSlot& j : r.joints) {
+      j.sensed_q = data_->qpos[j.qpos];
+      j.sensed_qd = data_->qvel[j.dof];
+    }
+  }
+}
+
 void LeggedWorld::AcceptState() { last_good_.Accept(model_.get(), data_.get()); }
 
 PlacementError LeggedWorld::PlaceRobot(int robot, const RobotPlacement& p) {
@@ -197,6 +206,7 @@ PlacementError LeggedWorld::PlaceRobot(int robot, const RobotPlacement& p) {
   }
   if (p.reset_joints) ResetCommands(&r);
   mj_forward(m, d);
+  SenseJoints();
   AcceptState();
   return PlacementError::kOk;
 }
@@ -214,6 +224,7 @@ PlacementError LeggedWorld::PlaceBall(const std::array<double, 3>& position, con
     d->qvel[ball_qvel_ + 3 + k] = 0.0;
   }
   mj_forward(m, d);
+  SenseJoints();
   AcceptState();
   return PlacementError::kOk;
 }
@@ -279,6 +290,8 @@ void LeggedWorld::Fields(Io& io, Self& self) {
       io.Check(j.stop >= 0 && j.stop <= 2 && std::isfinite(j.stop_target), "joint stop out of range");
       io(j.impulse);
       io.Check(j.impulse >= 0.0 && j.impulse <= 1e6, "motor impulse out of range");
+      io(j.sensed_q, j.sensed_qd);
+      io.Check(std::isfinite(j.sensed_q) && std::isfinite(j.sensed_qd), "sensed joint not finite");
     }
   }
 }
@@ -300,6 +313,7 @@ void LeggedWorld::Reset() {
   commanded_ = false;
   std::fill(ball_touch_ns_.begin(), ball_touch_ns_.end(), -1);
   mj_forward(model_.get(), data_.get());
+  SenseJoints();
   ResetCommands();
   AcceptState();
 }
@@ -439,6 +453,7 @@ bool LeggedWorld::StagePhysics() {
     mj_comVel(model_.get(), data_.get());
     mj_sensorPos(model_.get(), data_.get());
     mj_sensorVel(model_.get(), data_.get());
+    SenseJoints();
   }
   for (RobotSlot& r : robots_) {
     for (JointSlot& j : r.joints) {
@@ -458,6 +473,7 @@ bool LeggedWorld::StagePhysics() {
 void LeggedWorld::Step() {
   if (stop_steps_ > 0) StageStops();
   mj_step1(model_.get(), data_.get());
+  SenseJoints();  // mj_step1 computed the position and velocity sensors of this state
   if (ode_contacts_) ode_contacts_->Apply(model_.get(), data_.get());
   StageServos();
   StageBodyForces();
@@ -468,6 +484,7 @@ void LeggedWorld::Step() {
     // Stage 3: undo a step that blew up, at rest, and hold every joint there.
     ++health_.instability_recoveries;
     last_good_.Undo(model_.get(), data_.get());
+    SenseJoints();
     ResetCommands();
   }
   ++frame_;
@@ -579,8 +596,8 @@ void LeggedWorld::State(LeggedWorldState* out) const {
     s.joint_efforts.resize(n);
     for (size_t j = 0; j < n; ++j) {
       s.joint_names[j] = r.joints[j].name;
-      s.joint_positions[j] = d->qpos[r.joints[j].qpos];
-      s.joint_velocities[j] = d->qvel[r.joints[j].dof];
+      s.joint_positions[j] = r.joints[j].sensed_q;
+      s.joint_velocities[j] = r.joints[j].sensed_qd;
       s.joint_efforts[j] = r.joints[j].effort;
     }
     s.has_imu = r.gyro >= 0 || r.accelerometer >= 0;

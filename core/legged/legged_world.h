@@ -14,8 +14,11 @@
 //            2 physics (mj_step2: one constraint solve, integration)
 //            3 health (a non-finite state is undone)
 //   outputs  State() and the accessors (read-only)
-// Sensor values are MuJoCo's, computed at the start of the last mj_step (or by
-// Reset). Time is the step counter times the scene's step, never a wall clock.
+// Sensor values are MuJoCo's, computed at the start of the last mj_step (after
+// it with the scene's sensors_after_step; or by a reset or placement), and so
+// are the reported joint angles and speeds (as RCSSServerMJ's jointpos and
+// jointvel sensors), read with them. Time is the step counter times the
+// scene's step, never a wall clock.
 #pragma once
 
 #include <array>
@@ -240,6 +243,7 @@ class LeggedWorld : Pinned {
   void ResetCommands();
   void ResetCommands(RobotSlot* robot);
   void AcceptState();  // the current state is the last good one
+  void SenseJoints();  // each joint's sensed angle and speed: the current ones, where MuJoCo computes its sensors
   void ContactWrench(int site, ForceReading* out) const;
   void RobotContacts(std::vector<RobotContact>* out) const;
   void RecordBallTouches();  // after a step: every robot with a body in contact with the ball

@@ -31,6 +31,10 @@ struct LeggedWorld::JointSlot {
   double stop_target = 0.0;
   int stop_row = -1;     // its limit row in this step, -1 if none
   double impulse = 0.0;  // N m s: what the velocity motor spent in this impulse window
+  // The angle and speed the robot's state reports, read when MuJoCo computes its sensors (SenseJoints): at the
+  // start of the last step (after it with the scene's sensors_after_step), as the IMU and every other sensor.
+  double sensed_q = 0.0;
+  double sensed_qd = 0.0;
 };
 
 struct LeggedWorld::SensorRef {

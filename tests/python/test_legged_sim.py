@@ -65,10 +65,10 @@ def test_bad_joint_commands_raise_and_change_nothing():
     nan[5, 0] = np.nan
     negative_gain = good.copy()
     negative_gain[3, 2] = -1.0
-    beyond_range = good.copy()
-    beyond_range[14, 0] = 50.0
+    garbage_target = good.copy()  # past the PD guard of ten turns (a target past the joint's range is a command)
+    garbage_target[14, 0] = 100.0
     for commands, error in [({"t1": nan}, "not_finite"), ({"t1": negative_gain}, "out_of_range"),
-                            ({"t1": beyond_range}, "out_of_range"), ({"t1": good[:5]}, "malformed"),
+                            ({"t1": garbage_target}, "out_of_range"), ({"t1": good[:5]}, "malformed"),
                             ({"nao_9": good}, "unknown_robot"), ({7: good}, "unknown_robot")]:
         with pytest.raises(turf.TurfError) as e:
             sim.step(commands, 4)

@@ -231,7 +231,7 @@ TEST(MemoryBusNode, JointPdCommandsOnTheTopicDriveABoosterT1) {
   bad.robot("t1");
   bad.joints().push_back(target(-0.5, NAN, 0));
   writer->Write(bad);
-  bad.joints()[0] = target(-0.5, 0, 7.5);  // the head's effort limit is 7 N m
+  bad.joints()[0] = target(-0.5, 0, 2000);  // beyond the PD guard (kMaxPdTau); a tau above the 7 N m limit is a command
   writer->Write(bad);
   idl::JointCommand good;
   good.robot("t1");

@@ -26,6 +26,9 @@ JointCommand Pd(const std::string& joint, double q, double dq, double kp, double
 
 // Each step's torque is kp (q* - q) + kd (dq* - q') + tau from the angle and
 // velocity at the step's start, exactly, or the effort limit when beyond it.
+// The state after a step reports both: the angle and velocity the step started
+// from (read with MuJoCo's sensors, as RCSSServerMJ's jointpos and jointvel)
+// and the torque that step applied.
 TEST(BoosterPdMotorTest, TorqueIsTheLawClampedToTheEffortLimit) {
   LeggedWorld w(BoosterStandScene("t1"));
   for (int i = 0; i < 100; ++i) w.Step();
@@ -37,9 +40,9 @@ TEST(BoosterPdMotorTest, TorqueIsTheLawClampedToTheEffortLimit) {
     if (i == 1) {
       EXPECT_DOUBLE_EQ(w.State().robots[0].joint_efforts[elbow], 18.0) << "about 2 rad away: clamped at 18 N m";
     }
-    const LeggedRobotState before = w.State().robots[0];
     w.Step();
     const LeggedRobotState after = w.State().robots[0];
+    const LeggedRobotState& before = after;  // the step's start, as its sensors saw it
     const double law = 300 * (0.5 - before.joint_positions[knee]) + 4 * (0.3 - before.joint_velocities[knee]) + 1.5;
     EXPECT_DOUBLE_EQ(after.joint_efforts[knee], std::clamp(law, -60.0, 60.0)) << i;
     const double elbow_law = 1000 * (2.0 - before.joint_positions[elbow]);
@@ -61,9 +64,9 @@ TEST(BoosterPdMotorTest, TargetsBeyondTheRangeAndTauBeyondTheLimitActAsSent) {
   ASSERT_EQ(w.SetJointCommand(0, Pd("Left_Hip_Roll", -0.35, 0, 25, 0.6, 0)), JointCommandError::kOk);
   ASSERT_EQ(w.SetJointCommand(0, Pd("Left_Knee_Pitch", 0.4, 0, 200, 0, 90)), JointCommandError::kOk);
   for (int i = 0; i < 5; ++i) {
-    const LeggedRobotState before = w.State().robots[0];
     w.Step();
     const LeggedRobotState after = w.State().robots[0];
+    const LeggedRobotState& before = after;  // the step's start, as its sensors saw it
     const double roll_law = 25 * (-0.35 - before.joint_positions[roll]) - 0.6 * before.joint_velocities[roll];
     EXPECT_DOUBLE_EQ(after.joint_efforts[roll], std::clamp(roll_law, -30.0, 30.0)) << i;
     EXPECT_LT(after.joint_efforts[roll], 25 * (-0.2 - before.joint_positions[roll]) - 1.0)

@@ -31,6 +31,7 @@ inline LeggedRobot Nao(const std::string& name, double x, double y, double yaw) 
 inline LeggedScene NaoScene(int robots = 1, bool field = false) {
   LeggedScene s;
   s.name = "nao-test";
+  s.physics.sensors_after_step = true;  // rcssserver3d's perceptors: the state after the step, as simspark_match.yaml
   s.field.enabled = field;
   for (int i = 0; i < robots; ++i) s.robots.push_back(Nao("nao_" + std::to_string(i + 1), -2.0 + i, 0.0, 0.0));
   return s;
