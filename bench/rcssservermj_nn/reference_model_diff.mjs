@@ -6,20 +6,16 @@
 //   node bench/rcssservermj_nn/reference_model_diff.mjs MUJOCO_JS_DIR ROBOT_DIR configs/robots/t1.xml
 import fs from 'fs';
 
+import {loadMujocoWithRobot} from './reference_world.mjs';
+
 const [mujocoDir, robotDir, turfFile] = process.argv.slice(2);
 if (!turfFile) {
   console.error('usage: node reference_model_diff.mjs MUJOCO_JS_DIR ROBOT_DIR TURF_ROBOT_FILE');
   process.exit(2);
 }
-const mj = await (await import(mujocoDir + '/mujoco.js')).default();
-mj.FS.mkdir('/r');
-mj.FS.mkdir('/r/meshes');
-for (const f of fs.readdirSync(robotDir + '/meshes')) {
-  mj.FS.writeFile('/r/meshes/' + f, fs.readFileSync(robotDir + '/meshes/' + f));
-}
-mj.FS.writeFile('/r/reference.xml', fs.readFileSync(robotDir + '/robot.xml'));
+const mj = await loadMujocoWithRobot(mujocoDir, robotDir);
 mj.FS.writeFile('/r/turf.xml', fs.readFileSync(turfFile));
-const ref = mj.MjModel.mj_loadXML('/r/reference.xml');
+const ref = mj.MjModel.mj_loadXML('/r/robot.xml');
 const turf = mj.MjModel.mj_loadXML('/r/turf.xml');
 const kObj = mj.mjtObj;
 let differences = 0;

@@ -4,7 +4,8 @@
 // ground plane, and (withBall) the reference's ball. The reference the bench's reference_*.mjs measure turf against.
 import fs from 'fs';
 
-export async function loadReference(mujocoDir, robotDir, {withBall = false} = {}) {
+// MuJoCo 3 from the package directory, with the robot directory's robot.xml and meshes/ under /r in its file system.
+export async function loadMujocoWithRobot(mujocoDir, robotDir) {
   const mj = await (await import(mujocoDir + '/mujoco.js')).default();
   mj.FS.mkdir('/r');
   mj.FS.mkdir('/r/meshes');
@@ -12,6 +13,11 @@ export async function loadReference(mujocoDir, robotDir, {withBall = false} = {}
     mj.FS.writeFile('/r/meshes/' + f, fs.readFileSync(robotDir + '/meshes/' + f));
   }
   mj.FS.writeFile('/r/robot.xml', fs.readFileSync(robotDir + '/robot.xml'));
+  return mj;
+}
+
+export async function loadReference(mujocoDir, robotDir, {withBall = false} = {}) {
+  const mj = await loadMujocoWithRobot(mujocoDir, robotDir);
   const ball = `<body name="ball" pos="0 0 0.11">
       <freejoint/>
       <geom type="sphere" size="0.11" mass="0.41" friction="0.4 0.01 0.01" condim="6" priority="1" solref="-5000 -20"/>

@@ -20,13 +20,13 @@ FIELDS = [re.compile(p) for p in (r"\(now ([-0-9.e]+)\)", r"\(p ([-0-9.e]+) ([-0
                                   r"\(q ([-0-9.e]+) ([-0-9.e]+) ([-0-9.e]+) ([-0-9.e]+)\)")]
 
 
+incoming = sock.makefile("rb")
+
+
 def exactly(n):
-    data = b""
-    while len(data) < n:
-        chunk = sock.recv(n - len(data))
-        if not chunk:
-            raise EOFError("the server closed")
-        data += chunk
+    data = incoming.read(n)
+    if len(data) < n:
+        raise EOFError("the server closed")
     return data
 
 
