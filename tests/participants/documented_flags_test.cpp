@@ -67,9 +67,9 @@ TEST(DocumentedFlags, EveryFlagOfTheMainReadmeAndDocsExists) {
     const std::set<std::string> flags = Help(executable);
     offered.insert(flags.begin(), flags.end());
   }
-  for (const char* script :
-       {"scripts/soak-tests.sh", "scripts/run.sh", "scripts/test.sh", "scripts/check-format.sh", "bench/run.sh",
-        "bench/ut_agents/run_match.sh", "bench/ut_agents/replay.py", "bench/ut_agents/compare_replay.py"}) {
+  for (const char* script : {"scripts/soak-tests.sh", "scripts/run.sh", "scripts/test.sh", "scripts/check-format.sh",
+                             "bench/run.sh", "bench/ut_agents/run_match.sh", "bench/ut_agents/replay.py",
+                             "bench/ut_agents/compare_replay.py", "bench/rcssservermj_nn/run.sh"}) {
     const std::set<std::string> flags = LongFlags(SourceFile(script));
     offered.insert(flags.begin(), flags.end());
   }
