@@ -7,6 +7,10 @@
 #   bench/run.sh rcssservermj-nn --client-dir DIR
 #                                        RCSSServerMJ's example T1 walking policy (example/nn_client, kept outside
 #                                        turf) on turf: distance walked, falls (issue 14's acceptance run)
+#   bench/run.sh engine [--reference-mujoco DIR --reference-robot DIR]
+#                                        the physics engine alone with 1, 2, 11 and 22 T1 holding a standing pose:
+#                                        turf's legged kernel, and the reference's engine (MuJoCo 3 from npm with
+#                                        RCSSServerMJ's robot file, both kept outside turf) in the same run if given
 #   bench/run.sh snapshot                kernel snapshots: size, Save and Restore next to a step
 #   bench/run.sh sync [requests]         SSL sync port round trip: separate bridge over DDS vs in turf-sim's process,
 #                                        on all cores, then all on one core
@@ -25,7 +29,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${TURF_BUILD_DIR:-build}
 WHAT=all
-if [[ "${1:-}" =~ ^(ssl|simspark|rcssservermj|rcssservermj-nn|snapshot|sync|python|security|render|record|ut-agents)$ ]]; then
+if [[ "${1:-}" =~ ^(ssl|simspark|rcssservermj|rcssservermj-nn|engine|snapshot|sync|python|security|render|record|ut-agents)$ ]]; then
   WHAT=$1
   shift
 fi
@@ -286,6 +290,30 @@ ut_agents() {
   echo "91.9-100 % upright (mean 96.6 over ten runs, 4.0 falls a run), types 1-4 77.1-99.3 %; the ball moved in 18 of 19 runs."
 }
 
+# turf's engine with N T1 robots standing, then (if given) the reference's engine with the same world: the physics
+# alone, no agents and no protocol, the ceiling of the RCSSServerMJ bench's RTF.
+engine() {
+  local mujoco="" robot=""
+  while [[ $# -gt 0 ]]; do
+    case "$1" in
+      --reference-mujoco) mujoco=$2; shift 2 ;;
+      --reference-robot) robot=$2; shift 2 ;;
+      *) echo "bench/run.sh engine: unknown argument $1" >&2; exit 2 ;;
+    esac
+  done
+  echo "N Booster T1 in a row 2 m apart, each holding configs/scenes/t1_stand.yaml's pose with its PD gains, in"
+  echo "RCSSServerMJ's air; 5 ms steps after 200 of settling; $(nproc) cores, one thread each"
+  "$BUILD_DIR/bench/turf-bench-engine" --header
+  if [[ -n "$mujoco" ]]; then
+    [[ -n "$robot" ]] || { echo "bench/run.sh engine: --reference-mujoco needs --reference-robot" >&2; exit 2; }
+    node bench/rcssservermj_nn/reference_speed.mjs "$mujoco" "$robot" configs/scenes/t1_stand.yaml
+  fi
+  echo "us/step: wall time of one physics step (turf: its legged kernel's every stage); RTF: 5 ms over it, the"
+  echo "ceiling of bench/run.sh rcssservermj's RTF for as many robots. solver its: the constraint solver's mean"
+  echo "iterations (per island where islands are on); rows: constraint rows. Islands: MuJoCo >= 3.3.6 (RCSSServerMJ's"
+  echo "3.4.0) solves each group of touching bodies on its own; Debian's 2.2.2 solves the world at once."
+}
+
 # The sync port twice: where the scheduler puts each thread, then everything on one core (a lockstep loop never
 # runs the client and turf-sim at once; across cores each request pays two cross-core wake-ups).
 sync_bench() {
@@ -299,6 +327,7 @@ case "$WHAT" in
   simspark) simspark ;;
   rcssservermj) rcssservermj ;;
   rcssservermj-nn) bench/rcssservermj_nn/run.sh "$@" ;;
+  engine) engine "$@" ;;
   snapshot) "$BUILD_DIR/bench/turf-bench-snapshot" ;;
   sync) sync_bench "$@" ;;
   python) PYTHONPATH="$BUILD_DIR/python" TURF_BUILD_DIR="$BUILD_DIR" /usr/bin/python3 bench/python_bench.py \

@@ -447,6 +447,8 @@ void LeggedWorld::StageBodyForces() {
 bool LeggedWorld::StagePhysics() {
   mj_step2(model_.get(), data_.get());
   if (data_->solver_iter >= model_->opt.iterations) ++health_.solver_capped_steps;
+  health_.solver_iterations += static_cast<uint64_t>(data_->solver_iter);
+  health_.constraint_rows += static_cast<uint64_t>(data_->nefc);
   if (scene_.physics.sensors_after_step) {
     mj_kinematics(model_.get(), data_.get());
     mj_comPos(model_.get(), data_.get());
