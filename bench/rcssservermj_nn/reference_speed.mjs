@@ -6,7 +6,7 @@
 // COUNTS: comma-separated robot counts (default 1,2,11,22); STEPS: measured steps per row (default 1000).
 import fs from 'fs';
 
-import {loadMujocoWithRobot, setGains} from './reference_world.mjs';
+import {loadMujocoWithRobot, setGains, standScene} from './reference_world.mjs';
 
 const [mujocoDir, robotDir, scene, countsArg = '1,2,11,22', stepsArg = '1000'] = process.argv.slice(2);
 if (!scene) {
@@ -16,11 +16,7 @@ if (!scene) {
 const kWarmup = 200;  // the robots settle on their feet
 const kSpacing = 2.0;
 
-const yaml = fs.readFileSync(scene, 'utf8');
-const startZ = Number(yaml.match(/\bz:\s*([-0-9.]+)/)[1]);
-const number = '\\s*([-0-9.]+)';
-const pattern = new RegExp(`\\{name:\\s*(\\w+),\\s*q:${number},\\s*kp:${number},\\s*kd:${number}\\}`, 'g');
-const pose = [...yaml.matchAll(pattern)].map((x) => ({name: x[1], q: +x[2], kp: +x[3], kd: +x[4]}));
+const {startZ, pose} = standScene(scene);
 
 // The robot file's sections, once (defaults, assets) or per copy (bodies, actuators, sensors, exclusions) with
 // every name and name reference prefixed.

@@ -2,9 +2,8 @@
 // RCSSServerMJ's own robot file (reference_world.mjs): where the robot settles after 1 s, its range from 1 to 60 s
 // and its stance joints' deflection at 60 s. The values tests/core/legged/booster_physics_test.cpp holds turf to.
 //   node bench/rcssservermj_nn/reference_stand.mjs MUJOCO_JS_DIR ROBOT_DIR SCENE_YAML
-import fs from 'fs';
 
-import {loadReference, setGains} from './reference_world.mjs';
+import {loadReference, setGains, standScene} from './reference_world.mjs';
 
 const [mujocoDir, robotDir, scene] = process.argv.slice(2);
 if (!scene) {
@@ -12,11 +11,7 @@ if (!scene) {
   process.exit(2);
 }
 const {mj, m, d} = await loadReference(mujocoDir, robotDir);
-const yaml = fs.readFileSync(scene, 'utf8');
-const startZ = Number(yaml.match(/\bz:\s*([-0-9.]+)/)[1]);
-const number = '\\s*([-0-9.]+)';
-const pattern = new RegExp(`\\{name:\\s*(\\w+),\\s*q:${number},\\s*kp:${number},\\s*kd:${number}\\}`, 'g');
-const pose = [...yaml.matchAll(pattern)].map((x) => ({name: x[1], q: +x[2], kp: +x[3], kd: +x[4]}));
+const {startZ, pose} = standScene(scene);
 const kObj = mj.mjtObj;
 const qposOf = (name) => {
   const j = mj.mj_name2id(m, kObj.mjOBJ_JOINT.value, name);

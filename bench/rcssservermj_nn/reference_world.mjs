@@ -41,3 +41,15 @@ export function setGains(m, pos, vel, kp, kd) {
   m.actuator_gainprm[vel * 10] = kd;
   m.actuator_biasprm[vel * 10 + 2] = -kd;
 }
+
+// A turf standing scene's start height and pose with PD gains (configs/scenes/t1_stand.yaml, k1_stand.yaml): the
+// first `z:` and every `{name: J, q: Q, kp: KP, kd: KD}` joint line.
+export function standScene(sceneFile) {
+  const yaml = fs.readFileSync(sceneFile, 'utf8');
+  const number = '\\s*([-0-9.]+)';
+  const pattern = new RegExp(`\\{name:\\s*(\\w+),\\s*q:${number},\\s*kp:${number},\\s*kd:${number}\\}`, 'g');
+  return {
+    startZ: Number(yaml.match(/\bz:\s*([-0-9.]+)/)[1]),
+    pose: [...yaml.matchAll(pattern)].map((x) => ({name: x[1], q: +x[2], kp: +x[3], kd: +x[4]})),
+  };
+}
