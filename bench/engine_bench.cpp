@@ -13,6 +13,7 @@
 
 #include "kernel/legged_kernel.h"
 #include "loader/legged_scene_yaml.h"
+#include "participants/common/worker_thread.h"
 
 namespace {
 
@@ -50,6 +51,26 @@ void Row(const turf::LeggedScene& stand, int n, int steps) {
               "turf's legged kernel, MuJoCo 2.2.2 (native)", n, us, us / n, step_us / us, iterations, rows);
 }
 
+// The ceiling of stepping the robots as two worlds on two threads (what MuJoCo 3's islands on a thread pool allow):
+// the N robots as two kernels of N/2, each step of one on a worker thread while this thread steps the other, and
+// joined after every step as a split engine must. Not a turf mode: no contact between the halves.
+void SplitRow(const turf::LeggedScene& stand, int n, int steps) {
+  turf::LeggedKernel first(Copies(stand, n / 2));
+  turf::LeggedKernel second(Copies(stand, n - n / 2));
+  turf::WorkerThread worker;
+  const auto both = [&] {
+    worker.Start([&] { second.Step(); });
+    first.Step();
+    worker.Wait();
+  };
+  for (int i = 0; i < kWarmup; ++i) both();
+  const auto start = Clock::now();
+  for (int i = 0; i < steps; ++i) both();
+  const double us = std::chrono::duration<double, std::micro>(Clock::now() - start).count() / steps;
+  std::printf("| %-43s | %6d | %8.1f | %8.1f | %5.1fx | %10s | %5s |\n", "turf, two kernels of N/2 on two threads", n,
+              us, us / n, first.scene().physics.step * 1e6 / us, "", "");
+}
+
 std::vector<int> Counts(const std::string& text) {
   std::vector<int> counts;
   std::stringstream in(text);
@@ -67,6 +88,8 @@ int main(int argc, char** argv) {
   app.add_option("--counts", counts, "comma-separated robot counts");
   app.add_option("--steps", steps, "measured steps per row")->check(CLI::Range(1, 1000000));
   app.add_flag("--header", header, "print the table's header first");
+  bool split = false;
+  app.add_flag("--split", split, "also each count as two kernels of N/2 stepped on two threads (the split's ceiling)");
   CLI11_PARSE(app, argc, argv);
   turf::LeggedSceneLoadResult stand = turf::LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/t1_stand.yaml");
   if (!stand.scene) throw std::runtime_error("cannot load configs/scenes/t1_stand.yaml");
@@ -75,5 +98,9 @@ int main(int argc, char** argv) {
     std::printf("| %s | ------ | -------- | -------- | ------ | ---------- | ----- |\n", std::string(43, '-').c_str());
   }
   for (int n : Counts(counts)) Row(*stand.scene, n, steps);
+  if (split) {
+    for (int n : Counts(counts))
+      if (n >= 2) SplitRow(*stand.scene, n, steps);
+  }
   return 0;
 }

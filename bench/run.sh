@@ -303,7 +303,7 @@ engine() {
   done
   echo "N Booster T1 in a row 2 m apart, each holding configs/scenes/t1_stand.yaml's pose with its PD gains, in"
   echo "RCSSServerMJ's air; 5 ms steps after 200 of settling; $(nproc) cores, one thread each"
-  "$BUILD_DIR/bench/turf-bench-engine" --header
+  "$BUILD_DIR/bench/turf-bench-engine" --header --split
   if [[ -n "$mujoco" ]]; then
     [[ -n "$robot" ]] || { echo "bench/run.sh engine: --reference-mujoco needs --reference-robot" >&2; exit 2; }
     node bench/rcssservermj_nn/reference_speed.mjs "$mujoco" "$robot" configs/scenes/t1_stand.yaml
@@ -311,7 +311,9 @@ engine() {
   echo "us/step: wall time of one physics step (turf: its legged kernel's every stage); RTF: 5 ms over it, the"
   echo "ceiling of bench/run.sh rcssservermj's RTF for as many robots. solver its: the constraint solver's mean"
   echo "iterations (per island where islands are on); rows: constraint rows. Islands: MuJoCo >= 3.3.6 (RCSSServerMJ's"
-  echo "3.4.0) solves each group of touching bodies on its own; Debian's 2.2.2 solves the world at once."
+  echo "3.4.0) solves each group of touching bodies on its own; Debian's 2.2.2 solves the world at once. 'two"
+  echo "kernels of N/2 on two threads': the ceiling of stepping the robots as two worlds on the 2 cores (joined every"
+  echo "step; no contact between the halves, so not a turf mode)."
 }
 
 # The sync port twice: where the scheduler puts each thread, then everything on one core (a lockstep loop never
