@@ -1,7 +1,8 @@
 // The physics engine's speed with N Booster T1 robots, the world bench/rcssservermj_nn/reference_speed.mjs builds on
 // the reference's engine (MuJoCo 3, RCSSServerMJ's robot file): the robot of configs/scenes/t1_stand.yaml copied N
 // times in a row 2 m apart, every copy holding the scene's pose with its PD gains, in RCSSServerMJ's air. One step of
-// turf's legged kernel (every stage; MuJoCo 2.2.2), after 200 steps of settling. Prints table rows; run on demand
+// turf's legged kernel (every stage; MuJoCo 2.2.2; one world, or physics.island_threads groups of robots stepped
+// side by side), after 200 steps of settling. Prints table rows; run on demand
 // (bench/run.sh engine).
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -13,7 +14,6 @@
 
 #include "kernel/legged_kernel.h"
 #include "loader/legged_scene_yaml.h"
-#include "participants/common/worker_thread.h"
 
 namespace {
 
@@ -36,8 +36,10 @@ turf::LeggedScene Copies(const turf::LeggedScene& stand, int n) {
   return scene;
 }
 
-void Row(const turf::LeggedScene& stand, int n, int steps) {
-  turf::LeggedKernel kernel(Copies(stand, n));
+void Row(const turf::LeggedScene& stand, int n, int steps, int threads) {
+  turf::LeggedScene scene = Copies(stand, n);
+  scene.physics.island_threads = threads;
+  turf::LeggedKernel kernel(std::move(scene));
   for (int i = 0; i < kWarmup; ++i) kernel.Step();
   const turf::LeggedHealth before = kernel.world().health();
   const auto start = Clock::now();
@@ -47,28 +49,11 @@ void Row(const turf::LeggedScene& stand, int n, int steps) {
   const turf::LeggedHealth& after = kernel.world().health();
   const double iterations = static_cast<double>(after.solver_iterations - before.solver_iterations) / steps;
   const double rows = static_cast<double>(after.constraint_rows - before.constraint_rows) / steps;
-  std::printf("| %-43s | %6d | %8.1f | %8.1f | %5.1fx | %10.2f | %5.0f |\n",
-              "turf's legged kernel, MuJoCo 2.2.2 (native)", n, us, us / n, step_us / us, iterations, rows);
-}
-
-// The ceiling of stepping the robots as two worlds on two threads (what MuJoCo 3's islands on a thread pool allow):
-// the N robots as two kernels of N/2, each step of one on a worker thread while this thread steps the other, and
-// joined after every step as a split engine must. Not a turf mode: no contact between the halves.
-void SplitRow(const turf::LeggedScene& stand, int n, int steps) {
-  turf::LeggedKernel first(Copies(stand, n / 2));
-  turf::LeggedKernel second(Copies(stand, n - n / 2));
-  turf::WorkerThread worker;
-  const auto both = [&] {
-    worker.Start([&] { second.Step(); });
-    first.Step();
-    worker.Wait();
-  };
-  for (int i = 0; i < kWarmup; ++i) both();
-  const auto start = Clock::now();
-  for (int i = 0; i < steps; ++i) both();
-  const double us = std::chrono::duration<double, std::micro>(Clock::now() - start).count() / steps;
-  std::printf("| %-43s | %6d | %8.1f | %8.1f | %5.1fx | %10s | %5s |\n", "turf, two kernels of N/2 on two threads", n,
-              us, us / n, first.scene().physics.step * 1e6 / us, "", "");
+  const std::string engine = threads == 1 ? "turf's legged kernel, MuJoCo 2.2.2 (native)"
+                                          : "turf's legged kernel, islands on " + std::to_string(threads) + " threads";
+  // Solver iterations: summed over the groups' worlds, each solving its own islands.
+  std::printf("| %-43s | %6d | %8.1f | %8.1f | %5.1fx | %10.2f | %5.0f |\n", engine.c_str(), n, us, us / n,
+              step_us / us, iterations, rows);
 }
 
 std::vector<int> Counts(const std::string& text) {
@@ -88,8 +73,9 @@ int main(int argc, char** argv) {
   app.add_option("--counts", counts, "comma-separated robot counts");
   app.add_option("--steps", steps, "measured steps per row")->check(CLI::Range(1, 1000000));
   app.add_flag("--header", header, "print the table's header first");
-  bool split = false;
-  app.add_flag("--split", split, "also each count as two kernels of N/2 stepped on two threads (the split's ceiling)");
+  std::string threads = "1";
+  app.add_option("--island-threads", threads,
+                 "comma-separated physics.island_threads values: a row for each count with each (1: one world)");
   CLI11_PARSE(app, argc, argv);
   turf::LeggedSceneLoadResult stand = turf::LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/t1_stand.yaml");
   if (!stand.scene) throw std::runtime_error("cannot load configs/scenes/t1_stand.yaml");
@@ -97,10 +83,8 @@ int main(int argc, char** argv) {
     std::printf("| %-43s | robots |  us/step | us/robot |    RTF | solver its |  rows |\n", "engine");
     std::printf("| %s | ------ | -------- | -------- | ------ | ---------- | ----- |\n", std::string(43, '-').c_str());
   }
-  for (int n : Counts(counts)) Row(*stand.scene, n, steps);
-  if (split) {
-    for (int n : Counts(counts))
-      if (n >= 2) SplitRow(*stand.scene, n, steps);
+  for (int t : Counts(threads)) {
+    for (int n : Counts(counts)) Row(*stand.scene, n, steps, t);
   }
   return 0;
 }

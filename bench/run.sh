@@ -303,7 +303,7 @@ engine() {
   done
   echo "N Booster T1 in a row 2 m apart, each holding configs/scenes/t1_stand.yaml's pose with its PD gains, in"
   echo "RCSSServerMJ's air; 5 ms steps after 200 of settling; $(nproc) cores, one thread each"
-  "$BUILD_DIR/bench/turf-bench-engine" --header --split
+  "$BUILD_DIR/bench/turf-bench-engine" --header --island-threads 1,2
   if [[ -n "$mujoco" ]]; then
     [[ -n "$robot" ]] || { echo "bench/run.sh engine: --reference-mujoco needs --reference-robot" >&2; exit 2; }
     node bench/rcssservermj_nn/reference_speed.mjs "$mujoco" "$robot" configs/scenes/t1_stand.yaml

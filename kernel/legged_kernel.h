@@ -1,4 +1,4 @@
-// The legged simulation kernel: a LeggedWorld plus its robots' sensor
+// The legged simulation kernel: a legged world (LeggedIslands) plus its robots' sensor
 // streams, as one mutable state with a byte snapshot. No DDS, no sockets, no
 // clock (see ssl_kernel.h for the contract).
 //
@@ -23,8 +23,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/legged/legged_islands.h"
 #include "core/legged/legged_sensors.h"
-#include "core/legged/legged_world.h"
 #include "core/link_model.h"
 #include "kernel/snapshots.h"
 #include "kernel/stats_window.h"
@@ -57,7 +57,7 @@ class LeggedKernel : public Snapshots<LeggedKernel, KernelKind::kLegged> {
   explicit LeggedKernel(LeggedScene scene);
 
   const LeggedScene& scene() const { return world_.scene(); }
-  const LeggedWorld& world() const { return world_; }
+  const LeggedIslands& world() const { return world_; }
   const SensorRealism& realism() const { return realism_; }
   int64_t time_ns() const { return world_.time_ns(); }
   uint64_t frame() const { return world_.frame(); }
@@ -105,7 +105,7 @@ class LeggedKernel : public Snapshots<LeggedKernel, KernelKind::kLegged> {
 
   static constexpr int kStreamsPerRobot = static_cast<int>(LeggedStream::kCount);
 
-  LeggedWorld world_;
+  LeggedIslands world_;
   LeggedSensors sensors_;
   SensorRealism realism_;
   int64_t sensor_every_ = 1;

@@ -205,6 +205,7 @@ void ReadScene(MapReader m, const std::string& base_dir, LeggedScene* s, Errors*
   m.Number("ground_friction", &s->ground_friction);
   yaml::ReadPhysics(m.Map("physics"), &s->physics, [&](yaml::MapReader& p) {
     p.Bool("sensors_after_step", &s->physics.sensors_after_step);
+    p.Int("island_threads", &s->physics.island_threads);
     p.Number("motor_impulse_window", &s->physics.motor_impulse_window);
     p.Number("fluid_density", &s->physics.fluid_density);
     p.Number("fluid_viscosity", &s->physics.fluid_viscosity);

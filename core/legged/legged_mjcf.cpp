@@ -109,6 +109,7 @@ std::string FieldXml(const Field3d& f, double friction) {
     box("wall_neg_y", 0, -d, 0, d, 0.5, 0.5);
     box("wall_pos_y", 0, d, 0, d, 0.5, 0.5);
   }
+  if (!f.ball) return x;
   const double inertia = 0.4 * f.ball_mass * f.ball_radius * f.ball_radius;
   x += fmt::format(R"(    <body name="{}" pos="{:.6g} {:.6g} {:.6g}">)"
                    "\n"

@@ -19,6 +19,10 @@ std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
   if (!(s.physics.step > 0.0 && s.physics.step <= 0.02)) e.push_back("physics.step must be in (0, 0.02] s");
   if (s.physics.solver_iterations < 1 || s.physics.solver_iterations > 1000)
     e.push_back("physics.solver_iterations must be 1..1000");
+  if (s.physics.island_threads < 1 || s.physics.island_threads > 8) e.push_back("physics.island_threads must be 1..8");
+  if (s.physics.island_threads > 1 && (s.contacts.enabled || s.joint_stops.enabled))
+    e.push_back(
+        "physics.island_threads > 1 needs MuJoCo's own contacts and joint limits (no contacts, no joint_stops)");
   if (!(s.physics.motor_impulse_window >= 0.0 && s.physics.motor_impulse_window <= 1.0))
     e.push_back("physics.motor_impulse_window must be in [0, 1] s");
   if (!NonNegative(s.physics.body_linear_drag) || !NonNegative(s.physics.body_angular_drag))

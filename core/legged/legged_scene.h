@@ -34,6 +34,10 @@ struct LeggedPhysics {
   // world frame. 0 = none.
   double body_linear_drag = 0.0;
   double body_angular_drag = 0.0;
+  // Threads that step the scene's robots, in groups that cannot touch each other in the next step (they touch only
+  // the ground and the field: MuJoCo >= 3.3.6's and ODE's constraint islands, solved apart as those engines do),
+  // each group a world of its own (core/legged/legged_islands.h). 1: one world, one solve for everything.
+  int island_threads = 1;
 };
 
 struct LeggedRates {
@@ -133,6 +137,8 @@ struct Field3d {
   // The four outer walls. RCSSServerMJ's field has none (nothing stops a ball or robot leaving the field); its scene
   // turns them off, which also saves their collision tests against every robot geom in each step.
   bool walls = true;
+  // false: the field without its ball (a world stepping some of a scene's robots apart, core/legged/legged_islands.h).
+  bool ball = true;
 };
 
 // One surface's contact parameters in ODE's terms (core/legged/ode_contacts.h); negative = not set.

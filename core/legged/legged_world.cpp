@@ -82,6 +82,7 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
       js.start_position = m->qpos0[js.qpos];
       slot.joints.push_back(js);
     }
+    SliceOf(m, &slot);
     ApplyStartJoints(spec, &slot.joints);
     // Each joint's motor is a constraint row bounded by max_torque: MuJoCo's
     // dof friction row, whose target velocity and bound the servo stage sets.
@@ -137,6 +138,33 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
 }
 
 LeggedWorld::~LeggedWorld() = default;
+
+// The robot's run of qpos and qvel (MuJoCo numbers a body tree's joints in a row) and its collision geoms.
+void LeggedWorld::SliceOf(const mjModel* m, RobotSlot* slot) {
+  slot->qpos_begin = m->nq;
+  slot->dof_begin = m->nv;
+  int nq = 0;
+  for (int j = 0; j < m->njnt; ++j) {
+    if (m->body_rootid[m->jnt_bodyid[j]] != slot->base_body) continue;
+    const int size = m->jnt_type[j] == mjJNT_FREE ? 7 : m->jnt_type[j] == mjJNT_BALL ? 4 : 1;
+    slot->qpos_begin = std::min(slot->qpos_begin, m->jnt_qposadr[j]);
+    slot->qpos_end = std::max(slot->qpos_end, m->jnt_qposadr[j] + size);
+    slot->dof_begin = std::min(slot->dof_begin, m->jnt_dofadr[j]);
+    nq += size;
+  }
+  slot->dof_end = slot->dof_begin;
+  for (int v = 0; v < m->nv; ++v) {
+    if (m->body_rootid[m->dof_bodyid[v]] == slot->base_body) slot->dof_end = std::max(slot->dof_end, v + 1);
+  }
+  if (nq == 0) slot->qpos_begin = slot->qpos_end = slot->dof_begin = slot->dof_end = 0;
+  if (slot->qpos_end - slot->qpos_begin != nq)
+    throw std::invalid_argument(
+        fmt::format("robot {}: its joints are not one run of MuJoCo's state", slot->spec->name));
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (m->body_rootid[m->geom_bodyid[g]] == slot->base_body && (m->geom_contype[g] || m->geom_conaffinity[g]))
+      slot->geoms.push_back(g);
+  }
+}
 
 // The scene's start angles and PD gains: every joint named must exist and the
 // angle must lie in its range (the scene is refused otherwise).

@@ -177,6 +177,19 @@ struct LeggedHealth {
   uint64_t constraint_rows = 0;
 };
 
+// A robot's (or the ball's) motion and motor state, lifted out of one world and set down in another world that holds
+// the same robot model (core/legged/legged_islands.h steps groups of robots as worlds of their own).
+struct LeggedJointCarry {
+  JointCommand command;
+  double reference = 0.0, effort = 0.0, stop_target = 0.0, impulse = 0.0, sensed_q = 0.0, sensed_qd = 0.0;
+  int row = -1, stop = 0, stop_row = -1;
+};
+struct LeggedCarry {
+  std::vector<double> qpos, qvel, warmstart;  // its slices of MuJoCo's state and solver warm start, model order
+  std::vector<LeggedJointCarry> joints;
+  int64_t ball_touch_ns = -1;
+};
+
 class LeggedWorld : Pinned {
  public:
   // Throws std::invalid_argument if the scene is invalid or MuJoCo cannot
@@ -208,6 +221,22 @@ class LeggedWorld : Pinned {
 
   // --- One physics step through all stages ---
   void Step();
+
+  // --- Moving robots between worlds (legged_islands.h): only between steps ---
+  // The robot's (ball's) state, to land in a world built from the same robot file and scene entry.
+  LeggedCarry CarryRobot(int robot) const;
+  LeggedCarry CarryBall() const;  // empty without a ball
+  void LandRobot(int robot, const LeggedCarry& carry);
+  void LandBall(const LeggedCarry& carry);
+  // A world taken up for other robots: MuJoCo's data cleared (no forward pass), every command the start one, the
+  // clock at `frame`, health zero. Then every robot and the ball are landed, and Settle() makes it whole.
+  void Reuse(uint64_t frame);
+  // After landing: the last good state is this one; with `forward`, MuJoCo's forward pass and the sensed joints
+  // too (what a reset or placement does), else the next Step computes them.
+  void Settle(bool forward);
+  // The box around the robot's (robot -1: the ball's) collision shapes, {min x, y, z, max x, y, z}, as of the last
+  // kinematics, grown by `grow` m plus `horizon` s of its root body's speed.
+  std::array<double, 6> Bounds(int robot, double grow, double horizon) const;
 
   // --- Outputs ---
   int RobotIndex(const std::string& name) const;  // -1 if unknown
@@ -242,6 +271,7 @@ class LeggedWorld : Pinned {
   void StageServos();
   void StageBodyForces();
   void ServoPd(JointSlot* joint);
+  static void SliceOf(const mjModel_* m, RobotSlot* slot);
   static void ApplyStartJoints(const LeggedRobot& spec, std::vector<JointSlot>* joints);
   bool StagePhysics();
   void ResetCommands();

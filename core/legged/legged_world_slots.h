@@ -56,6 +56,11 @@ struct LeggedWorld::RobotSlot {
   int accelerometer = -1;
   int orientation = -1;
   std::vector<SensorRef> forces;
+  int qpos_begin = 0;  // the robot's slices of qpos and qvel (its joints are one run of each)
+  int qpos_end = 0;
+  int dof_begin = 0;
+  int dof_end = 0;
+  std::vector<int> geoms;  // its collision geoms
 };
 
 }  // namespace turf

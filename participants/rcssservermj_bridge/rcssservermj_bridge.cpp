@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "codecs/rcssservermj/session.h"
-#include "participants/common/worker_thread.h"
+#include "core/worker_thread.h"
 #include "participants/lockstep_front_end/front_end_handle_impl.h"
 #include "participants/lockstep_front_end/league_front_end.h"
 #include "participants/rcssservermj_bridge/legged_snapshot.h"

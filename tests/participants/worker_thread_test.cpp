@@ -1,6 +1,6 @@
-// participants/common/worker_thread.h: jobs run on one other thread, in order, Wait() returns after the job and
+// core/worker_thread.h: jobs run on one other thread, in order, Wait() returns after the job and
 // rethrows what it threw.
-#include "participants/common/worker_thread.h"
+#include "core/worker_thread.h"
 
 #include <gtest/gtest.h>
 
