@@ -222,6 +222,23 @@ TEST(LeggedSceneYamlTest, BoosterStandScenesLoadWithStartHeightPoseAndGains) {
 
 // Start joints: a list of {name, q, kp, kd}; bad values are named by the
 // loader, names and ranges the model must check are named by the world.
+// The 22-robot RCSSServerMJ match steps its robots in groups on two threads; one world by default; groups need
+// MuJoCo's own contacts and limits (rcssserver3d's law and stops act on a whole world's rows).
+TEST(LeggedSceneYamlTest, IslandThreadsAreReadAndChecked) {
+  LeggedSceneLoadResult r = LoadLeggedSceneFile(kScenes + "rcssservermj_fifa.yaml");
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_EQ(r.scene->physics.island_threads, 2);
+  r = ParseNaoScene("");
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_EQ(r.scene->physics.island_threads, 1);
+  EXPECT_TRUE(HasError(ParseNaoScene("physics: {island_threads: 0}\n"), "island_threads must be 1..8"));
+  EXPECT_TRUE(HasError(ParseNaoScene("physics: {island_threads: 9}\n"), "island_threads must be 1..8"));
+  EXPECT_TRUE(HasError(ParseNaoScene("physics: {island_threads: 2}\ncontacts: {law: ode}\n"), "island_threads > 1"));
+  r = ParseNaoScene("physics: {island_threads: 2}\n");
+  ASSERT_TRUE(r.scene) << r.errors.front();
+  EXPECT_EQ(r.scene->physics.island_threads, 2);
+}
+
 TEST(LeggedSceneYamlTest, RefusesBadStartJoints) {
   const std::string dir = std::string(TURF_SOURCE_DIR) + "/configs/scenes";
   const std::string head = "kind: legged\nrobots:\n  - name: a\n    model: ../robots/t1.xml\n";
