@@ -272,6 +272,8 @@ class LeggedWorld : Pinned {
   void StageBodyForces();
   void ServoPd(JointSlot* joint);
   static void SliceOf(const mjModel_* m, RobotSlot* slot);
+  template <class Slot, class Carry, class Copy>
+  static void EachJointField(Slot& j, Carry& c, Copy copy);
   static void ApplyStartJoints(const LeggedRobot& spec, std::vector<JointSlot>* joints);
   bool StagePhysics();
   void ResetCommands();

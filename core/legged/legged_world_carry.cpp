@@ -23,6 +23,21 @@ void CopyIn(const std::vector<double>& from, int begin, int end, mjtNum* to, con
 
 }  // namespace
 
+// A joint's state that moves with its robot, listed once for both directions: copy(slot's, carry's).
+template <class Slot, class Carry, class Copy>
+void LeggedWorld::EachJointField(Slot& j, Carry& c, Copy copy) {
+  copy(j.command, c.command);
+  copy(j.reference, c.reference);
+  copy(j.effort, c.effort);
+  copy(j.stop_target, c.stop_target);
+  copy(j.impulse, c.impulse);
+  copy(j.sensed_q, c.sensed_q);
+  copy(j.sensed_qd, c.sensed_qd);
+  copy(j.row, c.row);
+  copy(j.stop, c.stop);
+  copy(j.stop_row, c.stop_row);
+}
+
 LeggedCarry LeggedWorld::CarryRobot(int robot) const {
   const RobotSlot& r = robots_.at(static_cast<size_t>(robot));
   const mjData* d = data_.get();
@@ -30,10 +45,9 @@ LeggedCarry LeggedWorld::CarryRobot(int robot) const {
   CopyOut(d->qpos, r.qpos_begin, r.qpos_end, &c.qpos);
   CopyOut(d->qvel, r.dof_begin, r.dof_end, &c.qvel);
   CopyOut(d->qacc_warmstart, r.dof_begin, r.dof_end, &c.warmstart);
-  for (const JointSlot& j : r.joints) {
-    c.joints.push_back({j.command, j.reference, j.effort, j.stop_target, j.impulse, j.sensed_q, j.sensed_qd, j.row,
-                        j.stop, j.stop_row});
-  }
+  c.joints.resize(r.joints.size());
+  for (size_t i = 0; i < r.joints.size(); ++i)
+    EachJointField(r.joints[i], c.joints[i], [](const auto& slot, auto& carry) { carry = slot; });
   c.ball_touch_ns = ball_touch_ns_[robot];
   return c;
 }
@@ -45,20 +59,8 @@ void LeggedWorld::LandRobot(int robot, const LeggedCarry& c) {
   CopyIn(c.qvel, r.dof_begin, r.dof_end, d->qvel, "qvel");
   CopyIn(c.warmstart, r.dof_begin, r.dof_end, d->qacc_warmstart, "warm start");
   if (c.joints.size() != r.joints.size()) throw std::invalid_argument("landing a carry of another model: joints");
-  for (size_t i = 0; i < r.joints.size(); ++i) {
-    JointSlot& j = r.joints[i];
-    const LeggedJointCarry& from = c.joints[i];
-    j.command = from.command;
-    j.reference = from.reference;
-    j.effort = from.effort;
-    j.stop_target = from.stop_target;
-    j.impulse = from.impulse;
-    j.sensed_q = from.sensed_q;
-    j.sensed_qd = from.sensed_qd;
-    j.row = from.row;
-    j.stop = from.stop;
-    j.stop_row = from.stop_row;
-  }
+  for (size_t i = 0; i < r.joints.size(); ++i)
+    EachJointField(r.joints[i], c.joints[i], [](auto& slot, const auto& carry) { slot = carry; });
   ball_touch_ns_[robot] = c.ball_touch_ns;
 }
 
