@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <numeric>
 #include <stdexcept>
 #include <utility>
@@ -19,6 +20,9 @@ constexpr double kLimbSpeed = 10.0;  // m/s
 // A better balance of the groups is taken only this often and only if it moves the imbalance by this many robots.
 constexpr double kRebalanceSeconds = 1.0;
 constexpr int kRebalanceGain = 4;
+// How long a group's thread polls for its next step, and the stepping thread for the groups' end, before sleeping
+// (core/worker_thread.h): within a cycle the steps follow each other a few hundred microseconds apart.
+constexpr std::chrono::microseconds kPoll{300};
 
 bool SameCamera(const CameraDecl& a, const CameraDecl& b) {
   return a.name == b.name && a.body == b.body && a.pos == b.pos && a.xyaxes == b.xyaxes && a.width == b.width &&
@@ -95,7 +99,7 @@ LeggedIslands::LeggedIslands(LeggedScene scene) : scene_(std::move(scene)) {
   start_ball_ = whole->CarryBall();
   if (!start_ball_.qpos.empty()) boxes.push_back(whole->Bounds(-1, 0.0, 2e-9 * step_ns_));
   whole.reset();
-  for (int t = 1; t < threads_; ++t) workers_.push_back(std::make_unique<WorkerThread>());
+  for (int t = 1; t < threads_; ++t) workers_.push_back(std::make_unique<WorkerThread>(kPoll));
   start_plan_ = Deal(Islands(boxes));
   Reset();
 }
