@@ -223,7 +223,9 @@ TEST(RecordingViewer, RefusesAFileThatIsNoMcapWithExitStatus2) {
   EXPECT_NE(viewer.process().Log().find("bad_magic"), std::string::npos) << viewer.process().Log();
 }
 
-// Polls `done` for up to `ms` (a page's state changes only when it fetches one).
+// Polls `done` for up to `ms` (a page's state changes only when it fetches one). The deadlines below are generous:
+// this test failed once in the full suite after 15 s (2026-11-28; not reproduced alone, under load or next to the
+// other browser tests), as if one 10 s wait had run out.
 bool Within(int ms, const std::function<bool()>& done) {
   const auto end = SteadyClock::now() + std::chrono::milliseconds(ms);
   while (SteadyClock::now() < end) {
@@ -249,7 +251,7 @@ TEST(RecordingViewerBrowser, TheSliderSeeksAndPlayMovesTheRecordedWorld) {
   std::filesystem::create_directories(profile);
   {
     test::WebDriver driver(driver_port);
-    ASSERT_TRUE(driver.WaitReady(10000)) << driver_process.Log();
+    ASSERT_TRUE(driver.WaitReady(30000)) << driver_process.Log();
     ASSERT_TRUE(driver.NewSession(chromium, profile, 1280, 800)) << driver.error();
     ASSERT_TRUE(driver.Navigate("http://127.0.0.1:" + std::to_string(viewer.port()) + "/")) << driver.error();
     auto page_time = [&] {
@@ -257,7 +259,7 @@ TEST(RecordingViewerBrowser, TheSliderSeeksAndPlayMovesTheRecordedWorld) {
       return t && t->is_number() ? t->get<double>() : -1.0;
     };
     // At start the page shows the first state, with the slider bar and without the simulation controls.
-    ASSERT_TRUE(Within(10000, [&] { return std::abs(page_time() - 0.01) < 1e-9; })) << viewer.process().Log();
+    ASSERT_TRUE(Within(30000, [&] { return std::abs(page_time() - 0.01) < 1e-9; })) << viewer.process().Log();
     const auto shown = driver.Execute(
         "return [!document.getElementById('recording-bar').classList.contains('hidden'),"
         " document.getElementById('pause').offsetParent === null,"
@@ -267,7 +269,7 @@ TEST(RecordingViewerBrowser, TheSliderSeeksAndPlayMovesTheRecordedWorld) {
     EXPECT_EQ(*shown, json({true, true, true, "recording"}));
     // A seek (what the slider's input does) shows the state at or before that time.
     ASSERT_TRUE(driver.Execute("window.turfRecording.seek(1.234); return true;"));
-    EXPECT_TRUE(Within(5000, [&] { return std::abs(page_time() - 1.23) < 1e-9; })) << page_time();
+    EXPECT_TRUE(Within(30000, [&] { return std::abs(page_time() - 1.23) < 1e-9; })) << page_time();
     const auto ball = driver.Execute("return window.turfViewer.state().ball.p[0];");
     EXPECT_TRUE(ball && std::abs(ball->get<double>() - 0.123) < 1e-6);
     // Play at 10x: time moves on and stops at the end.
@@ -275,7 +277,7 @@ TEST(RecordingViewerBrowser, TheSliderSeeksAndPlayMovesTheRecordedWorld) {
     ASSERT_TRUE(speed && driver.Click(*speed)) << driver.error();
     const auto play = driver.Find("#rec-play");
     ASSERT_TRUE(play && driver.Click(*play)) << driver.error();
-    EXPECT_TRUE(Within(10000, [&] { return std::abs(page_time() - 2.0) < 1e-9; })) << page_time();
+    EXPECT_TRUE(Within(30000, [&] { return std::abs(page_time() - 2.0) < 1e-9; })) << page_time();
     const auto playing = driver.Execute("return window.turfRecording.playing();");
     EXPECT_TRUE(playing && *playing == false);
     const auto png = driver.Screenshot();
