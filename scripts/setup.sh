@@ -10,7 +10,7 @@ PACKAGES=(
   libmujoco-dev libqhull-dev libtinyxml2-dev  # tinyxml2: composing robot MJCF files (core/legged)
   libeigen3-dev libfmt-dev libspdlog-dev libyaml-cpp-dev libcli11-dev
   libprotobuf-dev protobuf-compiler
-  libgtest-dev
+  libgtest-dev gdb  # gdb: a test still running at its deadline prints its threads' stacks (tests/support/watchdog.cpp)
   iproute2 nftables  # multi-host tests: network namespaces, veth, multicast blocked (tests/multihost)
   clang libclang-rt-14-dev clang-format  # clang-format: scripts/check-format.sh (CI)
   libboost-dev nlohmann-json3-dev chromium chromium-driver  # turf-viewer (Boost.Beast, JSON) and its browser test
