@@ -272,11 +272,23 @@ TEST(RecordingViewerBrowser, TheSliderSeeksAndPlayMovesTheRecordedWorld) {
     EXPECT_TRUE(Within(30000, [&] { return std::abs(page_time() - 1.23) < 1e-9; })) << page_time();
     const auto ball = driver.Execute("return window.turfViewer.state().ball.p[0];");
     EXPECT_TRUE(ball && std::abs(ball->get<double>() - 0.123) < 1e-6);
-    // Play at 10x: time moves on and stops at the end.
-    const auto speed = driver.Find("#rec-speed option[value='10']");
-    ASSERT_TRUE(speed && driver.Click(*speed)) << driver.error();
+    // Play at 0.25x (3 s to the end), then Pause: the page shows the state at or before the time it paused at
+    // (the request's time has six decimals; states are 10 ms apart), not the last one fetched while playing.
+    const auto slow = driver.Find("#rec-speed option[value='0.25']");
+    ASSERT_TRUE(slow && driver.Click(*slow)) << driver.error();
     const auto play = driver.Find("#rec-play");
     ASSERT_TRUE(play && driver.Click(*play)) << driver.error();
+    ASSERT_TRUE(Within(30000, [&] { return page_time() > 1.25; })) << page_time();
+    ASSERT_TRUE(driver.Click(*play)) << driver.error();
+    const auto paused_at = driver.Execute(
+        "const t = Number(window.turfRecording.time().toFixed(6)); return Math.floor(t * 100 + 1e-6) / 100;");
+    ASSERT_TRUE(paused_at && paused_at->is_number());
+    EXPECT_TRUE(Within(30000, [&] { return std::abs(page_time() - paused_at->get<double>()) < 1e-9; }))
+        << page_time() << " shown, paused at " << *paused_at;
+    // Play at 10x: time moves on and stops at the end, showing the last state.
+    const auto speed = driver.Find("#rec-speed option[value='10']");
+    ASSERT_TRUE(speed && driver.Click(*speed)) << driver.error();
+    ASSERT_TRUE(driver.Click(*play)) << driver.error();
     EXPECT_TRUE(Within(30000, [&] { return std::abs(page_time() - 2.0) < 1e-9; })) << page_time();
     const auto playing = driver.Execute("return window.turfRecording.playing();");
     EXPECT_TRUE(playing && *playing == false);

@@ -43,17 +43,21 @@
     $('rec-time').textContent = `${rec.t.toFixed(2)} / ${rec.end.toFixed(2)} s`;
   }
 
+  // Stopping (Pause, or the end reached) shows the state of the time where it stopped: while playing, states are
+  // fetched only every FETCH_EVERY_MS, so the last one fetched may be a frame before it.
   function setPlaying(on) {
     if (on && rec.t >= rec.end) setTime(rec.start);
     rec.playing = on;
     $('rec-play').textContent = on ? 'Pause' : 'Play';
+    if (!on) show(rec.t);
   }
 
   function tick(now) {
     if (rec.playing) {
       setTime(rec.t + ((now - rec.lastTick) / 1000) * rec.speed);
-      if (rec.t >= rec.end) setPlaying(false);
-      if (now - rec.lastFetch >= FETCH_EVERY_MS) {
+      if (rec.t >= rec.end) {
+        setPlaying(false);  // shows the end
+      } else if (now - rec.lastFetch >= FETCH_EVERY_MS) {
         rec.lastFetch = now;
         show(rec.t);
       }
