@@ -98,6 +98,23 @@ std::unique_ptr<HeldSamples> MakeHeld(Topic topic, const fdds::DataWriterQos& qo
   return nullptr;
 }
 
+// The QoS a writer offers: its profile's, except that a RELIABLE VOLATILE writer offers TRANSIENT_LOCAL. Fast DDS
+// 2.9 (Debian 12) deadlocks a reliable volatile writer when one of its readers leaves while a sample of the writer
+// waits for the participant's flow-controller thread (a resend): StatefulWriter::matched_reader_remove holds the
+// writer's locator selector and, removing the samples all remaining readers acknowledged (what a volatile writer
+// does), waits for the flow controller's mutex; that thread holds the mutex and waits for the same selector to
+// flush. The test watchdog caught turf-sim's step thread blocked behind it for good, a viewer's readers having just
+// left. A TRANSIENT_LOCAL writer keeps its KEEP_LAST history instead of removing acknowledged samples, so the
+// removal never happens there. Its readers, VOLATILE as the profile says, still get nothing written before they
+// matched: a volatile reader is sent no history. What turf does with the topic (no write without a reader, no
+// held samples) follows the profile's VOLATILE.
+fdds::DataWriterQos Offered(fdds::DataWriterQos qos) {
+  if (qos.reliability().kind == fdds::RELIABLE_RELIABILITY_QOS &&
+      qos.durability().kind == fdds::VOLATILE_DURABILITY_QOS)
+    qos.durability().kind = fdds::TRANSIENT_LOCAL_DURABILITY_QOS;
+  return qos;
+}
+
 // Makes its DataWriter itself, with its listener from the start, so that no match goes unseen.
 class DdsWriter final : public WriterEndpoint, private fdds::DataWriterListener {
  public:
@@ -105,8 +122,9 @@ class DdsWriter final : public WriterEndpoint, private fdds::DataWriterListener 
       : publisher_(publisher),
         volatile_(qos.durability().kind == fdds::VOLATILE_DURABILITY_QOS),
         held_(MakeHeld(topic, qos)) {
-    writer_ = held_ ? publisher->create_datawriter(topic_dds, qos, this, fdds::StatusMask::publication_matched())
-                    : publisher->create_datawriter(topic_dds, qos);
+    writer_ = held_
+                  ? publisher->create_datawriter(topic_dds, Offered(qos), this, fdds::StatusMask::publication_matched())
+                  : publisher->create_datawriter(topic_dds, Offered(qos));
   }
   ~DdsWriter() override {
     if (writer_ == nullptr) return;
