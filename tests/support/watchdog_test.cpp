@@ -51,7 +51,12 @@ TEST(Watchdog, AHungTestPrintsStacksAndAborts) {
   EXPECT_NE(log.find("[ RUN      ] WatchdogChild.Hangs"), std::string::npos) << log;  // line-buffered: not lost
   EXPECT_NE(log.find("watchdog: this test process has run for 1 s"), std::string::npos) << log;
   if (access("/usr/bin/gdb", X_OK) == 0) {
-    EXPECT_NE(log.find("HangHereForever"), std::string::npos) << log;
+    // A container without ptrace rights (Docker's default seccomp profile) lets gdb run but not attach.
+    if (log.find("ptrace: Operation not permitted") != std::string::npos) {
+      RecordProperty("stacks", "gdb may not attach here (ptrace not permitted)");
+    } else {
+      EXPECT_NE(log.find("HangHereForever"), std::string::npos) << log;
+    }
   } else {
     EXPECT_NE(log.find("gdb is not installed"), std::string::npos) << log;
   }
