@@ -12,6 +12,8 @@
 #                                        turf's legged kernel, and the reference's engine (MuJoCo 3 from npm with
 #                                        RCSSServerMJ's robot file, both kept outside turf) in the same run if given
 #   bench/run.sh snapshot                kernel snapshots: size, Save and Restore next to a step
+#   bench/run.sh codecs                  the agent protocols' text: an RCSSServerMJ action message parsed, a
+#                                        perception formatted, per message
 #   bench/run.sh sync [requests]         SSL sync port round trip: separate bridge over DDS vs in turf-sim's process,
 #                                        on all cores, then all on one core
 #   bench/run.sh python [sim seconds]    `import turf`: env-steps/s of Sim, the Gymnasium-shaped envs and VectorSim
@@ -331,6 +333,7 @@ case "$WHAT" in
   rcssservermj-nn) bench/rcssservermj_nn/run.sh "$@" ;;
   engine) engine "$@" ;;
   snapshot) "$BUILD_DIR/bench/turf-bench-snapshot" ;;
+  codecs) "$BUILD_DIR/bench/turf-bench-codecs" ;;
   sync) sync_bench "$@" ;;
   python) PYTHONPATH="$BUILD_DIR/python" TURF_BUILD_DIR="$BUILD_DIR" /usr/bin/python3 bench/python_bench.py \
             --seconds "$SECONDS_SIM" ;;

@@ -1,7 +1,9 @@
 #include "codecs/simspark/sexpr.h"
 
 #include <cctype>
+#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 
@@ -42,6 +44,48 @@ size_t DecimalLength(std::string_view s) {
   return i;
 }
 
+// How many items each list holds, the top level first and then the lists in the order they open: what the parse
+// reserves, so that no list's items move while it grows. A hint only (the parse checks everything), bounded by the
+// limits: it stops at a list too deep or too many.
+std::vector<uint32_t> ItemCounts(std::string_view text, const SExprLimits& limits) {
+  std::vector<uint32_t> counts{0};
+  std::vector<size_t> open{0};  // indices into counts
+  size_t i = 0;
+  while (i < text.size()) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c == '(') {
+      if (open.size() > limits.max_depth || counts.size() > limits.max_nodes) break;
+      ++counts[open.back()];
+      open.push_back(counts.size());
+      counts.push_back(0);
+      ++i;
+    } else if (c == ')') {
+      if (open.size() == 1) break;
+      open.pop_back();
+      ++i;
+    } else if (IsPrintable(c)) {
+      ++counts[open.back()];
+      while (i < text.size() && IsPrintable(static_cast<unsigned char>(text[i])) && text[i] != '(' && text[i] != ')')
+        ++i;
+    } else {
+      ++i;
+    }
+  }
+  return counts;
+}
+
+// A decimal number from_chars cannot represent: an overflow is not finite; an underflow reads as strtod reads it
+// (zero or the nearest subnormal).
+NumberError OutOfRange(std::string_view atom, double* out) {
+  char buffer[401];
+  std::memcpy(buffer, atom.data(), atom.size());
+  buffer[atom.size()] = '\0';
+  const double value = std::strtod(buffer, nullptr);
+  if (!std::isfinite(value)) return NumberError::kNotFinite;  // overflow gives HUGE_VAL
+  *out = value;
+  return NumberError::kOk;
+}
+
 }  // namespace
 
 bool SExpr::IsCall(std::string_view name) const {
@@ -59,18 +103,40 @@ std::string_view SExpr::Head() const {
   return items[0].atom;
 }
 
-SExprParse ParseSExprs(std::string_view text, const SExprLimits& limits) {
-  SExprParse result;
-  // open[i] is the list at depth i+1. Only the innermost list grows, so the
-  // pointers to its ancestors stay valid until they are closed themselves.
-  std::vector<SExpr*> open;
+namespace {
+
+// The tree of ParseSExprs. open_[i] is the list at depth i+1. Only the innermost list grows (within the room
+// reserved for it, from ItemCounts), so the pointers to its ancestors stay valid until they are closed themselves.
+class TreeBuilder final : public SExprVisitor {
+ public:
+  TreeBuilder(std::vector<SExpr>* top, std::vector<uint32_t> counts) : top_(top), counts_(std::move(counts)) {
+    top_->reserve(counts_[0]);
+  }
+  void Open() override {
+    std::vector<SExpr>& siblings = open_.empty() ? *top_ : open_.back()->items;
+    SExpr& list = siblings.emplace_back();
+    list.is_list = true;
+    if (++lists_ < counts_.size()) list.items.reserve(counts_[lists_]);
+    open_.push_back(&list);
+  }
+  void Atom(std::string_view atom) override { open_.back()->items.emplace_back().atom.assign(atom); }
+  void Close() override { open_.pop_back(); }
+
+ private:
+  std::vector<SExpr>* top_;
+  std::vector<uint32_t> counts_;
+  size_t lists_ = 0;  // lists opened so far
+  std::vector<SExpr*> open_;
+};
+
+}  // namespace
+
+SExprError WalkSExprs(std::string_view text, const SExprLimits& limits, SExprVisitor& visitor, size_t* offset) {
+  size_t depth = 0;
   size_t nodes = 0;
-  auto fail = [&](SExprError error, size_t offset) {
-    open.clear();
-    result.exprs.clear();
-    result.error = error;
-    result.offset = offset;
-    return std::move(result);
+  auto fail = [offset](SExprError error, size_t at) {
+    *offset = at;
+    return error;
   };
   size_t i = 0;
   while (i < text.size()) {
@@ -78,19 +144,18 @@ SExprParse ParseSExprs(std::string_view text, const SExprLimits& limits) {
     if (IsSpace(c)) {
       ++i;
     } else if (c == '(') {
-      if (open.size() >= limits.max_depth) return fail(SExprError::kTooDeep, i);
+      if (depth >= limits.max_depth) return fail(SExprError::kTooDeep, i);
       if (++nodes > limits.max_nodes) return fail(SExprError::kTooManyNodes, i);
-      std::vector<SExpr>& siblings = open.empty() ? result.exprs : open.back()->items;
-      siblings.emplace_back();
-      siblings.back().is_list = true;
-      open.push_back(&siblings.back());
+      ++depth;
+      visitor.Open();
       ++i;
     } else if (c == ')') {
-      if (open.empty()) return fail(SExprError::kUnbalancedClose, i);
-      open.pop_back();
+      if (depth == 0) return fail(SExprError::kUnbalancedClose, i);
+      --depth;
+      visitor.Close();
       ++i;
     } else if (IsPrintable(c)) {
-      if (open.empty()) return fail(SExprError::kTopLevelAtom, i);
+      if (depth == 0) return fail(SExprError::kTopLevelAtom, i);
       size_t end = i;
       while (end < text.size() && IsPrintable(static_cast<unsigned char>(text[end])) && text[end] != '(' &&
              text[end] != ')') {
@@ -98,15 +163,21 @@ SExprParse ParseSExprs(std::string_view text, const SExprLimits& limits) {
         ++end;
       }
       if (++nodes > limits.max_nodes) return fail(SExprError::kTooManyNodes, i);
-      SExpr atom;
-      atom.atom.assign(text.substr(i, end - i));
-      open.back()->items.push_back(std::move(atom));
+      visitor.Atom(text.substr(i, end - i));
       i = end;
     } else {
       return fail(SExprError::kBadByte, i);
     }
   }
-  if (!open.empty()) return fail(SExprError::kUnbalancedOpen, text.size());
+  if (depth != 0) return fail(SExprError::kUnbalancedOpen, text.size());
+  return fail(SExprError::kOk, 0);
+}
+
+SExprParse ParseSExprs(std::string_view text, const SExprLimits& limits) {
+  SExprParse result;
+  TreeBuilder builder(&result.exprs, ItemCounts(text, limits));
+  result.error = WalkSExprs(text, limits, builder, &result.offset);
+  if (result.error != SExprError::kOk) result.exprs.clear();
   return result;
 }
 
@@ -116,13 +187,13 @@ NumberError ParseDouble(std::string_view atom, double* out) {
   if (EqualsNoCase(word, "nan") || EqualsNoCase(word, "inf") || EqualsNoCase(word, "infinity"))
     return NumberError::kNotFinite;
   if (atom.empty() || atom.size() > 400 || DecimalLength(atom) != atom.size()) return NumberError::kBad;
-  char buffer[401];
-  std::memcpy(buffer, atom.data(), atom.size());
-  buffer[atom.size()] = '\0';
-  char* end = nullptr;
-  const double value = std::strtod(buffer, &end);
-  if (end != buffer + atom.size()) return NumberError::kBad;
-  if (!std::isfinite(value)) return NumberError::kNotFinite;  // overflow gives HUGE_VAL
+  // from_chars reads the same correctly rounded value as strtod, several times faster, but takes no '+'.
+  const char* begin = atom.data() + (atom[0] == '+' ? 1 : 0);
+  const char* end = atom.data() + atom.size();
+  double value = 0;
+  const std::from_chars_result read = std::from_chars(begin, end, value);
+  if (read.ec == std::errc::result_out_of_range) return OutOfRange(atom, out);
+  if (read.ec != std::errc() || read.ptr != end) return NumberError::kBad;
   *out = value;
   return NumberError::kOk;
 }

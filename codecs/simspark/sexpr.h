@@ -50,14 +50,33 @@ struct SExprParse {
 
 SExprParse ParseSExprs(std::string_view text, const SExprLimits& limits = {});
 
+// The grammar itself, for a decoder that needs no tree (ParseSExprs is one of its visitors): Open(), Atom() and
+// Close() are called in the order of the text, with ParseSExprs' checks and limits. On an error the calls made so
+// far are to be discarded, as the parse is all or nothing: WalkSExprs answers the error and sets `offset` to its
+// byte (to 0 when there is none).
+class SExprVisitor {
+ public:
+  virtual void Open() = 0;
+  virtual void Atom(std::string_view atom) = 0;
+  virtual void Close() = 0;
+
+ protected:
+  ~SExprVisitor() = default;
+};
+SExprError WalkSExprs(std::string_view text, const SExprLimits& limits, SExprVisitor& visitor, size_t* offset);
+
+// The detail of a decoder's issue kParse: "<the parser's error> at byte <offset>".
+inline std::string SExprErrorAt(SExprError error, size_t offset) {
+  return std::string(turf::ErrorName(error)) + " at byte " + std::to_string(offset);
+}
+
 // For a decoder whose message keeps a list of issues (any struct of an error and a detail text): the expressions
-// of `text`, or none and one issue kParse, "<the parser's error> at byte <offset>".
+// of `text`, or none and one issue kParse, SExprErrorAt(the parser's error).
 template <class Issue>
 std::vector<SExpr> ParseSExprsOrIssue(std::string_view text, std::vector<Issue>* issues) {
   SExprParse parse = ParseSExprs(text);
   if (parse.error != turf::Error::kOk)
-    issues->push_back(
-        {turf::Error::kParse, std::string(turf::ErrorName(parse.error)) + " at byte " + std::to_string(parse.offset)});
+    issues->push_back({turf::Error::kParse, SExprErrorAt(parse.error, parse.offset)});
   return std::move(parse.exprs);
 }
 

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <random>
 #include <string>
 
 namespace turf::simspark {
@@ -59,11 +63,48 @@ TEST(SExpr, ParenthesesEndAtomsWithoutSpace) {
   EXPECT_EQ(p.exprs[0].items[2].atom, "c");
 }
 
+// The calls of WalkSExprs written out again: "(", each atom and ")", separated by one space.
+class Transcript final : public SExprVisitor {
+ public:
+  void Open() override { text += "( "; }
+  void Atom(std::string_view atom) override { text.append(atom).append(" "); }
+  void Close() override { text += ") "; }
+  std::string text;
+};
+
+void Write(const SExpr& e, std::string* out) {
+  if (!e.is_list) {
+    out->append(e.atom).append(" ");
+    return;
+  }
+  *out += "( ";
+  for (const SExpr& item : e.items) Write(item, out);
+  *out += ") ";
+}
+
 void ExpectError(std::string_view text, SExprError error, size_t offset, const SExprLimits& limits = {}) {
   const SExprParse p = ParseSExprs(text, limits);
   EXPECT_EQ(p.error, error) << text;
   EXPECT_EQ(p.offset, offset) << text;
   EXPECT_TRUE(p.exprs.empty()) << text;  // all or nothing
+  Transcript walk;
+  size_t walk_offset = 99;
+  EXPECT_EQ(WalkSExprs(text, limits, walk, &walk_offset), error) << text;  // the tree's grammar is the walk's
+  EXPECT_EQ(walk_offset, offset) << text;
+}
+
+TEST(SExpr, TheWalkVisitsTheTreeInTextOrder) {
+  const std::string text = " (GS (t 0.00) (pm PlayOn))(syn)( )((a)(b (c d)))";
+  const SExprParse p = ParseSExprs(text);
+  ASSERT_EQ(p.error, SExprError::kOk);
+  std::string tree;
+  for (const SExpr& e : p.exprs) Write(e, &tree);
+  Transcript walk;
+  size_t offset = 99;
+  ASSERT_EQ(WalkSExprs(text, {}, walk, &offset), SExprError::kOk);
+  EXPECT_EQ(offset, 0u);
+  EXPECT_EQ(walk.text, tree);
+  EXPECT_EQ(walk.text, "( GS ( t 0.00 ) ( pm PlayOn ) ) ( syn ) ( ) ( ( a ) ( b ( c d ) ) ) ");
 }
 
 // Each refusal names the byte it stopped at: an unclosed list at the end, an extra ')' at itself, a byte outside
@@ -130,6 +171,28 @@ TEST(SExprNumbers, DecimalNumbersParseWhole) {
     double v = -99;
     EXPECT_EQ(ParseDouble(c.text, &v), NumberError::kOk) << c.text;
     EXPECT_DOUBLE_EQ(v, c.value) << c.text;
+  }
+}
+
+// ParseDouble reads a decimal as strtod does, bit for bit (both round correctly): long mantissas, halfway cases,
+// subnormals and underflow to zero included.
+TEST(SExprNumbers, ReadsWhatStrtodReads) {
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<int> digit(0, 9), length(1, 30), exponent(-340, 310), shape(0, 3);
+  for (int i = 0; i < 20000; ++i) {
+    std::string text = shape(rng) == 0 ? "-" : (shape(rng) == 0 ? "+" : "");
+    const int n = length(rng);
+    for (int k = 0; k < n; ++k) text += static_cast<char>('0' + digit(rng));
+    if (shape(rng) != 0) text.insert(text.size() - static_cast<size_t>(digit(rng) % n), ".");
+    if (shape(rng) != 0) text += "e" + std::to_string(exponent(rng));
+    const double expected = std::strtod(text.c_str(), nullptr);
+    double v = -99;
+    if (!std::isfinite(expected)) {
+      EXPECT_EQ(ParseDouble(text, &v), NumberError::kNotFinite) << text;
+      continue;
+    }
+    ASSERT_EQ(ParseDouble(text, &v), NumberError::kOk) << text;
+    EXPECT_EQ(std::memcmp(&v, &expected, sizeof v), 0) << text << " read " << v << ", strtod " << expected;
   }
 }
 
