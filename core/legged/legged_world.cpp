@@ -134,6 +134,7 @@ LeggedWorld::LeggedWorld(LeggedScene scene) : scene_(std::move(scene)) {
     ode_contacts_ =
         std::make_unique<OdeContacts>(m, scene_.contacts, roots, mj_name2id(m, mjOBJ_GEOM, kLeggedFloor), ball_geom);
   }
+  accelerometers_ = TakeRootAccelerometers(model_.get());  // the IMUs: read in turf's pass
   Reset();
 }
 
@@ -221,7 +222,6 @@ PlacementError LeggedWorld::PlaceRobot(int robot, const RobotPlacement& p) {
   }
   if (norm < 1e-12) return PlacementError::kNotFinite;
   RobotSlot& r = robots_[robot];
-  const mjModel* m = model_.get();
   mjData* d = data_.get();
   for (int k = 0; k < 3; ++k) d->qpos[r.root_qpos + k] = p.position[k];
   for (int k = 0; k < 4; ++k) d->qpos[r.root_qpos + 3 + k] = p.orientation[k] / std::sqrt(norm);
@@ -233,7 +233,7 @@ PlacementError LeggedWorld::PlaceRobot(int robot, const RobotPlacement& p) {
     LatchStop(&j);
   }
   if (p.reset_joints) ResetCommands(&r);
-  mj_forward(m, d);
+  Forward();
   SenseJoints();
   AcceptState();
   return PlacementError::kOk;
@@ -251,7 +251,7 @@ PlacementError LeggedWorld::PlaceBall(const std::array<double, 3>& position, con
     d->qvel[ball_qvel_ + k] = velocity[k];
     d->qvel[ball_qvel_ + 3 + k] = 0.0;
   }
-  mj_forward(m, d);
+  Forward();
   SenseJoints();
   AcceptState();
   return PlacementError::kOk;
@@ -340,7 +340,7 @@ void LeggedWorld::Reset() {
   steps_since_stop_test_ = 0;
   commanded_ = false;
   std::fill(ball_touch_ns_.begin(), ball_touch_ns_.end(), -1);
-  mj_forward(model_.get(), data_.get());
+  Forward();
   SenseJoints();
   ResetCommands();
   AcceptState();
@@ -473,7 +473,7 @@ void LeggedWorld::StageBodyForces() {
 // Stage 2: the rest of the MuJoCo step (mj_step2: constraint solver and
 // integration); false if it produced a non-finite state.
 bool LeggedWorld::StagePhysics() {
-  mj_step2(model_.get(), data_.get());
+  Step2(model_.get(), data_.get(), accelerometers_);
   if (data_->solver_iter >= model_->opt.iterations) ++health_.solver_capped_steps;
   health_.solver_iterations += static_cast<uint64_t>(data_->solver_iter);
   health_.constraint_rows += static_cast<uint64_t>(data_->nefc);
@@ -500,6 +500,11 @@ bool LeggedWorld::StagePhysics() {
   return StateFinite(model_.get(), data_.get(), INFINITY);
 }
 
+void LeggedWorld::Forward() {
+  mj_forward(model_.get(), data_.get());
+  SenseRootAccelerometers(model_.get(), data_.get(), accelerometers_);
+}
+
 void LeggedWorld::Step() {
   if (stop_steps_ > 0) StageStops();
   mj_step1(model_.get(), data_.get());
@@ -514,6 +519,7 @@ void LeggedWorld::Step() {
     // Stage 3: undo a step that blew up, at rest, and hold every joint there.
     ++health_.instability_recoveries;
     last_good_.Undo(model_.get(), data_.get());
+    SenseRootAccelerometers(model_.get(), data_.get(), accelerometers_);
     SenseJoints();
     ResetCommands();
   }

@@ -33,6 +33,7 @@
 #include "core/legged/body_forces.h"
 #include "core/legged/legged_scene.h"
 #include "core/legged/ode_contacts.h"
+#include "core/legged/root_accelerometers.h"
 #include "core/mj_state.h"
 #include "core/pinned.h"
 
@@ -283,6 +284,7 @@ class LeggedWorld : Pinned {
   void ContactWrench(int site, ForceReading* out) const;
   void RobotContacts(std::vector<RobotContact>* out) const;
   void RecordBallTouches();  // after a step: every robot with a body in contact with the ball
+  void Forward();            // mj_forward and the readings it leaves to turf (the IMUs' accelerometers)
 
   LeggedScene scene_;
   std::string mjcf_;
@@ -307,6 +309,7 @@ class LeggedWorld : Pinned {
   uint64_t frame_ = 0;
   LastGoodState last_good_;
   LeggedHealth health_;
+  std::vector<RootAccelerometer> accelerometers_;  // the IMUs, read in turf's pass (root_accelerometers.h)
 };
 
 }  // namespace turf

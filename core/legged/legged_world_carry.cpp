@@ -95,7 +95,7 @@ void LeggedWorld::Reuse(uint64_t frame) {
 
 void LeggedWorld::Settle(bool forward) {
   if (forward) {
-    mj_forward(model_.get(), data_.get());
+    Forward();
     SenseJoints();
   }
   AcceptState();
