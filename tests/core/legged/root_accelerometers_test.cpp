@@ -27,17 +27,17 @@ constexpr const char* kModel = R"(<mujoco>
       <geom type="box" size="0.1 0.15 0.2" mass="3"/>
       <site name="imu" pos="0.03 -0.02 0.05" euler="5 0 -7" size="0.01"/>
       <site name="foot" type="box" pos="0 0 -0.2" size="0.2 0.25 0.1"/>
-      <body name="arm" pos="0.1 0 0.1">
-        <joint type="hinge" axis="0 1 0" damping="0.1"/>
-        <geom type="capsule" fromto="0 0 0 0.3 0 0" size="0.03" mass="0.4"/>
-        <site name="hand" pos="0.3 0 0" size="0.01"/>
+      <body name="arm" pos="0 0.15 0.12">
+        <joint type="hinge" axis="1 0 0" damping="0.1"/>
+        <geom type="capsule" fromto="0 0 0 0 0.25 0" size="0.025" mass="0.3"/>
+        <site name="hand" pos="0 0.25 0" size="0.01"/>
       </body>
     </body>
-    <body name="post" pos="1 1 0.5">
-      <joint type="slide" axis="0 0 1"/>
-      <joint type="hinge" axis="1 1 0"/>
-      <geom type="box" size="0.05 0.05 0.3" mass="1.5"/>
-      <site name="tag" pos="0 0.02 0.3" size="0.01"/>
+    <body name="post" pos="-1 0.5 0.4" euler="0 15 0">
+      <joint type="hinge" axis="0 0 1" damping="0.05"/>
+      <joint type="slide" axis="1 0 0"/>
+      <geom type="cylinder" size="0.04 0.25" mass="1.2"/>
+      <site name="tag" pos="0.01 0.02 0.25" euler="0 0 40" size="0.01"/>
     </body>
   </worldbody>
   <sensor>
