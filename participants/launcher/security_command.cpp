@@ -1,6 +1,7 @@
 #include "participants/launcher/security_command.h"
 
 #include <cstdio>
+#include <string>
 
 #include "dds/security_policy.h"
 
@@ -9,12 +10,11 @@ namespace turf::launch {
 SecurityCommand::SecurityCommand(CLI::App& app) {
   CLI::App* security = app.add_subcommand("security", "DDS Security for a match: per-team identities and permissions");
   security->require_subcommand(1);
-  init_ = security->add_subcommand(
-      "init",
-      "make a CA, a signed governance and, per identity (sim, vision-bridge, grsim-bridge, simproto-bridge, "
-      "simspark-bridge, blue, yellow, operator, observer), a key, a certificate and signed permissions in "
-      "DIR/<identity>; "
-      "each participant then takes --security DIR/<identity>");
+  std::string names;
+  for (const std::string& name : dds::IdentityNames()) names += (names.empty() ? "" : ", ") + name;
+  init_ = security->add_subcommand("init", "make a CA, a signed governance and, per identity (" + names +
+                                               "), a key, a certificate and signed permissions in DIR/<identity>; "
+                                               "each participant then takes --security DIR/<identity>");
   init_->add_option("dir", options_.dir, "directory to make (must not hold a CA yet)")->required();
   init_->add_option("-p,--prefix", options_.prefix, "topic prefix the permissions name")->capture_default_str();
   init_->add_flag("--tournament", tournament_,
