@@ -9,8 +9,10 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -77,16 +79,27 @@ TEST_F(SecurityRender, ATeamReadsTheRenderIdentitysImagesAndAnUnsecuredReaderNev
   ImageCount stranger(unsecured, ImageTopic(), &wait);
   dds::VendorParticipant blue(dds::VendorOptions{domain_, "test-blue", dir_ + "/blue", true});
   ImageCount team(blue, ImageTopic(), &wait);
-  Process render("security_render", Args("participants/render/turf-render", "render"));
+  auto render = std::make_unique<Process>("security_render", Args("participants/render/turf-render", "render"));
   Process sim("security_render_sim", Args("participants/sim/turf-sim", "sim"));
   // The positive marker first: the team's reader has images of the declared size (authenticated, decrypted).
-  ASSERT_TRUE(wait.Until(Clock::now() + seconds(90), [&] { return team.images >= 5; }))
+  // Fast DDS 2.9's known limit (README, Access control): now and then one pair of participants never finishes
+  // authenticating (1 run in 32 of this test on a quiet machine). As the README tells an operator, the process
+  // is restarted once, and that is reported; a second stall fails the test.
+  int restarted = 0;
+  if (!wait.Until(Clock::now() + seconds(20), [&] { return team.images >= 5; })) {
+    render->Stop();
+    render = std::make_unique<Process>("security_render_restarted", Args("participants/render/turf-render", "render"));
+    ++restarted;
+    std::printf("turf-render restarted: no image after 20 s (a DDS authentication that never ended)\n");
+  }
+  RecordProperty("render_restarted", restarted);
+  ASSERT_TRUE(wait.Until(Clock::now() + seconds(60), [&] { return team.images >= 5; }))
       << "team images " << team.images << "\nturf-render:\n"
-      << render.Log() << "\nturf-sim:\n"
+      << render->Log() << "\nturf-sim:\n"
       << sim.Log();
   EXPECT_EQ(stranger.images, 0) << "a participant without security read a secured camera topic";
   EXPECT_EQ(sim.Stop(), 0);
-  EXPECT_EQ(render.Stop(), 0);
+  EXPECT_EQ(render->Stop(), 0);
 }
 
 TEST_F(SecurityRender, AnIdentityThatMayNotPublishCamerasMakesTurfRenderRefuseToStart) {
