@@ -45,8 +45,14 @@ class HeldSamples {
   // The writer's matched count changed to `count`; with a reader now matched the held samples go out.
   void SetMatched(int count, const WriteFn& write) {
     std::lock_guard<std::mutex> lock(mutex_);
+    if (closed_) return;
     matched_ = count;
     if (matched_ > 0) FlushLocked(write);
+  }
+  // The writer is being deleted: SetMatched writes nothing from now on (one running now has finished on return).
+  void Close() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    closed_ = true;
   }
 
  protected:
@@ -63,6 +69,7 @@ class HeldSamples {
 
   std::mutex mutex_;
   int matched_ = 0;
+  bool closed_ = false;
 };
 
 // A ring of `depth` samples of the topic's type, copied into by assignment: a held world state reuses the robots'

@@ -128,9 +128,13 @@ class DdsWriter final : public WriterEndpoint, private fdds::DataWriterListener 
   }
   ~DdsWriter() override {
     if (writer_ == nullptr) return;
-    // Deleting the writer waits for a discovery callback that is running (and may be flushing): held_ lives on.
-    if (held_) writer_->set_listener(nullptr);
-    publisher_->delete_datawriter(writer_);
+    // No held sample is flushed from now on (a flush running now ends first), so the history DeleteWriter empties
+    // stays empty.
+    if (held_) {
+      writer_->set_listener(nullptr);
+      held_->Close();
+    }
+    DeleteWriter(publisher_, writer_);
   }
   bool ok() const { return writer_ != nullptr; }
 

@@ -84,7 +84,7 @@ fdds::DataReaderQos ReaderQos(fdds::Subscriber* subscriber) {
 class DdsVendorWriter final : public VendorParticipant::RawWriter {
  public:
   DdsVendorWriter(fdds::Publisher* publisher, fdds::DataWriter* writer) : publisher_(publisher), writer_(writer) {}
-  ~DdsVendorWriter() override { publisher_->delete_datawriter(writer_); }
+  ~DdsVendorWriter() override { DeleteWriter(publisher_, writer_); }
   bool Write(const void* sample) override { return writer_->write(const_cast<void*>(sample)); }
   bool Write(const void* sample, int64_t source_ns) override { return WriteStamped(writer_, sample, source_ns); }
   int Matched() const override { return MatchedReaders(writer_); }

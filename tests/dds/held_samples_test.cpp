@@ -49,6 +49,16 @@ dds::KeyedHeldSamplesOf<Sample>::Key KeyOf(const Sample& s) {
   return key;
 }
 
+// Closed (its writer is being deleted): a match that comes now writes nothing into the emptied history.
+TEST(HeldSamples, AMatchAfterCloseWritesNothing) {
+  dds::HeldSamplesOf<Sample> held(3);
+  Written out;
+  Put(held, {0, 1}, 100, out);
+  held.Close();
+  held.SetMatched(1, out.Fn());
+  EXPECT_TRUE(out.samples.empty());
+}
+
 TEST(HeldSamples, UnkeyedKeepsTheLastDepthUntilAReaderMatchesThenPassesThrough) {
   dds::HeldSamplesOf<Sample> held(3);
   Written out;
