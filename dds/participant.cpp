@@ -34,6 +34,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "dds/authentication_watch.h"
 #include "dds/fastdds_endpoint.h"
 #include "dds/held_samples.h"
 
@@ -297,6 +298,10 @@ class Participant::Discovery final : public fdds::DomainParticipantListener {
  public:
   explicit Discovery(std::string topic_prefix) : topic_prefix_(std::move(topic_prefix) + "/") {}
 
+  // With security: the watch told of every participant discovered and every authentication that ends. Set before
+  // the DomainParticipant is made.
+  void Watch(AuthenticationWatch* watch) { watch_ = watch; }
+
   // This participant's GUID prefix: its own writers are not others'.
   void SetOwn(const std::string& guid_prefix) {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -343,6 +348,12 @@ class Participant::Discovery final : public fdds::DomainParticipantListener {
     using Status = eprosima::fastrtps::rtps::ParticipantDiscoveryInfo;
     std::lock_guard<std::mutex> events_lock(events_mutex_);
     const PeerInfo peer = PeerOf(info.info);
+    if (watch_ != nullptr) {
+      if (info.status == Status::DISCOVERED_PARTICIPANT)
+        watch_->Discovered(peer, AuthenticationWatch::Clock::now());
+      else if (info.status != Status::CHANGED_QOS_PARTICIPANT)
+        watch_->Gone(peer.guid_prefix);
+    }
     Events events;
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -365,6 +376,21 @@ class Participant::Discovery final : public fdds::DomainParticipantListener {
     }
     Deliver(events);
   }
+
+#if HAVE_SECURITY
+  // Authorized or refused. A refusal is a peer without an identity, of another CA, or whose identity does not verify.
+  void onParticipantAuthentication(fdds::DomainParticipant* /*participant*/,
+                                   eprosima::fastrtps::rtps::ParticipantAuthenticationInfo&& info) override {
+    using Status = eprosima::fastrtps::rtps::ParticipantAuthenticationInfo;
+    const std::string prefix = Printed(info.guid.guidPrefix);
+    if (watch_ != nullptr) watch_->Ended(prefix);
+    if (info.status == Status::UNAUTHORIZED_PARTICIPANT)
+      spdlog::warn(
+          "DDS security: {} failed to authenticate (no identity, one of another CA, or one that does not "
+          "verify): it meets no topic of this participant",
+          Known(prefix).Describe());
+  }
+#endif
 
   void on_publisher_discovery(fdds::DomainParticipant* /*participant*/,
                               eprosima::fastrtps::rtps::WriterDiscoveryInfo&& info) override {
@@ -402,6 +428,12 @@ class Participant::Discovery final : public fdds::DomainParticipantListener {
       for (const auto& [id, listener] : listeners_) listener(event, writer);
   }
 
+  PeerInfo Known(const std::string& guid_prefix) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto it = peers_.find(guid_prefix);
+    return it != peers_.end() ? it->second : PeerInfo{"", "", 0, "", 0, guid_prefix};
+  }
+
   std::vector<RemoteWriter> WritersLocked(const std::string& topic) const {
     std::vector<RemoteWriter> out;
     for (const RemoteWriter& w : writers_)
@@ -418,6 +450,7 @@ class Participant::Discovery final : public fdds::DomainParticipantListener {
   std::string own_prefix_;
   std::map<std::string, PeerInfo> peers_;  // by GUID prefix
   std::vector<RemoteWriter> writers_;      // in discovery order
+  AuthenticationWatch* watch_ = nullptr;
   uint64_t seen_ = 0;
 };
 
@@ -437,7 +470,13 @@ Participant::Participant(const ParticipantOptions& options)
                  kParticipantProfile);
   qos.name(options_.name);
   AnnounceSelf(qos);
-  if (!options_.security.empty()) EnableSecurity(qos);
+  if (!options_.security.empty()) {
+    EnableSecurity(qos);
+    if (options_.authentication_timeout.count() > 0) {
+      authentication_ = std::make_unique<AuthenticationWatch>(options_.authentication_timeout);
+      discovery_->Watch(authentication_.get());
+    }
+  }
   // The listener from the start: a peer discovered while the participant is being made is not missed. Discovery
   // callbacks are not masked by status; no status callback is wanted here (the readers have their own).
   participant_ = factory->create_participant(options_.domain, qos, discovery_.get(), fdds::StatusMask::none());
@@ -456,11 +495,13 @@ Participant::Participant(const ParticipantOptions& options)
     factory->delete_participant(participant_);
     throw std::runtime_error("cannot create a DDS publisher/subscriber");
   }
+  if (authentication_) authentication_timer_ = std::make_unique<AuthenticationTimer>(*authentication_);
 }
 
 Participant::~Participant() {
   // Writers and readers are owned (and deleted) by their holders, which the
   // owner destroys first; delete whatever is left, then the participant.
+  authentication_timer_.reset();
   participant_->delete_contained_entities();
   fdds::DomainParticipantFactory::get_instance()->delete_participant(participant_);
 }
@@ -512,6 +553,11 @@ std::vector<RemoteWriter> Participant::WaitForOtherWriters(
     Topic topic, const std::function<bool(const std::vector<RemoteWriter>&)>& done,
     std::chrono::steady_clock::time_point deadline) const {
   return discovery_->Wait(TopicName(topic), done, deadline);
+}
+
+Authentications Participant::AuthenticationsNow() const {
+  if (!authentication_) return {};
+  return {authentication_->Pending(), authentication_->Ended(), authentication_->Stalled()};
 }
 
 uint64_t Participant::OtherWritersSeen() const { return discovery_->Seen(); }

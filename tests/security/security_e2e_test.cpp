@@ -1,7 +1,8 @@
 // DDS Security with real turf-sim processes (issue 19): identities from `turf security init` (security_init.h);
 // the blue identity moves blue robots, the yellow one cannot publish on blue's command topic, a participant without
 // security meets no one, a tampered permissions file or a missing key makes turf-sim refuse to start (exit 2) with
-// a clear error, and the tournament profile keeps the world state and control from the teams.
+// a clear error, the tournament profile keeps the world state and control from the teams, and a peer that never
+// finishes authenticating is named after the timeout (dds/authentication_watch.h).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <turf/idl/SimControlPubSubTypes.h>
@@ -11,15 +12,19 @@
 
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "dds/participant.h"
+#include "participants/common/udp.h"
 #include "participants/launcher/security_init.h"
+#include "tests/support/captured_log.h"
 #include "tests/support/process.h"
 #include "tests/support/world_observer.h"
 #include "tests/test_domain.h"
@@ -151,6 +156,68 @@ TEST_F(SecurityE2e, AParticipantWithoutSecurityMeetsNoOne) {
   EXPECT_FALSE(plain_state->Take(&got));
   EXPECT_EQ(plain_state->Matched(), 0);
   EXPECT_EQ(plain_command->Matched(), 0);
+  // The observer's authentications: turf-sim's ended (authorized: world states came), none stalled.
+  const dds::Authentications observed = world.participant().AuthenticationsNow();
+  EXPECT_GE(observed.ended, 1u);
+  EXPECT_EQ(observed.stalled, 0u);
+}
+
+// The participants' discovery announcements (SPDP) of `domain_`: RTPS's multicast group and port 7400 + 250 * domain.
+constexpr const char* kSpdpGroup = "239.255.0.1";
+uint16_t SpdpPort(int domain) { return static_cast<uint16_t>(7400 + 250 * domain); }
+
+// The first announcement of the turf participant with process id `pid` that `socket` receives before `deadline`:
+// turf announces its pid as the property turf.pid (dds/participant.cpp).
+std::optional<std::vector<uint8_t>> AnnouncementOf(UdpSocket& socket, pid_t pid,
+                                                   std::chrono::steady_clock::time_point deadline) {
+  const std::string key = "turf.pid";
+  const std::string value = std::to_string(pid);
+  while (std::chrono::steady_clock::now() < deadline) {
+    std::optional<Datagram> d = socket.Receive(65536, 200ms);
+    if (!d || d->truncated) continue;
+    const std::string bytes(d->bytes.begin(), d->bytes.end());
+    const size_t at = bytes.find(key);
+    if (bytes.compare(0, 4, "RTPS") == 0 && at != std::string::npos &&
+        bytes.find(value, at + key.size()) < at + key.size() + 16)
+      return d->bytes;
+  }
+  return std::nullopt;
+}
+
+// A peer that announces itself and never answers its handshake (Fast DDS 2.9.1's stall, as a participant sees it):
+// turf-sim's announcement, sent again while turf-sim is stopped. The participant names it after its timeout.
+TEST_F(SecurityE2e, APeerThatNeverFinishesAuthenticatingIsNamedAfterTheTimeout) {
+  std::string error;
+  std::optional<UdpSocket> spdp = UdpSocket::Bind("0.0.0.0", SpdpPort(domain_), /*reuse=*/true, &error);
+  ASSERT_TRUE(spdp) << error;
+  ASSERT_TRUE(spdp->JoinMulticast(kSpdpGroup, "0.0.0.0", &error)) << error;
+  Process sim("security_sim", SimArgs(dir_ + "/sim"));
+  const auto announcement = AnnouncementOf(*spdp, sim.pid(), std::chrono::steady_clock::now() + 30s);
+  ASSERT_TRUE(announcement) << "no announcement of turf-sim (pid " << sim.pid() << ")\n" << sim.Log();
+  sim.Signal(SIGSTOP);
+
+  CapturedLog log(spdlog::level::warn);
+  dds::ParticipantOptions options = As("blue", "test-stall-watcher");
+  options.authentication_timeout = 2s;
+  dds::Participant watcher(options);
+  const std::optional<UdpEndpoint> group = MakeEndpoint(kSpdpGroup, SpdpPort(domain_));
+  ASSERT_TRUE(group);
+  // Sent again every 100 ms (the watcher discovers turf-sim at the first it receives; its lease is 5 s), until the
+  // watcher names turf-sim. (Another test's participant on this domain may be refused or named too: the counts
+  // are at least, not exactly.)
+  const std::string named = "DDS security: turf-sim (pid " + std::to_string(sim.pid()) + " on host";
+  const auto deadline = std::chrono::steady_clock::now() + 30s;
+  while (log.Text().find(named) == std::string::npos && std::chrono::steady_clock::now() < deadline) {
+    ASSERT_TRUE(spdp->SendTo(*announcement, *group, &error)) << error;
+    spdp->Receive(65536, 100ms);  // paces the loop; what it receives is not used
+  }
+  const dds::Authentications now = watcher.AuthenticationsNow();
+  sim.Kill();
+  const std::string text = log.Text();
+  const size_t at = text.find(named);
+  ASSERT_NE(at, std::string::npos) << text;
+  EXPECT_NE(text.find("has not finished authenticating", at), std::string::npos) << text;
+  EXPECT_GE(now.stalled, 1u) << text;
 }
 
 TEST_F(SecurityE2e, ATamperedPermissionsFileOrAMissingKeyMakesTurfSimRefuseToStart) {

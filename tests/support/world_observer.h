@@ -35,6 +35,7 @@ class WorldObserver {
   }
   const idl::WorldState& state() const { return state_now_; }
   const idl::Clock& clock() const { return clock_now_; }
+  const dds::Participant& participant() const { return participant_; }
 
  private:
   WakeWait wake_;
