@@ -13,8 +13,10 @@
 #include <cstdint>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "dds/participant.h"
@@ -35,10 +37,15 @@ class AuthenticationWatch {
     std::lock_guard<std::mutex> lock(mutex_);
     if (pending_.size() < kMaxPending) pending_.emplace(peer.guid_prefix, Entry{peer, now, false});
   }
-  // Its authentication ended, authorized or refused.
-  void Ended(const std::string& guid_prefix) {
+  // Its authentication ended, authorized or refused: the participant as discovered (nullopt if it was not pending).
+  std::optional<PeerInfo> Ended(const std::string& guid_prefix) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (pending_.erase(guid_prefix) != 0) ++ended_;
+    auto it = pending_.find(guid_prefix);
+    if (it == pending_.end()) return std::nullopt;
+    PeerInfo peer = std::move(it->second.peer);
+    pending_.erase(it);
+    ++ended_;
+    return peer;
   }
   // It left, or stopped announcing itself for its lease.
   void Gone(const std::string& guid_prefix) {

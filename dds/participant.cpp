@@ -1,6 +1,5 @@
 #include "dds/participant.h"
 
-#include <errno.h>  // program_invocation_short_name (glibc)
 #include <fastrtps/xmlparser/XMLProfileManager.h>
 #include <spdlog/spdlog.h>
 #include <turf/idl/ClockPubSubTypes.h>
@@ -36,6 +35,7 @@
 
 #include "dds/authentication_watch.h"
 #include "dds/fastdds_endpoint.h"
+#include "dds/fastdds_peers.h"
 #include "dds/held_samples.h"
 
 namespace turf::dds {
@@ -232,52 +232,11 @@ void LoadQosProfiles(const std::string& file) {
 
 namespace {
 
-// Properties a turf participant announces (propagated with its discovery data), so a peer can name the process.
-constexpr const char* kHostProperty = "turf.host";
-constexpr const char* kPidProperty = "turf.pid";
-constexpr const char* kProgramProperty = "turf.program";
-constexpr const char* kStartedProperty = "turf.started_ns";
-
 template <class T>
 std::string Printed(const T& value) {
   std::ostringstream out;
   out << value;
   return out.str();
-}
-
-std::string HostName() {
-  char name[256] = {};
-  if (gethostname(name, sizeof(name) - 1) != 0) return "unknown";
-  return name;
-}
-
-// The executable's name: what `ps` shows, the same for every participant of the process.
-std::string ProgramName() {
-  const char* name = program_invocation_short_name;  // glibc
-  return name != nullptr ? name : "";
-}
-
-int64_t ToInt(const std::string& text) {
-  try {
-    return std::stoll(text);
-  } catch (const std::exception&) {
-    return 0;  // a malformed value from another implementation: as if it said nothing
-  }
-}
-
-// What a participant's discovery data says about it.
-PeerInfo PeerOf(const eprosima::fastrtps::rtps::ParticipantProxyData& data) {
-  PeerInfo peer;
-  peer.name = data.m_participantName.to_string();
-  peer.guid_prefix = Printed(data.m_guid.guidPrefix);
-  for (auto it = data.m_properties.begin(); it != data.m_properties.end(); ++it) {
-    const std::string key = it->first();
-    if (key == kHostProperty) peer.host = it->second();
-    if (key == kPidProperty) peer.pid = ToInt(it->second());
-    if (key == kProgramProperty) peer.program = it->second();
-    if (key == kStartedProperty) peer.started_unix_ns = ToInt(it->second());
-  }
-  return peer;
 }
 
 }  // namespace
@@ -348,12 +307,7 @@ class Participant::Discovery final : public fdds::DomainParticipantListener {
     using Status = eprosima::fastrtps::rtps::ParticipantDiscoveryInfo;
     std::lock_guard<std::mutex> events_lock(events_mutex_);
     const PeerInfo peer = PeerOf(info.info);
-    if (watch_ != nullptr) {
-      if (info.status == Status::DISCOVERED_PARTICIPANT)
-        watch_->Discovered(peer, AuthenticationWatch::Clock::now());
-      else if (info.status != Status::CHANGED_QOS_PARTICIPANT)
-        watch_->Gone(peer.guid_prefix);
-    }
+    if (watch_ != nullptr) WatchDiscovery(*watch_, info, peer);
     Events events;
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -378,17 +332,9 @@ class Participant::Discovery final : public fdds::DomainParticipantListener {
   }
 
 #if HAVE_SECURITY
-  // Authorized or refused. A refusal is a peer without an identity, of another CA, or whose identity does not verify.
   void onParticipantAuthentication(fdds::DomainParticipant* /*participant*/,
                                    eprosima::fastrtps::rtps::ParticipantAuthenticationInfo&& info) override {
-    using Status = eprosima::fastrtps::rtps::ParticipantAuthenticationInfo;
-    const std::string prefix = Printed(info.guid.guidPrefix);
-    if (watch_ != nullptr) watch_->Ended(prefix);
-    if (info.status == Status::UNAUTHORIZED_PARTICIPANT)
-      spdlog::warn(
-          "DDS security: {} failed to authenticate (no identity, one of another CA, or one that does not "
-          "verify): it meets no topic of this participant",
-          Known(prefix).Describe());
+    if (watch_ != nullptr) WatchAuthentication(*watch_, info);
   }
 #endif
 
@@ -426,12 +372,6 @@ class Participant::Discovery final : public fdds::DomainParticipantListener {
     changed_.notify_all();
     for (const auto& [event, writer] : events)
       for (const auto& [id, listener] : listeners_) listener(event, writer);
-  }
-
-  PeerInfo Known(const std::string& guid_prefix) const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    auto it = peers_.find(guid_prefix);
-    return it != peers_.end() ? it->second : PeerInfo{"", "", 0, "", 0, guid_prefix};
   }
 
   std::vector<RemoteWriter> WritersLocked(const std::string& topic) const {
@@ -533,19 +473,7 @@ void AddSecurityProperties(const std::string& dir, fdds::DomainParticipantQos& q
   properties.emplace_back("dds.sec.crypto.plugin", "builtin.AES-GCM-GMAC");
 }
 
-void Participant::AnnounceSelf(fdds::DomainParticipantQos& qos) {
-  self_.name = options_.name;
-  self_.host = HostName();
-  self_.pid = getpid();
-  self_.program = ProgramName();
-  self_.started_unix_ns =
-      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
-  auto& properties = qos.properties().properties();
-  properties.emplace_back(kHostProperty, self_.host, /*propagate=*/true);
-  properties.emplace_back(kPidProperty, std::to_string(self_.pid), true);
-  properties.emplace_back(kProgramProperty, self_.program, true);
-  properties.emplace_back(kStartedProperty, std::to_string(self_.started_unix_ns), true);
-}
+void Participant::AnnounceSelf(fdds::DomainParticipantQos& qos) { self_ = dds::AnnounceSelf(options_.name, qos); }
 
 std::vector<RemoteWriter> Participant::OtherWriters(Topic topic) const { return discovery_->Writers(TopicName(topic)); }
 

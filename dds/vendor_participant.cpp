@@ -19,7 +19,9 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "dds/authentication_watch.h"
 #include "dds/fastdds_endpoint.h"
+#include "dds/fastdds_peers.h"
 #include "dds/participant.h"
 
 namespace turf::dds {
@@ -27,7 +29,36 @@ namespace turf::dds {
 namespace fdds = eprosima::fastdds::dds;
 using ReturnCode = eprosima::fastrtps::types::ReturnCode_t;
 
+namespace {
+
+// Under DDS Security: Fast DDS's participant listener tells the watch of discoveries and authentications.
+class AuthenticationListener final : public fdds::DomainParticipantListener {
+ public:
+  explicit AuthenticationListener(AuthenticationWatch& watch) : watch_(watch) {}
+
+ private:
+  void on_participant_discovery(fdds::DomainParticipant* /*participant*/,
+                                eprosima::fastrtps::rtps::ParticipantDiscoveryInfo&& info) override {
+    WatchDiscovery(watch_, info, PeerOf(info.info));
+  }
+#if HAVE_SECURITY
+  void onParticipantAuthentication(fdds::DomainParticipant* /*participant*/,
+                                   eprosima::fastrtps::rtps::ParticipantAuthenticationInfo&& info) override {
+    WatchAuthentication(watch_, info);
+  }
+#endif
+
+  AuthenticationWatch& watch_;
+};
+
+}  // namespace
+
 struct VendorParticipant::Impl {
+  // With security and a timeout (as Participant's): made before and deleted after the DomainParticipant, which
+  // calls the listener until it is deleted; the timer stops first.
+  std::unique_ptr<AuthenticationWatch> watch;
+  std::unique_ptr<AuthenticationListener> listener;
+  std::unique_ptr<AuthenticationTimer> timer;
   fdds::DomainParticipant* participant = nullptr;
   fdds::Publisher* publisher = nullptr;
   fdds::Subscriber* subscriber = nullptr;
@@ -162,8 +193,16 @@ VendorParticipant::VendorParticipant(const VendorOptions& options)
   }
   qos.name(options.name);
   if (options.large_samples) UseLargeSampleTransports(qos);
-  if (!options.security.empty()) AddSecurityProperties(options.security, qos);
-  impl_->participant = factory->create_participant(options.domain, qos);
+  AnnounceSelf(options.name, qos);
+  if (!options.security.empty()) {
+    AddSecurityProperties(options.security, qos);
+    if (options.authentication_timeout.count() > 0) {
+      impl_->watch = std::make_unique<AuthenticationWatch>(options.authentication_timeout);
+      impl_->listener = std::make_unique<AuthenticationListener>(*impl_->watch);
+    }
+  }
+  impl_->participant =
+      factory->create_participant(options.domain, qos, impl_->listener.get(), fdds::StatusMask::none());
   if (impl_->participant == nullptr && !options.security.empty())
     throw std::invalid_argument("DDS Security refused the identity in " + options.security);
   if (impl_->participant == nullptr)
@@ -172,10 +211,17 @@ VendorParticipant::VendorParticipant(const VendorOptions& options)
   impl_->subscriber = impl_->participant->create_subscriber(fdds::SUBSCRIBER_QOS_DEFAULT);
   if (impl_->publisher == nullptr || impl_->subscriber == nullptr)
     throw std::runtime_error("cannot create a DDS publisher/subscriber");
+  if (impl_->watch) impl_->timer = std::make_unique<AuthenticationTimer>(*impl_->watch);
+}
+
+Authentications VendorParticipant::AuthenticationsNow() const {
+  if (!impl_->watch) return {};
+  return {impl_->watch->Pending(), impl_->watch->Ended(), impl_->watch->Stalled()};
 }
 
 VendorParticipant::~VendorParticipant() {
   if (impl_->participant == nullptr) return;
+  impl_->timer.reset();
   impl_->participant->delete_contained_entities();
   fdds::DomainParticipantFactory::get_instance()->delete_participant(impl_->participant);
 }

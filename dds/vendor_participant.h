@@ -2,17 +2,21 @@
 // (no turf prefix), the types' own registered names, and the QoS such SDKs use on the robot: best effort, volatile,
 // keep last. turf's own topics go through dds::Participant (participant.h); this one exists so that robot programs
 // written for a vendor SDK find the topics they expect. Transports as every turf participant (the profiles file's
-// participant profile: UDP only). Fast DDS stays in vendor_participant.cpp; the typed front-ends below only need the
-// generated PubSubType.
+// participant profile: UDP only); it announces its process as they do, and with security names a peer that never
+// finishes authenticating (authentication_watch.h). Fast DDS stays in vendor_participant.cpp; the typed front-ends
+// below only need the generated PubSubType.
 //
 // RAII: writers and readers delete their entities; the participant must outlive them. A reader's callback runs on a
 // Fast DDS thread, one sample at a time, until the reader is destroyed.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
+
+#include "dds/participant.h"  // Authentications (no Fast DDS in it)
 
 namespace eprosima::fastdds::dds {
 class TopicDataType;
@@ -30,6 +34,9 @@ struct VendorOptions {
   // publish asynchronously through a flow controller (kLargeSampleBytesPerMs): write() returns at once, Fast DDS's
   // own thread sends the datagrams paced, so a burst of fragments does not overflow a reader's socket buffer.
   bool large_samples = false;
+  // With security: a participant that has not finished authenticating after this long is named in a warning, as
+  // ParticipantOptions::authentication_timeout. 0: no watch.
+  std::chrono::milliseconds authentication_timeout{20000};
 };
 
 // The flow controller's pace for large samples: at most this many bytes a millisecond (128 MB/s).
@@ -46,6 +53,8 @@ class VendorParticipant {
   VendorParticipant& operator=(const VendorParticipant&) = delete;
 
   int domain() const { return domain_; }
+  // With security: as Participant::AuthenticationsNow (all zero without).
+  Authentications AuthenticationsNow() const;
 
   class RawWriter;
   class RawReader;

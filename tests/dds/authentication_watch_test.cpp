@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <optional>
 #include <string>
 
 namespace turf::dds {
@@ -37,9 +38,11 @@ TEST(AuthenticationWatch, AnEndedOrGoneAuthenticationIsNeverOverdue) {
   watch.Discovered(Peer("authorized"), t0);
   watch.Discovered(Peer("left"), t0);
   watch.Discovered(Peer("stalled"), t0);
-  watch.Ended("authorized");
+  const std::optional<PeerInfo> authorized = watch.Ended("authorized");
+  ASSERT_TRUE(authorized);
+  EXPECT_EQ(authorized->program, "turf-vision-bridge");  // as discovered: a refusal's warning names it
   watch.Gone("left");
-  watch.Ended("never-discovered");  // not counted: it was not pending
+  EXPECT_FALSE(watch.Ended("never-discovered"));  // not counted: it was not pending
   EXPECT_EQ(watch.Pending(), 1u);
   EXPECT_EQ(watch.Ended(), 1u);
   const auto overdue = watch.Overdue(t0 + 60s);

@@ -98,6 +98,8 @@ TEST_F(SecurityRender, ATeamReadsTheRenderIdentitysImagesAndAnUnsecuredReaderNev
       << render->Log() << "\nturf-sim:\n"
       << sim.Log();
   EXPECT_EQ(stranger.images, 0) << "a participant without security read a secured camera topic";
+  // The team's participant watched its authentications (dds/authentication_watch.h): turf-render's ended.
+  EXPECT_GE(blue.AuthenticationsNow().ended, 1u);
   EXPECT_EQ(sim.Stop(), 0);
   EXPECT_EQ(render->Stop(), 0);
 }
