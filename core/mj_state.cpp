@@ -28,7 +28,7 @@ namespace {
 
 // The arrays of the integration state (what the next step starts from), then
 // the last step's results that outputs read between steps (sensors, body and
-// site frames). Each is (pointer, length) for a model and its data.
+// site and shape frames). Each is (pointer, length) for a model and its data.
 template <class Data>
 std::vector<std::pair<decltype(Data::qpos), int>> Arrays(const mjModel* m, Data* d) {
   return {{d->qpos, m->nq},
@@ -46,7 +46,10 @@ std::vector<std::pair<decltype(Data::qpos), int>> Arrays(const mjModel* m, Data*
           {d->xquat, 4 * m->nbody},
           {d->xmat, 9 * m->nbody},
           {d->site_xpos, 3 * m->nsite},
-          {d->site_xmat, 9 * m->nsite}};
+          {d->site_xmat, 9 * m->nsite},
+          // The shapes' frames: the legged islands regroup robots by them before the next step.
+          {d->geom_xpos, 3 * m->ngeom},
+          {d->geom_xmat, 9 * m->ngeom}};
 }
 
 void SaveContact(const mjContact& c, StateWriter& out) {

@@ -192,6 +192,10 @@ void SslCameraSystem::Fields(Io& io, Self& self) {
   io(self.realism_);
   for (auto& s : self.streams_) io(s.values, s.link, s.stats);
   io(Sized(self.pending_, kMaxPending), self.captures_, self.next_capture_ns_);
+  // A waiting frame's camera indexes the streams when it is released.
+  for (const Pending& p : self.pending_)
+    io.Check(p.frame.camera_id >= 0 && static_cast<size_t>(p.frame.camera_id) < self.streams_.size(),
+             "a waiting camera frame of a camera the scene does not have");
 }
 
 void SslCameraSystem::Save(StateWriter& out) const { Fields(out, *this); }

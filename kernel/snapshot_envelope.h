@@ -13,7 +13,7 @@ namespace turf {
 
 enum class KernelKind : uint8_t { kSsl = 1, kLegged = 2 };
 
-inline constexpr uint32_t kSnapshotVersion = 4;
+inline constexpr uint32_t kSnapshotVersion = 5;
 
 std::string SaveSnapshot(KernelKind kind, const std::function<void(StateWriter&)>& save);
 

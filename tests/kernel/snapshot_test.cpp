@@ -2,6 +2,9 @@
 // mismatched snapshot is refused with a reason and changes nothing.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <cstring>
+
 #include "core/mj_state.h"
 #include "core/rng.h"
 #include "core/state_io.h"
@@ -67,6 +70,40 @@ TEST(SnapshotTest, CorruptedValuesAreRefusedNotObeyed) {
     }
   }
   EXPECT_GT(refused, 0);
+}
+
+// Camera frames still on their way (a delayed link) are in the snapshot; one whose camera the scene does not have
+// would index past the cameras' streams when released: refused. The frames are found in the bytes by what they
+// hold (camera id, frame number, capture and send time, arrival 200 ms after capture).
+TEST(SnapshotTest, AWaitingCameraFrameOfAnUnknownCameraIsRefused) {
+  SslKernel k(SslMatch("ideal"));
+  SensorRealism realism = k.realism();
+  realism.camera.link.latency = 0.2;
+  realism.camera.processing_delay = 0.0;
+  ASSERT_EQ(k.SetRealism(realism), "");
+  while (k.time_ns() < 50'000'000) k.Step();
+  const std::string good = k.Save();
+  std::string bad = good;
+  int patched = 0;
+  for (size_t i = 0; i + 36 <= bad.size(); ++i) {
+    int64_t arrival = 0, capture = 0, sent = 0;
+    int32_t camera = 0;
+    uint64_t number = 0;
+    std::memcpy(&arrival, &bad[i], 8);
+    std::memcpy(&camera, &bad[i + 8], 4);
+    std::memcpy(&number, &bad[i + 12], 8);
+    std::memcpy(&capture, &bad[i + 20], 8);
+    std::memcpy(&sent, &bad[i + 28], 8);
+    if (camera < 0 || camera >= 4 || number < 1 || number > 100 || capture <= 0 || sent != capture ||
+        arrival != capture + 200'000'000)
+      continue;
+    const int32_t unknown = 1000;
+    std::memcpy(&bad[i + 8], &unknown, 4);
+    ++patched;
+  }
+  ASSERT_GT(patched, 0) << "no waiting camera frame found in the snapshot";
+  ExpectRefusedAndUnchanged(k, bad, "a waiting frame of camera 1000");
+  EXPECT_EQ(k.Restore(good), "");
 }
 
 // `frame` written and read back through RestoreFrame: the value read and the reader's error ("" if none).

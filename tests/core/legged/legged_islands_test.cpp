@@ -187,6 +187,43 @@ TEST(LeggedIslands, RunsSnapshotsAndResetsAreReproducible) {
   EXPECT_EQ(Snapshot(a), start);
 }
 
+// A snapshot restored into new islands (turf-sim resuming after a crash) regroups as the run it came from: the
+// grouping before the next step reads the shapes' positions of the last step, which the snapshot carries. Robots 1
+// and 2 are put beside robot 0 (one group of three, robot 3 alone); the new islands' worlds start with every
+// group's robots at the same spots, so without those positions they regroup at once, and differently.
+TEST(LeggedIslands, ARestoredSnapshotRegroupsAsTheRunItCameFrom) {
+  const LeggedScene scene = Robots({-6, -2, 2, 6}, 0, false, 2);
+  LeggedIslands a(scene);
+  const double z = a.State().robots[0].base_position[2];
+  auto run = [&](LeggedIslands& w, int from, int to) {
+    for (int i = from; i < to; ++i) {
+      if (i == 10) {
+        RobotPlacement beside;
+        beside.position = {-6, 0.5, z};
+        ASSERT_EQ(w.PlaceRobot(1, beside), PlacementError::kOk);
+        beside.position = {-6, -0.5, z};
+        ASSERT_EQ(w.PlaceRobot(2, beside), PlacementError::kOk);
+      }
+      Swing(w, i);
+      w.Step();
+    }
+  };
+  run(a, 0, 100);
+  const std::string middle = Snapshot(a);
+  LeggedIslands c(scene);
+  StateReader in(middle);
+  c.Restore(in);
+  ASSERT_TRUE(in.ok()) << in.error();
+  const uint64_t a_regroups = a.regroups(), c_regroups = c.regroups();
+  run(a, 100, 101);
+  run(c, 100, 101);
+  for (int r = 0; r < 4; ++r) EXPECT_EQ(c.GroupOf(r), a.GroupOf(r)) << "robot " << r;
+  EXPECT_EQ(c.regroups() - c_regroups, a.regroups() - a_regroups) << "regroupings in the step after the snapshot";
+  run(a, 101, 300);
+  run(c, 101, 300);
+  EXPECT_EQ(Snapshot(c), Snapshot(a));
+}
+
 // A snapshot whose groups name a robot twice (or none) is refused and changes nothing.
 TEST(LeggedIslands, ASnapshotWithBrokenGroupsIsRefused) {
   LeggedIslands w(Robots({-3, 3}, 0, false, 2));
