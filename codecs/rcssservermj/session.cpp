@@ -143,7 +143,16 @@ void Session::Receive(int id, const std::string& payload) {
   a->init = init;
 }
 
-void Session::Monitor(const std::string& payload) { monitor_queue_.push_back(payload); }
+void Session::Monitor(const std::string& payload) {
+  if (monitor_queue_.size() >= kMaxQueuedMonitor) {
+    Issue(-1, "monitor_queue_full",
+          fmt::format("{} monitor messages already wait for the next cycle (in sync mode none runs until the agents "
+                      "answer): dropped",
+                      kMaxQueuedMonitor));
+    return;
+  }
+  monitor_queue_.push_back(payload);
+}
 
 bool Session::Owes(const Agent& a) const { return sync() && a.active && !a.kicked && a.answers < a.perceptions; }
 

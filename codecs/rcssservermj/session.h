@@ -108,6 +108,10 @@ struct SceneRobot {
   RobotMove park;
 };
 
+// Monitor messages kept for the next cycle: in sync mode no cycle runs until the agents answer, so a monitor could
+// otherwise queue without bound. More are dropped, each counted as an issue (monitor_queue_full).
+inline constexpr size_t kMaxQueuedMonitor = 64;
+
 struct SessionOptions {
   bool sync_mode = false;
   bool sequential = false;  // the sequential loop (implies sync)

@@ -135,7 +135,7 @@ std::string Session::RestoreLeague(std::string_view snapshot) {
   Referee referee = referee_;
   Rng rng = rng_;
   in(cycle, referee, rng);
-  std::vector<std::string> monitor(in.Count(kMaxSnapshotItems));
+  std::vector<std::string> monitor(in.Count(kMaxQueuedMonitor));
   for (std::string& m : monitor) m = in.Str(kMaxMonitor);
   in.Tag(StateTag("MREQ"));
   WorldRequests requests;

@@ -17,6 +17,7 @@
 #include "participants/common/front_end_server.h"
 #include "participants/common/legged_lockstep.h"
 #include "participants/common/process.h"
+#include "participants/common/protobuf_log.h"
 #include "participants/common/watched_stats.h"
 #include "participants/hlvs_bridge/robot_binding.h"
 #include "participants/lockstep_front_end/front_end_handle_impl.h"
@@ -90,6 +91,7 @@ class HlvsBridgeImpl {
         blue_allow_(options_.blue_allow),
         rejects_("HLVS input"),
         link_(MakeLockstep(options_, bus, kClient, false)) {
+    RouteProtobufLogs();  // a client's malformed request: libprotobuf's lines rate-limited, as the other bridges'
     for (size_t i = 0; i < options_.red_ports.size(); ++i) slots_.push_back(MakeSlot("red", i + 1, &red_allow_));
     for (size_t i = 0; i < options_.blue_ports.size(); ++i) slots_.push_back(MakeSlot("blue", i + 1, &blue_allow_));
     server_ = std::make_unique<FrontEndServer>(ServerOptions(options_), "HLVS client", &rejects_, MakeHooks());
@@ -237,7 +239,7 @@ class HlvsBridgeImpl {
       if (!stop()) spdlog::error("{}", error);
       return false;
     }
-    for (const std::string& w : warnings) spdlog::warn("turf-sim refused {}", w);
+    for (const std::string& w : warnings) rejects_.Reject("refused_by_turf_sim", w);
     time_ms_ += hlvs::kBasicStepMs;
     ++steps_done_;
     pending_ = idl::SimControl();

@@ -164,7 +164,8 @@ class LeagueFrontEnd {
       world = World::SnapshotOf(link_->state());
       return true;
     });
-    for (const std::string& w : warnings) spdlog::warn("turf-sim refused {}", w);
+    // An agent's beam or a monitor's move that turf-sim refuses (beyond its placement bounds): counted, rate-limited.
+    for (const std::string& w : warnings) rejects_.Reject("refused_by_turf_sim", w);
     if (!stepped) {
       if (stop()) return true;
       spdlog::error("{}; attaching again", error);

@@ -1,10 +1,10 @@
 #include "participants/sim/resume_file.h"
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 
 namespace turf {
 
@@ -34,13 +34,22 @@ std::string WriteResumeFile(const std::string& path, std::string_view identity, 
 
 ResumeRead ReadResumeFile(const std::string& path, std::string_view identity) {
   ResumeRead out;
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) return out;  // none yet
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  const std::string file = bytes.str();
-  if (file.size() > kMaxFileBytes) {
+  // Its size first: a file larger than any snapshot is refused before it is read.
+  const std::streamoff size = in.tellg();
+  if (size < 0) {
+    out.why_not = "cannot tell the size of " + path;
+    return out;
+  }
+  if (static_cast<uint64_t>(size) > kMaxFileBytes) {
     out.why_not = path + " is larger than any turf snapshot";
+    return out;
+  }
+  in.seekg(0);
+  std::string file(static_cast<size_t>(size), '\0');
+  if (!in.read(file.data(), size)) {
+    out.why_not = "cannot read " + path;
     return out;
   }
   if (file.compare(0, kHeader.size(), kHeader) != 0) {

@@ -2,6 +2,7 @@
 #include "participants/sim/resume_file.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -61,6 +62,20 @@ TEST_F(ResumeFileTest, ForeignOrTornFilesAreRefused) {
   WriteRaw("turf-resume 1\nid without its end of line");
   EXPECT_FALSE(ReadResumeFile(path_, "id").snapshot.has_value());
   EXPECT_NE(ReadResumeFile(path_, "id").why_not.find("cut short"), std::string::npos);
+}
+
+// Refused by its size before it is read: a 400 MB file (sparse, so no disk is used) never enters memory.
+TEST_F(ResumeFileTest, AFileLargerThanAnySnapshotIsRefusedUnread) {
+  WriteRaw(std::string("turf resume"));
+  std::filesystem::resize_file(path_, 400u << 20);
+  rusage before{};
+  ASSERT_EQ(getrusage(RUSAGE_SELF, &before), 0);
+  const ResumeRead r = ReadResumeFile(path_, "id");
+  rusage after{};
+  ASSERT_EQ(getrusage(RUSAGE_SELF, &after), 0);
+  EXPECT_FALSE(r.snapshot.has_value());
+  EXPECT_NE(r.why_not.find("larger than any turf snapshot"), std::string::npos) << r.why_not;
+  EXPECT_LT(after.ru_maxrss - before.ru_maxrss, 64 * 1024) << "peak resident KB grew while refusing it";
 }
 
 TEST_F(ResumeFileTest, AnIdentityOfSeveralLinesIsNotWritten) {

@@ -285,6 +285,25 @@ TEST(MjSession, UnknownEffectorIsCountedNotApplied) {
   EXPECT_EQ(kinds, (std::vector<std::string>{"unknown_effector", "not_finite"}));
 }
 
+// Sync mode with no agent: no cycle runs, so monitor messages wait; past kMaxQueuedMonitor they are dropped and
+// counted, and those kept still act at the next cycle.
+TEST(MjSession, AMonitorFloodWhileNoCycleRunsIsCappedAndCounted) {
+  SessionOptions o;
+  o.sync_mode = true;
+  Fixture f(o);
+  for (size_t i = 0; i < kMaxQueuedMonitor; ++i) f.session.Monitor("(kickOff Left)");
+  f.session.TakeIssues();
+  for (int i = 0; i < 1000; ++i) f.session.Monitor("(kickOff Right)");
+  size_t full = 0;
+  for (const SessionIssue& i : f.session.TakeIssues()) full += i.kind == "monitor_queue_full" ? 1 : 0;
+  EXPECT_EQ(full, 1000u);
+  f.world.Cycle(&f.session);
+  EXPECT_EQ(f.session.referee().play_mode(), PlayMode::kKickOffLeft);  // the kept ones, none of the dropped
+  f.session.Monitor("(killsim)");                                      // room again after the cycle
+  f.world.Cycle(&f.session);
+  EXPECT_TRUE(f.session.quit_requested());
+}
+
 TEST(MjSession, FloodingDropsTheAgent) {
   SessionOptions o;
   o.sync_mode = true;
