@@ -4,6 +4,11 @@
 
 #include <spdlog/spdlog.h>
 
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <stdexcept>
 #include <utility>
@@ -28,6 +33,12 @@ void ParticipantMain::AddCommonFlags(ParticipantOptions& options, const CommonFl
                   "(authenticated, only what its signed permissions allow, encrypted); default: off")
       ->type_name("DIR")
       ->check(CLI::ExistingDirectory);
+  app_.add_option(
+          "--authentication-timeout", options.authentication_timeout_s,
+          "with --security: s after which a participant discovered that has not finished authenticating is "
+          "named in a warning; a bridge still waiting for turf-sim then restarts itself (README, Access control)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.5, 3600.0));
 }
 
 CLI::Option* ParticipantMain::AddPort(const std::string& name, uint16_t& port, const std::string& help,
@@ -58,8 +69,20 @@ int ParticipantMain::Run(int argc, const char* const* argv, const std::function<
     spdlog::critical("stopped by an exception that is not a std::exception");
     return kExitFailure;
   }
+  if (code == kExitClean && RestartRequested()) return Restart(argv);
   if (code == kExitClean) spdlog::info("stopped cleanly");
   return code;
+}
+
+// Everything the body made is gone (its sockets closed, its DDS participant deleted): the same program starts again
+// in this process, with the same arguments.
+int ParticipantMain::Restart(const char* const* argv) {
+  spdlog::info("stopped cleanly; starting again with the same arguments");
+  spdlog::default_logger()->flush();
+  std::fflush(nullptr);
+  execv("/proc/self/exe", const_cast<char* const*>(argv));
+  spdlog::critical("could not start again: execv /proc/self/exe: {}", std::strerror(errno));
+  return kExitFailure;
 }
 
 }  // namespace turf

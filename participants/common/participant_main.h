@@ -49,7 +49,7 @@ class ParticipantMain {
   // The participant's own flags go here, in the order --help lists them.
   CLI::App& app() { return app_; }
 
-  // Adds -d/--domain (checked: 0..232), -p/--prefix, --qos and --security, parsed into
+  // Adds -d/--domain (checked: 0..232), -p/--prefix, --qos, --security and --authentication-timeout, parsed into
   // `options` (which must outlive Run), at this point of --help.
   void AddCommonFlags(ParticipantOptions& options, const CommonFlagHelp& help = {});
 
@@ -64,10 +64,14 @@ class ParticipantMain {
   // is the exit code; an escaping std::invalid_argument is logged as an error
   // and gives kExitBadConfig, any other exception is logged as critical and
   // gives kExitFailure. Logs "stopped cleanly" when the result is kExitClean.
-  // Call it once.
+  // If the body asked for a restart (RequestRestart, process.h) and returned
+  // kExitClean, runs the same program again in this process (execv, same pid
+  // and arguments) instead of returning. Call it once.
   int Run(int argc, const char* const* argv, const std::function<int()>& body);
 
  private:
+  int Restart(const char* const* argv);
+
   std::string process_name_;
   std::string log_level_ = "info";
   CLI::App app_;

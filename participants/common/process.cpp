@@ -23,8 +23,12 @@ bool SetupLogging(const std::string& process_name, const std::string& level) {
 
 namespace {
 std::atomic<int> g_stop_signals{0};
+// RequestStop's: not a signal, so that one Ctrl-C after it still stops cleanly (a second one leaves at once).
+std::atomic<bool> g_stop_requested{false};
+std::atomic<bool> g_restart{false};
 
 void OnStopSignal(int) {
+  g_restart.store(false);                            // a stop from outside wins over a restart
   if (g_stop_signals.fetch_add(1) >= 1) _exit(130);  // second Ctrl-C: leave now
 }
 }  // namespace
@@ -37,8 +41,27 @@ void InstallStopSignals() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
-bool StopRequested() { return g_stop_signals.load() > 0; }
-void RequestStop() { g_stop_signals.fetch_add(1); }
+bool StopRequested() { return g_stop_signals.load() > 0 || g_stop_requested.load(); }
+void RequestStop() { g_stop_requested.store(true); }
+
+void RequestRestart() {
+  g_restart.store(true);
+  RequestStop();
+}
+bool RestartRequested() { return g_restart.load(); }
+
+std::string Printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f)
+      out += fmt::format("\\x{:02x}", byte);
+    else
+      out += c;  // printable ASCII, and UTF-8's multi-byte sequences as they are
+  }
+  return out;
+}
 
 RejectLog::RejectLog(std::string what, std::chrono::seconds interval, LogLine line)
     : what_(std::move(what)), interval_(interval), line_(line) {}
@@ -52,7 +75,7 @@ void RejectLog::Reject(const std::string& kind, const std::string& detail) {
   if (it != last_log_.end() && now - it->second < interval_) return;
   const uint64_t since = n - reported_[kind];
   const bool refusal = line_ == LogLine::kRefusal;
-  const std::string text = fmt::format("{}{} ({}): {}", refusal ? "refused " : "", what_, kind, detail);
+  const std::string text = fmt::format("{}{} ({}): {}", refusal ? "refused " : "", what_, kind, Printable(detail));
   const spdlog::level::level_enum level = refusal ? spdlog::level::warn : spdlog::level::info;
   if (since <= 1)
     spdlog::log(level, "{}", text);

@@ -8,6 +8,7 @@
 #include <map>
 #include <mutex>
 #include <string>
+#include <string_view>
 
 namespace turf {
 
@@ -21,7 +22,17 @@ void InstallStopSignals();
 bool StopRequested();
 void RequestStop();
 
-// Counts refused inputs per kind and logs them: the first of each kind at
+// Asks the process to stop and then start again as it was started (ParticipantMain::Run runs the same program with
+// the same arguments once the body has returned): a DDS participant made anew, for what only that mends (Fast DDS
+// 2.9.1's stalled handshakes, participants/common/stalled_authentication.h). A SIGINT or SIGTERM cancels it.
+void RequestRestart();
+bool RestartRequested();
+
+// `text` with its control bytes (below 0x20, and 0x7f) written as \xNN: what a peer sent, safe to log (no forged
+// line, no terminal escape).
+std::string Printable(std::string_view text);
+
+// Counts refused inputs per kind and logs them (the detail through Printable): the first of each kind at
 // once, then at most one summary line per kind every `interval`. Thread-safe:
 // a participant's threads share one. With LogLine::kEvent the same counting
 // and limit serve events that anyone can cause in bulk (clients connecting and

@@ -18,6 +18,7 @@
 #include "dds/participant.h"
 #include "participants/common/process.h"
 #include "participants/common/protobuf_log.h"
+#include "participants/common/stalled_authentication.h"
 #include "participants/common/udp.h"
 
 namespace turf {
@@ -70,6 +71,7 @@ class GrsimBridge::Impl {
       const auto now = SteadyClock::now();
       if (now >= next_presence) {
         CheckPresence();
+        if (restart_.Check(participant_.AuthenticationsNow(), !sim_present_.load())) break;
         next_presence = now + kPresenceEvery;
       }
       if (now >= next_report) {
@@ -288,6 +290,7 @@ class GrsimBridge::Impl {
   std::atomic<uint64_t> unanswered_{0};  // teleports without a reply (no turf-sim, or a timeout)
   std::atomic<uint64_t> status_packets_{0};
   std::atomic<bool> sim_present_{false};
+  StalledAuthenticationRestart restart_;
   std::atomic<bool> field_known_{false};
 };
 

@@ -82,8 +82,8 @@ class RenderNode::Impl {
     SceneRenderer renderer(scene_, cameras_, RenderLook{options_.team_colours, options_.brightness});
     spdlog::info("look: team colours {} (robots named red_*, blue_*, yellow_*), lights x{}",
                  options_.team_colours ? "on" : "off", options_.brightness);
-    dds::VendorParticipant images(
-        dds::VendorOptions{options_.domain, options_.name + "-images", options_.security, true});
+    dds::VendorParticipant images(dds::VendorOptions{options_.domain, options_.name + "-images", options_.security,
+                                                     true, options_.authentication_timeout()});
     std::vector<CameraOutput> outputs = MakeOutputs(images);
     {
       std::lock_guard<std::mutex> lock(stats_mutex_);

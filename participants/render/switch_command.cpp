@@ -14,8 +14,8 @@ namespace turf {
 
 int SendCameraSwitches(const RenderOptions& options, const std::vector<CameraControlRequest>& switches,
                        std::chrono::milliseconds wait) {
-  dds::VendorParticipant participant(
-      dds::VendorOptions{options.domain, options.name + "-switch", options.security, /*large_samples=*/false});
+  dds::VendorParticipant participant(dds::VendorOptions{options.domain, options.name + "-switch", options.security,
+                                                        /*large_samples=*/false, options.authentication_timeout()});
   const std::string topic = dds::CameraControlTopicName(options.prefix);
   auto writer = participant.MakeWriter<idl::CameraControlPubSubType>(topic);
   const auto deadline = std::chrono::steady_clock::now() + wait;

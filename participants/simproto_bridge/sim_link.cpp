@@ -35,6 +35,8 @@ class SimLink::Impl {
   ~Impl() { ready_.store(false); }
 
   dds::Bus& bus() { return bus_; }
+  // On a bus of turf-sim's process: nothing to authenticate.
+  dds::Authentications AuthenticationsNow() const { return own_ ? own_->AuthenticationsNow() : dds::Authentications{}; }
 
   View Now() {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -161,5 +163,6 @@ std::vector<std::shared_ptr<const idl::CameraFrame>> SimLink::FramesSince(uint64
   return impl_->FramesSince(cursor);
 }
 uint64_t SimLink::Overflowed() const { return impl_->Overflowed(); }
+dds::Authentications SimLink::AuthenticationsNow() const { return impl_->AuthenticationsNow(); }
 
 }  // namespace turf

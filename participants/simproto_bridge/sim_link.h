@@ -65,6 +65,8 @@ class SimLink : Pinned {
   std::vector<std::shared_ptr<const idl::CameraFrame>> FramesSince(uint64_t cursor);
   // DDS samples turf-sim's writers could not hand over in time (reader queues full).
   uint64_t Overflowed() const;
+  // The link's own participant's (dds::Participant::AuthenticationsNow); none on a shared bus.
+  dds::Authentications AuthenticationsNow() const;
 
  private:
   class Impl;

@@ -19,6 +19,7 @@
 #include "kernel/time_control.h"
 #include "participants/common/process.h"
 #include "participants/common/protobuf_log.h"
+#include "participants/common/stalled_authentication.h"
 #include "participants/common/udp.h"
 #include "participants/simproto_bridge/sim_link.h"
 
@@ -83,6 +84,7 @@ class SimprotoBridge::Impl {
     while (!stop()) {
       std::this_thread::sleep_for(50ms);
       if (!seen) seen = ReportSim();
+      if (restart_.Check(link_.AuthenticationsNow(), !seen)) break;
       if (std::chrono::steady_clock::now() >= next_status) {
         next_status += 10s;
         const SimprotoBridgeStats s = Stats();
@@ -364,6 +366,7 @@ class SimprotoBridge::Impl {
 
   SimprotoBridgeOptions options_;
   SimLink link_;
+  StalledAuthenticationRestart restart_;
   SyncSession sync_;
   std::vector<Socket> sockets_;
   std::atomic<bool> stopping_{false};

@@ -23,6 +23,7 @@
 #include "dds/participant.h"
 #include "participants/common/overflow_watch.h"
 #include "participants/common/process.h"
+#include "participants/common/stalled_authentication.h"
 #include "participants/common/wakeup.h"
 #include "participants/viewer/camera_frames.h"
 #include "participants/viewer/viewer_json.h"
@@ -109,6 +110,7 @@ class ViewerNode::Impl {
       UpdateControlMatched();
       HandlePages();
       HandleOverflow();
+      if (restart_.Check(participant_.AuthenticationsNow(), !receiving_)) break;
       const auto after = SteadyClock::now();
       if (dirty_ && after >= next_push && model_.has_state()) {
         server_->Publish(viewer::Channel::kState, model_.State());
@@ -348,6 +350,7 @@ class ViewerNode::Impl {
   std::vector<idl::LinkState> links_inbox_;
   bool dirty_ = false;
   bool receiving_ = false;
+  StalledAuthenticationRestart restart_;
   bool field_logged_ = false;
   OverflowWatch overflow_;
 

@@ -21,6 +21,7 @@
 #include "participants/common/overflow_watch.h"
 #include "participants/common/process.h"
 #include "participants/common/protobuf_log.h"
+#include "participants/common/stalled_authentication.h"
 #include "participants/common/udp.h"
 #include "participants/common/wakeup.h"
 
@@ -90,6 +91,7 @@ class VisionBridge::Impl {
       HandleClock();
       HandleStates();
       HandleOverflow();
+      if (restart_.Check(participant_.AuthenticationsNow(), !receiving_)) break;
       const auto now = std::chrono::steady_clock::now();
       if (now >= next_status) {
         ReportStatus();
@@ -352,6 +354,7 @@ class VisionBridge::Impl {
   std::map<int64_t, double> round_unix_now_;  // capture time (sim ns) -> wall-clock reading
   int rounds_since_geometry_ = 0;
   bool receiving_ = false;
+  StalledAuthenticationRestart restart_;
   OverflowWatch overflow_;
   std::vector<idl::CameraFrame> camera_inbox_;
   std::vector<idl::SslField> field_inbox_;

@@ -2,7 +2,8 @@
 // the blue identity moves blue robots, the yellow one cannot publish on blue's command topic, a participant without
 // security meets no one, a tampered permissions file or a missing key makes turf-sim refuse to start (exit 2) with
 // a clear error, the tournament profile keeps the world state and control from the teams, and a peer that never
-// finishes authenticating is named after the timeout (dds/authentication_watch.h).
+// finishes authenticating is named after the timeout (dds/authentication_watch.h), a bridge waiting for it restarting
+// itself (participants/common/stalled_authentication.h).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <turf/idl/SimControlPubSubTypes.h>
@@ -15,6 +16,8 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -185,32 +188,65 @@ std::optional<std::vector<uint8_t>> AnnouncementOf(UdpSocket& socket, pid_t pid,
 }
 
 // A peer that announces itself and never answers its handshake (Fast DDS 2.9.1's stall, as a participant sees it):
-// turf-sim's announcement, sent again while turf-sim is stopped. The participant names it after its timeout.
-TEST_F(SecurityE2e, APeerThatNeverFinishesAuthenticatingIsNamedAfterTheTimeout) {
-  std::string error;
-  std::optional<UdpSocket> spdp = UdpSocket::Bind("0.0.0.0", SpdpPort(domain_), /*reuse=*/true, &error);
-  ASSERT_TRUE(spdp) << error;
-  ASSERT_TRUE(spdp->JoinMulticast(kSpdpGroup, "0.0.0.0", &error)) << error;
-  Process sim("security_sim", SimArgs(dir_ + "/sim"));
-  const auto announcement = AnnouncementOf(*spdp, sim.pid(), std::chrono::steady_clock::now() + 30s);
-  ASSERT_TRUE(announcement) << "no announcement of turf-sim (pid " << sim.pid() << ")\n" << sim.Log();
-  sim.Signal(SIGSTOP);
+// a secured turf-sim stopped (SIGSTOP) after its first announcement, which Announce() sends again on the domain's
+// SPDP group (every 100 ms while a participant waits for it: the first one received discovers turf-sim, its lease
+// is 5 s).
+class StalledSim {
+ public:
+  StalledSim(int domain, std::vector<std::string> sim_args) : domain_(domain) {
+    std::string error;
+    spdp_ = UdpSocket::Bind("0.0.0.0", SpdpPort(domain_), /*reuse=*/true, &error);
+    if (!spdp_ || !spdp_->JoinMulticast(kSpdpGroup, "0.0.0.0", &error)) {
+      error_ = "SPDP socket: " + error;
+      return;
+    }
+    sim_ = std::make_unique<Process>("security_sim_stalled", std::move(sim_args));
+    pid_ = sim_->pid();
+    announcement_ = AnnouncementOf(*spdp_, pid_, std::chrono::steady_clock::now() + 30s);
+    if (!announcement_) {
+      error_ = "no announcement of turf-sim (pid " + std::to_string(pid_) + ")\n" + sim_->Log();
+      return;
+    }
+    sim_->Signal(SIGSTOP);
+  }
+  // "" if turf-sim announced itself and is stopped.
+  const std::string& error() const { return error_; }
+  pid_t pid() const { return pid_; }
+  // The start of the warning that names this turf-sim.
+  std::string Named() const { return "DDS security: turf-sim (pid " + std::to_string(pid_) + " on host"; }
+  // Sends the announcement every 100 ms until `done()` or `timeout`; false if a send failed.
+  bool Announce(const std::function<bool()>& done, std::chrono::milliseconds timeout) {
+    const std::optional<UdpEndpoint> group = MakeEndpoint(kSpdpGroup, SpdpPort(domain_));
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    std::string error;
+    while (!done() && std::chrono::steady_clock::now() < deadline) {
+      if (!group || !spdp_->SendTo(*announcement_, *group, &error)) return false;
+      spdp_->Receive(65536, 100ms);  // paces the loop; what it receives is not used
+    }
+    return true;
+  }
+  void Kill() { sim_->Kill(); }
 
+ private:
+  const int domain_;
+  std::optional<UdpSocket> spdp_;
+  std::unique_ptr<Process> sim_;
+  pid_t pid_ = 0;
+  std::optional<std::vector<uint8_t>> announcement_;
+  std::string error_;
+};
+
+// The participant names the stalled turf-sim after its timeout.
+TEST_F(SecurityE2e, APeerThatNeverFinishesAuthenticatingIsNamedAfterTheTimeout) {
+  StalledSim sim(domain_, SimArgs(dir_ + "/sim"));
+  ASSERT_EQ(sim.error(), "");
   CapturedLog log(spdlog::level::warn);
   dds::ParticipantOptions options = As("blue", "test-stall-watcher");
   options.authentication_timeout = 2s;
   dds::Participant watcher(options);
-  const std::optional<UdpEndpoint> group = MakeEndpoint(kSpdpGroup, SpdpPort(domain_));
-  ASSERT_TRUE(group);
-  // Sent again every 100 ms (the watcher discovers turf-sim at the first it receives; its lease is 5 s), until the
-  // watcher names turf-sim. (Another test's participant on this domain may be refused or named too: the counts
-  // are at least, not exactly.)
-  const std::string named = "DDS security: turf-sim (pid " + std::to_string(sim.pid()) + " on host";
-  const auto deadline = std::chrono::steady_clock::now() + 30s;
-  while (log.Text().find(named) == std::string::npos && std::chrono::steady_clock::now() < deadline) {
-    ASSERT_TRUE(spdp->SendTo(*announcement, *group, &error)) << error;
-    spdp->Receive(65536, 100ms);  // paces the loop; what it receives is not used
-  }
+  // (Another test's participant on this domain may be refused or named too: the counts are at least, not exactly.)
+  const std::string named = sim.Named();
+  ASSERT_TRUE(sim.Announce([&] { return log.Text().find(named) != std::string::npos; }, 30s));
   const dds::Authentications now = watcher.AuthenticationsNow();
   sim.Kill();
   const std::string text = log.Text();
@@ -218,6 +254,53 @@ TEST_F(SecurityE2e, APeerThatNeverFinishesAuthenticatingIsNamedAfterTheTimeout) 
   ASSERT_NE(at, std::string::npos) << text;
   EXPECT_NE(text.find("has not finished authenticating", at), std::string::npos) << text;
   EXPECT_GE(now.stalled, 1u) << text;
+}
+
+size_t Occurrences(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
+  return n;
+}
+
+// A bridge still waiting for turf-sim whose authentication with it stalls restarts itself
+// (participants/common/stalled_authentication.h): the stalled turf-sim is a stopped one's announcement sent again,
+// as above. The restarted bridge (the same process, its program run again) then meets the next turf-sim.
+TEST_F(SecurityE2e, ABridgeWaitingForAStalledTurfSimRestartsItselfAndMeetsTheNextOne) {
+  StalledSim stalled(domain_, SimArgs(dir_ + "/sim"));
+  ASSERT_EQ(stalled.error(), "");
+  std::string error;
+  std::optional<UdpSocket> vision = UdpSocket::Bind("127.0.0.1", 0, /*reuse=*/false, &error);
+  ASSERT_TRUE(vision) << error;
+  // 10 s: long enough for a handshake on a loaded machine, so that the bridge meets the next turf-sim at its first
+  // try (a slower one would restart it again, which the test would survive but not need).
+  Process bridge(
+      "security_vision_bridge",
+      {Built("participants/vision_bridge/turf-vision-bridge"), "--domain", std::to_string(domain_), "--prefix", prefix_,
+       "--security", dir_ + "/vision-bridge", "--authentication-timeout", "10", "--address", "127.0.0.1", "--port",
+       std::to_string(vision->LocalPort()), "--tracked-port", std::to_string(vision->LocalPort())});
+  const std::string restarting = "starting again with the same arguments";
+  ASSERT_TRUE(stalled.Announce([&] { return bridge.Log().find(restarting) != std::string::npos; }, 60s));
+  const std::string named = stalled.Named();
+  stalled.Kill();
+  ASSERT_NE(bridge.Log().find(restarting), std::string::npos) << bridge.Log();
+  EXPECT_NE(bridge.Log().find(named), std::string::npos) << bridge.Log();
+  EXPECT_NE(bridge.Log().find("still waiting for turf-sim, and 1 DDS authentication(s) of this participant stalled"),
+            std::string::npos)
+      << bridge.Log();
+
+  // The same process started again: it says so a second time, and the next turf-sim's frames reach it.
+  Process sim("security_sim", SimArgs(dir_ + "/sim"));
+  const auto until = std::chrono::steady_clock::now() + 90s;
+  while (bridge.Log().find("receiving camera frames") == std::string::npos && std::chrono::steady_clock::now() < until)
+    vision->Receive(65536, 100ms);  // paces the loop; the frames' datagrams are not checked here
+  const std::string log = bridge.Log();
+  EXPECT_TRUE(bridge.Running()) << log;
+  EXPECT_GE(Occurrences(log, "waiting for turf-sim on domain"), 2u) << log;
+  EXPECT_NE(log.find("receiving camera frames", log.find(restarting)), std::string::npos) << log << sim.Log();
+  bridge.Signal(SIGINT);
+  const std::optional<int> status = bridge.Wait(30s);
+  ASSERT_TRUE(status.has_value()) << bridge.Log();
+  EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << bridge.Log();
 }
 
 TEST_F(SecurityE2e, ATamperedPermissionsFileOrAMissingKeyMakesTurfSimRefuseToStart) {
