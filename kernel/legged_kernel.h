@@ -25,6 +25,7 @@
 
 #include "core/legged/legged_islands.h"
 #include "core/legged/legged_sensors.h"
+#include "core/legged/placement_limits.h"
 #include "core/link_model.h"
 #include "kernel/snapshots.h"
 #include "kernel/stats_window.h"
@@ -46,10 +47,6 @@ struct LeggedSample {
   uint64_t frame = 0;
   LeggedRobotState robot_state;
 };
-
-// Limits of teleports in legged scenes.
-inline constexpr double kMaxLeggedPlacement = 100.0;  // m from the origin, any axis
-inline constexpr double kMaxLeggedBallSpeed = 50.0;   // m/s
 
 class LeggedKernel : public Snapshots<LeggedKernel, KernelKind::kLegged> {
  public:

@@ -19,6 +19,7 @@
 
 #include "codecs/rcssservermj/robots.h"
 #include "core/errors.h"
+#include "core/legged/placement_limits.h"
 
 namespace turf::rcssservermj {
 
@@ -40,7 +41,7 @@ inline constexpr double kMaxAbsDqDegS = 36000.0;
 inline constexpr double kMaxKp = 1e4;  // N m / rad
 inline constexpr double kMaxKd = 1e3;  // N m s / rad
 inline constexpr double kMaxAbsTau = 1e3;
-inline constexpr double kMaxAbsBeam = 1e3;  // m, x and y (deg for theta: any finite value)
+inline constexpr double kMaxAbsBeam = kMaxLeggedPlacement;  // m, x and y (deg for theta: any finite value)
 
 struct MotorAction {
   int joint = -1;  // index into the model's joints

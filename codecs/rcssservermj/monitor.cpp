@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "codecs/simspark/sexpr.h"
+#include "core/legged/placement_limits.h"
 
 namespace turf::rcssservermj {
 
@@ -12,7 +13,7 @@ namespace {
 
 using simspark::SExpr;
 
-constexpr double kMaxCoordinate = 1e3;  // m
+constexpr double kMaxNumber = 1e6;  // any number of a command: a yaw in degrees, a quaternion's component
 constexpr double kRad = M_PI / 180.0;
 
 // The n numbers after the head of `e` (a list like `(pos 1 2 3)`).
@@ -23,8 +24,15 @@ turf::Error Numbers(const SExpr* e, size_t n, double* out) {
     const simspark::NumberError error = simspark::ParseDouble(e->items[i + 1].atom, &out[i]);
     if (error == simspark::NumberError::kNotFinite) return turf::Error::kNotFinite;
     if (error != simspark::NumberError::kOk) return turf::Error::kBadArguments;
-    if (std::abs(out[i]) > kMaxCoordinate) return turf::Error::kOutOfRange;
+    if (std::abs(out[i]) > kMaxNumber) return turf::Error::kOutOfRange;
   }
+  return turf::Error::kOk;
+}
+
+// A position's x, y and z within the legged scenes' placement limit (core/legged/placement_limits.h).
+turf::Error Position(const double* v) {
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(v[i]) > kMaxLeggedPlacement) return turf::Error::kOutOfRange;
   return turf::Error::kOk;
 }
 
@@ -63,7 +71,7 @@ turf::Error Agent(const SExpr& e, AgentCommand* out) {
     return turf::Error::kBadArguments;
   }
   out->position = Eigen::Vector3d(v[0], v[1], v[2]);
-  return turf::Error::kOk;
+  return Position(v);
 }
 
 turf::Error Command(const SExpr& e, MonitorCommand* out) {
@@ -86,7 +94,8 @@ turf::Error Command(const SExpr& e, MonitorCommand* out) {
   }
   if (head == "ball") {
     double v[3];
-    const turf::Error error = Numbers(e.Child("pos"), 3, v);
+    turf::Error error = Numbers(e.Child("pos"), 3, v);
+    if (error == turf::Error::kOk) error = Position(v);
     if (error != turf::Error::kOk) return error;
     *out = BallCommand{v[0], v[1]};
     return turf::Error::kOk;

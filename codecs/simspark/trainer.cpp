@@ -6,6 +6,7 @@
 
 #include "codecs/simspark/sexpr.h"
 #include "core/input_limits.h"
+#include "core/legged/placement_limits.h"
 
 namespace turf::simspark {
 
@@ -68,7 +69,8 @@ Result InRange(const std::string& what, double v, double lo, double hi) {
 }
 
 // Where the trainer puts an agent's torso or the ball (field frame): the placement values every protocol's
-// teleports are checked with (core/input_limits.h: x, y and the yaw), and a height from the ground up.
+// teleports are checked with (core/input_limits.h: x, y and the yaw), x and y within turf-sim's limit of a legged
+// placement, and a height from the ground up.
 Result CheckPosition(const std::string& what, const std::array<double, 3>& pos, double yaw_deg) {
   RobotTeleport placement;
   placement.x = pos[0];
@@ -76,6 +78,8 @@ Result CheckPosition(const std::string& what, const std::array<double, 3>& pos, 
   placement.orientation = yaw_deg * kRadPerDeg;
   if (const InputProblem p = CheckPlacementValues(placement); !p.ok())
     return Refusal{ErrorName(p.error), what + ": " + p.field + " past its limit"};
+  if (Result r = InRange(what + " x", pos[0], -kMaxLeggedPlacement, kMaxLeggedPlacement)) return r;
+  if (Result r = InRange(what + " y", pos[1], -kMaxLeggedPlacement, kMaxLeggedPlacement)) return r;
   return InRange(what + " z", pos[2], 0.0, kMaxTeleportHeight);
 }
 

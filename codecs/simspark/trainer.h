@@ -69,9 +69,9 @@ using TrainerCommand =
                  SetScoreCmd, KillAgent, SelectAgent, ReposAgent, KillSim, AgentStateCmd, ResetTeamCmd>;
 
 // The ranges every decoded value is in (a value outside is refused, "out_of_range"). Positions: x and y within
-// core/input_limits.h's kMaxPlacementCoordinate, height (z) 0..kMaxTeleportHeight; a move's yaw within
-// kMaxPlacementOrientation (as radians); the ball's speed at most kMaxTeleportSpeed. Game time 0..kMaxTrainerTime,
-// score 0..999, unum 0..99, battery 0..100 (%), temperature -273.15..1000 (deg C).
+// core/legged/placement_limits.h's kMaxLeggedPlacement (turf-sim's own limit), height (z) 0..kMaxTeleportHeight; a
+// move's yaw within kMaxPlacementOrientation (as radians); the ball's speed at most kMaxTeleportSpeed. Game time
+// 0..kMaxTrainerTime, score 0..999, unum 0..99, battery 0..100 (%), temperature -273.15..1000 (deg C).
 inline constexpr double kMaxTrainerTime = 86400.0;  // s: no match is near a day long
 
 // error: "parse" (not S-expressions: nothing applied), "unknown_command", "bad_arguments" (wrong form, unknown

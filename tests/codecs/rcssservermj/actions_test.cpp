@@ -85,6 +85,10 @@ TEST(MjActions, BeamSaySyn) {
   EXPECT_EQ(ParseActions("(beam 1 2)", T1()).issues.at(0).error, Error::kBadArguments);
   EXPECT_EQ(ParseActions("(beam 1 nan 0)", T1()).issues.at(0).error, Error::kNotFinite);
   EXPECT_FALSE(ParseActions("(beam 1 nan 0)", T1()).beam);
+  // turf-sim's limit of a legged placement (core/legged/placement_limits.h) is the beam's: refused where it arrives.
+  EXPECT_TRUE(ParseActions("(beam -100 100 720)", T1()).beam);
+  EXPECT_EQ(ParseActions("(beam 100.5 0 0)", T1()).issues.at(0).error, Error::kOutOfRange);
+  EXPECT_EQ(ParseActions("(beam 0 -100.5 0)", T1()).issues.at(0).error, Error::kOutOfRange);
 }
 
 TEST(MjActions, UnparsableMessageAppliesNothing) {

@@ -43,9 +43,11 @@ void CheckMonitor(std::string_view payload) {
   const mj::MonitorMessage m = mj::ParseMonitorMessage(payload);
   for (const mj::MonitorCommand& c : m.commands) {
     if (const auto* agent = std::get_if<mj::AgentCommand>(&c)) {
-      Require(agent->position.allFinite() && std::abs(agent->orientation.norm() - 1.0) < 1e-6);
+      Require(agent->position.allFinite() && agent->position.cwiseAbs().maxCoeff() <= turf::kMaxLeggedPlacement &&
+              std::abs(agent->orientation.norm() - 1.0) < 1e-6);
     }
-    if (const auto* ball = std::get_if<mj::BallCommand>(&c)) Require(std::isfinite(ball->x) && std::isfinite(ball->y));
+    if (const auto* ball = std::get_if<mj::BallCommand>(&c))
+      Require(std::abs(ball->x) <= turf::kMaxLeggedPlacement && std::abs(ball->y) <= turf::kMaxLeggedPlacement);
   }
 }
 

@@ -39,11 +39,33 @@ TEST(MjMonitor, TheFactsCommands) {
 TEST(MjMonitor, RefusalsAreNamed) {
   const MonitorMessage m = ParseMonitorMessage(
       "(kickOff Up)(ball (pos nan 0 0))(ball (pos 1 2))(agent (unum 2) (pos 1 2 3))(agent (unum 2) (team a) (move3d 1 "
-      "2 3 0 0 0 0))(fly)");
+      "2 3 0 0 0 0))(fly)(ball (pos 100.5 0 0))(ball (pos 0 0 -101))(agent (unum 2) (team Left) (pos 0 -100.5 0.7))"
+      "(agent (unum 2) (team Left) (move 0 0 0.7 1e7))");
   EXPECT_TRUE(m.commands.empty());
   EXPECT_EQ(test::ErrorsOf(m.issues),
             (std::vector<Error>{Error::kBadArguments, Error::kNotFinite, Error::kBadArguments, Error::kBadArguments,
-                                Error::kOutOfRange, Error::kUnknownOp}));
+                                Error::kOutOfRange, Error::kUnknownOp, Error::kOutOfRange, Error::kOutOfRange,
+                                Error::kOutOfRange, Error::kOutOfRange}));
+}
+
+// A placement turf-sim would refuse (kMaxLeggedPlacement) is refused here, where it is named and counted; up to
+// the limit, and any yaw, is a placement.
+TEST(MjMonitor, PlacementsStopAtTheLeggedScenesLimit) {
+  const MonitorMessage m = ParseMonitorMessage(
+      "(ball (pos -100 100 0.1))(agent (unum 2) (team Left) (move 100 -100 0.7 -270))(agent (unum 3) (team Left) "
+      "(move3d 0 0 100 1e5 0 0 1e5))");
+  ASSERT_TRUE(m.issues.empty());
+  ASSERT_EQ(m.commands.size(), 3u);
+  EXPECT_EQ(std::get<BallCommand>(m.commands[0]).x, -100);
+  const auto& move = std::get<AgentCommand>(m.commands[1]);
+  EXPECT_EQ(move.position, Eigen::Vector3d(100, -100, 0.7));
+  EXPECT_NEAR(
+      move.orientation.angularDistance(Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()))), 0,
+      1e-12);
+  EXPECT_NEAR(
+      std::get<AgentCommand>(m.commands[2])
+          .orientation.angularDistance(Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()))),
+      0, 1e-12);
 }
 
 }  // namespace

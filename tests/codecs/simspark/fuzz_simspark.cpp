@@ -19,6 +19,7 @@
 #include "codecs/simspark/nao_joints.h"
 #include "codecs/simspark/trainer.h"
 #include "core/input_limits.h"
+#include "core/legged/placement_limits.h"
 
 namespace {
 
@@ -51,11 +52,11 @@ bool Finite3(const std::array<double, 3>& v) {
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
 }
 
-// A placement the trainer may ask (trainer.h's ranges): finite, x and y within core/input_limits.h's limit,
-// height from the ground up.
+// A placement the trainer may ask (trainer.h's ranges): finite, x and y within turf-sim's legged limit
+// (core/legged/placement_limits.h), height from the ground up.
 bool Placeable(const std::array<double, 3>& p) {
-  return Finite3(p) && std::abs(p[0]) <= turf::kMaxPlacementCoordinate &&
-         std::abs(p[1]) <= turf::kMaxPlacementCoordinate && p[2] >= 0 && p[2] <= turf::kMaxTeleportHeight;
+  return Finite3(p) && std::abs(p[0]) <= turf::kMaxLeggedPlacement && std::abs(p[1]) <= turf::kMaxLeggedPlacement &&
+         p[2] >= 0 && p[2] <= turf::kMaxTeleportHeight;
 }
 
 void CheckTrainer(std::string_view payload) {

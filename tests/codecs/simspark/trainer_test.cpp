@@ -239,6 +239,8 @@ TEST(Trainer, ValuesOutOfRangeAreRefusedWhole) {
                            "(ball (vel 0 0 -30.5))",
                            "(ball (vel 20 20 11))",                           // past 30 m/s in x, y and z together
                            "(agent (unum 2) (team Left) (pos 1e300 0 0.4))",  // agent position
+                           "(agent (unum 2) (team Left) (pos 0 100.5 0.4))",  // past turf-sim's legged limit
+                           "(ball (pos -100.5 0 0))",
                            "(agent (unum 2) (team Left) (pos 0 0 -1))",
                            "(agent (unum 2) (team Left) (pos 0 0 11))",
                            "(agent (unum 2) (team Left) (move 0 0 0.4 1e308))",         // yaw
@@ -256,9 +258,9 @@ TEST(Trainer, ValuesOutOfRangeAreRefusedWhole) {
   }
   // The limits themselves are in range.
   EXPECT_DOUBLE_EQ(Only<SetGameTime>(ParseTrainerMessage("(time 86400)")).time, kMaxTrainerTime);
-  Only<SetBall>(ParseTrainerMessage("(ball (pos -1000 1000 10) (vel 0 0 -30))"));
+  Only<SetBall>(ParseTrainerMessage("(ball (pos -100 100 10) (vel 0 0 -30))"));
   Only<SetBall>(ParseTrainerMessage("(ball (pos 0 0 0))"));
-  Only<MoveAgent>(ParseTrainerMessage("(agent (unum 99) (team Right) (move 1000 -1000 0 -90))"));
+  Only<MoveAgent>(ParseTrainerMessage("(agent (unum 99) (team Right) (move 100 -100 0 -90))"));
   Only<AgentStateCmd>(ParseTrainerMessage("(agent (unum 2) (team Left) (battery 0) (temperature -273.15))"));
 }
 
