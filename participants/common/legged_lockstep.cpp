@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "participants/common/process.h"
+
 namespace turf {
 
 LeggedLockstep::LeggedLockstep(std::unique_ptr<dds::Participant> own, dds::Bus& bus, const char* client,
@@ -64,8 +66,14 @@ dds::ControlOutcome LeggedLockstep::SwitchToLockstep(Clock::time_point deadline,
   return answer;
 }
 
-bool LeggedLockstep::Attach(std::chrono::milliseconds timeout, const StopFn& stop, std::string* error) {
+bool LeggedLockstep::Attach(std::chrono::milliseconds timeout, const StopFn& outer_stop, std::string* error) {
   const auto deadline = Clock::now() + timeout;
+  // Stalls told before this wait (while the link had turf-sim) do not count.
+  if (own_) restart_.Check(own_->AuthenticationsNow(), false);
+  const StopFn stop = [&] {
+    return (outer_stop && outer_stop()) ||
+           (own_ && (restart_.Check(own_->AuthenticationsNow(), true) || RestartRequested()));
+  };
   if (!WaitForScene(deadline, stop)) {
     *error = "no legged scene from turf-sim (is it running a `kind: legged` scene on this domain and prefix?)";
     return false;

@@ -22,6 +22,7 @@
 #include "core/pinned.h"
 #include "dds/control_client.h"
 #include "dds/participant.h"
+#include "participants/common/stalled_authentication.h"
 #include "participants/common/wakeup.h"
 
 namespace turf {
@@ -39,15 +40,9 @@ class LeggedLockstep : Pinned {
   std::string TopicName(dds::Topic t) const { return bus_.TopicName(t); }
   std::string DescribeBus() const { return bus_.Describe(); }
 
-  // Waits for turf-sim's scene and its control endpoints; false on timeout or stop.
-  bool WaitForScene(Clock::time_point deadline, const StopFn& stop);
-  // Asks for lockstep, again every 0.5 s until answered (a request or reply can miss an endpoint turf-sim has not
-  // discovered yet; the request is idempotent). An accepted answer's frame becomes the current frame.
-  dds::ControlOutcome SwitchToLockstep(Clock::time_point deadline, const StopFn& stop);
-  // Waits for the clock and the whole state of `robots` at the current frame; `robots` are the frame's robots.
-  bool WaitForFrame(const std::vector<std::string>& robots, Clock::time_point deadline, const StopFn& stop);
-  // The three above: turf-sim's scene, lockstep, and the state of every robot of the scene (in scene order);
-  // false with `error` set.
+  // Waits for turf-sim's scene, switches it to lockstep, and waits for the state of every robot of the scene (in
+  // scene order); false with `error` set. On a participant of its own, a DDS authentication that stalls meanwhile
+  // restarts the process (stalled_authentication.h: RequestRestart, so `stop` of a participant's main answers true).
   bool Attach(std::chrono::milliseconds timeout, const StopFn& stop, std::string* error);
   // Moves, answered before the step; their refusals are reported by the next Step (late ones a step later).
   void SendMove(const std::string& robot, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
@@ -67,6 +62,13 @@ class LeggedLockstep : Pinned {
   static idl::Vec3 V3(const Eigen::Vector3d& v);
 
  private:
+  // Waits for turf-sim's scene and its control endpoints; false on timeout or stop.
+  bool WaitForScene(Clock::time_point deadline, const StopFn& stop);
+  // Asks for lockstep, again every 0.5 s until answered (a request or reply can miss an endpoint turf-sim has not
+  // discovered yet; the request is idempotent). An accepted answer's frame becomes the current frame.
+  dds::ControlOutcome SwitchToLockstep(Clock::time_point deadline, const StopFn& stop);
+  // Waits for the clock and the whole state of `robots` at the current frame; `robots` are the frame's robots.
+  bool WaitForFrame(const std::vector<std::string>& robots, Clock::time_point deadline, const StopFn& stop);
   std::function<void()> Wake();
   void Drain();
   // Polls until done() or the deadline; false on timeout or stop.
@@ -77,6 +79,7 @@ class LeggedLockstep : Pinned {
   const bool need_force_;
   Wakeup wakeup_;
   std::unique_ptr<dds::Participant> own_;
+  StalledAuthenticationRestart restart_;  // own_'s stalls while Attach waits
   dds::Bus& bus_;
   dds::ControlClient control_;
   dds::ReaderOf<dds::Topic::kLeggedScene> scene_;

@@ -145,20 +145,9 @@ class HlvsBridgeImpl {
   bool Attach(const std::function<bool()>& stop) {
     spdlog::info("waiting for turf-sim's legged scene on {} ({})", link_->DescribeBus(),
                  link_->TopicName(dds::Topic::kLeggedScene));
-    const auto deadline = Clock::now() + options_.attach_timeout;
-    if (!link_->WaitForScene(deadline, stop)) {
-      if (!stop()) spdlog::error("no legged scene from turf-sim (is it running a `kind: legged` scene?)");
-      return false;
-    }
-    const dds::ControlOutcome answer = link_->SwitchToLockstep(deadline, stop);
-    if (!answer.reply || !answer.ok()) {
-      if (!stop()) spdlog::error("turf-sim did not switch to lockstep ({})", answer.Describe());
-      return false;
-    }
-    std::vector<std::string> robots;
-    for (const idl::RobotDescription& r : link_->scene_info().robots()) robots.push_back(r.robot());
-    if (!link_->WaitForFrame(robots, deadline, stop)) {
-      if (!stop()) spdlog::error("turf-sim did not publish the state of its {} robots", robots.size());
+    std::string error;
+    if (!link_->Attach(options_.attach_timeout, stop, &error)) {
+      if (!stop()) spdlog::error("{}", error);
       return false;
     }
     if (cameras_ != nullptr) cameras_->Attached(link_->state().sim_time_ns());

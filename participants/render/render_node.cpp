@@ -15,6 +15,7 @@
 #include "dds/camera_topics.h"
 #include "dds/participant.h"
 #include "dds/vendor_participant.h"
+#include "participants/common/stalled_authentication.h"
 #include "participants/common/wakeup.h"
 #include "participants/render/camera_messages.h"
 #include "participants/render/camera_switch.h"
@@ -103,10 +104,18 @@ class RenderNode::Impl {
     spdlog::info("{}", dds::EndpointLine(options_.prefix, dds::Topic::kRobotsState, dds::Endpoint::kReader));
     std::vector<idl::LeggedState> batch;
     auto next_status = Clock::now() + Seconds(options_.status_every);
+    bool have_sim = false;  // turf-sim's states have come
+    StalledAuthenticationRestart restart;
+    spdlog::info("waiting for turf-sim on {}", turf.Describe());
     while (!stop()) {
       wake.WaitFor(std::chrono::milliseconds(100));
       ApplyControls(outputs);
-      if (reader->Take(&batch)) Handle(batch, renderer, outputs);
+      if (reader->Take(&batch)) {
+        if (!have_sim) spdlog::info("receiving turf-sim's robot states");
+        have_sim = true;
+        Handle(batch, renderer, outputs);
+      }
+      if (restart.Check(turf.AuthenticationsNow(), !have_sim)) break;
       if (Clock::now() >= next_status) {
         LogStatus();
         next_status = Clock::now() + Seconds(options_.status_every);

@@ -3,7 +3,7 @@
 // security meets no one, a tampered permissions file or a missing key makes turf-sim refuse to start (exit 2) with
 // a clear error, the tournament profile keeps the world state and control from the teams, and a peer that never
 // finishes authenticating is named after the timeout (dds/authentication_watch.h), a bridge waiting for it restarting
-// itself (participants/common/stalled_authentication.h).
+// itself (participants/common/stalled_authentication.h): an SSL bridge, a 3D-league front-end and turf-render.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <turf/idl/SimControlPubSubTypes.h>
@@ -22,6 +22,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "dds/participant.h"
@@ -37,6 +38,9 @@ namespace {
 
 using namespace std::chrono_literals;
 namespace fs = std::filesystem;
+
+class StalledSim;
+struct WaitingBridge;
 
 class SecurityE2e : public ::testing::Test {
  protected:
@@ -72,6 +76,9 @@ class SecurityE2e : public ::testing::Test {
             "--security",
             identity_dir};
   }
+
+  // Below, with StalledSim.
+  void RestartsAndMeetsTheNextOne(StalledSim& stalled, const WaitingBridge& b, const std::function<void()>& pace);
 
   const int domain_ = TestDomain(61);
   const std::string prefix_ = "sec" + std::to_string(getpid());
@@ -262,22 +269,28 @@ size_t Occurrences(const std::string& text, const std::string& what) {
   return n;
 }
 
+// A bridge: its arguments after --security and --authentication-timeout, the turf-sim arguments it meets after the
+// restart (beyond SimArgs), and the line it logs once it has that turf-sim.
+struct WaitingBridge {
+  std::string name;
+  std::vector<std::string> args;  // program, --domain, --prefix, --security DIR: added
+  std::vector<std::string> sim_args;
+  std::string connected;
+};
+
 // A bridge still waiting for turf-sim whose authentication with it stalls restarts itself
 // (participants/common/stalled_authentication.h): the stalled turf-sim is a stopped one's announcement sent again,
 // as above. The restarted bridge (the same process, its program run again) then meets the next turf-sim.
-TEST_F(SecurityE2e, ABridgeWaitingForAStalledTurfSimRestartsItselfAndMeetsTheNextOne) {
-  StalledSim stalled(domain_, SimArgs(dir_ + "/sim"));
+void SecurityE2e::RestartsAndMeetsTheNextOne(StalledSim& stalled, const WaitingBridge& b,
+                                             const std::function<void()>& pace) {
   ASSERT_EQ(stalled.error(), "");
-  std::string error;
-  std::optional<UdpSocket> vision = UdpSocket::Bind("127.0.0.1", 0, /*reuse=*/false, &error);
-  ASSERT_TRUE(vision) << error;
-  // 10 s: long enough for a handshake on a loaded machine, so that the bridge meets the next turf-sim at its first
-  // try (a slower one would restart it again, which the test would survive but not need).
-  Process bridge(
-      "security_vision_bridge",
-      {Built("participants/vision_bridge/turf-vision-bridge"), "--domain", std::to_string(domain_), "--prefix", prefix_,
-       "--security", dir_ + "/vision-bridge", "--authentication-timeout", "10", "--address", "127.0.0.1", "--port",
-       std::to_string(vision->LocalPort()), "--tracked-port", std::to_string(vision->LocalPort())});
+  std::vector<std::string> args = {b.args.front(), "--domain", std::to_string(domain_), "--prefix", prefix_,
+                                   // 10 s: long enough for a handshake on a loaded machine, so that the bridge meets
+                                   // the next turf-sim at its first try (a slower one would restart it again, which
+                                   // the test would survive but not need).
+                                   "--authentication-timeout", "10"};
+  args.insert(args.end(), b.args.begin() + 1, b.args.end());
+  Process bridge("security_" + b.name, std::move(args));
   const std::string restarting = "starting again with the same arguments";
   ASSERT_TRUE(stalled.Announce([&] { return bridge.Log().find(restarting) != std::string::npos; }, 60s));
   const std::string named = stalled.Named();
@@ -288,19 +301,70 @@ TEST_F(SecurityE2e, ABridgeWaitingForAStalledTurfSimRestartsItselfAndMeetsTheNex
             std::string::npos)
       << bridge.Log();
 
-  // The same process started again: it says so a second time, and the next turf-sim's frames reach it.
-  Process sim("security_sim", SimArgs(dir_ + "/sim"));
+  // The same process started again: it says so a second time, and it meets the next turf-sim.
+  std::vector<std::string> sim_args = SimArgs(dir_ + "/sim");
+  sim_args.insert(sim_args.end(), b.sim_args.begin(), b.sim_args.end());
+  Process sim("security_sim", std::move(sim_args));
   const auto until = std::chrono::steady_clock::now() + 90s;
-  while (bridge.Log().find("receiving camera frames") == std::string::npos && std::chrono::steady_clock::now() < until)
-    vision->Receive(65536, 100ms);  // paces the loop; the frames' datagrams are not checked here
+  while (bridge.Log().find(b.connected, bridge.Log().find(restarting)) == std::string::npos &&
+         std::chrono::steady_clock::now() < until)
+    pace();
   const std::string log = bridge.Log();
   EXPECT_TRUE(bridge.Running()) << log;
-  EXPECT_GE(Occurrences(log, "waiting for turf-sim on domain"), 2u) << log;
-  EXPECT_NE(log.find("receiving camera frames", log.find(restarting)), std::string::npos) << log << sim.Log();
+  EXPECT_GE(Occurrences(log, "waiting for turf-sim"), 2u) << log;
+  EXPECT_NE(log.find(b.connected, log.find(restarting)), std::string::npos) << log << sim.Log();
   bridge.Signal(SIGINT);
   const std::optional<int> status = bridge.Wait(30s);
   ASSERT_TRUE(status.has_value()) << bridge.Log();
   EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << bridge.Log();
+}
+
+// An SSL bridge, which waits in its own loop (vision_bridge.cpp).
+TEST_F(SecurityE2e, ABridgeWaitingForAStalledTurfSimRestartsItselfAndMeetsTheNextOne) {
+  StalledSim stalled(domain_, SimArgs(dir_ + "/sim"));
+  std::string error;
+  std::optional<UdpSocket> vision = UdpSocket::Bind("127.0.0.1", 0, /*reuse=*/false, &error);
+  ASSERT_TRUE(vision) << error;
+  const std::string port = std::to_string(vision->LocalPort());
+  RestartsAndMeetsTheNextOne(
+      stalled,
+      {"vision_bridge",
+       {Built("participants/vision_bridge/turf-vision-bridge"), "--security", dir_ + "/vision-bridge", "--address",
+        "127.0.0.1", "--port", port, "--tracked-port", port},
+       {},
+       "receiving camera frames"},
+      // Paces the loop; the frames' datagrams are not checked here.
+      [&] { vision->Receive(65536, 100ms); });
+}
+
+// A 3D-league front-end, which waits in LeggedLockstep::Attach (the SimSpark one; RCSSServerMJ's and HLVS's share it).
+TEST_F(SecurityE2e, ALockstepFrontEndWaitingForAStalledTurfSimRestartsItselfAndMeetsTheNextOne) {
+  StalledSim stalled(domain_, SimArgs(dir_ + "/sim"));
+  RestartsAndMeetsTheNextOne(
+      stalled,
+      {"simspark_bridge",
+       {Built("participants/simspark_bridge/turf-simspark-bridge"), "--security", dir_ + "/simspark-bridge", "--listen",
+        "127.0.0.1", "--agent-port", "0", "--monitor-port", "0"},
+       {"--scene", TURF_SOURCE_DIR "/configs/scenes/legged_example.yaml"},
+       "robots for agents"},
+      [] { std::this_thread::sleep_for(100ms); });  // polling the log
+}
+
+// turf-render, which waits for turf-sim's robot states in its render loop.
+TEST_F(SecurityE2e, TurfRenderWaitingForAStalledTurfSimRestartsItselfAndMeetsTheNextOne) {
+  const std::string scene = dir_ + "/render_scene.yaml";
+  std::ofstream(scene) << "kind: legged\nname: security-render-restart\nphysics: {step: 0.005}\n"
+                          "rates: {joint_state_hz: 200}\nrobots:\n  - name: t1\n    model: " TURF_SOURCE_DIR
+                          "/configs/robots/t1.xml\n    z: 0.665\n    cameras:\n"
+                          "      - {name: camera, width: 64, height: 48, rate_hz: 20}\n";
+  StalledSim stalled(domain_, SimArgs(dir_ + "/sim"));
+  RestartsAndMeetsTheNextOne(
+      stalled,
+      {"render",
+       {Built("participants/render/turf-render"), "--security", dir_ + "/render", "--scene", scene},
+       {"--scene", scene},
+       "receiving turf-sim's robot states"},
+      [] { std::this_thread::sleep_for(100ms); });  // polling the log
 }
 
 TEST_F(SecurityE2e, ATamperedPermissionsFileOrAMissingKeyMakesTurfSimRefuseToStart) {
