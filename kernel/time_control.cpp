@@ -12,7 +12,7 @@ Error TimeControl::SetMode(TimeMode mode, double speed) {
   if (mode >= TimeMode::kCount) return Error::kUnknownEnum;
   if (mode == TimeMode::kScaled) {
     if (!std::isfinite(speed)) return Error::kNotFinite;
-    if (!(speed > 0.0 && speed <= kMaxTimeSpeed)) return Error::kOutOfRange;
+    if (!(speed >= kMinTimeSpeed && speed <= kMaxTimeSpeed)) return Error::kOutOfRange;
     speed_ = speed;
   } else if (mode == TimeMode::kRealtime) {
     speed_ = 1.0;
@@ -23,7 +23,7 @@ Error TimeControl::SetMode(TimeMode mode, double speed) {
 
 Error TimeControl::CheckSteps(uint32_t count) const {
   if (!paused_ && mode_ != TimeMode::kLockstep) return Error::kNotAllowed;
-  if (count == 0 || count > kMaxStepRequest) return Error::kOutOfRange;
+  if (count == 0 || pending_steps_ + count > kMaxStepRequest) return Error::kOutOfRange;
   return Error::kOk;
 }
 

@@ -22,8 +22,11 @@ inline constexpr const char* kTimeModeNames[] = {"realtime", "scaled", "free-run
 static_assert(std::size(kTimeModeNames) == static_cast<std::size_t>(TimeMode::kCount));
 inline const char* TimeModeName(TimeMode mode) { return EnumName(mode, kTimeModeNames, "?"); }
 
-inline constexpr double kMaxTimeSpeed = 1000.0;       // multiples of real time
-inline constexpr uint32_t kMaxStepRequest = 1000000;  // steps in one request
+// A scaled speed, in multiples of real time. Below the minimum a 5 ms step would wait more than half a second of wall
+// time (the loop paces one step at a time: it would answer requests and signals that late).
+inline constexpr double kMinTimeSpeed = 0.01;
+inline constexpr double kMaxTimeSpeed = 1000.0;
+inline constexpr uint32_t kMaxStepRequest = 1000000;  // steps in one request, and queued at once
 
 class TimeControl {
  public:
@@ -41,12 +44,13 @@ class TimeControl {
 
   void Pause() { paused_ = true; }
   void Resume() { paused_ = false; }
-  // kNotFinite or kOutOfRange for a scaled speed outside (0, kMaxTimeSpeed];
+  // kNotFinite or kOutOfRange for a scaled speed outside [kMinTimeSpeed, kMaxTimeSpeed];
   // kUnknownEnum for a mode past kCount. Real time sets speed 1.
   Error SetMode(TimeMode mode, double speed);
 
-  // kNotAllowed unless paused or in lockstep; kOutOfRange for 0 or more than
-  // kMaxStepRequest steps. Changes nothing.
+  // kNotAllowed unless paused or in lockstep; kOutOfRange for 0 steps, or more than kMaxStepRequest steps with
+  // those already queued (requests are answered when done: a queue without bound would hold them for good).
+  // Changes nothing.
   Error CheckSteps(uint32_t count) const;
   // Queues `count` more steps (checked first), done at frame `frame` + all
   // steps queued; `token` names the request in Stepped and Reset.

@@ -39,9 +39,14 @@ class StringSource final : public ByteSource {
   std::string_view bytes_;
 };
 
+// Every limit is a refusal (kTooLarge) of a file that would take memory out of proportion: a record is read whole,
+// a chunk is unpacked whole.
 struct ReaderOptions {
-  uint64_t max_record_bytes = 1ull << 30;  // a record (or the summary) longer than this is kTooLarge
-  uint64_t max_chunk_bytes = 1ull << 30;   // a chunk's uncompressed size above this is kTooLarge
+  uint64_t max_record_bytes = 1ull << 30;  // a record (or the summary) longer than this
+  uint64_t max_chunk_bytes = 64ull << 20;  // a chunk's uncompressed size above this (turf-record's: 1 MiB)
+  // A scan's chunks together unpack to at most this many times the file's size (or one chunk of max_chunk_bytes):
+  // robot data compresses a few times, a crafted file a million times.
+  uint64_t max_inflation = 100;
 };
 
 // What a file says about itself: from its summary (ReadSummary) or counted by a scan (Scan).

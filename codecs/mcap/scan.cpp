@@ -1,4 +1,6 @@
 // Scan (reader.h): every record from the start, in file order.
+#include <algorithm>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -145,42 +147,52 @@ class Scanner {
       return MakeDamage(ReadError::kMalformed, pos, "a malformed Chunk record (its records overrun it)");
     if (chunk.uncompressed_size > options_.max_chunk_bytes)
       return MakeDamage(ReadError::kTooLarge, pos, "a chunk of " + N(chunk.uncompressed_size) + " bytes uncompressed");
+    // A small file of well-compressed chunks must not unpack to gigabytes: at most max_inflation times the file's
+    // size (or one chunk of a small file), over the whole scan.
+    inflated_ += chunk.uncompressed_size;
+    const uint64_t budget = size_ > UINT64_MAX / std::max<uint64_t>(options_.max_inflation, 1)
+                                ? UINT64_MAX
+                                : std::max(options_.max_inflation * size_, options_.max_chunk_bytes);
+    if (inflated_ > budget)
+      return MakeDamage(ReadError::kTooLarge, pos,
+                        "the chunks so far unpack to " + N(inflated_) + " bytes, more than " +
+                            N(options_.max_inflation) + " times the file's " + N(size_));
     std::string records, why;
     if (ReadError e = Decompress(chunk.compression, chunk.records, chunk.uncompressed_size, &records, &why);
         e != ReadError::kOk)
       return MakeDamage(e, pos, "chunk: " + why);
     if (chunk.uncompressed_crc != 0 && Crc32(records) != chunk.uncompressed_crc)
       return MakeDamage(ReadError::kBadCrc, pos, "the chunk's CRC-32 does not match its records");
-    std::vector<Message> messages;
-    if (Damage d = WalkChunk(pos, records, &messages); !d.ok()) return d;
+    if (Damage d = WalkChunk(pos, records, false); !d.ok()) return d;
     ++out_->statistics.chunk_count;
     ++out_->chunks_by_compression[chunk.compression];
-    for (Message& m : messages) {
-      m.chunk_offset = pos;
-      Deliver(m);
-    }
-    return {};
+    return WalkChunk(pos, records, true);
   }
 
-  // Definitions are taken as they come; messages wait until the whole chunk is known to be good.
-  Damage WalkChunk(uint64_t pos, std::string_view records, std::vector<Message>* messages) {
+  // The first walk (`deliver` false) checks the chunk and takes its definitions as they come; the second delivers
+  // its messages, now known to be good. Two walks and no copy of the messages: a chunk's count of them is the
+  // file's to choose.
+  Damage WalkChunk(uint64_t pos, std::string_view records, bool deliver) {
     Cursor c(records);
     while (c.remaining() > 0) {
-      const std::string where = "chunk record at offset " + N(c.pos()) + " of the chunk's records";
+      const uint64_t at = c.pos();
+      const auto where = [at] { return "chunk record at offset " + N(at) + " of the chunk's records"; };
       uint8_t op = 0;
       uint64_t length = 0;
       std::string_view content;
       if (!c.U8(&op) || !c.U64(&length) || length > c.remaining() || !c.Take(static_cast<size_t>(length), &content))
-        return MakeDamage(ReadError::kMalformed, pos, where + " overruns the chunk");
+        return MakeDamage(ReadError::kMalformed, pos, where() + " overruns the chunk");
       if (op == static_cast<uint8_t>(Op::kSchema) || op == static_cast<uint8_t>(Op::kChannel)) {
-        if (!TakeDefinition(op, content)) return MakeDamage(ReadError::kMalformed, pos, where + " is malformed");
+        if (!deliver && !TakeDefinition(op, content))
+          return MakeDamage(ReadError::kMalformed, pos, where() + " is malformed");
       } else if (op == static_cast<uint8_t>(Op::kMessage)) {
         Message m;
         if (!ParseMessage(content, &m) || !out_->channels.count(m.channel_id))
-          return MakeDamage(ReadError::kMalformed, pos, where + ": a malformed message or one of no channel");
-        messages->push_back(m);
+          return MakeDamage(ReadError::kMalformed, pos, where() + ": a malformed message or one of no channel");
+        m.chunk_offset = pos;
+        if (deliver) Deliver(m);
       } else {
-        return MakeDamage(ReadError::kMalformed, pos, where + std::string(" is a ") + OpName(op));
+        return MakeDamage(ReadError::kMalformed, pos, where() + std::string(" is a ") + OpName(op));
       }
     }
     return {};
@@ -227,6 +239,7 @@ class Scanner {
   uint32_t summary_crc_ = 0;
   bool data_ended_ = false;
   uint64_t summary_start_ = 0;
+  uint64_t inflated_ = 0;  // the chunks' uncompressed bytes so far
 };
 
 }  // namespace

@@ -101,7 +101,8 @@ LaunchCommand::LaunchCommand(CLI::App& app) : profile_dir_(DefaultProfileDir()) 
       ->type_name("DIR");
   launch->add_option("--profile-dir", profile_dir_, "where profile names are looked up")->capture_default_str();
   grace_opt_ = launch->add_option("--grace", grace_, "s from SIGTERM to SIGKILL when stopping (overrides the profile)")
-                   ->check(FiniteAtLeastZero(/*zero_allowed=*/false));
+                   ->check(FiniteAtLeastZero(/*zero_allowed=*/false))
+                   ->check(CLI::Range(0.0, kMaxLaunchSeconds));
   launch->add_option("--log-level", log_level_, "the launcher's own messages: trace, debug, info, warn, error")
       ->capture_default_str();
 }

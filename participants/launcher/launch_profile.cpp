@@ -7,10 +7,8 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <set>
-#include <sstream>
 
 #include "loader/realism_yaml.h"
 #include "loader/text_file.h"
@@ -143,11 +141,15 @@ void ReadBridges(const YAML::Node& node, std::optional<bool> legged, Errors* err
 
 void ReadRestart(MapReader m, RestartPolicy* r) {
   if (m.Int("max_restarts", &r->max_restarts) && r->max_restarts < 0) m.Fail("max_restarts", "must be >= 0");
+  const std::string at_most = fmt::format("must be <= {} (s)", kMaxLaunchSeconds);
   if (m.Number("backoff_initial", &r->backoff_initial) && r->backoff_initial < 0)
     m.Fail("backoff_initial", "must be >= 0");
+  if (r->backoff_initial > kMaxLaunchSeconds) m.Fail("backoff_initial", at_most);
   if (m.Number("backoff_max", &r->backoff_max) && r->backoff_max < r->backoff_initial)
     m.Fail("backoff_max", "must be >= backoff_initial");
+  if (r->backoff_max > kMaxLaunchSeconds) m.Fail("backoff_max", at_most);
   if (m.Number("stable_after", &r->stable_after) && r->stable_after < 0) m.Fail("stable_after", "must be >= 0");
+  if (r->stable_after > kMaxLaunchSeconds) m.Fail("stable_after", at_most);
   m.Finish();
 }
 
@@ -254,7 +256,8 @@ ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::st
   const bool scene_loads = !p.scene.empty() && IsFile(p.scene);
   ReadBridges(m.Child("bridges"), scene_loads ? std::optional<bool>(p.legged) : std::nullopt, &errors, &p.bridges);
   ReadRestart(m.Map("restart"), &p.restart);
-  if (m.Number("stop_grace", &p.stop_grace) && p.stop_grace <= 0) m.Fail("stop_grace", "must be > 0");
+  if (m.Number("stop_grace", &p.stop_grace) && !(p.stop_grace > 0 && p.stop_grace <= kMaxLaunchSeconds))
+    m.Fail("stop_grace", fmt::format("must be > 0 and <= {} (s)", kMaxLaunchSeconds));
   m.Finish();
   if (errors.empty()) result.profile = std::move(p);
   return result;
@@ -265,21 +268,19 @@ ProfileLoadResult LoadLaunchProfile(const std::string& name_or_path, const std::
   const bool is_name = name_or_path.find('/') == std::string::npos && path.extension() != ".yaml";
   if (is_name) path = fs::path(dir) / (name_or_path + ".yaml");
   ProfileLoadResult result;
-  std::ifstream in(path);
-  if (!in) {
+  std::string text, error;
+  if (!ReadTextFile(path.string(), kMaxProfileBytes, &text, &error)) {
     std::string known;
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(dir, ec)) {
       if (entry.path().extension() == ".yaml") known += (known.empty() ? "" : ", ") + entry.path().stem().string();
     }
-    result.errors.push_back(fmt::format("{}: cannot read the profile{}", path.string(),
+    result.errors.push_back(fmt::format("{}: cannot read the profile: {}{}", path.string(), error,
                                         is_name ? fmt::format(" (profiles in {}: {})", dir, known) : ""));
     return result;
   }
-  std::stringstream text;
-  text << in.rdbuf();
   const std::string base = fs::absolute(path).parent_path().string();
-  result = ParseLaunchProfile(text.str(), base, scene);
+  result = ParseLaunchProfile(text, base, scene);
   for (std::string& e : result.errors) e = fmt::format("{}: {}", path.string(), e);
   if (result.profile) {
     result.profile->path = fs::absolute(path).lexically_normal().string();

@@ -27,6 +27,7 @@
 // and refused as flags.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,6 +49,10 @@ struct DiscoverySpec {
   std::string server;  // HOST:PORT; empty: multicast discovery
   bool start = false;  // run fast-discovery-server on `server`
 };
+
+// A profile file is read whole up to this size; every duration of a profile (and --grace) is at most an hour.
+inline constexpr uintmax_t kMaxProfileBytes = 1 << 20;
+inline constexpr double kMaxLaunchSeconds = 3600.0;
 
 struct RestartPolicy {
   int max_restarts = 5;          // quick crashes in a row before giving up

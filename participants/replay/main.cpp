@@ -10,6 +10,7 @@
 #include "participants/common/participant_main.h"
 #include "participants/common/process.h"
 #include "participants/replay/replay.h"
+#include "participants/replay/replay_command.h"
 #include "participants/replay/resimulate.h"
 
 namespace {
@@ -34,10 +35,10 @@ int main(int argc, char** argv) {
       ->check([](const std::string& s) -> std::string {
         if (s == "max") return "";
         try {
-          const double v = std::stod(s);
-          return v > 0 && v <= 1e6 ? "" : "--speed: a number in (0, 1e6] or max";
+          const std::string problem = turf::ReplaySpeedProblem(std::stod(s));
+          return problem.empty() ? "" : "--speed: " + problem + ", or max";
         } catch (...) {
-          return "--speed: a number in (0, 1e6] or max";
+          return "--speed: a number or max";
         }
       })
       ->capture_default_str();

@@ -43,6 +43,19 @@ void OutputMatch::Resimulated(const std::string& topic, uint64_t sim_time_ns, st
   }
 }
 
+uint64_t OutputMatch::ContiguousEnd(uint64_t max_gap_ns) const {
+  std::vector<uint64_t> times;
+  for (const auto& [topic, by_time] : recorded_by_topic_)
+    for (const auto& [time, messages] : by_time) times.push_back(time);
+  std::sort(times.begin(), times.end());
+  uint64_t end = 0;
+  for (const uint64_t t : times) {
+    if (t - end > max_gap_ns) break;
+    end = t;
+  }
+  return end;
+}
+
 OutputMatch::Difference OutputMatch::FirstDifference() const {
   const Message* first = nullptr;
   Difference d;

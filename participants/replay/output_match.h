@@ -30,6 +30,9 @@ class OutputMatch {
   uint64_t reproduced() const { return reproduced_; }
   uint64_t unrecorded() const { return unrecorded_; }
   uint64_t last_recorded_time() const { return last_time_; }
+  // The recorded outputs' simulation time up to the first gap longer than `max_gap_ns` between two of them (a
+  // file's times are untrusted: a forged one far past the rest would keep a re-simulation running for years).
+  uint64_t ContiguousEnd(uint64_t max_gap_ns) const;
 
  private:
   struct Message {

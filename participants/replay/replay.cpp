@@ -95,7 +95,10 @@ class Replayer {
     McapFileSource source(options_.file);
     if (!source.ok()) throw std::invalid_argument("cannot read " + options_.file + ": " + source.error());
     if (options_.stdin_commands) ReadTerminal();
-    if (options_.wait_for_reader) WaitForReader();
+    if (options_.wait_for_reader && !WaitForReader()) {
+      spdlog::info("stopped while waiting for a reader");
+      return totals_;
+    }
     clock_ = std::make_unique<ReplayClock>(options_.speed, SteadyClock::now());
     last_progress_ = SteadyClock::now();
     mcap::Damage damage;
@@ -153,16 +156,18 @@ class Replayer {
     players_.push_back(std::make_unique<TypedPlayer<PubSub>>(participant_, topic));
   }
 
-  void WaitForReader() {
+  // False when stopped meanwhile.
+  bool WaitForReader() {
     const auto deadline = SteadyClock::now() + std::chrono::seconds(30);
     spdlog::info("waiting for a reader of a replayed topic (up to 30 s)");
     while (SteadyClock::now() < deadline) {
-      if (stop_()) throw Stopped{};
+      if (stop_()) return false;
       for (const auto& p : players_)
-        if (p->Matched() > 0) return;
+        if (p->Matched() > 0) return true;
       std::this_thread::sleep_for(std::chrono::milliseconds(20));  // discovery has no event here
     }
     spdlog::warn("no reader matched within 30 s; replaying anyway");
+    return true;
   }
 
   // The player of a recorded channel: the table topic its name ends with whose DDS type its schema names.

@@ -1,5 +1,7 @@
 #include "participants/replay/replay_clock.h"
 
+#include <algorithm>
+
 namespace turf {
 
 std::chrono::steady_clock::time_point ReplayClock::Due(uint64_t log_time_ns) {
@@ -8,7 +10,8 @@ std::chrono::steady_clock::time_point ReplayClock::Due(uint64_t log_time_ns) {
     origin_ns_ = log_time_ns;
   }
   if (speed_ <= 0 || log_time_ns <= origin_ns_) return start_;
-  const double wall_ns = static_cast<double>(log_time_ns - origin_ns_) / speed_;
+  // A file's log times are untrusted: a gap of centuries waits kMaxReplayWaitNs, still far inside the clock's range.
+  const double wall_ns = std::min(static_cast<double>(log_time_ns - origin_ns_) / speed_, kMaxReplayWaitNs);
   return start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                       std::chrono::duration<double, std::nano>(wall_ns));
 }

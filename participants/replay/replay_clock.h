@@ -7,6 +7,9 @@
 
 namespace turf {
 
+// The latest a message is due after the origin, in wall-clock ns (about 116 days).
+inline constexpr double kMaxReplayWaitNs = 1e16;
+
 class ReplayClock {
  public:
   // `speed`: a multiple of real time (> 0); 0: as fast as possible (every message is due at once).

@@ -11,8 +11,8 @@ ReplayRefusal SpeedRefusal(idl::TimeMode mode, double speed) {
   if (mode == idl::TIME_LOCKSTEP) return {idl::CONTROL_NOT_ALLOWED, "a replay has no lockstep: it plays a recording"};
   if (mode != idl::TIME_SCALED) return {};
   if (!std::isfinite(speed)) return {idl::CONTROL_NOT_FINITE, "speed is not a finite number"};
-  if (speed <= 0 || speed > kMaxReplaySpeed)
-    return {idl::CONTROL_OUT_OF_RANGE, fmt::format("speed {} is outside (0, {}]", speed, kMaxReplaySpeed)};
+  if (std::string problem = ReplaySpeedProblem(speed); !problem.empty())
+    return {idl::CONTROL_OUT_OF_RANGE, std::move(problem)};
   return {};
 }
 
@@ -27,6 +27,11 @@ std::variant<ReplayCommand, ReplayRefusal> TimeModeCommand(const idl::SimControl
 }
 
 }  // namespace
+
+std::string ReplaySpeedProblem(double speed) {
+  if (speed >= kMinReplaySpeed && speed <= kMaxReplaySpeed) return "";
+  return fmt::format("speed {} is outside [{}, {}]", speed, kMinReplaySpeed, kMaxReplaySpeed);
+}
 
 std::variant<ReplayCommand, ReplayRefusal> ReplayCommandOf(const idl::SimControl& request) {
   switch (request.op()) {

@@ -10,7 +10,13 @@
 
 namespace turf {
 
+// A replay's speed, a multiple of the recorded pace: within these, or "max" (0). Below the minimum a second of
+// recording would take more than 17 minutes; the waits stay far inside the clock's range (replay_clock.h).
+constexpr double kMinReplaySpeed = 1e-3;
 constexpr double kMaxReplaySpeed = 1e6;
+// The one check of a speed given on the command line, the control topic or the terminal: "" when in range, else
+// why not.
+std::string ReplaySpeedProblem(double speed);
 
 // What a request asks a replay to do.
 struct ReplayCommand {

@@ -52,8 +52,8 @@ std::variant<ReplayCommand, ReplayRefusal> WithNumber(std::string_view verb, std
   if (verb == "speed" && arg == "max") return Op(ReplayCommand::Kind::kSpeed, 0, 0);
   if (!Number(arg, &value)) return Refuse(idl::CONTROL_BAD_ARGUMENTS, fmt::format("'{}' is no finite number", arg));
   if (verb == "speed") {
-    if (value <= 0 || value > kMaxReplaySpeed)
-      return Refuse(idl::CONTROL_OUT_OF_RANGE, fmt::format("speed {} is outside (0, {}]", value, kMaxReplaySpeed));
+    if (std::string problem = ReplaySpeedProblem(value); !problem.empty())
+      return Refuse(idl::CONTROL_OUT_OF_RANGE, std::move(problem));
     return Op(ReplayCommand::Kind::kSpeed, value, 0);
   }
   if (value < 0 || value > kMaxSeekSeconds)

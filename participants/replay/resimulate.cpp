@@ -12,6 +12,7 @@
 #include <turf/idl/WorldStatePubSubTypes.h>
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -34,6 +35,10 @@ namespace {
 // A second of simulation time past the last recorded output: what was sensed before it and published after it
 // (camera frames after their processing delay and link) is re-simulated too.
 constexpr int64_t kRunPastNs = 1'000'000'000;
+// Outputs further apart than this in simulation time are no recording of turf's: turf-sim publishes its clock and
+// world state every few ms of simulation time (and nothing while paused, when simulation time stands still). The
+// re-simulation ends before such a gap.
+constexpr uint64_t kMaxOutputGapNs = 10'000'000'000;
 
 const std::string kRunTopic = dds::Topic::kSimRun.info().suffix;
 const std::string kInputsTopic = dds::Topic::kAppliedInputs.info().suffix;
@@ -177,9 +182,19 @@ ResimulateResult Run(const ResimulateOptions& o, SceneKind scene, Recording& r, 
   OutputMatch& match = r.outputs;
   const auto taps = TapOutputs(o, bus, match);
   SimNode node(std::move(scene), options, bus);
-  const int64_t end_ns = static_cast<int64_t>(match.last_recorded_time()) + kRunPastNs;
-  node.Run(
-      [&] { return stop() || !schedule->error().empty() || (schedule->done() && node.Stats().sim_time_ns >= end_ns); });
+  const uint64_t contiguous = match.ContiguousEnd(kMaxOutputGapNs);
+  if (contiguous < match.last_recorded_time())
+    spdlog::warn(
+        "recorded outputs at sim times up to {:.3f} s, but none between {:.3f} s and the next ({} s without one): "
+        "re-simulating up to the gap",
+        static_cast<double>(match.last_recorded_time()) * 1e-9, static_cast<double>(contiguous) * 1e-9,
+        kMaxOutputGapNs / 1'000'000'000);
+  const int64_t end_ns =
+      static_cast<int64_t>(std::min<uint64_t>(contiguous, std::numeric_limits<int64_t>::max() - kRunPastNs)) +
+      kRunPastNs;
+  // Every applied-inputs record is an output of its own time too: one the run has not reached by `end_ns` names a
+  // step no recording reaches.
+  node.Run([&] { return stop() || !schedule->error().empty() || node.Stats().sim_time_ns >= end_ns; });
 
   ResimulateResult result;
   result.recorded = match.recorded();
@@ -193,9 +208,11 @@ ResimulateResult Run(const ResimulateOptions& o, SceneKind scene, Recording& r, 
   }
   if (!schedule->done()) {
     result.verdict = fmt::format(
-        "the re-simulation stopped at step {} (sim time {:.6f} s) with {} of {} applied-inputs records left: the "
-        "world could not step to the next one (step {})",
+        "the re-simulation stopped at step {} (sim time {:.6f} s) with {} of {} applied-inputs records left: {} (step "
+        "{})",
         node.Stats().frame, result.sim_time_ns * 1e-9, schedule->size() - schedule->applied(), schedule->size(),
+        result.sim_time_ns >= end_ns ? "the next one is past the recording's outputs"
+                                     : "the world could not step to the next one",
         schedule->next_step());
     return result;
   }

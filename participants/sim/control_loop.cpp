@@ -276,7 +276,9 @@ void ControlLoop::HandleControl(const idl::SimControl& request) {
 ControlAnswer ControlLoop::QueueSteps(const idl::SimControl& request) {
   const Error e = time_.CheckSteps(request.step_count());
   if (e == Error::kNotAllowed) return {ControlErrorOf(e), "step needs a paused simulation or lockstep mode"};
-  if (e != Error::kOk) return {ControlErrorOf(e), fmt::format("step_count must be 1..{}", kMaxStepRequest)};
+  if (e != Error::kOk)
+    return {ControlErrorOf(e),
+            fmt::format("step_count must be 1..{} with the {} steps queued", kMaxStepRequest, time_.pending_steps())};
   ControlAnswer answer = node_.ApplyStepCommands(request);
   if (!answer.ok()) return answer;
   const uint64_t token = next_token_++;
@@ -290,7 +292,8 @@ ControlAnswer ControlLoop::SetTimeMode(idl::TimeMode mode, double speed) {
   const TimeMode wanted = raw < static_cast<uint32_t>(TimeMode::kCount) ? static_cast<TimeMode>(raw) : TimeMode::kCount;
   const Error e = time_.SetMode(wanted, speed);
   if (e == Error::kUnknownEnum) return {ControlErrorOf(e), fmt::format("unknown time mode {}", static_cast<int>(mode))};
-  if (e != Error::kOk) return {ControlErrorOf(e), fmt::format("speed must be in (0, {}]", kMaxTimeSpeed)};
+  if (e != Error::kOk)
+    return {ControlErrorOf(e), fmt::format("speed must be in [{}, {}]", kMinTimeSpeed, kMaxTimeSpeed)};
   spdlog::info("time mode {} (speed {})", TimeModeName(time_.mode()), time_.speed());
   pacer_.Anchor(Pacer::Clock::now(), node_.TimeNs());
   return {};

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "dds/participant.h"
+#include "kernel/time_control.h"
 #include "loader/legged_scene_yaml.h"
 #include "loader/realism_yaml.h"
 #include "loader/scene_yaml.h"
@@ -250,8 +251,8 @@ bool ApplyTimeMode(const std::string& speed, bool lockstep, SimNodeOptions& node
   } catch (const std::exception&) {
     node.speed = NAN;
   }
-  if (!(std::isfinite(node.speed) && node.speed > 0 && node.speed <= 1000)) {
-    spdlog::error("--speed must be a number in (0, 1000] or 'max' (got '{}')", speed);
+  if (!(std::isfinite(node.speed) && node.speed >= kMinTimeSpeed && node.speed <= kMaxTimeSpeed)) {
+    spdlog::error("--speed must be a number in [{}, {}] or 'max' (got '{}')", kMinTimeSpeed, kMaxTimeSpeed, speed);
     return false;
   }
   node.mode = node.speed == 1.0 ? TimeMode::kRealtime : TimeMode::kScaled;

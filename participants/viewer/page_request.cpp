@@ -11,6 +11,7 @@
 
 #include "core/input_limits.h"
 #include "idl/values.h"
+#include "kernel/time_control.h"
 #include "participants/viewer/viewer_json.h"
 
 namespace turf::viewer {
@@ -293,8 +294,7 @@ void TimeMode(Fields& in, PageRequest* out) {
   const idl::TimeMode m = *known;
   double speed = 1.0;
   if (m == idl::TIME_SCALED) {
-    speed = in.Number("speed", 0.0, kMaxSpeed);
-    if (in.ok() && speed <= 0.0) in.Fail(PageError::kOutOfRange, "'speed' must be above 0");
+    speed = in.Number("speed", kMinTimeSpeed, kMaxSpeed);
   } else if (in.Has("speed")) {
     in.Fail(PageError::kUnknownKey, fmt::format("time mode '{}' takes no 'speed'", mode));
   }

@@ -38,6 +38,7 @@ void BindCheckCommands(pyb::class_<Sim>& cls, Arrays arrays) {
   cls.def(
       "check_commands",
       [arrays](Sim& sim, const pyb::object& commands) {
+        sim.CheckIdle();
         std::vector<Batch> batch;
         const std::vector<pyb::array_t<double>> keep = arrays(sim, commands, &batch);
         sim.CheckCommands(batch);
@@ -50,16 +51,44 @@ void BindKernelCommon(pyb::class_<Sim>& cls) {
   cls.def(
          "set_realism",
          [](Sim& sim, const std::string& preset, const pyb::object& values) {
+           sim.CheckIdle();
            sim.SetRealism(preset, RealismValues(values));
          },
          pyb::arg("preset") = "", pyb::arg("values") = pyb::none())
-      .def("save", [](const Sim& sim) { return pyb::bytes(sim.Save()); })
-      .def_property_readonly("scene_name", [](const Sim& s) { return s.kernel().scene().name; })
-      .def_property_readonly("seed", [](const Sim& s) { return s.kernel().scene().seed; })
-      .def_property_readonly("step_seconds", [](const Sim& s) { return s.kernel().world().step_ns() * 1e-9; })
-      .def_property_readonly("time", [](const Sim& s) { return s.kernel().time_ns() * 1e-9; })
-      .def_property_readonly("frame", [](const Sim& s) { return s.kernel().frame(); })
-      .def_property_readonly("realism", [](const Sim& s) { return RealismDict(s.kernel().realism()); });
+      .def("save",
+           [](const Sim& sim) {
+             sim.CheckIdle();
+             return pyb::bytes(sim.Save());
+           })
+      .def_property_readonly("scene_name",
+                             [](const Sim& s) {
+                               s.CheckIdle();
+                               return s.kernel().scene().name;
+                             })
+      .def_property_readonly("seed",
+                             [](const Sim& s) {
+                               s.CheckIdle();
+                               return s.kernel().scene().seed;
+                             })
+      .def_property_readonly("step_seconds",
+                             [](const Sim& s) {
+                               s.CheckIdle();
+                               return s.kernel().world().step_ns() * 1e-9;
+                             })
+      .def_property_readonly("time",
+                             [](const Sim& s) {
+                               s.CheckIdle();
+                               return s.kernel().time_ns() * 1e-9;
+                             })
+      .def_property_readonly("frame",
+                             [](const Sim& s) {
+                               s.CheckIdle();
+                               return s.kernel().frame();
+                             })
+      .def_property_readonly("realism", [](const Sim& s) {
+        s.CheckIdle();
+        return RealismDict(s.kernel().realism());
+      });
 }
 
 }  // namespace turf::py

@@ -104,6 +104,7 @@ void BindLegged(pyb::module_& m) {
   cls.def(
          "step",
          [](LeggedSim& sim, const pyb::object& commands, int64_t n) {
+           LeggedSim::StepScope stepping(sim);
            std::vector<LeggedSim::RobotCommands> robots;
            const std::vector<pyb::array_t<double>> keep = RobotArrays(sim, commands, &robots);
            {
@@ -113,11 +114,16 @@ void BindLegged(pyb::module_& m) {
            return Observation(sim);
          },
          arg("commands") = pyb::none(), arg("n") = 1)
-      .def("observation", &Observation)
+      .def("observation",
+           [](const LeggedSim& sim) {
+             sim.CheckIdle();
+             return Observation(sim);
+           })
       .def(
           "joint_command",
           [](LeggedSim& sim, const pyb::object& robot, const std::string& joint, const std::string& mode, double value,
              double kp, double kd, double dq, double tau) {
+            sim.CheckIdle();
             sim.SetJointCommand(RobotOf(sim, robot), {joint, ModeOf(mode), value, kp, kd, dq, tau});
           },
           arg("robot"), arg("joint"), arg("mode") = "pd", arg("value") = 0.0, arg("kp") = -1.0, arg("kd") = -1.0,
@@ -126,6 +132,7 @@ void BindLegged(pyb::module_& m) {
           "teleport_robot",
           [](LeggedSim& sim, const pyb::object& robot, std::array<double, 3> position,
              std::array<double, 4> orientation, bool reset_joints) {
+            sim.CheckIdle();
             RobotPlacement p;
             p.position = position;
             p.orientation = orientation;
@@ -138,6 +145,7 @@ void BindLegged(pyb::module_& m) {
       .def(
           "teleport_ball",
           [](LeggedSim& sim, std::array<double, 3> position, std::array<double, 3> velocity) {
+            sim.CheckIdle();
             sim.PlaceBall(position, velocity);
             return Observation(sim);
           },
@@ -145,6 +153,7 @@ void BindLegged(pyb::module_& m) {
       .def(
           "reset",
           [](LeggedSim& sim, std::optional<uint64_t> seed) {
+            sim.CheckIdle();
             sim.Reset(seed);
             return Observation(sim);
           },
@@ -152,6 +161,7 @@ void BindLegged(pyb::module_& m) {
       .def(
           "restore",
           [](LeggedSim& sim, const pyb::bytes& snapshot) {
+            sim.CheckIdle();
             sim.Restore(snapshot);
             return Observation(sim);
           },
@@ -159,6 +169,7 @@ void BindLegged(pyb::module_& m) {
       .def("joint_names", &LeggedSim::joint_names, arg("robot"))
       .def("joint_limits",
            [](const LeggedSim& sim, int robot) {
+             sim.CheckIdle();
              std::vector<double> rows;
              for (size_t j = 0; j < sim.joint_names(robot).size(); ++j) {
                const LeggedJointInfo info = sim.kernel().world().JointInfo(robot, static_cast<int>(j));
@@ -170,6 +181,7 @@ void BindLegged(pyb::module_& m) {
       .def(
           "start_joints",
           [](const LeggedSim& sim, int robot) {
+            sim.CheckIdle();
             // q, kp, kd per joint as the scene starts it (NaN for a joint the scene does not name).
             const std::vector<std::string>& names = sim.joint_names(robot);
             std::vector<double> rows(names.size() * 3, NAN);
@@ -187,6 +199,7 @@ void BindLegged(pyb::module_& m) {
       .def_property_readonly("kind", [](const LeggedSim&) { return "legged"; })
       .def_property_readonly("robot_count", &LeggedSim::robot_count)
       .def_property_readonly("robot_names", [](const LeggedSim& s) {
+        s.CheckIdle();
         std::vector<std::string> names;
         for (const LeggedRobot& r : s.kernel().scene().robots) names.push_back(r.name);
         return names;

@@ -16,6 +16,7 @@ void BindPublish(pyb::class_<Sim>& cls) {
   cls.def(
          "publish",
          [](Sim& sim, int domain, const std::string& prefix, const std::string& qos_file) {
+           sim.CheckIdle();
            PublishOptions o;
            o.domain = domain;
            o.prefix = prefix;
@@ -25,10 +26,17 @@ void BindPublish(pyb::class_<Sim>& cls) {
          pyb::arg("domain") = 0, pyb::arg("prefix") = "turf", pyb::arg("qos_file") = "",
          "From now on, publish this world's topics on DDS `domain` under `prefix` as turf-sim does (the viewer, "
          "turf-record and team tools watch it); watch-only: nothing is subscribed. Replaces an earlier publish().")
-      .def("unpublish", &Sim::Unpublish, "Stops publishing (leaves the DDS domain).")
+      .def(
+          "unpublish",
+          [](Sim& sim) {
+            sim.CheckIdle();
+            sim.Unpublish();
+          },
+          "Stops publishing (leaves the DDS domain).")
       .def_property_readonly(
           "publishing",
           [](const Sim& sim) -> pyb::object {
+            sim.CheckIdle();
             if (sim.publication() == nullptr) return pyb::none();
             pyb::dict d;
             d["domain"] = sim.publication()->options().domain;
@@ -38,7 +46,11 @@ void BindPublish(pyb::class_<Sim>& cls) {
           },
           "None, or the domain and prefix publish() was given")
       .def_property_readonly(
-          "state_readers", [](const Sim& sim) { return sim.publication() ? sim.publication()->StateReaders() : 0; },
+          "state_readers",
+          [](const Sim& sim) {
+            sim.CheckIdle();
+            return sim.publication() ? sim.publication()->StateReaders() : 0;
+          },
           "DDS readers matched to the published state topic (world_state; legged scenes: robots/state)");
 }
 

@@ -98,6 +98,7 @@ void BindSsl(pyb::module_& m) {
          "step",
          [](pyb::object self, const pyb::object& commands, int64_t n) {
            SslSim& sim = self.cast<SslSim&>();
+           SslSim::StepScope stepping(sim);
            std::vector<SslSim::TeamCommands> teams;
            const std::vector<pyb::array_t<double>> keep = TeamArrays(sim, commands, &teams);
            {
@@ -107,11 +108,17 @@ void BindSsl(pyb::module_& m) {
            return Observation(sim, self);
          },
          arg("commands") = pyb::none(), arg("n") = 1)
-      .def("observation", [](pyb::object self) { return Observation(self.cast<SslSim&>(), self); })
+      .def("observation",
+           [](pyb::object self) {
+             const SslSim& sim = self.cast<SslSim&>();
+             sim.CheckIdle();
+             return Observation(sim, self);
+           })
       .def(
           "command",
           [](SslSim& sim, const pyb::object& team, int id, double vx, double vy, double omega, const std::string& frame,
              const std::vector<double>& wheels, double kick_speed, bool chip, double chip_angle, double dribbler) {
+            sim.CheckIdle();
             sim.Command(MakeCommand(team, id, frame, vx, vy, omega, wheels, kick_speed, chip, chip_angle, dribbler));
           },
           arg("team"), arg("id"), arg("vx") = 0.0, arg("vy") = 0.0, arg("omega") = 0.0, arg("frame") = "local",
@@ -122,6 +129,7 @@ void BindSsl(pyb::module_& m) {
           [](pyb::object self, double x, double y, std::optional<double> z, double vx, double vy, double vz,
              bool roll) {
             SslSim& sim = self.cast<SslSim&>();
+            sim.CheckIdle();
             BallTeleport t;
             t.position = {x, y, z.value_or(sim.kernel().scene().ball.radius)};
             t.velocity = {vx, vy, vz};
@@ -136,6 +144,7 @@ void BindSsl(pyb::module_& m) {
           [](pyb::object self, const pyb::object& team, int id, double x, double y, double orientation, double vx,
              double vy, double omega, bool on_field) {
             SslSim& sim = self.cast<SslSim&>();
+            sim.CheckIdle();
             RobotTeleport t;
             t.team = TeamOf(team);
             t.id = id;
@@ -153,6 +162,7 @@ void BindSsl(pyb::module_& m) {
           "reset",
           [](pyb::object self, std::optional<uint64_t> seed) {
             SslSim& sim = self.cast<SslSim&>();
+            sim.CheckIdle();
             sim.Reset(seed);
             return Observation(sim, self);
           },
@@ -161,6 +171,7 @@ void BindSsl(pyb::module_& m) {
           "restore",
           [](pyb::object self, const pyb::bytes& snapshot) {
             SslSim& sim = self.cast<SslSim&>();
+            sim.CheckIdle();
             sim.Restore(snapshot);
             return Observation(sim, self);
           },
@@ -170,10 +181,14 @@ void BindSsl(pyb::module_& m) {
       .def_property_readonly("robot_count", &SslSim::robot_count)
       .def_property_readonly("robot_ids",
                              [](const SslSim& s) {
+                               s.CheckIdle();
                                pyb::array_t<int32_t> a({s.robot_count(), 2}, s.robot_ids().data());
                                return a;
                              })
-      .def_property_readonly("field", [](const SslSim& s) { return FieldDict(s.kernel().scene()); });
+      .def_property_readonly("field", [](const SslSim& s) {
+        s.CheckIdle();
+        return FieldDict(s.kernel().scene());
+      });
   BindPublish(cls);
   m.attr("SSL_COMMAND_COLUMNS") = pyb::make_tuple("vx", "vy", "omega", "kick_speed", "chip", "dribbler");
   m.attr("SSL_BALL_COLUMNS") = pyb::make_tuple("x", "y", "z", "vx", "vy", "vz");

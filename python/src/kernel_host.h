@@ -18,6 +18,28 @@ namespace turf::py {
 template <class Kernel, class WorldPublication>
 class KernelHost {
  public:
+  // step() runs without the GIL, so Sims in different threads step in parallel. Meanwhile every other call on the
+  // same Sim is refused (not_allowed): another thread's reset or teleport would change the world under the step.
+  // The flag is read and written with the GIL held only.
+  class StepScope {
+   public:
+    explicit StepScope(KernelHost& host) : host_(host) {
+      host_.CheckIdle();
+      host_.stepping_ = true;
+    }
+    ~StepScope() { host_.stepping_ = false; }
+    StepScope(const StepScope&) = delete;
+    StepScope& operator=(const StepScope&) = delete;
+
+   private:
+    KernelHost& host_;
+  };
+  void CheckIdle() const {
+    if (stepping_)
+      throw SimError(Error::kNotAllowed,
+                     "this Sim is stepping in another thread (not_allowed): use a Sim from one thread at a time");
+  }
+
   const Kernel& kernel() const { return *kernel_; }
   std::string Save() const { return kernel_->Save(); }
 
@@ -59,6 +81,9 @@ class KernelHost {
 
   std::unique_ptr<Kernel> kernel_;
   std::unique_ptr<WorldPublication> publication_;
+
+ private:
+  bool stepping_ = false;
 };
 
 }  // namespace turf::py

@@ -26,6 +26,15 @@ from . import vector_layout
 from .errors import TurfError
 
 
+def _seeds(seed, n_worlds):
+    """World i's seed seed + i, every one a seed turf.Sim takes (0 .. 2**64 - 1), checked before any world uses one."""
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)):
+        raise TurfError("malformed", f"seed {seed!r} is not an integer")
+    if seed < 0 or int(seed) + n_worlds - 1 >= 2**64:
+        raise TurfError("out_of_range", f"seeds {seed}..{int(seed) + n_worlds - 1} are outside 0..2**64 - 1")
+    return [int(seed) + i for i in range(n_worlds)]
+
+
 def _worker(index, worlds, cpu, scene, seeds, realism, options, shm_names, layout, conn):
     from . import Sim  # in the worker process
     if cpu is not None:
@@ -79,12 +88,12 @@ class VectorSim:
         if n_worlds < 1:
             raise TurfError("out_of_range", "n_worlds must be at least 1")
         self.n_worlds = n_worlds
+        self.seeds = _seeds(seed, n_worlds)
         options = {"physics_step": physics_step, "robots_per_team": robots_per_team, "wall_segments": wall_segments}
         self.probe = Sim(scene, seed=seed, realism=realism, **options)  # shapes, and the checks of every batch
         self.kind = self.probe.kind
         cpus = sorted(cpus if cpus is not None else os.sched_getaffinity(0))
         self.workers = min(n_worlds, workers or len(cpus))
-        self.seeds = [seed + i for i in range(n_worlds)]
         make = vector_layout.ssl_layout if self.kind == "ssl" else vector_layout.legged_layout
         self._layout = make(self.probe, n_worlds)
         self.shapes = self._layout["shapes"]
@@ -197,9 +206,10 @@ class VectorSim:
 
     def reset(self, seed=None):
         """Every world back to its start; a seed gives world i the seed seed + i."""
-        if seed is not None:
-            self.seeds = [seed + i for i in range(self.n_worlds)]
-        self._all("reset", None if seed is None else self.seeds)
+        seeds = None if seed is None else _seeds(seed, self.n_worlds)
+        self._all("reset", seeds)
+        if seeds is not None:
+            self.seeds = seeds
         return self.observation()
 
     def save(self):

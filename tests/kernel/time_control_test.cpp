@@ -37,9 +37,28 @@ TEST(TimeControlTest, BadModesAndSpeedsAreRefusedAndChangeNothing) {
   EXPECT_EQ(t.SetMode(TimeMode::kScaled, NAN), Error::kNotFinite);
   EXPECT_EQ(t.SetMode(TimeMode::kScaled, 0.0), Error::kOutOfRange);
   EXPECT_EQ(t.SetMode(TimeMode::kScaled, kMaxTimeSpeed * 2), Error::kOutOfRange);
+  // A speed so small that one step would wait minutes (1e-6) or past the clock's range (1e-300).
+  EXPECT_EQ(t.SetMode(TimeMode::kScaled, 1e-6), Error::kOutOfRange);
+  EXPECT_EQ(t.SetMode(TimeMode::kScaled, 1e-300), Error::kOutOfRange);
   EXPECT_EQ(t.SetMode(TimeMode::kCount, 1.0), Error::kUnknownEnum);
   EXPECT_EQ(t.mode(), TimeMode::kScaled);
   EXPECT_EQ(t.speed(), 3.0);
+  EXPECT_EQ(t.SetMode(TimeMode::kScaled, kMinTimeSpeed), Error::kOk);
+}
+
+// Steps are answered when done, so queued ones are bounded: at most kMaxStepRequest at once, whatever the requests.
+TEST(TimeControlTest, QueuedStepsStopAtTheLimitOfOneRequest) {
+  TimeControl t(TimeMode::kRealtime, 1.0, true);
+  ASSERT_EQ(t.CheckSteps(kMaxStepRequest - 1), Error::kOk);
+  t.QueueSteps(kMaxStepRequest - 1, 0, 1);
+  EXPECT_EQ(t.CheckSteps(2), Error::kOutOfRange);
+  ASSERT_EQ(t.CheckSteps(1), Error::kOk);
+  t.QueueSteps(1, 0, 2);
+  EXPECT_EQ(t.CheckSteps(1), Error::kOutOfRange);
+  EXPECT_EQ(t.pending_steps(), kMaxStepRequest);
+  std::vector<uint64_t> done;
+  t.Stepped(1, &done);
+  EXPECT_EQ(t.CheckSteps(1), Error::kOk);  // one step done: room for one more
 }
 
 TEST(TimeControlTest, StepsNeedPauseOrLockstepAndFinishAtTheirFrame) {

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -87,6 +89,24 @@ TEST(LaunchProfile, UnknownProfileNamesTheKnownOnes) {
   EXPECT_NE(r.errors[0].find("ssl_div_a"), std::string::npos) << r.errors[0];
 }
 
+// A profile is read with a size cap, and only from a regular file (/dev/zero was read until memory ran out).
+TEST(LaunchProfile, ADeviceOrAnOversizedFileIsNoProfile) {
+  const ProfileLoadResult zero = LoadLaunchProfile("/dev/zero", DefaultProfileDir());
+  EXPECT_FALSE(zero.profile);
+  ASSERT_FALSE(zero.errors.empty());
+  EXPECT_NE(zero.errors[0].find("cannot read the profile"), std::string::npos) << zero.errors[0];
+  const std::string big = std::string(::testing::TempDir()) + "/big_profile.yaml";
+  {
+    std::ofstream out(big);
+    out << "scene: ssl_div_a.yaml\n# " << std::string(kMaxProfileBytes, 'x') << "\n";
+  }
+  const ProfileLoadResult large = LoadLaunchProfile(big, DefaultProfileDir());
+  std::remove(big.c_str());
+  EXPECT_FALSE(large.profile);
+  ASSERT_FALSE(large.errors.empty());
+  EXPECT_NE(large.errors[0].find("too large"), std::string::npos) << large.errors[0];
+}
+
 TEST(LaunchProfile, FlagsKeepTheirOrderAndForm) {
   const ProfileLoadResult r = Parse(
       "scene: ssl_div_b.yaml\n"
@@ -132,6 +152,9 @@ TEST(LaunchProfile, ErrorsNameTheKey) {
   ExpectError("scene: ssl_div_a.yaml\ndiscovery: {start: true}\n", "discovery.start", "needs discovery.server");
   ExpectError("scene: ssl_div_a.yaml\nrestart: {max_restart: 3}\n", "restart.max_restart", "max_restarts");
   ExpectError("scene: ssl_div_a.yaml\nstop_grace: 0\n", "stop_grace", "> 0");
+  // Durations past an hour (1e300 s was a nanosecond count past int64: SIGKILL at once, no backoff).
+  ExpectError("scene: ssl_div_a.yaml\nstop_grace: 1e300\n", "stop_grace", "<= 3600");
+  ExpectError("scene: ssl_div_a.yaml\nrestart: {backoff_max: 1e300}\n", "restart.backoff_max", "<= 3600");
   ExpectError("scene: ssl_div_a.yaml\nbrigdes: {}\n", "brigdes", "did you mean bridges");
 }
 

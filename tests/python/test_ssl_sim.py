@@ -236,3 +236,49 @@ def test_walls_of_two_boxes_bounce_the_ball_as_one_box():
             slowest = min(sim.step(None, 1)["ball"][4] for _ in range(150))
             rebounds.add(round(slowest, 9))
     assert len(rebounds) == 1 and next(iter(rebounds)) < -1.0
+
+
+def test_a_call_from_another_thread_while_stepping_is_refused_not_a_crash():
+    """step() releases the GIL; another thread's reset with a new seed rebuilt the world under the step (SIGSEGV).
+    Now every other call on that Sim raises not_allowed while it steps; afterwards the Sim works as before."""
+    import threading
+    import time
+
+    sim = turf.Sim("ssl_div_a", seed=1)
+    started = threading.Event()
+    results = []
+
+    def stepping():
+        started.set()
+        while len(results) < 200:
+            try:
+                results.append(sim.step(None, 200)["time"])
+            except turf.TurfError:  # the main thread's step() was running
+                pass
+
+    worker = threading.Thread(target=stepping)
+    worker.start()
+    started.wait(30)
+    refused = {}
+    deadline = time.monotonic() + 120
+    calls = {
+        "reset": lambda: sim.reset(seed=7),
+        "step": lambda: sim.step(None, 1),
+        "observation": sim.observation,
+        "teleport_ball": lambda: sim.teleport_ball(0, 0),
+        "time": lambda: sim.time,
+        "save": sim.save,
+    }
+    while worker.is_alive() and len(refused) < len(calls) and time.monotonic() < deadline:
+        for name, call in calls.items():
+            try:
+                call()
+            except turf.TurfError as e:
+                assert e.error == "not_allowed", e
+                refused[name] = str(e)
+    worker.join()
+    assert sorted(refused) == sorted(calls), refused  # each was refused at least once while stepping
+    assert "another thread" in refused["reset"]
+    assert len(results) == 200
+    assert sim.reset(seed=7)["time"] == 0.0
+    assert sim.seed == 7

@@ -56,6 +56,15 @@ def test_refused_batch_changes_no_world():
         vs.restore(before)
         vs.reset(seed=4)
         assert vs.seeds == [4, 5]
+        # A seed a world would refuse is refused before any world resets: nothing changes.
+        vs.step(None, 8)
+        times = np.array(vs.observation()["time"], copy=True)
+        for seed, error in ((-1, "out_of_range"), (2**64 - 1, "out_of_range"), (1.5, "malformed"), ("3", "malformed")):
+            with pytest.raises(turf.TurfError) as e:
+                vs.reset(seed=seed)
+            assert e.value.error == error, seed
+        assert vs.seeds == [4, 5]
+        np.testing.assert_array_equal(vs.observation()["time"], times)
 
 
 SCRIPT = """

@@ -20,6 +20,18 @@ TEST(ReplayClock, RealTimeScaledAndMax) {
   EXPECT_EQ(max.Due(9'000'000'000), start);
 }
 
+// A file's log times are untrusted: the largest gap at the slowest speed is due within the clock's range (a
+// nanosecond count past int64 was a conversion out of range, in practice due at once).
+TEST(ReplayClock, AGapOfCenturiesIsDueAfterTheLongestWait) {
+  const auto start = std::chrono::steady_clock::time_point(100s);
+  ReplayClock clock(1e-3, start);
+  EXPECT_EQ(clock.Due(0), start);
+  const auto longest = std::chrono::nanoseconds(static_cast<int64_t>(kMaxReplayWaitNs));
+  EXPECT_EQ(clock.Due(uint64_t{1} << 63), start + longest);
+  EXPECT_EQ(clock.Due(~uint64_t{0}), start + longest);
+  EXPECT_EQ(clock.Due(1'000'000), start + 1s);  // the pace below the limit is the speed's
+}
+
 TEST(ReplayClock, AnOriginAfterTheFirstMessage) {
   const auto start = std::chrono::steady_clock::time_point(100s);
   ReplayClock clock(2.0, start);

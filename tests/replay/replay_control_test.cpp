@@ -68,6 +68,8 @@ TEST(ReplayControl, RefusesWhatAReplayCannotDoWithNamedErrors) {
   EXPECT_EQ(Refused(TimeMode(idl::TIME_SCALED, 0)), idl::CONTROL_OUT_OF_RANGE);
   EXPECT_EQ(Refused(TimeMode(idl::TIME_SCALED, -2)), idl::CONTROL_OUT_OF_RANGE);
   EXPECT_EQ(Refused(TimeMode(idl::TIME_SCALED, 2e6)), idl::CONTROL_OUT_OF_RANGE);
+  EXPECT_EQ(Refused(TimeMode(idl::TIME_SCALED, 1e-300)), idl::CONTROL_OUT_OF_RANGE);  // past the clock's range
+  EXPECT_TRUE(std::holds_alternative<ReplayCommand>(ReplayCommandOf(TimeMode(idl::TIME_SCALED, kMinReplaySpeed))));
   idl::SimControl seek = Request(idl::OP_SEEK);
   seek.seek_time_ns(-1);
   EXPECT_EQ(Refused(seek), idl::CONTROL_OUT_OF_RANGE);

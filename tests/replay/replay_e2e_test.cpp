@@ -11,9 +11,11 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <csignal>
 #include <functional>
 #include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "codecs/mcap/writer.h"
@@ -191,6 +193,23 @@ std::string Show(const std::vector<int64_t>& times) {
 // paused plays again from 50 ms once resumed; a seek forward goes on at 900 ms; a seek past the end (while paused)
 // is refused when the file ends. A replay refuses what would change the match. The sim times received form exactly
 // those runs.
+// Ctrl-C while --wait-for-reader waits (no reader on its prefix) is a clean stop, as at any other moment.
+TEST(ReplayE2e, ACtrlCWhileWaitingForAReaderStopsCleanly) {
+  Rig rig(43, "replaywait");
+  Process replay(rig.prefix, {Built("participants/replay/turf-replay"), rig.file, "--no-stdin", "--wait-for-reader",
+                              "--domain", std::to_string(rig.domain), "--prefix", rig.prefix + "alone"});
+  const auto deadline = std::chrono::steady_clock::now() + 30s;
+  while (replay.Log().find("waiting for a reader") == std::string::npos && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(20ms);  // polling the log
+  ASSERT_NE(replay.Log().find("waiting for a reader"), std::string::npos) << replay.Log();
+  replay.Signal(SIGINT);
+  const std::optional<int> status = replay.Wait(30s);
+  ASSERT_TRUE(status.has_value()) << replay.Log();
+  EXPECT_TRUE(WIFEXITED(*status) && WEXITSTATUS(*status) == 0) << replay.Log();
+  EXPECT_NE(replay.Log().find("stopped while waiting for a reader"), std::string::npos) << replay.Log();
+  EXPECT_NE(replay.Log().find("stopped cleanly"), std::string::npos) << replay.Log();
+}
+
 TEST(ReplayE2e, PausesAndSeeksOverTheControlTopic) {
   constexpr int64_t kMs = 1'000'000;
   Rig rig(47, "replayseek");

@@ -51,7 +51,7 @@ TEST(ReplayKeys, RefusesAnythingElseWithItsReason) {
   for (const char* line : {"jump 3", "pause now", "seek"}) EXPECT_EQ(Refused(line), idl::CONTROL_PARSE) << line;
   for (const char* line : {"seek nan", "seek inf", "seek 3s"})
     EXPECT_EQ(Refused(line), idl::CONTROL_BAD_ARGUMENTS) << line;
-  for (const char* line : {"seek -1", "seek 1e10", "speed 0", "speed 1e7"})
+  for (const char* line : {"seek -1", "seek 1e10", "speed 0", "speed 1e7", "speed 1e-300"})
     EXPECT_EQ(Refused(line), idl::CONTROL_OUT_OF_RANGE) << line;
   EXPECT_EQ(Refused(std::string(kMaxReplayLine + 1, 'p')), idl::CONTROL_TOO_LARGE);
 }

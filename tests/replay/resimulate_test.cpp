@@ -280,6 +280,59 @@ TEST_F(Resimulation, ChangedInputsAreReportedAtTheFirstOutputTheyChange) {
   EXPECT_NE(r.verdict.find("first differing byte at offset"), std::string::npos) << r.verdict;
 }
 
+// A file's times are untrusted: a world state copied to sim time 9e18 ns, or the last applied-inputs record moved to
+// a step no recording reaches, ends the re-simulation a second past the recording's outputs, not years later, and
+// the verdict names what was not reproduced.
+TEST_F(Resimulation, AForgedTimeOrStepFarPastTheRecordingEndsTheRunAtItsOutputs) {
+  const File original = ReadAll(*ssl_file_);
+  const uint16_t world = ChannelOf(original, "/world_state");
+  const uint16_t inputs = ChannelOf(original, "/sim/applied_inputs");
+  ASSERT_NE(world, 0);
+  ASSERT_NE(inputs, 0);
+
+  File far = original;
+  for (const auto& m : original.messages) {
+    if (std::get<0>(m) != world) continue;
+    auto copy = m;
+    std::get<3>(copy) = 9'000'000'000'000'000'000ull;
+    far.messages.push_back(copy);
+    break;
+  }
+  const std::string far_file = TempFile("resim_far");
+  WriteAll(far, far_file);
+  const ResimulateResult a = Resimulate({far_file}, [] { return false; });
+  std::filesystem::remove(far_file);
+  std::printf("%s\n", a.verdict.c_str());
+  EXPECT_FALSE(a.identical);
+  EXPECT_EQ(a.topic, "world_state") << a.verdict;
+  EXPECT_EQ(a.diff_sim_time_ns, 9'000'000'000'000'000'000) << a.verdict;
+  EXPECT_EQ(a.reproduced + 1, a.recorded) << a.verdict;  // everything else is reproduced
+  EXPECT_LT(a.sim_time_ns, 23'000'000'000) << a.verdict;
+
+  File late = original;
+  for (auto it = late.messages.rbegin(); it != late.messages.rend(); ++it) {
+    if (std::get<0>(*it) != inputs) continue;
+    std::string& data = std::get<4>(*it);
+    idl::AppliedInputs record;
+    ASSERT_TRUE(
+        FromCdr<idl::AppliedInputsPubSubType>(reinterpret_cast<const uint8_t*>(data.data()), data.size(), &record));
+    record.step(uint64_t{1} << 62);
+    std::vector<uint8_t> bytes;
+    ASSERT_TRUE(ToCdr<idl::AppliedInputsPubSubType>(record, &bytes));
+    data.assign(bytes.begin(), bytes.end());
+    break;
+  }
+  const std::string late_file = TempFile("resim_late_step");
+  WriteAll(late, late_file);
+  const ResimulateResult b = Resimulate({late_file}, [] { return false; });
+  std::filesystem::remove(late_file);
+  std::printf("%s\n", b.verdict.c_str());
+  EXPECT_FALSE(b.identical);
+  EXPECT_NE(b.verdict.find("with 1 of"), std::string::npos) << b.verdict;
+  EXPECT_NE(b.verdict.find("the next one is past the recording's outputs"), std::string::npos) << b.verdict;
+  EXPECT_LT(b.sim_time_ns, 23'000'000'000) << b.verdict;
+}
+
 // A Booster T1 standing, its head and arms driven by scripted joint commands.
 class T1Script final : public Script {
  public:

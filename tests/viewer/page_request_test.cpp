@@ -175,6 +175,7 @@ INSTANTIATE_TEST_SUITE_P(
         Bad{R"({"op":"time_mode","mode":"scaled","speed":0})", PageError::kOutOfRange},
         Bad{R"({"op":"time_mode","mode":"scaled","speed":-1})", PageError::kOutOfRange},
         Bad{R"({"op":"time_mode","mode":"scaled","speed":1e6})", PageError::kOutOfRange},
+        Bad{R"({"op":"time_mode","mode":"scaled","speed":1e-6})", PageError::kOutOfRange},
         Bad{R"({"op":"time_mode","mode":"free","speed":2})", PageError::kUnknownKey},
         Bad{R"({"op":"realism","preset":"/etc/passwd"})", PageError::kUnknownPreset},
         Bad{R"({"op":"realism","preset":"camera: {robot_vanish: 1}"})", PageError::kUnknownPreset}));

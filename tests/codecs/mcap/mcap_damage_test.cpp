@@ -3,7 +3,9 @@
 // completed before a cut.
 #include <gtest/gtest.h>
 
+#include "codecs/mcap/compression.h"
 #include "codecs/mcap/reader.h"
+#include "codecs/mcap/records.h"
 #include "tests/codecs/mcap/mcap_test_file.h"
 
 namespace turf::mcap {
@@ -115,6 +117,37 @@ TEST(McapDamage, HostileLengthsAreRefusedBeforeAnyAllocation) {
   EXPECT_EQ(d.error, ReadError::kTruncated);
   EXPECT_EQ(d.offset, 8u + 9u + 9u);
   EXPECT_NE(d.message.find("Chunk record declares"), std::string::npos) << d.message;
+}
+
+// Chunks that unpack to far more than the file (a crafted file: zstd chunks of empty messages and no message
+// indexes, so 100 bytes of file are megabytes of records) are refused once they pass max_inflation times the file's
+// size, and the messages of the chunks before are delivered.
+TEST(McapDamage, ChunksThatUnpackToMoreThanTheFileAllowsAreRefused) {
+  constexpr int kChunks = 8;
+  constexpr uint32_t kPerChunk = 400'000;  // 12.4 MB of records a chunk
+  std::string records;
+  for (uint32_t i = 0; i < kPerChunk; ++i) records += EncodeMessage({1, 0, 0, 0, "", 0});
+  const std::string packed = Compress(Compression::kZstd, records, 3);
+  std::string file(kMagic);
+  file += EncodeHeader({"", "x"});
+  file += EncodeChannel({1, 0, "t", "cdr", {}});
+  for (int k = 0; k < kChunks; ++k) file += EncodeChunk({0, 0, records.size(), 0, "zstd", packed});
+  file += EncodeDataEnd(0);
+  StringSource source(file);
+  FileInfo info;
+  uint64_t delivered = 0;
+  ReaderOptions options;
+  options.max_chunk_bytes = 16 << 20;  // a small file may unpack to one such chunk
+  const Damage d = Scan(source, options, &info, [&](const Channel&, const Message&) { ++delivered; });
+  ASSERT_LT(file.size() * 100, records.size() * 2) << "the fixture compresses less than the test needs";
+  EXPECT_EQ(d.error, ReadError::kTooLarge) << d.Describe();
+  EXPECT_NE(d.message.find("times the file's"), std::string::npos) << d.message;
+  EXPECT_EQ(delivered, kPerChunk);  // the first chunk: within the 16 MiB any file may unpack to
+  options.max_inflation = 1'000'000;
+  delivered = 0;
+  const Damage all = Scan(source, options, &info, [&](const Channel&, const Message&) { ++delivered; });
+  EXPECT_EQ(all.error, ReadError::kTruncated) << all.Describe();  // no summary and Footer: read to the end
+  EXPECT_EQ(delivered, kChunks * kPerChunk);
 }
 
 TEST(McapDamage, AFileNeverClosedSaysSo) {
