@@ -12,6 +12,7 @@
 #include "core/camera/camera_model.h"
 #include "dds/camera_topics.h"
 #include "dds/vendor_participant.h"
+#include "participants/common/process.h"
 
 namespace turf::viewer {
 
@@ -32,6 +33,7 @@ struct CameraFrames::Impl {
   };
   struct Camera {
     bool followed = false;  // readers made or being made
+    uint64_t asked = 0;     // when it was last asked for (a count of requests)
     std::unique_ptr<dds::VendorParticipant::RawReader> raw, compressed;
     std::optional<Frame> newest;
   };
@@ -43,10 +45,35 @@ struct CameraFrames::Impl {
   std::unique_ptr<dds::VendorParticipant> participant;  // under follow_mutex
   std::mutex mutex;                                     // guards everything below
   std::map<std::string, Camera> cameras;
-  std::atomic<uint64_t> refused{0}, served{0};
+  uint64_t requests = 0;
+  std::atomic<uint64_t> served{0};
+  RejectLog rejects{"camera panel input"};
 
-  void Refuse(const std::string& what) {
-    if (refused++ < 5) spdlog::warn("camera panel: refused {}", what);
+  void Refuse(const std::string& kind, const std::string& what) { rejects.Reject(kind, what); }
+
+  // Drops a camera's readers outside `mutex` (their callbacks take it) and with no reader being made.
+  void Drop(Camera camera) {
+    std::lock_guard<std::mutex> follow(follow_mutex);
+    camera.raw.reset();
+    camera.compressed.reset();
+  }
+
+  // With `mutex` held: when kMaxCameras are followed, the one asked for least recently leaves the map (returned, to
+  // be dropped once `mutex` is released).
+  std::optional<Camera> MakeRoom() {
+    size_t followed = 0;
+    auto oldest = cameras.end();
+    for (auto it = cameras.begin(); it != cameras.end(); ++it) {
+      if (!it->second.followed) continue;
+      ++followed;
+      if (oldest == cameras.end() || it->second.asked < oldest->second.asked) oldest = it;
+    }
+    if (followed < kMaxCameras) return std::nullopt;
+    spdlog::info("camera panel: no longer reading {} (asked for least recently; {} cameras at most)", oldest->first,
+                 kMaxCameras);
+    Camera out = std::move(oldest->second);
+    cameras.erase(oldest);
+    return out;
   }
 
   void OnRaw(const std::string& key, const ros::Image_& image) {
@@ -55,21 +82,21 @@ struct CameraFrames::Impl {
     if ((!yuyv && image.encoding() != "rgb8") || image.width() == 0 || image.height() == 0 ||
         image.width() > kMaxImageSide || image.height() > kMaxImageSide || image.step() != image.width() * bpp ||
         image.data().size() != size_t{image.step()} * image.height())
-      return Refuse(key + ": an image of " + std::to_string(image.width()) + "x" + std::to_string(image.height()) +
-                    " '" + image.encoding() + "'");
+      return Refuse("image", key + ": an image of " + std::to_string(image.width()) + "x" +
+                                 std::to_string(image.height()) + " '" + image.encoding() + "'");
     Frame f{image.data(), yuyv, static_cast<int>(image.width()), static_cast<int>(image.height()), {}};
     std::lock_guard<std::mutex> lock(mutex);
-    cameras[key].newest = std::move(f);
+    if (auto it = cameras.find(key); it != cameras.end()) it->second.newest = std::move(f);
   }
 
   void OnCompressed(const std::string& key, const ros::CompressedImage_& image) {
     if (image.format().find("jpeg") == std::string::npos || image.data().empty() ||
         image.data().size() > kMaxCompressed)
-      return Refuse(key + ": a compressed image '" + image.format() + "'");
+      return Refuse("compressed_image", key + ": a compressed image '" + image.format() + "'");
     Frame f;
     f.jpeg.assign(image.data().begin(), image.data().end());
     std::lock_guard<std::mutex> lock(mutex);
-    cameras[key].newest = std::move(f);
+    if (auto it = cameras.find(key); it != cameras.end()) it->second.newest = std::move(f);
   }
 
   // The camera's readers, made at its first request (under follow_mutex, not `mutex`), then kept in its slot.
@@ -85,10 +112,16 @@ struct CameraFrames::Impl {
     auto compressed_reader = participant->MakeReader<ros::CompressedImage_PubSubType>(
         jpeg, [this, key](const ros::CompressedImage_& image, int64_t) { OnCompressed(key, image); });
     spdlog::info("camera panel: reading {} and {}", raw, jpeg);
-    std::lock_guard<std::mutex> lock(mutex);
-    Camera& c = cameras[key];
-    c.raw = std::move(raw_reader);
-    c.compressed = std::move(compressed_reader);
+    std::unique_lock<std::mutex> lock(mutex);
+    const auto it = cameras.find(key);
+    if (it == cameras.end() || !it->second.followed) {  // no longer followed meanwhile: the readers go
+      lock.unlock();
+      raw_reader.reset();
+      compressed_reader.reset();
+      return;
+    }
+    it->second.raw = std::move(raw_reader);
+    it->second.compressed = std::move(compressed_reader);
   }
 };
 
@@ -109,24 +142,23 @@ CameraFrames::~CameraFrames() {
 std::optional<std::string> CameraFrames::Jpeg(std::string_view target) {
   const std::optional<CameraTarget> t = ParseCameraTarget(target);
   if (!t) {
-    impl_->Refuse("target '" + std::string(target.substr(0, 80)) + "'");
+    impl_->Refuse("target", "target '" + std::string(target.substr(0, 80)) + "'");
     return std::nullopt;
   }
   const std::string key = t->robot + "/" + t->camera;
   std::unique_lock<std::mutex> lock(impl_->mutex);
   auto it = impl_->cameras.find(key);
   if (it == impl_->cameras.end() || !it->second.followed) {
-    size_t followed = 0;
-    for (const auto& [k, c] : impl_->cameras) followed += c.followed;
-    if (followed >= kMaxCameras) {
-      impl_->Refuse(key + ": already following " + std::to_string(followed) + " cameras");
-      return std::nullopt;
-    }
-    impl_->cameras[key].followed = true;
+    std::optional<Impl::Camera> evicted = impl_->MakeRoom();
+    Impl::Camera& c = impl_->cameras[key];
+    c.followed = true;
+    c.asked = ++impl_->requests;
     lock.unlock();
+    if (evicted) impl_->Drop(std::move(*evicted));
     impl_->Follow(*t, key);
     return std::nullopt;
   }
+  it->second.asked = ++impl_->requests;
   std::optional<Impl::Frame>& f = it->second.newest;
   if (!f) return std::nullopt;
   if (f->jpeg.empty()) {
@@ -134,7 +166,7 @@ std::optional<std::string> CameraFrames::Jpeg(std::string_view target) {
     if (f->yuyv) rgb = image::YuyvToRgb(f->raw, f->width, f->height).bytes;
     const image::Encoded e = image::EncodeJpeg(rgb, f->width, f->height, kJpegQuality);
     if (e.error != Error::kOk) {
-      impl_->Refuse(key + ": a frame JPEG refused (" + std::string(ErrorName(e.error)) + ")");
+      impl_->Refuse("jpeg", key + ": a frame JPEG refused (" + std::string(ErrorName(e.error)) + ")");
       f.reset();
       return std::nullopt;
     }
@@ -145,7 +177,7 @@ std::optional<std::string> CameraFrames::Jpeg(std::string_view target) {
   return f->jpeg;
 }
 
-uint64_t CameraFrames::refused() const { return impl_->refused.load(); }
+uint64_t CameraFrames::refused() const { return impl_->rejects.Total(); }
 uint64_t CameraFrames::served() const { return impl_->served.load(); }
 
 }  // namespace turf::viewer

@@ -6,8 +6,10 @@
 // a camera must be on in turf-render (declared on, or switched on by cameras/control).
 //
 // Untrusted input: a target that is not /camera/<token>/<token>.jpg (tokens [A-Za-z0-9_], 1..64 bytes) is refused;
-// at most kMaxCameras cameras are followed (more: refused); an image whose sizes do not add up, above kMaxImageSide,
-// in another encoding or format, or a compressed one above 8 MiB is dropped. Each refusal is counted.
+// at most kMaxCameras cameras are followed (a request for another one stops following the one asked for least
+// recently: names that are no camera cannot use up the slots for good); an image whose sizes do not add up, above
+// kMaxImageSide, in another encoding or format, or a compressed one above 8 MiB is dropped. Each refusal is counted
+// by kind and logged rate-limited ("camera panel input").
 #pragma once
 
 #include <cstdint>

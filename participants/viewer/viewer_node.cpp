@@ -131,9 +131,14 @@ class ViewerNode::Impl {
   std::string Url() const { return server_->Url(); }
   ViewerStats Stats() const {
     const viewer::WebServerStats web = server_->Stats();
-    return {
-        web.pages,       control_matched_.load(), states_received_.load(), states_pushed_.load(), controls_sent_.load(),
-        replies_.load(), rejects_.Total(),        web.frames_dropped};
+    return {web.pages,
+            control_matched_.load(),
+            states_received_.load(),
+            states_pushed_.load(),
+            controls_sent_.load(),
+            replies_.load(),
+            rejects_.Total() + camera_frames_.refused(),
+            web.frames_dropped};
   }
   uint64_t Rejected(const std::string& kind) const { return rejects_.Count(kind); }
 

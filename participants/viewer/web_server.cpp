@@ -85,9 +85,16 @@ class WebServer::Impl {
         retry_.async_wait([this](beast::error_code) { Accept(); });
         return;
       }
+      const asio::ip::address from = web::RemoteAddress(socket);
+      const auto open_from = shared_->by_address.find(from);
       if (shared_->connections >= shared_->options.max_clients) {
         shared_->Refuse(0, "http.too_many_clients",
                         std::to_string(shared_->options.max_clients) + " connections are open already");
+        socket.close(ec);
+      } else if (open_from != shared_->by_address.end() &&
+                 open_from->second >= shared_->options.max_clients_per_address) {
+        shared_->Refuse(0, "http.too_many_from_address",
+                        std::to_string(open_from->second) + " connections from " + from.to_string() + " are open");
         socket.close(ec);
       } else {
         std::make_shared<HttpSession>(std::move(socket), shared_)->Start();

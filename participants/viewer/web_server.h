@@ -15,7 +15,8 @@
 // yet sent is dropped: a slow page skips frames, it never stalls anyone), and
 // other messages in a bounded queue (oldest dropped when full).
 // Limits: GET/HEAD only, headers <= 8 KiB, one WebSocket path (/ws), at most
-// `max_clients` open connections, page messages <= 64 KiB (bigger: the
+// `max_clients` open connections and `max_clients_per_address` from one address (one client cannot take them
+// all; a connection sending no request for 10 s is closed), page messages <= 64 KiB (bigger: the
 // connection is closed) and `max_messages_per_second` (more: refused).
 #pragma once
 
@@ -40,6 +41,7 @@ struct WebServerOptions {
   std::string web_root;              // directory of index.html, app.js, style.css
   std::string hello;                 // the first message every page gets
   size_t max_clients = 64;           // a browser keeps up to 6 connections a page
+  size_t max_clients_per_address = 24;
   int max_messages_per_second = 200;
   size_t max_queued_events = 64;  // per page
 };

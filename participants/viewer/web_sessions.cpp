@@ -13,7 +13,9 @@ constexpr size_t kHeaderLimit = 8 * 1024;
 constexpr size_t kBodyLimit = 4 * 1024;
 constexpr size_t kMaxFile = 8 * 1024 * 1024;
 constexpr size_t kMaxPageFrame = 64 * 1024;  // bigger WebSocket messages close the connection
-constexpr auto kHttpTimeout = std::chrono::seconds(30);
+// A request must arrive whole within this (also the next one on a kept-alive connection): a client that opens
+// connections and sends nothing holds their slots no longer.
+constexpr auto kHttpTimeout = std::chrono::seconds(10);
 constexpr char kServer[] = "turf-viewer";
 // The page needs nothing from elsewhere: scripts, styles and its WebSocket are
 // all same-origin.
@@ -44,7 +46,7 @@ http::response<http::string_body> Plain(http::status status, unsigned version, b
 // --- HttpSession ---
 
 HttpSession::HttpSession(tcp::socket socket, std::shared_ptr<Shared> shared)
-    : stream_(std::move(socket)), slot_(std::move(shared)) {}
+    : stream_(std::move(socket)), slot_(std::move(shared), RemoteAddress(stream_.socket())) {}
 
 void HttpSession::Read() {
   parser_.emplace();
@@ -173,7 +175,7 @@ void HttpSession::Respond(http::response<http::string_body> response) {
 
 PageSession::PageSession(beast::tcp_stream stream, std::shared_ptr<Shared> shared)
     : ws_(std::move(stream)),
-      slot_(std::move(shared)),
+      slot_(std::move(shared), RemoteAddress(ws_.next_layer().socket())),
       id_(slot_.shared().next_client++),
       rate_(slot_.shared().options.max_messages_per_second) {}
 

@@ -36,6 +36,7 @@ struct Shared {
   bool loopback_only = true;
   uint64_t next_client = 1;
   size_t connections = 0;
+  std::map<asio::ip::address, size_t> by_address;  // open connections per remote address
   std::map<uint64_t, std::weak_ptr<PageSession>> pages;
   std::optional<Message> latest[3];  // kField, kStats, kState
   std::atomic<uint64_t> page_count{0}, http_requests{0}, messages_sent{0}, frames_dropped{0}, events_dropped{0};
@@ -45,16 +46,31 @@ struct Shared {
   }
 };
 
-// Counts an open connection for as long as it lives.
+// The peer's address (unspecified if the socket has none any more).
+inline asio::ip::address RemoteAddress(const tcp::socket& socket) {
+  beast::error_code ec;
+  const tcp::endpoint peer = socket.remote_endpoint(ec);
+  return ec ? asio::ip::address() : peer.address();
+}
+
+// Counts an open connection, in all and from its address, for as long as it lives.
 class ConnectionSlot : Pinned {
  public:
-  explicit ConnectionSlot(std::shared_ptr<Shared> shared) : shared_(std::move(shared)) { ++shared_->connections; }
-  ~ConnectionSlot() { --shared_->connections; }
+  ConnectionSlot(std::shared_ptr<Shared> shared, asio::ip::address from)
+      : shared_(std::move(shared)), from_(std::move(from)) {
+    ++shared_->connections;
+    ++shared_->by_address[from_];
+  }
+  ~ConnectionSlot() {
+    --shared_->connections;
+    if (--shared_->by_address[from_] == 0) shared_->by_address.erase(from_);
+  }
   Shared& shared() { return *shared_; }
   const std::shared_ptr<Shared>& ptr() const { return shared_; }
 
  private:
   std::shared_ptr<Shared> shared_;
+  const asio::ip::address from_;
 };
 
 class HttpSession : public std::enable_shared_from_this<HttpSession> {

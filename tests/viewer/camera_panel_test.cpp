@@ -121,5 +121,28 @@ TEST(CameraPanel, BadImagesAreDroppedAndCounted) {
   EXPECT_EQ(frames.refused(), before + 1);
 }
 
+// Names that are no camera cannot use up the slots for good: past kMaxCameras, the camera asked for least recently
+// is no longer followed, and a real camera asked for afterwards is served.
+TEST(CameraPanel, ManyBogusCamerasDoNotLockOutARealOne) {
+  const dds::ParticipantOptions dds = UniqueDds("viewer-camera-slots");
+  viewer::CameraFrames frames(viewer::CameraFramesOptions{dds.domain, dds.prefix, "", "camera-frames-test"});
+  for (size_t i = 0; i < 2 * viewer::CameraFrames::kMaxCameras; ++i)
+    EXPECT_FALSE(frames.Jpeg("/camera/bogus" + std::to_string(i) + "/cam.jpg").has_value());
+  EXPECT_EQ(frames.refused(), 0u) << "following another camera is no refusal";
+  dds::VendorParticipant images(dds::VendorOptions{dds.domain, "camera-panel-test", "", true});
+  auto raw = images.MakeWriter<ros::Image_PubSubType>(
+      dds::CameraTopicName(dds.prefix, "t1", "camera", dds::CameraTopic::kImage));
+  std::optional<std::string> jpeg;
+  const auto end = Clock::now() + 30s;
+  while (!jpeg && Clock::now() < end) {
+    raw->Write(TestImage());
+    jpeg = frames.Jpeg("/camera/t1/camera.jpg");
+    if (!jpeg) std::this_thread::sleep_for(100ms);  // polling, as the page does
+  }
+  ASSERT_TRUE(jpeg.has_value()) << "the real camera was locked out";
+  EXPECT_FALSE(jpeg->empty());
+  EXPECT_EQ(frames.served(), 1u);
+}
+
 }  // namespace
 }  // namespace turf::test

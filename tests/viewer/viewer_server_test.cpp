@@ -5,11 +5,14 @@
 #include <nlohmann/json.hpp>
 
 #include <atomic>
+#include <boost/asio.hpp>
 #include <cmath>
+#include <istream>
 #include <memory>
 #include <thread>
 
 #include "participants/viewer/viewer_node.h"
+#include "participants/viewer/web_server.h"
 #include "tests/sim/sim_harness.h"
 #include "tests/support/in_process.h"
 #include "tests/viewer/viewer_under_test.h"
@@ -303,6 +306,43 @@ TEST(ViewerServer, WithoutTurfSimActionsAreRefusedNotLost) {
   EXPECT_EQ(viewer.node().Rejected("page.no_simulator"), 1u);
   EXPECT_EQ(viewer.node().Stats().controls_sent, 0u);
   EXPECT_FALSE(viewer.node().Stats().control_matched);
+}
+
+// Connections that send part of a request and wait (a slowloris client) hold at most max_clients_per_address
+// slots: the next one from that address is closed and counted, and a page from another address is served.
+TEST(ViewerServer, OneAddressCannotTakeEveryConnection) {
+  namespace asio = boost::asio;
+  using tcp = asio::ip::tcp;
+  const dds::ParticipantOptions dds = UniqueDds("viewer-slots");
+  ViewerUnderTest viewer(dds);
+  const tcp::endpoint server(asio::ip::make_address("127.0.0.1"), static_cast<uint16_t>(viewer.port()));
+  asio::io_context io;
+  std::vector<tcp::socket> idle;
+  const std::string partial = "GET / HTTP/1.1\r\nHost: 127.0.0.1\r\n";
+  for (size_t i = 0; i < viewer::WebServerOptions{}.max_clients_per_address; ++i) {
+    idle.emplace_back(io);
+    idle.back().connect(server);
+    asio::write(idle.back(), asio::buffer(partial));
+  }
+  tcp::socket extra(io);
+  extra.connect(server);
+  EXPECT_TRUE(Eventually([&] { return viewer.node().Rejected("http.too_many_from_address") == 1; }));
+
+  tcp::socket other(io);
+  other.open(tcp::v4());
+  other.bind(tcp::endpoint(asio::ip::make_address("127.0.0.2"), 0));
+  other.connect(server);
+  const std::string get =
+      "GET / HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(viewer.port()) + "\r\nConnection: close\r\n\r\n";
+  asio::write(other, asio::buffer(get));
+  asio::streambuf reply;
+  boost::system::error_code ec;
+  asio::read_until(other, reply, "\r\n", ec);
+  ASSERT_FALSE(ec) << ec.message();
+  std::string status_line;
+  std::getline(std::istream(&reply), status_line);
+  EXPECT_EQ(status_line.rfind("HTTP/1.1 200", 0), 0u) << status_line;
+  EXPECT_EQ(viewer.node().Rejected("http.too_many_clients"), 0u);
 }
 
 // turf-sim stops: the page is told that what it shows is turf-sim's last word, and since when.
