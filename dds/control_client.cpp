@@ -137,7 +137,14 @@ uint64_t ControlClient::Register(idl::SimControl& request, SteadyClock::time_poi
   const uint64_t id = next_id_++;
   request.client(name_);
   request.request_id(id);
-  if (outstanding_.size() >= kMaxOutstanding) outstanding_.erase(outstanding_.begin());
+  if (outstanding_.size() >= kMaxOutstanding) {  // the oldest is given up: its callback hears so (Dispatch)
+    auto oldest = outstanding_.begin();
+    if (oldest->second.done)
+      given_up_.emplace_back(
+          std::move(oldest->second.done),
+          oldest->second.outcome.value_or(ControlOutcome{oldest->first, ControlCallError::kTimeout, std::nullopt}));
+    outstanding_.erase(oldest);
+  }
   Outstanding& o = outstanding_[id];
   o.deadline = deadline;
   o.done = std::move(done);
@@ -189,6 +196,7 @@ size_t ControlClient::Dispatch() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     ExpireLocked(SteadyClock::now());
+    due.swap(given_up_);
     for (auto it = outstanding_.begin(); it != outstanding_.end();) {
       if (it->second.done && it->second.outcome) {
         due.emplace_back(std::move(it->second.done), std::move(*it->second.outcome));

@@ -38,6 +38,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/pinned.h"
@@ -72,7 +73,9 @@ class ControlClient : Pinned {
   using SteadyClock = std::chrono::steady_clock;
   using Callback = std::function<void(const ControlOutcome&)>;
   using StopFn = std::function<bool()>;
-  static constexpr size_t kMaxOutstanding = 4096;  // past this the oldest request is forgotten
+  // Past this the oldest request is given up: a callback of it runs at the next Dispatch with kTimeout (or the
+  // outcome it had); a waiting Call of it ends as a timeout.
+  static constexpr size_t kMaxOutstanding = 4096;
 
   // Makes the control writer and the reply reader on `bus` (a dds::Participant,
   // or a dds::MemoryBus shared with turf-sim's node; it must outlive the client).
@@ -133,7 +136,8 @@ class ControlClient : Pinned {
   mutable std::mutex mutex_;
   std::condition_variable changed_;
   uint64_t next_id_;
-  std::map<uint64_t, Outstanding> outstanding_;  // by request id (ids grow: begin() is the oldest)
+  std::map<uint64_t, Outstanding> outstanding_;                // by request id (ids grow: begin() is the oldest)
+  std::vector<std::pair<Callback, ControlOutcome>> given_up_;  // past kMaxOutstanding, for the next Dispatch
   std::atomic<uint64_t> stray_{0};
   std::atomic<uint64_t> bad_{0};
   std::unique_ptr<Writer<idl::SimControlPubSubType>> writer_;

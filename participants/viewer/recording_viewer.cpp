@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "participants/common/mcap_file.h"
+#include "participants/common/process.h"
 #include "participants/viewer/recording.h"
 #include "participants/viewer/viewer_json.h"
 #include "participants/viewer/web_server.h"
@@ -56,7 +57,7 @@ class RecordingViewer::Impl {
     };
     handlers.on_refused = [this](uint64_t, const std::string& kind, const std::string& detail) {
       ++refused_;
-      spdlog::debug("refused {}: {}", kind, detail);
+      rejects_.Reject(kind, detail);
     };
     handlers.on_get = [this](std::string_view target) { return Answer(target); };
     std::string error;
@@ -134,6 +135,7 @@ class RecordingViewer::Impl {
   double load_seconds_ = 0;
   std::atomic<uint64_t> requests_{0};
   std::atomic<uint64_t> refused_{0};
+  RejectLog rejects_{"page input"};  // HTTP and WebSocket refusals: logged rate-limited
   std::atomic<bool> ready_{false};
   // Last: the server's I/O thread calls into the members above, so it stops first.
   std::unique_ptr<viewer::WebServer> server_;

@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
+#include <vector>
 
 #include "participants/common/wakeup.h"
 #include "tests/sim/sim_harness.h"
@@ -202,6 +204,22 @@ TEST(ControlClient, NoServerIsNamedAndNothingIsSent) {
   ASSERT_TRUE(async);
   EXPECT_EQ(async->error, dds::ControlCallError::kNoServer);
   EXPECT_STREQ(dds::ControlCallErrorName(async->error), "no_server");
+}
+
+// More requests waiting than kMaxOutstanding: the oldest is given up, and its callback still hears so (a page
+// whose request was forgotten waited for an answer for good).
+TEST(ControlClient, ARequestGivenUpPastTheLimitStillGetsItsCallback) {
+  const auto dds = UniqueDds("crowded");
+  ClientUnderTest t(dds, "crowded");
+  std::map<uint64_t, dds::ControlCallError> outcomes;
+  std::vector<uint64_t> ids;
+  for (size_t i = 0; i <= dds::ControlClient::kMaxOutstanding; ++i)
+    ids.push_back(t.client.Send(Op(idl::OP_PAUSE), kCall,
+                                [&](const dds::ControlOutcome& o) { outcomes[o.request_id] = o.error; }));
+  EXPECT_EQ(t.client.Dispatch(), dds::ControlClient::kMaxOutstanding + 1);
+  ASSERT_EQ(outcomes.size(), ids.size());
+  EXPECT_EQ(outcomes.at(ids.front()), dds::ControlCallError::kNoServer);  // the outcome it had when given up
+  EXPECT_EQ(outcomes.at(ids.back()), dds::ControlCallError::kNoServer);
 }
 
 // A server that reads requests and answers only what the test tells it to.
