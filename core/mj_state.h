@@ -31,7 +31,9 @@ void RestoreMjData(const mjModel_* m, mjData_* d, StateReader& in);
 uint64_t ModelFingerprint(const mjModel_* m);
 
 // The last frame whose time (frame x step) a snapshot may carry: 2^62 ns.
-inline uint64_t MaxFrame(int64_t step_ns) { return (uint64_t{1} << 62) / static_cast<uint64_t>(step_ns); }
+inline uint64_t MaxFrame(int64_t step_ns) {
+  return step_ns > 0 ? (uint64_t{1} << 62) / static_cast<uint64_t>(step_ns) : 0;
+}
 // A world's frame counter read back from a snapshot: past MaxFrame fails the reader and gives 0.
 inline uint64_t RestoreFrame(StateReader& in, int64_t step_ns) {
   const uint64_t frame = in.Get<uint64_t>();

@@ -59,15 +59,16 @@ std::vector<std::string> ValidateScene(const Scene& s) {
   c.Range("field.boundary_width_goal_line", f.boundary_width_goal_line, f.goal_depth + f.goal_wall_thickness, 10);
   c.Range("field.goal_width", f.goal_width, 0.1, f.width);
   c.Positive("field.goal_depth", f.goal_depth);
-  c.Positive("field.goal_height", f.goal_height);
-  c.Positive("field.goal_wall_thickness", f.goal_wall_thickness);
+  // Sizes of things on a field: positive and at most 10 m (a wall 1e300 m thick was NaN at the first step).
+  c.Range("field.goal_height", f.goal_height, 1e-4, 10);
+  c.Range("field.goal_wall_thickness", f.goal_wall_thickness, 1e-4, 10);
   c.Range("field.penalty_area_depth", f.penalty_area_depth, 0, f.length / 2);
   c.Range("field.penalty_area_width", f.penalty_area_width, 0, f.width);
   c.Range("field.center_circle_radius", f.center_circle_radius, 0, f.width / 2);
-  c.Positive("field.line_thickness", f.line_thickness);
+  c.Range("field.line_thickness", f.line_thickness, 1e-4, 10);
   c.Range("field.goal_center_to_penalty_mark", f.goal_center_to_penalty_mark, 0, f.length);
-  c.Positive("field.wall_height", f.wall_height);
-  c.Positive("field.wall_thickness", f.wall_thickness);
+  c.Range("field.wall_height", f.wall_height, 1e-4, 10);
+  c.Range("field.wall_thickness", f.wall_thickness, 1e-4, 10);
   c.Range("field.friction", f.friction, 0, 5);
 
   const BallParams& b = s.ball;

@@ -227,6 +227,8 @@ void ReadScene(MapReader m, const std::string& base_dir, LeggedScene* s, Errors*
   const YAML::Node robots = m.Child("robots");
   if (robots && !robots.IsSequence()) {
     m.Fail("robots", "expected a list");
+  } else if (robots && robots.size() > kMaxLeggedRobots) {  // before any model is read
+    m.Fail("robots", fmt::format("at most {} robots (the list has {})", kMaxLeggedRobots, robots.size()));
   } else if (robots) {
     std::map<std::string, std::string> models;
     for (size_t i = 0; i < robots.size(); ++i) {

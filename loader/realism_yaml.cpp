@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 
 #include "loader/text_file.h"
 #include "loader/yaml_reader.h"
@@ -99,6 +100,22 @@ void ReadSceneRealism(MapReader& m, SensorRealism* realism, std::vector<std::str
 
 std::string DefaultRealismDir() { return TURF_REALISM_DIR; }
 
+namespace {
+
+// Only blank lines and comments.
+bool Blank(const std::string& text) {
+  size_t line = 0;
+  while (line < text.size()) {
+    const size_t end = std::min(text.find('\n', line), text.size());
+    const size_t first = text.find_first_not_of(" \t\r", line);
+    if (first < end && text[first] != '#') return false;
+    line = end + 1;
+  }
+  return true;
+}
+
+}  // namespace
+
 RealismLoadResult ParseRealismYaml(const std::string& yaml_text, const SensorRealism& base) {
   RealismLoadResult result;
   if (yaml_text.size() > kMaxRealismBytes) {
@@ -106,10 +123,13 @@ RealismLoadResult ParseRealismYaml(const std::string& yaml_text, const SensorRea
     return result;
   }
   try {
-    const YAML::Node root = YAML::Load(yaml_text);
-    if (!root.IsMap() && !root.IsNull()) {
-      result.errors.push_back("expected a map of realism settings");
-      return result;
+    // One document, read as scene files are (a second one, or garbage after `...`, was ignored); a text of only
+    // comments and blank lines changes nothing.
+    YAML::Node root;
+    if (!Blank(yaml_text)) {
+      std::optional<YAML::Node> document = yaml::LoadSceneDocument(yaml_text, &result.errors);
+      if (!document) return result;
+      root = *document;
     }
     SensorRealism realism = base;
     ReadRealism(MapReader(root, "", &result.errors), &realism);

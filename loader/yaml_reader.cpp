@@ -183,6 +183,7 @@ MapReader::MapReader(const YAML::Node& node, std::string path, Errors* errors)
     errors_->push_back(Message(path_, node, fmt::format("expected a map, got {}", Describe(node))));
     return;
   }
+  std::set<std::string> seen;  // a file's keys are many at most in a crafted one: no scan of them all per key
   for (const auto& pair : node) {
     if (!pair.first.IsScalar()) {
       errors_->push_back(
@@ -190,9 +191,7 @@ MapReader::MapReader(const YAML::Node& node, std::string path, Errors* errors)
       continue;
     }
     const std::string& key = pair.first.Scalar();
-    const bool duplicate =
-        std::any_of(entries_.begin(), entries_.end(), [&key](const Entry& e) { return e.key == key; });
-    if (duplicate) {
+    if (!seen.insert(key).second) {
       errors_->push_back(Message(PathOf(key), pair.first, "duplicate key"));
       continue;
     }

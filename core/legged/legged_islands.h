@@ -59,6 +59,7 @@ class LeggedIslands : Pinned {
   int RobotIndex(const std::string& name) const;
   int RobotCount() const { return static_cast<int>(scene_.robots.size()); }
   int JointIndex(int robot, const std::string& joint) const;
+  int JointCount(int robot) const { return WorldOf(robot).JointCount(SlotOf(robot)); }
   LeggedJointInfo JointInfo(int robot, int joint) const;
   double RobotMass(int robot) const;
   std::array<double, 3> RobotCenterOfMass(int robot) const;

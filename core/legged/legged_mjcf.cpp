@@ -36,6 +36,18 @@ void PrefixNames(XMLElement* e, const std::string& prefix) {
   for (XMLElement* c = e->FirstChildElement(); c != nullptr; c = c->NextSiblingElement()) PrefixNames(c, prefix);
 }
 
+// Elements a robot file may not hold: files read from elsewhere (<include>), and generators and assets whose sizes
+// MuJoCo 2.2.2 takes as they come (a 60000 x 60000 texture crashed it; a 400 x 400 composite took minutes to
+// compile, deaf to signals). The first found in `e`'s subtree, or null.
+const char* Refused(const XMLElement* e) {
+  static constexpr const char* kRefused[] = {"include", "composite", "flexcomp", "skin", "texture", "hfield"};
+  for (const char* name : kRefused)
+    if (std::strcmp(e->Name(), name) == 0) return name;
+  for (const XMLElement* c = e->FirstChildElement(); c != nullptr; c = c->NextSiblingElement())
+    if (const char* found = Refused(c)) return found;
+  return nullptr;
+}
+
 bool ReadVector(const char* text, double* out, int n) {
   std::istringstream in(text);
   for (int i = 0; i < n; ++i) {
@@ -167,6 +179,10 @@ void AddRobot(const LeggedRobot& r, XMLElement* out_root, std::vector<std::strin
   const char* angle = compiler != nullptr ? compiler->Attribute("angle") : nullptr;
   if (angle == nullptr || std::strcmp(angle, "radian") != 0) {
     errors->push_back(fmt::format("robot {} ({}): needs <compiler angle=\"radian\"/>", r.name, r.model));
+    return;
+  }
+  if (const char* refused = Refused(root)) {
+    errors->push_back(fmt::format("robot {} ({}): <{}> is not supported in a robot file", r.name, r.model, refused));
     return;
   }
   XMLDocument* out = out_root->GetDocument();

@@ -5,18 +5,35 @@
 #include <cmath>
 #include <set>
 
+#include "core/legged/placement_limits.h"
+
 namespace turf {
 
 namespace {
 
 bool Positive(double v) { return std::isfinite(v) && v > 0.0; }
 bool NonNegative(double v) { return std::isfinite(v) && v >= 0.0; }
+bool Within(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
+
+// Upper bounds of a scene's numbers: past them MuJoCo's first steps are NaN (a ball of 1e300 kg, friction 1e300, air
+// of 1e12 kg/m^3, a robot at 1e20 m), whatever the scene meant.
+constexpr double kMaxFieldSize = 1000.0;    // m: every size of the field
+constexpr double kMaxBallRadius = 1.0;      // m
+constexpr double kMaxBallMass = 100.0;      // kg
+constexpr double kMaxFriction = 100.0;      // MuJoCo's sliding friction coefficient
+constexpr double kMaxFluidDensity = 1e4;    // kg/m^3 (water: 1000)
+constexpr double kMaxFluidViscosity = 1e3;  // Pa s (water: 0.001)
+constexpr double kMinLeggedStep = 1e-4;     // s: a smaller step is 0 ns of simulated time, or near it
 
 }  // namespace
 
 std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
   std::vector<std::string> e;
-  if (!(s.physics.step > 0.0 && s.physics.step <= 0.02)) e.push_back("physics.step must be in (0, 0.02] s");
+  if (!Within(s.physics.step, kMinLeggedStep, 0.02)) e.push_back("physics.step must be in [0.0001, 0.02] s");
+  if (!Within(s.physics.fluid_density, 0.0, kMaxFluidDensity) ||
+      !Within(s.physics.fluid_viscosity, 0.0, kMaxFluidViscosity))
+    e.push_back(fmt::format("physics: fluid_density must be in [0, {}] kg/m^3, fluid_viscosity in [0, {}] Pa s",
+                            kMaxFluidDensity, kMaxFluidViscosity));
   if (s.physics.solver_iterations < 1 || s.physics.solver_iterations > 1000)
     e.push_back("physics.solver_iterations must be 1..1000");
   if (s.physics.island_threads < 1 || s.physics.island_threads > 8) e.push_back("physics.island_threads must be 1..8");
@@ -29,7 +46,8 @@ std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
     e.push_back("physics.body_drag must be finite and not negative");
   if (!Positive(s.rates.joint_state_hz) || s.rates.joint_state_hz * s.physics.step > 1.0)
     e.push_back("rates.joint_state_hz must be positive and at most 1/physics.step");
-  if (!Positive(s.ground_friction)) e.push_back("ground_friction must be positive");
+  if (!Positive(s.ground_friction) || s.ground_friction > kMaxFriction)
+    e.push_back(fmt::format("ground_friction must be in (0, {}]", kMaxFriction));
   if (s.contacts.enabled) {
     const OdeContactLaw& c = s.contacts;
     if (!Positive(c.reference_step) || !NonNegative(c.surface_layer) || !Positive(c.world_erp) || c.world_erp > 1 ||
@@ -53,14 +71,21 @@ std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
   }
   if (s.field.enabled) {
     const Field3d& f = s.field;
-    for (double v : {f.length, f.width, f.goal_width, f.goal_depth, f.goal_height, f.goal_wall, f.ball_radius,
-                     f.ball_mass, f.wall_distance}) {
-      if (!Positive(v)) e.push_back("field: every size and the ball's mass must be positive");
+    for (double v : {f.length, f.width, f.goal_width, f.goal_depth, f.goal_height, f.goal_wall, f.wall_distance}) {
+      if (!Positive(v) || v > kMaxFieldSize)
+        e.push_back(fmt::format("field: every size must be in (0, {}] m", kMaxFieldSize));
     }
-    if (!(std::isfinite(f.ball_x) && std::isfinite(f.ball_y))) e.push_back("field: ball start must be finite");
+    if (!Positive(f.ball_radius) || f.ball_radius > kMaxBallRadius || !Positive(f.ball_mass) ||
+        f.ball_mass > kMaxBallMass)
+      e.push_back(fmt::format("field: ball_radius must be in (0, {}] m, ball_mass in (0, {}] kg", kMaxBallRadius,
+                              kMaxBallMass));
+    if (!(Within(f.ball_x, -kMaxLeggedPlacement, kMaxLeggedPlacement) &&
+          Within(f.ball_y, -kMaxLeggedPlacement, kMaxLeggedPlacement)))
+      e.push_back(fmt::format("field: ball start must be within {} m of the origin", kMaxLeggedPlacement));
     for (double v :
          {f.ball_friction[0], f.ball_friction[1], f.ball_friction[2], f.ball_linear_drag, f.ball_angular_drag})
-      if (!NonNegative(v)) e.push_back("field: the ball's friction and drag must be finite and not negative");
+      if (!Within(v, 0.0, kMaxFriction))
+        e.push_back(fmt::format("field: the ball's friction and drag must be in [0, {}]", kMaxFriction));
     if (f.ball_priority < 0) e.push_back("field: ball_priority must not be negative");
     if (f.ball_condim != 1 && f.ball_condim != 3 && f.ball_condim != 4 && f.ball_condim != 6)
       e.push_back("field: ball_condim must be 1, 3, 4 or 6");
@@ -73,6 +98,8 @@ std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
           "and damping");
   }
   if (s.robots.empty()) e.push_back("robots: at least one robot");
+  if (s.robots.size() > kMaxLeggedRobots)
+    e.push_back(fmt::format("robots: at most {} (there are {})", kMaxLeggedRobots, s.robots.size()));
   std::set<std::string> names;
   for (const LeggedRobot& r : s.robots) {
     const std::string where = fmt::format("robots.{}", r.name);
@@ -80,8 +107,10 @@ std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
       e.push_back(fmt::format("{}: name must be non-empty without '/', spaces or XML characters", where));
     if (!names.insert(r.name).second) e.push_back(fmt::format("{}: duplicate name", where));
     if (r.model_xml.empty()) e.push_back(fmt::format("{}: no model", where));
-    if (!(std::isfinite(r.x) && std::isfinite(r.y) && std::isfinite(r.yaw)))
-      e.push_back(fmt::format("{}: pose must be finite", where));
+    if (!(Within(r.x, -kMaxLeggedPlacement, kMaxLeggedPlacement) &&
+          Within(r.y, -kMaxLeggedPlacement, kMaxLeggedPlacement) && std::isfinite(r.yaw)))
+      e.push_back(
+          fmt::format("{}: pose must be finite, x and y within {} m of the origin", where, kMaxLeggedPlacement));
     if (r.z && !(std::isfinite(*r.z) && *r.z >= 0.0 && *r.z <= 10.0))
       e.push_back(fmt::format("{}: z must be in [0, 10] m", where));
     std::set<std::string> joints;

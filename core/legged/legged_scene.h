@@ -199,6 +199,10 @@ struct LeggedScene {
 
 // Problems with the values (not with the MJCF text, which the world compiles);
 // empty when valid.
+// At most this many robots in a scene (RCSSServerMJ's match: 22): MuJoCo 2.2.2's constraint arrays grow with the
+// square of the contacts a scene allows.
+inline constexpr size_t kMaxLeggedRobots = 32;
+
 std::vector<std::string> ValidateLeggedScene(const LeggedScene& scene);
 
 }  // namespace turf

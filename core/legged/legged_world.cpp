@@ -213,18 +213,22 @@ void LeggedWorld::AcceptState() { last_good_.Accept(model_.get(), data_.get()); 
 
 PlacementError LeggedWorld::PlaceRobot(int robot, const RobotPlacement& p) {
   if (robot < 0 || robot >= RobotCount() || robots_[robot].root_qpos < 0) return PlacementError::kUnknownRobot;
-  double norm = 0.0;
   for (double v : p.position)
     if (!std::isfinite(v)) return PlacementError::kNotFinite;
+  // Any finite quaternion of some length, normalized without overflow: scaled by its largest component first (the
+  // squares of 1e200 were infinite, and the robot got a zero quaternion).
+  double scale = 0.0;
   for (double v : p.orientation) {
     if (!std::isfinite(v)) return PlacementError::kNotFinite;
-    norm += v * v;
+    scale = std::max(scale, std::abs(v));
   }
-  if (norm < 1e-12) return PlacementError::kNotFinite;
+  if (scale < 1e-6) return PlacementError::kNotFinite;
+  double norm = 0.0;
+  for (double v : p.orientation) norm += (v / scale) * (v / scale);
   RobotSlot& r = robots_[robot];
   mjData* d = data_.get();
   for (int k = 0; k < 3; ++k) d->qpos[r.root_qpos + k] = p.position[k];
-  for (int k = 0; k < 4; ++k) d->qpos[r.root_qpos + 3 + k] = p.orientation[k] / std::sqrt(norm);
+  for (int k = 0; k < 4; ++k) d->qpos[r.root_qpos + 3 + k] = p.orientation[k] / scale / std::sqrt(norm);
   for (int k = 0; k < 6; ++k) d->qvel[r.root_dof + k] = 0.0;
   for (JointSlot& j : r.joints) {
     if (p.reset_joints) d->qpos[j.qpos] = j.start_position;
@@ -416,8 +420,12 @@ JointCommandError LeggedWorld::CheckJointCommand(int robot, const JointCommand& 
   return JointCommandError::kOutOfRange;
 }
 
+int LeggedWorld::JointCount(int robot) const { return static_cast<int>(robots_[robot].joints.size()); }
+
 JointCommandError LeggedWorld::CheckJointCommands(int robot, const std::vector<JointCommand>& commands) const {
   if (robot < 0 || robot >= RobotCount()) return JointCommandError::kUnknownRobot;
+  // One entry per joint at most (a batch of a million cost every step a matching of names against all joints).
+  if (commands.size() > robots_[robot].joints.size()) return JointCommandError::kTooMany;
   for (const JointCommand& c : commands) {
     const JointCommandError e = CheckJointCommand(robot, c);
     if (e != JointCommandError::kOk) return e;

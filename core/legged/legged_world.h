@@ -243,6 +243,7 @@ class LeggedWorld : Pinned {
   int RobotIndex(const std::string& name) const;  // -1 if unknown
   int RobotCount() const;
   int JointIndex(int robot, const std::string& joint) const;  // -1 if unknown
+  int JointCount(int robot) const;
   // A joint's range and effort limit (N m, PD mode's clamp); all zero if unknown.
   LeggedJointInfo JointInfo(int robot, int joint) const;
   double RobotMass(int robot) const;  // kg, every body of the robot; 0 if unknown

@@ -177,8 +177,15 @@ class BoosterSdkBridge::Impl {
   // On a Fast DDS thread.
   void Command(const Robot& r, const bi::LowCmd_& cmd, int64_t source_ns) {
     const int64_t age_ns = WallNs() - source_ns;
-    if (age_ns > std::chrono::nanoseconds(options_.command_timeout).count()) {
+    const int64_t timeout_ns = std::chrono::nanoseconds(options_.command_timeout).count();
+    if (age_ns > timeout_ns) {
       rejects_.Reject("joint_ctrl.stale", fmt::format("robot {}: a command {} ms old", r.name, age_ns / 1'000'000));
+      return;
+    }
+    // Dated ahead by more than the same margin (a sender's clock, or stamps chosen to pass the check above).
+    if (age_ns < -timeout_ns) {
+      rejects_.Reject("joint_ctrl.future",
+                      fmt::format("robot {}: a command dated {} ms ahead", r.name, -age_ns / 1'000'000));
       return;
     }
     const booster::LowCmdDecode d = booster::DecodeLowCmd(cmd, r.model);

@@ -13,7 +13,8 @@
 // Robots: every robot of the scene whose joints are a T1's or a K1's (codecs/booster/robots.h), each on a DDS domain
 // of its own, the first on `domain` (0, as the SDK's examples), the next on domain + 1, in scene order: a program
 // picks its robot by domain, as on a real robot network.
-// Untrusted input: a LowCmd whose source timestamp is older than command_timeout (stale), malformed or out of range is
+// Untrusted input: a LowCmd whose source timestamp is older than command_timeout (stale) or further ahead of this
+// host's clock than that (future), malformed or out of range is
 // refused whole, counted by kind ("joint_ctrl.<error>") and logged at most once a second per kind.
 #pragma once
 

@@ -1,6 +1,7 @@
 #include "participants/common/legged_lockstep.h"
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 
@@ -66,7 +67,15 @@ dds::ControlOutcome LeggedLockstep::SwitchToLockstep(Clock::time_point deadline,
   return answer;
 }
 
-bool LeggedLockstep::Attach(std::chrono::milliseconds timeout, const StopFn& outer_stop, std::string* error) {
+bool LeggedLockstep::Attach(std::chrono::milliseconds timeout, const StopFn& stop) {
+  spdlog::info("waiting for turf-sim's legged scene on {} ({})", DescribeBus(), TopicName(dds::Topic::kLeggedScene));
+  std::string error;
+  if (TryAttach(timeout, stop, &error)) return true;
+  if (!(stop && stop()) && !RestartRequested()) spdlog::error("{}", error);
+  return false;
+}
+
+bool LeggedLockstep::TryAttach(std::chrono::milliseconds timeout, const StopFn& outer_stop, std::string* error) {
   const auto deadline = Clock::now() + timeout;
   // Stalls told before this wait (while the link had turf-sim) do not count.
   if (own_) restart_.Check(own_->AuthenticationsNow(), false);

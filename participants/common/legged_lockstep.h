@@ -41,9 +41,10 @@ class LeggedLockstep : Pinned {
   std::string DescribeBus() const { return bus_.Describe(); }
 
   // Waits for turf-sim's scene, switches it to lockstep, and waits for the state of every robot of the scene (in
-  // scene order); false with `error` set. On a participant of its own, a DDS authentication that stalls meanwhile
-  // restarts the process (stalled_authentication.h: RequestRestart, so `stop` of a participant's main answers true).
-  bool Attach(std::chrono::milliseconds timeout, const StopFn& stop, std::string* error);
+  // scene order); false on timeout (logged as an error) or stop. Logs what it waits for. On a participant of its
+  // own, a DDS authentication that stalls meanwhile restarts the process (stalled_authentication.h: RequestRestart,
+  // so `stop` of a participant's main answers true).
+  bool Attach(std::chrono::milliseconds timeout, const StopFn& stop);
   // Moves, answered before the step; their refusals are reported by the next Step (late ones a step later).
   void SendMove(const std::string& robot, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
                 bool reset_joints, std::chrono::milliseconds timeout);
@@ -62,6 +63,8 @@ class LeggedLockstep : Pinned {
   static idl::Vec3 V3(const Eigen::Vector3d& v);
 
  private:
+  // Attach's steps; false with `error` set.
+  bool TryAttach(std::chrono::milliseconds timeout, const StopFn& stop, std::string* error);
   // Waits for turf-sim's scene and its control endpoints; false on timeout or stop.
   bool WaitForScene(Clock::time_point deadline, const StopFn& stop);
   // Asks for lockstep, again every 0.5 s until answered (a request or reply can miss an endpoint turf-sim has not

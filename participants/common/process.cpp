@@ -6,6 +6,7 @@
 #include <atomic>
 #include <csignal>
 #include <cstdlib>
+#include <ctime>
 
 namespace turf {
 
@@ -23,13 +24,20 @@ bool SetupLogging(const std::string& process_name, const std::string& level) {
 
 namespace {
 std::atomic<int> g_stop_signals{0};
+std::atomic<int64_t> g_first_signal_ns{0};  // CLOCK_MONOTONIC of the first stop signal
 // RequestStop's: not a signal, so that one Ctrl-C after it still stops cleanly (a second one leaves at once).
 std::atomic<bool> g_stop_requested{false};
 std::atomic<bool> g_restart{false};
 
+// Async-signal-safe: clock_gettime, atomics and _exit only.
 void OnStopSignal(int) {
-  g_restart.store(false);                            // a stop from outside wins over a restart
-  if (g_stop_signals.fetch_add(1) >= 1) _exit(130);  // second Ctrl-C: leave now
+  g_restart.store(false);  // a stop from outside wins over a restart
+  timespec t{};
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  const int64_t now = int64_t{t.tv_sec} * 1'000'000'000 + t.tv_nsec;
+  int64_t unset = 0;
+  g_first_signal_ns.compare_exchange_strong(unset, now);  // before the count: a second handler reads it set
+  if (g_stop_signals.fetch_add(1) >= 1 && now - g_first_signal_ns.load() >= kSameStopNs) _exit(130);
 }
 }  // namespace
 
@@ -49,6 +57,11 @@ void RequestRestart() {
   RequestStop();
 }
 bool RestartRequested() { return g_restart.load(); }
+
+std::string Clipped(std::string_view text, size_t max) {
+  if (text.size() <= max) return std::string(text);
+  return fmt::format("{}... ({} bytes)", text.substr(0, max), text.size());
+}
 
 std::string Printable(std::string_view text) {
   std::string out;
@@ -75,7 +88,8 @@ void RejectLog::Reject(const std::string& kind, const std::string& detail) {
   if (it != last_log_.end() && now - it->second < interval_) return;
   const uint64_t since = n - reported_[kind];
   const bool refusal = line_ == LogLine::kRefusal;
-  const std::string text = fmt::format("{}{} ({}): {}", refusal ? "refused " : "", what_, kind, Printable(detail));
+  const std::string text =
+      fmt::format("{}{} ({}): {}", refusal ? "refused " : "", what_, kind, Printable(Clipped(detail, kMaxDetail)));
   const spdlog::level::level_enum level = refusal ? spdlog::level::warn : spdlog::level::info;
   if (since <= 1)
     spdlog::log(level, "{}", text);

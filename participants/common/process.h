@@ -16,8 +16,10 @@ namespace turf {
 // Returns false (and logs why) if `level` is not a spdlog level name.
 bool SetupLogging(const std::string& process_name, const std::string& level);
 
-// SIGINT and SIGTERM set a flag that StopRequested() reads; a second signal
-// exits at once.
+// SIGINT and SIGTERM set a flag that StopRequested() reads. A second signal a second or more after the first
+// exits at once (exit 130: an impatient Ctrl-C); one sooner is the same stop (`turf launch` and a service manager
+// both sending SIGTERM to the process).
+inline constexpr int64_t kSameStopNs = 1'000'000'000;
 void InstallStopSignals();
 bool StopRequested();
 void RequestStop();
@@ -27,6 +29,10 @@ void RequestStop();
 // 2.9.1's stalled handshakes, participants/common/stalled_authentication.h). A SIGINT or SIGTERM cancels it.
 void RequestRestart();
 bool RestartRequested();
+
+// `text` cut to `max` bytes, with how long it was after it ("abc... (4000000 bytes)"): names a peer chose, in log
+// lines and in replies.
+std::string Clipped(std::string_view text, size_t max = 64);
 
 // `text` with its control bytes (below 0x20, and 0x7f) written as \xNN: what a peer sent, safe to log (no forged
 // line, no terminal escape).
@@ -41,6 +47,7 @@ std::string Printable(std::string_view text);
 enum class LogLine { kRefusal, kEvent };
 class RejectLog {
  public:
+  static constexpr size_t kMaxDetail = 512;  // bytes of a detail logged (Clipped)
   explicit RejectLog(std::string what, std::chrono::seconds interval = std::chrono::seconds(5),
                      LogLine line = LogLine::kRefusal);
   void Reject(const std::string& kind, const std::string& detail);

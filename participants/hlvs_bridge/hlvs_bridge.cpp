@@ -143,13 +143,7 @@ class HlvsBridgeImpl {
   }
 
   bool Attach(const std::function<bool()>& stop) {
-    spdlog::info("waiting for turf-sim's legged scene on {} ({})", link_->DescribeBus(),
-                 link_->TopicName(dds::Topic::kLeggedScene));
-    std::string error;
-    if (!link_->Attach(options_.attach_timeout, stop, &error)) {
-      if (!stop()) spdlog::error("{}", error);
-      return false;
-    }
+    if (!link_->Attach(options_.attach_timeout, stop)) return false;
     if (cameras_ != nullptr) cameras_->Attached(link_->state().sim_time_ns());
     steps_ = static_cast<uint32_t>(std::max<long>(1, std::lround(hlvs::kBasicStepMs * 1e-3 / link_->step_s())));
     if (std::abs(steps_ * link_->step_s() - hlvs::kBasicStepMs * 1e-3) > 1e-9)

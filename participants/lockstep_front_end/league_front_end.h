@@ -139,13 +139,7 @@ class LeagueFrontEnd {
         if (!c.monitor) server_->MarkDrop(fd, "turf-sim stopped answering; reconnect when it is back");
       server_->FlushDrops();
     }
-    spdlog::info("waiting for turf-sim's legged scene on {} ({})", link_->DescribeBus(),
-                 link_->TopicName(dds::Topic::kLeggedScene));
-    std::string error;
-    if (!link_->Attach(options_.attach_timeout, stop, &error)) {
-      if (!stop()) spdlog::error("{}", error);
-      return false;
-    }
+    if (!link_->Attach(options_.attach_timeout, stop)) return false;
     steps_ = static_cast<uint32_t>(std::max<long>(1, std::lround(kCycleSeconds / link_->step_s())));
     session_ = self().Start();
     return true;

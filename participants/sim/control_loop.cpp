@@ -233,6 +233,12 @@ void ControlLoop::TakeScheduled() {
 }
 
 void ControlLoop::HandleControl(const idl::SimControl& request) {
+  // The reply carries the client's name back: an oversized one gets none (nor a log line of it).
+  if (request.client().size() > kMaxClientName) {
+    Reject("control.too_large", fmt::format("a request whose client name is {} bytes (at most {}): not answered",
+                                            request.client().size(), kMaxClientName));
+    return;
+  }
   ControlAnswer answer;
   switch (request.op()) {
     case idl::OP_TELEPORT_BALL:
@@ -267,10 +273,14 @@ void ControlLoop::HandleControl(const idl::SimControl& request) {
       answer = {idl::CONTROL_UNKNOWN_OP, fmt::format("unknown op {}", static_cast<int>(request.op()))};
       break;
   }
-  if (!answer.ok()) Reject("control", fmt::format("from '{}': {}", request.client(), answer.reason));
-  Reply(ReplyToOf(request), answer);
-  // Teleports and resets show in the state right away, also while paused.
+  if (!answer.ok()) {
+    Reject("control", fmt::format("from '{}': {}", request.client(), answer.reason));
+    Reply(ReplyToOf(request), answer);
+    return;  // nothing changed: no state to show (a flood of refused requests is no flood of world states)
+  }
+  // Teleports and resets show in the state right away, also while paused: written before the reply, as a STEP's.
   PublishState();
+  Reply(ReplyToOf(request), answer);
 }
 
 ControlAnswer ControlLoop::QueueSteps(const idl::SimControl& request) {

@@ -82,6 +82,8 @@ class ControlLoop : Pinned {
  public:
   // Steps a request served in its caller's thread may run there; more are left to the loop's thread.
   static constexpr uint64_t kInlineStepBudget = 5000;
+  // A control request's client name (echoed in its reply) longer than this is refused unanswered.
+  static constexpr size_t kMaxClientName = 256;
 
   // What a node does for the loop: the requests it handles answer a ControlAnswer.
   class Node {

@@ -10,6 +10,7 @@
 #include "dds/bus.h"
 #include "kernel/legged_kernel.h"
 #include "loader/realism_yaml.h"
+#include "participants/common/process.h"
 #include "participants/sim/control_loop.h"
 #include "participants/sim/kernel_node.h"
 #include "participants/sim/legged_convert.h"
@@ -69,12 +70,15 @@ class LeggedNode final : public KernelNode<LeggedKernel, LeggedPublisher> {
       return {idl::CONTROL_NOT_ALLOWED, "legged robots take joint_commands, not SSL commands"};
     // All of the step's joint commands or none; each converted and checked once.
     const auto& commands = req.joint_commands();
+    if (commands.size() > static_cast<size_t>(kernel_.world().RobotCount()))
+      return {idl::CONTROL_TOO_MANY, fmt::format("{} joint commands for {} robots: at most one each", commands.size(),
+                                                 kernel_.world().RobotCount())};
     if (step_checked_.size() < commands.size()) step_checked_.resize(commands.size());
     for (size_t i = 0; i < commands.size(); ++i) {
       const JointCommandError e = CheckCommand(commands[i], &step_checked_[i]);
       if (e != JointCommandError::kOk)
         return {ControlErrorOf(e),
-                fmt::format("joint command for '{}': {}", commands[i].robot(), JointCommandErrorName(e))};
+                fmt::format("joint command for '{}': {}", Clipped(commands[i].robot()), JointCommandErrorName(e))};
     }
     for (size_t i = 0; i < commands.size(); ++i)
       kernel_.SetJointCommands(kernel_.world().RobotIndex(commands[i].robot()), step_checked_[i]);
@@ -96,7 +100,7 @@ class LeggedNode final : public KernelNode<LeggedKernel, LeggedPublisher> {
     p.reset_joints = t.reset_joints();
     const Error e = kernel_.PlaceRobot(kernel_.world().RobotIndex(t.robot()), p);
     if (e == Error::kOk) return {};
-    return {ControlErrorOf(e), fmt::format("robot '{}': {}", t.robot(), ErrorName(e))};
+    return {ControlErrorOf(e), fmt::format("robot '{}': {}", Clipped(t.robot()), ErrorName(e))};
   }
 
   void ResetWorld() override {
@@ -120,6 +124,8 @@ class LeggedNode final : public KernelNode<LeggedKernel, LeggedPublisher> {
   JointCommandError CheckCommand(const idl::JointCommand& in, std::vector<JointCommand>* commands) const {
     const int robot = kernel_.world().RobotIndex(in.robot());
     if (robot < 0) return JointCommandError::kUnknownRobot;
+    // Before anything is converted or kept: one entry per joint at most.
+    if (in.joints().size() > static_cast<size_t>(kernel_.world().JointCount(robot))) return JointCommandError::kTooMany;
     commands->resize(in.joints().size());
     for (size_t i = 0; i < commands->size(); ++i) {
       if (!FromIdl(in.joints()[i], &(*commands)[i])) return JointCommandError::kOutOfRange;

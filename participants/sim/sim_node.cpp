@@ -78,12 +78,22 @@ class SslNode final : public KernelNode<SslKernel, SslPublisher> {
     return command_readers_[0]->Overflowed() + command_readers_[1]->Overflowed();
   }
 
+  // All or nothing, as the STEP's contract says (and the legged node's): every command is checked before any is
+  // applied, and a STEP with one refused command is refused whole, naming it.
   ControlAnswer ApplyStepCommands(const idl::SimControl& req) override {
-    for (const idl::SslRobotCommand& c : req.commands()) {
+    std::vector<RobotCommand> commands(req.commands().size());
+    for (size_t i = 0; i < commands.size(); ++i) {
+      const idl::SslRobotCommand& in = req.commands()[i];
       Team team;
-      if (!FromIdl(c.team(), &team)) return {idl::CONTROL_UNKNOWN_ENUM, "a command has an unknown team"};
-      ApplyCommand(c, team);
+      if (!FromIdl(in.team(), &team))
+        return {idl::CONTROL_UNKNOWN_ENUM, fmt::format("command {} of the STEP has an unknown team", i)};
+      InputError e = FromIdl(in, &commands[i]);
+      if (e == InputError::kOk) e = kernel_.CheckCommandInput(team, commands[i]);
+      if (e != InputError::kOk)
+        return {ControlErrorOf(e), fmt::format("command {} of the STEP ({} robot {}): {}", i, TeamName(team),
+                                               static_cast<int>(in.id()), InputErrorName(e))};
     }
+    for (const RobotCommand& c : commands) kernel_.Command(c.team, c);
     return {};
   }
 

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <functional>
@@ -32,6 +33,13 @@ namespace turf {
 namespace {
 
 void MujocoWarning(const char* message) { spdlog::warn("MuJoCo: {}", message); }
+// MuJoCo's fatal errors (a model it cannot allocate): its own handler exits, or waits for Enter when stdin is open.
+// Named, then the exit code of a configuration turf-sim cannot run.
+[[noreturn]] void MujocoError(const char* message) {
+  spdlog::critical("MuJoCo: {} (the scene or a robot model asks for what MuJoCo cannot make)", message);
+  spdlog::default_logger()->flush();
+  std::_Exit(kExitBadConfig);
+}
 
 // The realism preset or file named on the command line.
 std::optional<SensorRealism> LoadRealismOption(const std::string& realism) {
@@ -262,6 +270,7 @@ bool ApplyTimeMode(const std::string& speed, bool lockstep, SimNodeOptions& node
 int RunSim(SimCommandLine command_line) {
   if (!ApplyTimeMode(command_line.speed, command_line.lockstep, command_line.node)) return kExitBadConfig;
   mju_user_warning = MujocoWarning;
+  mju_user_error = MujocoError;
   return IsLeggedSceneFile(command_line.scene_path) ? RunLegged(command_line) : RunSsl(command_line);
 }
 

@@ -167,8 +167,9 @@ TEST_F(BoosterSdkTest, BadCommandsAreRefusedAndTheRobotHoldsItsLastCommand) {
   bi::LowCmd_ nan = StandWithHeadDown();
   nan.motor_cmd()[1].q(std::nanf(""));
   EXPECT_TRUE(Send(nan, 0s, "joint_ctrl.not_finite"));
-  EXPECT_TRUE(Send(StandWithHeadDown(), 10s, "joint_ctrl.stale"));  // a command 10 s old
-  EXPECT_EQ(rig_.bridge().Stats().commands, taken);                 // none of them reached turf-sim
+  EXPECT_TRUE(Send(StandWithHeadDown(), 10s, "joint_ctrl.stale"));       // a command 10 s old
+  EXPECT_TRUE(Send(StandWithHeadDown(), -86400s, "joint_ctrl.future"));  // one dated a day ahead
+  EXPECT_EQ(rig_.bridge().Stats().commands, taken);                      // none of them reached turf-sim
   bi::LowCmd_ beyond = StandWithHeadDown();
   // Garbage far past any joint (a target past the joint's range but within kMaxPdTarget is a command, as on a real
   // servo): turf-sim's validator refuses the whole message.

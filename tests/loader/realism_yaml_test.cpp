@@ -70,10 +70,20 @@ TEST(RealismYaml, BadInputIsRefusedWithTheKey) {
         Case{"camera: {link: {jitter_kind: pink}}", "jitter_kind"}, Case{"command: {loss: 1.5}", "probability"},
         Case{"command: {latency: .nan}", "command.latency"}, Case{"camera: {robot_vanish: -0.1}", "vanish"},
         Case{"command: {burst: {p_bad_to_good: 0}}", "bursts must end"}, Case{"camera: [1, 2", "malformed"},
-        Case{"- 1\n- 2", "expected a map"}}) {
+        Case{"- 1\n- 2", "expected a map"},
+        // One document, as a scene file: a second one (or garbage after its end) was ignored, and "," read as ideal.
+        Case{"camera: {robot_vanish: 0.1}\n---\ncamera: {robot_vanish: 5}\n", "one YAML document"},
+        Case{"camera: {robot_vanish: 0.1}\n...\ngarbage: [\n", "malformed"}, Case{",", "malformed"}}) {
     const RealismLoadResult r = ParseRealismYaml(c.text);
     EXPECT_FALSE(r.realism.has_value()) << c.text;
     EXPECT_TRUE(Mentions(r.errors, c.error)) << c.text << " -> " << (r.errors.empty() ? "no error" : r.errors[0]);
+  }
+}
+
+TEST(RealismYaml, ATextOfOnlyCommentsChangesNothing) {
+  for (const char* text : {"", "\n  \n", "# nothing\n  # here\n"}) {
+    const RealismLoadResult r = ParseRealismYaml(text);
+    EXPECT_TRUE(r.realism.has_value()) << "'" << text << "': " << (r.errors.empty() ? "" : r.errors[0]);
   }
 }
 

@@ -26,6 +26,7 @@
 #include "dds/control_client.h"
 #include "dds/memory_bus.h"
 #include "loader/legged_scene_yaml.h"
+#include "participants/sim/control_loop.h"
 #include "participants/sim/sim_node.h"
 #include "tests/core/test_scenes.h"
 #include "tests/sim/sim_harness.h"
@@ -166,6 +167,33 @@ TEST(MemoryBusNode, RefusalsReturnTheirControlError) {
   EXPECT_EQ(sim.node().Rejected("command.not_finite"), 1u);
 }
 
+// A request whose client name is oversized gets no reply (its name would be echoed) and is counted; a refused
+// request publishes no world state (a flood of them was a flood of states); an accepted one does.
+TEST(MemoryBusNode, OversizedClientNamesAreNotAnsweredAndRefusalsPublishNoState) {
+  dds::MemoryBus bus("mem");
+  Inbox<idl::WorldStatePubSubType> states(bus, dds::Topic::kWorldState);
+  Inbox<idl::SimControlReplyPubSubType> replies(bus, dds::Topic::kControlReply);
+  test::SimUnderTest sim(test::OneRobot(), bus, TimeMode::kLockstep);
+  dds::ControlClient client(bus, "test");
+  auto raw = bus.MakeWriter(dds::Topic::kControl);
+  idl::SimControl pause = test::Op(idl::OP_PAUSE);
+  pause.client(std::string(ControlLoop::kMaxClientName + 1, 'c'));
+  pause.request_id(1);
+  raw->Write(pause);
+  // An accepted request's state is written before its reply: the count after it is settled.
+  ASSERT_TRUE(client.Call(test::Op(idl::OP_RESUME), kDeadline).ok());
+  ASSERT_TRUE(states.WaitFor([](const auto& s) { return !s.empty(); }));
+  const size_t before = states.samples().size();
+  for (int i = 0; i < 20; ++i)
+    EXPECT_EQ(client.Call(test::Op(idl::OP_SEEK), kDeadline).code(), idl::CONTROL_NOT_ALLOWED);
+  ASSERT_TRUE(client.Call(test::Op(idl::OP_PAUSE), kDeadline).ok());
+  ASSERT_TRUE(states.WaitFor([&](const auto& s) { return s.size() > before; }));
+  EXPECT_EQ(states.samples().size(), before + 1) << "a refused request published a world state";
+  ASSERT_TRUE(replies.WaitFor([](const auto& r) { return r.size() >= 22; }));
+  for (const idl::SimControlReply& r : replies.samples()) EXPECT_EQ(r.client(), "test");
+  EXPECT_EQ(sim.node().Rejected("control.too_large"), 1u);
+}
+
 LeggedScene SimSparkScene() {
   LeggedSceneLoadResult r = LoadLeggedSceneFile(TURF_SOURCE_DIR "/configs/scenes/simspark_3d.yaml");
   if (!r.scene) throw std::runtime_error(r.errors.front());
@@ -197,6 +225,24 @@ TEST(MemoryBusNode, ALeggedSceneStepsAndPublishesJointStates) {
     EXPECT_GE(j.sim_time_ns(), last_ns[j.robot()]) << "in order per robot";
     last_ns[j.robot()] = j.sim_time_ns();
   }
+
+  // One entry per joint at most, on the topic and in a STEP: more is too_many and changes nothing.
+  idl::JointCommand many;
+  many.robot(joints.samples().back().robot());
+  for (int i = 0; i < 1000; ++i) {
+    idl::JointTarget t;
+    t.name("hj1");
+    t.mode(idl::JOINT_VELOCITY);
+    many.joints().push_back(t);
+  }
+  idl::SimControl step = test::StepRequest(1);
+  step.joint_commands().push_back(many);
+  const dds::ControlOutcome refused = client.Call(step, kDeadline);
+  EXPECT_EQ(refused.code(), idl::CONTROL_TOO_MANY) << refused.Describe();
+  auto writer = bus.MakeWriter(dds::Topic::kRobotJointCommand);
+  writer->Write(many);
+  ASSERT_TRUE(client.Call(test::StepRequest(1), kDeadline).ok());  // commands are taken before the step
+  EXPECT_EQ(sim.node().Rejected("joint_command.too_many"), 1u);
 
   // The scene description is latched: a reader made now still gets it.
   Inbox<idl::LeggedSceneInfoPubSubType> scene(bus, dds::Topic::kLeggedScene);

@@ -227,6 +227,39 @@ TEST_P(SslNodeScenes, CamerasReportWhatEachCameraSees) {
   EXPECT_DOUBLE_EQ(client.field()->max_flat_kick_speed(), 6.5);
 }
 
+// A STEP's commands are applied all or none: one refused command (NaN, an unknown robot, an unknown team) refuses the
+// STEP whole, naming it, and the good command before it moves nothing.
+TEST_P(SslNodeScenes, AStepWithOneBadCommandIsRefusedWholeAndMovesNothing) {
+  const TestTransport net(GetParam(), "atomic");
+  SimUnderTest sim(test::OneRobot(), net, TimeMode::kLockstep);
+  Client client(net);
+  ASSERT_TRUE(client.WaitMatched(Client::kNoState));
+  auto bad_team = LocalVelocity(idl::TEAM_BLUE, 0, 1.0, 0.0, 0.0);
+  bad_team.team(static_cast<idl::Team>(7));
+  const struct {
+    idl::SslRobotCommand bad;
+    idl::ControlError error;
+  } cases[] = {{LocalVelocity(idl::TEAM_BLUE, 0, NAN, 0.0, 0.0), idl::CONTROL_NOT_FINITE},
+               {LocalVelocity(idl::TEAM_BLUE, 9, 1.0, 0.0, 0.0), idl::CONTROL_UNKNOWN_ROBOT},
+               {bad_team, idl::CONTROL_UNKNOWN_ENUM}};
+  for (const auto& c : cases) {
+    idl::SimControl step = StepRequest(10);
+    step.commands().push_back(LocalVelocity(idl::TEAM_BLUE, 0, 1.5, 0.0, 0.0));
+    step.commands().push_back(c.bad);
+    const std::optional<idl::SimControlReply> reply = client.Control(step);
+    ASSERT_TRUE(reply);
+    EXPECT_EQ(reply->result(), idl::RESULT_REJECTED);
+    EXPECT_EQ(reply->error(), c.error) << reply->reason();
+    EXPECT_NE(reply->reason().find("command 1 of the STEP"), std::string::npos) << reply->reason();
+  }
+  ASSERT_TRUE(Ok(client.Control(StepRequest(200))));
+  ASSERT_TRUE(client.WaitState([](const idl::WorldState& s) { return s.frame() == 200; }));
+  const idl::RobotState* r = FindRobot(client.state(), idl::TEAM_BLUE, 0);
+  ASSERT_NE(r, nullptr);
+  EXPECT_DOUBLE_EQ(r->position().x(), 0.0) << "a refused STEP's command moved it";
+  EXPECT_DOUBLE_EQ(r->position().y(), 0.0);
+}
+
 // The same scene and the same lockstep command stream, run twice, give identical worlds.
 TEST_P(SslNodeScenes, LockstepRunsAreIdentical) {
   auto run = [&](const char* name) {

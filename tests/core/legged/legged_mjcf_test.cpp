@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <tuple>
 
 #include "core/legged/legged_mjcf.h"
 #include "core/legged/legged_world.h"
@@ -62,6 +64,32 @@ TEST(LeggedMjcfTest, RefusesBadRobotFiles) {
   EXPECT_THROW(LeggedWorld{s}, std::invalid_argument);
   s.robots.push_back(s.robots[0]);
   EXPECT_FALSE(ValidateLeggedScene(s).empty());  // duplicate name
+}
+
+// What MuJoCo 2.2.2 takes as it comes is refused before it sees it: a huge texture crashed it, a big composite
+// took minutes, an include reads another file.
+TEST(LeggedMjcfTest, RefusesIncludesGeneratorsAndSizedAssets) {
+  const std::string body =
+      "<worldbody><body name=\"torso\"><freejoint name=\"root\"/><geom name=\"g\" type=\"sphere\" "
+      "size=\"0.1\"/>{}</body></worldbody>";
+  for (const auto& [asset, inside, element] :
+       {std::tuple<std::string, std::string, std::string>{
+            "<texture name=\"t\" builtin=\"checker\" width=\"60000\" height=\"60000\"/>", "", "texture"},
+        {"<hfield name=\"h\" nrow=\"50000\" ncol=\"50000\" size=\"1 1 1 0.1\"/>", "", "hfield"},
+        {"",
+         "<body name=\"c\"><composite type=\"grid\" count=\"400 400 1\" spacing=\"0.01\"><geom "
+         "size=\"0.005\"/></composite></body>",
+         "composite"},
+        {"", "<include file=\"/dev/zero\"/>", "include"}}) {
+    LeggedScene s = NaoScene(1);
+    std::string world = body;
+    world.replace(world.find("{}"), 2, inside);
+    s.robots[0].model_xml =
+        "<mujoco model=\"x\"><compiler angle=\"radian\"/><asset>" + asset + "</asset>" + world + "</mujoco>";
+    const LeggedMjcf m = ComposeLeggedMjcf(s);
+    ASSERT_FALSE(m.errors.empty()) << element;
+    EXPECT_NE(m.errors[0].find("<" + element + "> is not supported"), std::string::npos) << m.errors[0];
+  }
 }
 
 }  // namespace

@@ -95,6 +95,20 @@ TEST(LeggedPlacementTest, RefusesBadPlacements) {
   EXPECT_EQ(no_field.PlaceBall({0, 0, 1}, {0, 0, 0}), PlacementError::kNoBall);
 }
 
+// Any finite quaternion is a rotation, however long: 1e200's squares were infinite and gave a zero quaternion.
+TEST(LeggedPlacementTest, AHugeQuaternionIsNormalizedWithoutOverflow) {
+  LeggedWorld w(NaoScene(1, /*field=*/true));
+  RobotPlacement p;
+  p.position = {0, 0, 0.4};
+  p.orientation = {1e200, 0, 0, 1e200};  // 90 degrees about z
+  ASSERT_EQ(w.PlaceRobot(0, p), PlacementError::kOk);
+  const std::array<double, 4> q = w.State().robots[0].base_orientation;
+  EXPECT_NEAR(q[0], M_SQRT1_2, 1e-12);
+  EXPECT_NEAR(q[3], M_SQRT1_2, 1e-12);
+  EXPECT_EQ(q[1], 0.0);
+  EXPECT_EQ(q[2], 0.0);
+}
+
 TEST(LeggedPlacementTest, PlaceBallSetsPositionAndVelocity) {
   LeggedWorld w(NaoScene(1, /*field=*/true));
   ASSERT_EQ(w.PlaceBall({5.0, 1.0, 0.042}, {2.0, 0.0, 0.0}), PlacementError::kOk);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "core/legged/legged_mjcf.h"
 #include "core/legged/legged_world.h"
@@ -204,6 +205,23 @@ TEST(LeggedSceneYamlTest, RefusesBadInput) {
                                             dir),
                        "robots[0].x"));
   EXPECT_FALSE(ParseLeggedSceneYaml("kind: legged\n", dir).errors.empty());  // no robots
+  // Numbers past which MuJoCo's first steps are NaN, a step of 0 ns, more robots than any match.
+  const std::string robot = "robots:\n  - {name: a, model: ../robots/nao.xml}\n";
+  for (const auto& [yaml, error] : std::vector<std::pair<std::string, std::string>>{
+           {"physics: {step: 1e-12}\n" + robot, "physics.step"},
+           {"physics: {fluid_density: 1e12}\n" + robot, "fluid_density"},
+           {"physics: {fluid_viscosity: -1}\n" + robot, "fluid_viscosity"},
+           {"ground_friction: 1e300\n" + robot, "ground_friction"},
+           {"field: {ball_mass: 1e300}\n" + robot, "ball_mass"},
+           {"field: {length: 1e300}\n" + robot, "every size"},
+           {"field: {ball_start: [1e20, 0]}\n" + robot, "ball start"},
+           {"robots:\n  - {name: a, model: ../robots/nao.xml, x: 1e20}\n", "robots.a: pose"}}) {
+    EXPECT_TRUE(HasError(ParseLeggedSceneYaml("kind: legged\n" + yaml, dir), error)) << yaml;
+  }
+  std::string many = "kind: legged\nrobots:\n";
+  for (size_t i = 0; i <= kMaxLeggedRobots; ++i)
+    many += "  - {name: r" + std::to_string(i) + ", model: ../robots/nao.xml, x: " + std::to_string(i) + "}\n";
+  EXPECT_TRUE(HasError(ParseLeggedSceneYaml(many, dir), "at most 32 robots"));
   EXPECT_FALSE(ParseLeggedSceneYaml("[", dir).errors.empty());
 }
 
