@@ -240,21 +240,26 @@ TEST(SimSparkBridgeTest, SyncModeWaitsForEveryAgentsSyn) {
     b_has_robot = b.Receive(50ms).has_value();
   }
   ASSERT_TRUE(b_has_robot);
-  // Past the grace cycles after scene, both answering.
+  // Past the grace cycles after scene, both answering: b first, so that a's
+  // (syn) is the one that completes each cycle. The other way round, b's
+  // (syn) could reach the bridge after a's had started a grace cycle, count
+  // for the next cycle, and keep b one (syn) ahead for good (a soak run on a
+  // loaded machine: a's lone (syn) below then stepped).
   std::string ma;
   for (int i = 0; i < 8; ++i) {
-    a.Send("(syn)");
     b.Send("(syn)");
+    a.Send("(syn)");
     ma = a.Receive(10s).value_or("");
     ASSERT_TRUE(b.Receive(10s).has_value());
   }
   // A (syn) sent during b's grace cycles may already count for the next
-  // cycle: drain until both have read everything.
-  for (auto m = a.Receive(300ms); m; m = a.Receive(300ms)) ma = *m;
-  while (b.Receive(300ms)) {
+  // cycle: drain until both have read everything. Quiet for 2 s: on a loaded
+  // machine a cycle's perception came more than 300 ms late (a soak run).
+  for (auto m = a.Receive(2s); m; m = a.Receive(2s)) ma = *m;
+  while (b.Receive(2s)) {
   }
-  a.Send("(syn)");
   b.Send("(syn)");
+  a.Send("(syn)");
   ma = a.Receive(10s).value_or("");
   ASSERT_TRUE(b.Receive(10s).has_value());
   const double t = Time(ma);
