@@ -223,7 +223,7 @@ void ReadScene(MapReader m, const std::string& base_dir, LeggedScene* s, Errors*
   if (m.Has("field")) ReadField(m.Map("field"), &s->field);
   if (m.Has("contacts")) ReadContacts(m.Map("contacts"), &s->contacts);
   if (m.Has("joint_stops")) ReadJointStops(m.Map("joint_stops"), &s->joint_stops);
-  ReadSceneRealism(m, &s->realism, errors);  // encoder and imu apply to legged robots
+  ReadSceneRealism(m, base_dir, &s->realism, errors);  // encoder and imu apply to legged robots
   const YAML::Node robots = m.Child("robots");
   if (robots && !robots.IsSequence()) {
     m.Fail("robots", "expected a list");

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <yaml-cpp/yaml.h>
-#include <algorithm>
 
 #include <algorithm>
 #include <filesystem>
@@ -86,11 +85,12 @@ void ReadRealism(MapReader m, SensorRealism* r) {
   m.Finish();
 }
 
-void ReadSceneRealism(MapReader& m, SensorRealism* realism, std::vector<std::string>* errors) {
+void ReadSceneRealism(MapReader& m, const std::string& base_dir, SensorRealism* realism,
+                      std::vector<std::string>* errors) {
   if (!m.Has("realism")) return;
   const YAML::Node node = m.Child("realism");
   if (node.IsScalar()) {
-    RealismLoadResult preset = LoadRealism(node.as<std::string>());
+    RealismLoadResult preset = LoadRealism(RealismSpecFrom(node.as<std::string>(), base_dir));
     for (const std::string& e : preset.errors) errors->push_back("realism: " + e);
     if (preset.realism) *realism = *preset.realism;
   } else {
@@ -152,11 +152,28 @@ std::vector<std::string> RealismPresets(const std::string& dir) {
   return names;
 }
 
+namespace {
+
+bool IsYamlText(const std::string& spec) {
+  return spec.find(':') != std::string::npos || spec.find('{') != std::string::npos;
+}
+
+bool IsPath(const std::string& spec) {
+  return spec.find('/') != std::string::npos || (spec.size() > 5 && spec.substr(spec.size() - 5) == ".yaml");
+}
+
+}  // namespace
+
+std::string RealismSpecFrom(const std::string& spec, const std::string& base_dir) {
+  if (IsYamlText(spec) || !IsPath(spec) || base_dir.empty()) return spec;
+  const std::filesystem::path p(spec);
+  return (p.is_absolute() ? p : std::filesystem::path(base_dir) / p).lexically_normal().string();
+}
+
 RealismLoadResult LoadRealism(const std::string& spec, const std::string& dir, bool allow_paths,
                               const SensorRealism& base) {
-  if (spec.find(':') != std::string::npos || spec.find('{') != std::string::npos) return ParseRealismYaml(spec, base);
-  const bool is_path =
-      spec.find('/') != std::string::npos || (spec.size() > 5 && spec.substr(spec.size() - 5) == ".yaml");
+  if (IsYamlText(spec)) return ParseRealismYaml(spec, base);
+  const bool is_path = IsPath(spec);
   if (is_path && !allow_paths) return {std::nullopt, {"a realism file path is not accepted here; name a preset"}};
   const bool plain_name = !is_path && !spec.empty() &&
                           spec.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") == std::string::npos;

@@ -51,12 +51,18 @@ RealismLoadResult ParseRealismYaml(const std::string& yaml_text, const SensorRea
 RealismLoadResult LoadRealism(const std::string& spec, const std::string& dir = DefaultRealismDir(),
                               bool allow_paths = true, const SensorRealism& base = {});
 
+// `spec` as LoadRealism reads it, a relative file path taken as relative to `base_dir` (the directory of the
+// scene or profile that names it) rather than to the current directory; preset names and YAML text unchanged.
+std::string RealismSpecFrom(const std::string& spec, const std::string& base_dir);
+
 namespace yaml {
 class MapReader;
 }
 // For the scene compiler: reads a realism map.
 void ReadRealism(yaml::MapReader m, SensorRealism* realism);
-// A scene's optional `realism:` key: a preset name (configs/realism/<name>.yaml) or a map.
-void ReadSceneRealism(yaml::MapReader& scene, SensorRealism* realism, std::vector<std::string>* errors);
+// A scene's optional `realism:` key: a preset name (configs/realism/<name>.yaml), a file (a relative path is
+// relative to `base_dir`, the scene's directory) or a map.
+void ReadSceneRealism(yaml::MapReader& scene, const std::string& base_dir, SensorRealism* realism,
+                      std::vector<std::string>* errors);
 
 }  // namespace turf

@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <array>
+#include <filesystem>
 #include <optional>
 #include <utility>
 
@@ -187,7 +188,7 @@ void ReadTeams(MapReader m, Scene* scene, std::vector<RobotSource>* sources, Err
   m.Finish();
 }
 
-void ReadScene(MapReader m, Scene* s, std::vector<RobotSource>* sources, Errors* errors) {
+void ReadScene(MapReader m, const std::string& base_dir, Scene* s, std::vector<RobotSource>* sources, Errors* errors) {
   m.String("name", &s->name);
   m.Uint64("seed", &s->seed);
   yaml::ReadPhysics(m.Map("physics"), &s->physics);
@@ -198,7 +199,7 @@ void ReadScene(MapReader m, Scene* s, std::vector<RobotSource>* sources, Errors*
   m.Int("robots_per_team", &s->robots_per_team);  // before teams: ids are checked against it
   ReadTeams(m.Map("teams"), s, sources, errors);
   ReadCameras(m.Map("cameras"), &s->cameras);
-  ReadSceneRealism(m, &s->realism, errors);
+  ReadSceneRealism(m, base_dir, &s->realism, errors);
   m.Finish();
 }
 
@@ -211,13 +212,13 @@ std::string WithRobotPath(std::string error, const std::vector<RobotSource>& sou
   return error;
 }
 
-SceneLoadResult Parse(const std::string& yaml_text) {
+SceneLoadResult Parse(const std::string& yaml_text, const std::string& base_dir) {
   SceneLoadResult result;
   const std::optional<YAML::Node> document = yaml::LoadSceneDocument(yaml_text, &result.errors);
   if (!document) return result;
   Scene scene;
   std::vector<RobotSource> sources;
-  ReadScene(MapReader(*document, "", &result.errors), &scene, &sources, &result.errors);
+  ReadScene(MapReader(*document, "", &result.errors), base_dir, &scene, &sources, &result.errors);
   for (std::string& error : ValidateScene(scene)) result.errors.push_back(WithRobotPath(std::move(error), sources));
   if (result.errors.empty()) result.scene = std::move(scene);
   return result;
@@ -225,12 +226,14 @@ SceneLoadResult Parse(const std::string& yaml_text) {
 
 }  // namespace
 
-SceneLoadResult ParseSceneYaml(const std::string& yaml_text) {
-  return yaml::ParseGuarded<SceneLoadResult>([&] { return Parse(yaml_text); });
+SceneLoadResult ParseSceneYaml(const std::string& yaml_text, const std::string& base_dir) {
+  return yaml::ParseGuarded<SceneLoadResult>([&] { return Parse(yaml_text, base_dir); });
 }
 
 SceneLoadResult LoadSceneFile(const std::string& path) {
-  return yaml::LoadFile<SceneLoadResult>(path, kMaxFileBytes, ParseSceneYaml);
+  const std::string base_dir = std::filesystem::path(path).parent_path().string();
+  return yaml::LoadFile<SceneLoadResult>(path, kMaxFileBytes,
+                                         [&](const std::string& text) { return ParseSceneYaml(text, base_dir); });
 }
 
 }  // namespace turf

@@ -18,8 +18,8 @@
 //       ids 0..robots_per_team-1 exist; ids not listed start off the field;
 //       x and y are required unless on_field is false
 //   cameras: {rate_hz, height, overlap, focal_length, image_width, image_height}
-//   realism: ideal|realistic|harsh (a preset in configs/realism/) or a map
-//       as in loader/realism_yaml.h
+//   realism: ideal|realistic|harsh (a preset in configs/realism/), a file (relative: to the scene's
+//       directory) or a map as in loader/realism_yaml.h
 #pragma once
 
 #include <string>
@@ -31,8 +31,9 @@ namespace turf {
 
 using SceneLoadResult = LoadResult<Scene>;
 
-// Parses a scene from YAML text, then runs ValidateScene. Never throws.
-SceneLoadResult ParseSceneYaml(const std::string& yaml_text);
+// Parses a scene from YAML text, then runs ValidateScene. A realism file the scene names by a relative path is
+// read relative to `base_dir` (the scene file's directory; empty: the current one). Never throws.
+SceneLoadResult ParseSceneYaml(const std::string& yaml_text, const std::string& base_dir = "");
 
 // Reads and parses a scene file; a missing or unreadable file is an error
 // (each error is prefixed with the path). Never throws.

@@ -41,11 +41,6 @@ bool IsFile(const std::string& path) {
   return fs::is_regular_file(path, ec);
 }
 
-// A realism value names a file when it looks like one; otherwise a preset.
-bool LooksLikePath(const std::string& spec) {
-  return spec.find('/') != std::string::npos || (spec.size() > 5 && spec.substr(spec.size() - 5) == ".yaml");
-}
-
 // One flag value: scalar, bool or list of scalars.
 bool ReadFlagValue(const YAML::Node& node, const std::string& path, Errors* errors, Flag* flag) {
   if (node.IsNull()) {
@@ -237,7 +232,7 @@ ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::st
   if (!scene.empty()) OverrideScene(scene, &p, &errors);
   if (!p.scene.empty()) p.legged = IsLeggedScene(p.scene);
   if (m.String("realism", &p.realism)) {
-    if (LooksLikePath(p.realism)) p.realism = Absolute(p.realism, base_dir);
+    p.realism = RealismSpecFrom(p.realism, base_dir);
     const RealismLoadResult realism = LoadRealism(p.realism);
     if (!realism.realism) {
       m.Fail("realism",

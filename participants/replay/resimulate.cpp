@@ -254,7 +254,7 @@ ResimulateResult Resimulate(const ResimulateOptions& options, const std::functio
     return Run(options, std::move(*loaded.scene), r, stop);
   }
   if (r.run->kind() != "ssl") throw std::invalid_argument("the recorded scene kind '" + r.run->kind() + "' is unknown");
-  SceneLoadResult loaded = ParseSceneYaml(r.run->scene_yaml());
+  SceneLoadResult loaded = ParseSceneYaml(r.run->scene_yaml(), r.run->scene_dir());
   if (!loaded.scene)
     throw std::invalid_argument("the recorded scene does not load: " +
                                 (loaded.errors.empty() ? std::string("?") : loaded.errors.front()));

@@ -2,10 +2,17 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
+#include "loader/legged_scene_yaml.h"
 #include "loader/scene_yaml.h"
+#include "tests/loader/test_util.h"
 
 namespace turf {
 namespace {
+
+using test::ReadText;
 
 bool Mentions(const std::vector<std::string>& errors, const std::string& text) {
   for (const std::string& e : errors)
@@ -111,6 +118,41 @@ TEST(RealismYaml, ScenesNameAPresetOrSetValues) {
   // An unknown preset is told what there is.
   EXPECT_TRUE(Mentions(missing.errors, "presets: harsh, ideal, realistic")) << missing.errors[0];
   EXPECT_EQ(RealismPresets(), (std::vector<std::string>{"harsh", "ideal", "realistic"}));
+}
+
+TEST(RealismYaml, AFileIsRelativeToWhatNamesIt) {
+  EXPECT_EQ(RealismSpecFrom("sub/r.yaml", "/a/b"), "/a/b/sub/r.yaml");
+  EXPECT_EQ(RealismSpecFrom("../r.yaml", "/a/b"), "/a/r.yaml");
+  EXPECT_EQ(RealismSpecFrom("/abs/r.yaml", "/a/b"), "/abs/r.yaml");
+  EXPECT_EQ(RealismSpecFrom("sub/r.yaml", ""), "sub/r.yaml");
+  EXPECT_EQ(RealismSpecFrom("harsh", "/a/b"), "harsh");                                                // a preset
+  EXPECT_EQ(RealismSpecFrom("{camera: {ball_vanish: 0.5}}", "/a/b"), "{camera: {ball_vanish: 0.5}}");  // text
+}
+
+// A scene's `realism: <file>` is read next to the scene, whatever the current directory (it was read relative to
+// the current one: the same scene loaded from elsewhere failed, or read another file).
+TEST(RealismYaml, AScenesRealismFileIsReadNextToTheScene) {
+  const std::string scenes = std::string(TURF_SOURCE_DIR) + "/configs/scenes";
+  const SceneLoadResult ssl = ParseSceneYaml("realism: ../realism/harsh.yaml", scenes);
+  ASSERT_TRUE(ssl.scene.has_value()) << (ssl.errors.empty() ? "" : ssl.errors[0]);
+  EXPECT_DOUBLE_EQ(ssl.scene->realism.camera.ball_vanish, LoadRealism("harsh").realism->camera.ball_vanish);
+  EXPECT_GT(ssl.scene->realism.camera.ball_vanish, 0.0);
+
+  const std::string legged_text = ReadText(scenes + "/t1_stand.yaml") + "\nrealism: ../realism/harsh.yaml\n";
+  const LeggedSceneLoadResult legged = ParseLeggedSceneYaml(legged_text, scenes);
+  ASSERT_TRUE(legged.scene.has_value()) << (legged.errors.empty() ? "" : legged.errors[0]);
+  EXPECT_DOUBLE_EQ(legged.scene->realism.imu.gyro_noise_stddev, LoadRealism("harsh").realism->imu.gyro_noise_stddev);
+  EXPECT_GT(legged.scene->realism.imu.gyro_noise_stddev, 0.0);
+
+  // From a file: its own directory, not the test's.
+  const std::string dir = ::testing::TempDir() + "/scene_realism_test";
+  std::filesystem::create_directories(dir + "/noise");
+  std::ofstream(dir + "/noise/mine.yaml") << "camera: {ball_vanish: 0.375}\n";
+  std::ofstream(dir + "/scene.yaml") << "realism: noise/mine.yaml\n";
+  const SceneLoadResult from_file = LoadSceneFile(dir + "/scene.yaml");
+  ASSERT_TRUE(from_file.scene.has_value()) << (from_file.errors.empty() ? "" : from_file.errors[0]);
+  EXPECT_DOUBLE_EQ(from_file.scene->realism.camera.ball_vanish, 0.375);
+  EXPECT_FALSE(ParseSceneYaml("realism: noise/mine.yaml").scene.has_value());  // the current directory has none
 }
 
 }  // namespace
