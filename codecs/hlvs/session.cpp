@@ -23,7 +23,13 @@ Session::Session(SessionOptions options) : options_(std::move(options)) {
   options_.team_players = std::max(1, options_.team_players);
 }
 
-void Session::Warn(std::string text) { pending_.push_back({MessageType::kWarning, std::move(text)}); }
+void Session::Warn(std::string text) {
+  if (pending_.size() >= kMaxWarnings) {
+    ++unlisted_warnings_;
+    return;
+  }
+  pending_.push_back({MessageType::kWarning, std::move(text)});
+}
 
 Session::Motor* Session::FindMotor(const std::string& name, const char* what) {
   const auto& table = options_.model->motors;
@@ -104,7 +110,6 @@ void Session::SetTimeStep(const NamedStep& s, uint32_t now_ms) {
     return Warn(fmt::format("Device \"{}\" is not supported, time step command, ignored.", s.name));
   Sensor& sensor = sensors_[s.name];
   if (s.time_step_ms == 0) {
-    if (device == Device::kCamera && sensor.period != 0) EnableCamera(s.name, 0);
     sensor.period = 0;
     return;
   }
@@ -119,13 +124,25 @@ void Session::SetTimeStep(const NamedStep& s, uint32_t now_ms) {
   if (device == Device::kCamera && !CameraQuotaAllows(s.name, s.time_step_ms)) return;
   sensor.period = s.time_step_ms;
   sensor.next = now_ms + s.time_step_ms;
-  if (device == Device::kCamera) EnableCamera(s.name, s.time_step_ms);
 }
 
-void Session::EnableCamera(const std::string& name, uint32_t period_ms) {
-  if (options_.cameras == nullptr) return;
-  for (const CameraEntry& c : options_.model->cameras)
-    if (name == c.name) options_.cameras->Enable(options_.robot, c.mjcf, period_ms);
+void Session::TellCameras() {
+  for (const CameraEntry& c : options_.model->cameras) {
+    auto it = sensors_.find(c.name);
+    const uint32_t period = it == sensors_.end() ? 0 : it->second.period;
+    uint32_t& told = told_[c.name];
+    if (period == told) continue;
+    told = period;
+    if (options_.cameras != nullptr) options_.cameras->Enable(options_.robot, c.mjcf, period);
+  }
+}
+
+void Session::ClientLeft() {
+  sensors_.clear();
+  pending_.clear();
+  unlisted_warnings_ = 0;
+  camera_unavailable_ = false;
+  TellCameras();
 }
 
 bool Session::CameraQuotaAllows(const std::string& name, uint32_t period) {
@@ -157,8 +174,12 @@ SensorMeasurements Session::Measure(const RobotReading& reading, uint32_t now_ms
   SensorMeasurements out;
   out.time_ms = now_ms;
   out.real_time_ms = real_time_ms;
+  TellCameras();
   out.messages = std::move(pending_);
   pending_.clear();
+  if (unlisted_warnings_ > 0)
+    out.messages.push_back({MessageType::kWarning, fmt::format("{} more warnings, not listed.", unlisted_warnings_)});
+  unlisted_warnings_ = 0;
   const RobotModel& model = *options_.model;
   for (size_t i = 0; i < model.motors.size() && i < reading.position.size(); ++i) {
     const std::string name = PositionSensorName(model.motors[i]);

@@ -13,7 +13,9 @@
 //   torque / force: JOINT_TORQUE, clamped to the joint's effort limit, until the next position command.
 // Sensors: position sensors (motor + "S"), Accelerometer, Gyro, the touch sensors and cameras of the model table
 // (robots.h). Enabled with period T (a multiple of 8 ms; >= 8, cameras >= 16), first reported T ms after the step
-// that enabled it, then every T ms; 0 disables. Violations answer with the reference's warning texts.
+// that enabled it, then every T ms; 0 disables. Violations answer with the reference's warning texts, at most
+// kMaxWarnings a message (then one line saying how many more). A camera source hears a camera's period once a step,
+// when it changed (a client switching a camera on and off within a step costs nothing).
 #pragma once
 
 #include <array>
@@ -32,6 +34,7 @@ namespace turf::hlvs {
 
 inline constexpr uint32_t kBasicStepMs = 8;  // Webots' basicTimeStep in the HLVS world
 inline constexpr uint32_t kMinCameraStepMs = 16;
+inline constexpr size_t kMaxWarnings = 64;  // warnings listed in one SensorMeasurements
 
 // What the bridge read of the robot after a step, in the model table's order.
 struct RobotReading {
@@ -78,6 +81,10 @@ class Session {
   SensorMeasurements Measure(const RobotReading& reading, uint32_t now_ms, uint64_t real_time_ms);
   // Commands for the next step, for the motors a client commanded (the others keep the scene's own).
   std::vector<JointOutput> Commands(const RobotReading& reading);
+  // The client left: every sensor off (the camera source told at once), pending warnings dropped, camera exposures
+  // forgotten, so the next client starts as a new connection does. Motors keep their commands, modes and PID gains
+  // (the robot does not go limp between clients).
+  void ClientLeft();
 
   // True once an enabled camera was due and no image could be sent (the bridge logs it once).
   bool camera_unavailable() const { return camera_unavailable_; }
@@ -110,13 +117,15 @@ class Session {
   bool CameraQuotaAllows(const std::string& name, uint32_t period);
   bool Due(const std::string& name, uint32_t now_ms);
   void MeasureCameras(uint32_t now_ms, SensorMeasurements* out);
-  void EnableCamera(const std::string& name, uint32_t period_ms);  // tells the camera source
+  void TellCameras();  // each camera whose period changed since the source last heard it
   JointOutput MotorCommand(size_t i, double position);
 
   SessionOptions options_;
   std::vector<Motor> motors_;
   std::map<std::string, Sensor> sensors_;
   std::vector<TextMessage> pending_;
+  size_t unlisted_warnings_ = 0;          // beyond kMaxWarnings since the last Measure
+  std::map<std::string, uint32_t> told_;  // camera name -> the period its source last heard
   bool camera_unavailable_ = false;
 };
 

@@ -5,6 +5,7 @@
 #include <sys/socket.h>
 
 #include <algorithm>
+#include <set>
 #include <stdexcept>
 
 namespace turf {
@@ -78,8 +79,8 @@ void FrontEndServer::AcceptAll(Listener* listener) {
   for (int fd = listener->socket.Accept(&address); fd >= 0; fd = listener->socket.Accept(&address)) {
     setsockopt(fd, SOL_SOCKET, SO_SNDBUF, &kSendBuffer, sizeof(kSendBuffer));
     auto peer = std::make_unique<TcpPeer>(fd, address, options_.max_unsent);
-    if (clients_.size() >= options_.max_clients) {
-      rejects_->Reject("too_many_clients", fmt::format("{} refused: {} clients connected", address, clients_.size()));
+    if (LiveClients() >= options_.max_clients) {
+      rejects_->Reject("too_many_clients", fmt::format("{} refused: {} clients connected", address, LiveClients()));
       continue;  // the peer's destructor closes it
     }
     FrontEndClient c{std::move(peer), simspark::FrameDecoder(), monitor, -1, 0, listener->socket.LocalPort()};
@@ -88,6 +89,13 @@ void FrontEndServer::AcceptAll(Listener* listener) {
     clients_.emplace(fd, std::move(c));
     if (!greeting.empty()) Send(fd, greeting);
   }
+}
+
+size_t FrontEndServer::LiveClients() const {
+  std::set<int> leaving;
+  for (const auto& [fd, why] : drops_)
+    if (clients_.count(fd) != 0) leaving.insert(fd);
+  return clients_.size() - leaving.size();
 }
 
 void FrontEndServer::ReadClient(int fd) {

@@ -73,6 +73,7 @@ class FrontEndServer : Pinned {
     bool monitor = false;
   };
   void AcceptAll(Listener* listener);
+  size_t LiveClients() const;  // clients not marked to be dropped: what max_clients bounds
   void ReadClient(int fd);
 
   Options options_;

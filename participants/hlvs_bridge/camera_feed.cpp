@@ -49,9 +49,10 @@ Error ToFeedFrame(int64_t stamp_ns, uint32_t width, uint32_t height, const std::
   return Error::kOk;
 }
 
-void CameraFeed::Put(const std::string& key, FeedFrame frame) {
+Error CameraFeed::Put(const std::string& key, FeedFrame frame, int64_t now_ns) {
+  if (now_ns < INT64_MAX - kMaxAheadNs && frame.stamp_ns > now_ns + kMaxAheadNs) return Error::kOutOfRange;
   Camera& c = cameras_[key];
-  if (frame.stamp_ns <= c.taken_ns) return;  // older than what a client already has
+  if (frame.stamp_ns <= c.taken_ns) return Error::kOk;  // older than what a client already has
   auto at = std::upper_bound(c.frames.begin(), c.frames.end(), frame.stamp_ns,
                              [](int64_t t, const FeedFrame& f) { return t < f.stamp_ns; });
   if (at != c.frames.begin() && std::prev(at)->stamp_ns == frame.stamp_ns) {
@@ -60,6 +61,7 @@ void CameraFeed::Put(const std::string& key, FeedFrame frame) {
     c.frames.insert(at, std::move(frame));
   }
   while (c.frames.size() > kKeep) c.frames.pop_front();
+  return Error::kOk;
 }
 
 std::optional<FeedFrame> CameraFeed::Take(const std::string& key, int64_t up_to_ns) {

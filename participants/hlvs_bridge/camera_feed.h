@@ -29,10 +29,13 @@ Error ToFeedFrame(int64_t stamp_ns, uint32_t width, uint32_t height, const std::
 
 class CameraFeed {
  public:
-  static constexpr size_t kKeep = 4;  // frames kept per camera
+  static constexpr size_t kKeep = 4;                     // frames kept per camera
+  static constexpr int64_t kMaxAheadNs = 1'000'000'000;  // how far past the known time a frame may be stamped
 
   // Keeps `frame` of camera `key` ("<robot>/<camera>"); a frame older than one kept is kept in its place in time.
-  void Put(const std::string& key, FeedFrame frame);
+  // `now_ns` is the newest simulation time the caller knows: a frame stamped more than kMaxAheadNs after it is
+  // refused (kOutOfRange), as a few such frames would push every real frame out for good.
+  Error Put(const std::string& key, FeedFrame frame, int64_t now_ns);
   // The newest frame of `key` with stamp <= up_to_ns newer than the last one taken; it and older ones are dropped.
   std::optional<FeedFrame> Take(const std::string& key, int64_t up_to_ns);
 

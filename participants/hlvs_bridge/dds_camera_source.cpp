@@ -4,6 +4,7 @@
 #include <turf/idl/CameraControlPubSubTypes.h>
 #include <turf/idl/RosImagePubSubTypes.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -14,6 +15,7 @@
 
 #include "dds/camera_topics.h"
 #include "dds/vendor_participant.h"
+#include "participants/common/process.h"
 #include "participants/hlvs_bridge/camera_feed.h"
 
 namespace turf {
@@ -48,6 +50,7 @@ struct DdsCameraSource::Impl {
 
   mutable std::mutex mutex;  // guards what follows
   CameraFeed feed;
+  int64_t now_ns = 0;  // the newest simulation time the bridge asked for (frames stamped far past it are refused)
   std::map<std::string, Wanted> wanted;
   CameraSourceStats stats;
   bool stopping = false;
@@ -115,17 +118,20 @@ struct DdsCameraSource::Impl {
     const Error e = ToFeedFrame(StampNs(image.header()), image.width(), image.height(), image.encoding(), image.step(),
                                 image.data(), &frame);
     std::lock_guard<std::mutex> lock(mutex);
-    if (e != Error::kOk) {
+    const int64_t stamp_ns = frame.stamp_ns;
+    const Error put = e == Error::kOk ? feed.Put(key, std::move(frame), now_ns) : e;
+    if (put != Error::kOk) {
       if (stats.refused++ < 5)
-        spdlog::warn("camera {}: image refused ({}: {}x{}, '{}', step {}, {} bytes)", key, ErrorName(e), image.width(),
-                     image.height(), image.encoding(), image.step(), image.data().size());
+        spdlog::warn("camera {}: image refused ({}: {}x{}, '{}', step {}, {} bytes, stamped {} ns, time {} ns)", key,
+                     ErrorName(put), image.width(), image.height(), image.encoding(), image.step(), image.data().size(),
+                     stamp_ns, now_ns);
       return;
     }
     ++stats.frames;
-    feed.Put(key, std::move(frame));
   }
 
   std::atomic<uint64_t> written{0};  // control samples, from both threads
+  RejectLog switches{"camera switched for HLVS clients", std::chrono::seconds(1), LogLine::kEvent};
 };
 
 DdsCameraSource::DdsCameraSource(CameraSourceOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
@@ -140,7 +146,11 @@ DdsCameraSource::~DdsCameraSource() {
                s.refused, s.sent, s.missed);
 }
 
-void DdsCameraSource::Attached(int64_t sim_time_ns) { impl_->base_ns = sim_time_ns; }
+void DdsCameraSource::Attached(int64_t sim_time_ns) {
+  impl_->base_ns = sim_time_ns;
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  impl_->now_ns = sim_time_ns;
+}
 
 void DdsCameraSource::Enable(const std::string& robot, const std::string& camera, uint32_t period_ms) {
   if (period_ms > 0) impl_->Subscribe(robot, camera);
@@ -149,9 +159,10 @@ void DdsCameraSource::Enable(const std::string& robot, const std::string& camera
     impl_->wanted[Key(robot, camera)] = {robot, camera, period_ms};
   }
   impl_->Write({robot, camera, period_ms});
-  spdlog::info("camera {}: {}", Key(robot, camera),
-               period_ms > 0 ? fmt::format("asked of turf-render every {} ms of simulated time", period_ms)
-                             : std::string("switched off"));
+  // A client may switch a camera every step: at most a line a second per kind.
+  impl_->switches.Reject(period_ms > 0 ? "asked" : "switched_off",
+                         period_ms > 0 ? fmt::format("{} every {} ms of simulated time", Key(robot, camera), period_ms)
+                                       : Key(robot, camera));
 }
 
 std::optional<hlvs::CameraImage> DdsCameraSource::Take(const hlvs::CameraRequest& request) {
@@ -159,6 +170,7 @@ std::optional<hlvs::CameraImage> DdsCameraSource::Take(const hlvs::CameraRequest
   std::optional<FeedFrame> frame;
   {
     std::lock_guard<std::mutex> lock(impl_->mutex);
+    impl_->now_ns = std::max(impl_->now_ns, up_to);
     frame = impl_->feed.Take(Key(request.robot, request.camera), up_to);
     ++(frame ? impl_->stats.sent : impl_->stats.missed);
   }

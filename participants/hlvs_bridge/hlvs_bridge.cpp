@@ -65,6 +65,21 @@ uint64_t UnixMs() {
           .count());
 }
 
+// The network quota's clock: a step of the wall clock (NTP, by hand) must not close or open its window.
+uint64_t SteadyMs() {
+  return static_cast<uint64_t>(
+      std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now().time_since_epoch()).count());
+}
+
+// The slot's client is gone: its unapplied input dropped, its sensors off (cameras no longer drawn for it); the next
+// client starts as a new connection does.
+void Vacate(Slot* s) {
+  s->fd = -1;
+  s->queued.clear();
+  s->camera_logged = false;
+  if (s->session) s->session->ClientLeft();
+}
+
 // The client on `fd` has closed its side (its FIN is there, nothing unread before it): the reference would have
 // accepted the next client by now, so a reconnecting client is not refused as "busy" for the old one.
 bool PeerHasClosed(int fd) {
@@ -229,7 +244,8 @@ class HlvsBridgeImpl {
     pending_.op(idl::OP_STEP);
     pending_.step_count(steps_);
     const uint64_t real = UnixMs();
-    for (Slot& s : slots_) ServeSlot(&s, real);
+    const uint64_t steady = SteadyMs();
+    for (Slot& s : slots_) ServeSlot(&s, real, steady);
     server_->FlushDrops();
     stats_.Update([&](HlvsBridgeStats& s) {
       s.steps = steps_done_;
@@ -240,13 +256,13 @@ class HlvsBridgeImpl {
     return true;
   }
 
-  void ServeSlot(Slot* s, uint64_t real_ms) {
+  void ServeSlot(Slot* s, uint64_t real_ms, uint64_t steady_ms) {
     if (s->model == nullptr) return;
     const hlvs::RobotReading reading = ReadRobot(link_->state(), *s->binding);
     if (s->fd >= 0) {
       for (const hlvs::ActuatorRequests& r : s->queued) s->session->Apply(r, time_ms_);
       s->queued.clear();
-      Send(s, s->session->Measure(reading, time_ms_, real_ms), real_ms);
+      Send(s, s->session->Measure(reading, time_ms_, real_ms), steady_ms);
     }
     idl::JointCommand command;
     command.robot(s->robot);
@@ -254,7 +270,7 @@ class HlvsBridgeImpl {
     if (!command.joints().empty()) pending_.joint_commands().push_back(std::move(command));
   }
 
-  void Send(Slot* s, hlvs::SensorMeasurements m, uint64_t real_ms) {
+  void Send(Slot* s, hlvs::SensorMeasurements m, uint64_t steady_ms) {
     if (s->session->camera_unavailable() && !s->camera_logged) {
       if (cameras_ == nullptr)
         spdlog::info("{}: a camera is enabled but there is no image source: no images are sent", s->robot);
@@ -266,7 +282,7 @@ class HlvsBridgeImpl {
       s->camera_logged = true;
     }
     hlvs::EncodeResult framed = hlvs::FrameSensorMeasurements(m);
-    if (framed.error == Error::kOk && !s->quota->Admit(framed.framed.size(), real_ms)) {
+    if (framed.error == Error::kOk && !s->quota->Admit(framed.framed.size(), steady_ms)) {
       hlvs::SensorMeasurements over;
       over.time_ms = m.time_ms;
       over.real_time_ms = m.real_time_ms;
@@ -308,8 +324,7 @@ class HlvsBridgeImpl {
         return Refuse(c, "no_robot", fmt::format("{}: no robot {}_{} (yet)", address, s.team, s.player));
       if (s.fd >= 0 && PeerHasClosed(s.fd)) {
         server_->MarkDrop(s.fd, "closed by the peer");
-        s.fd = -1;
-        s.queued.clear();
+        Vacate(&s);
       }
       if (s.fd >= 0) return Refuse(c, "port_busy", fmt::format("{}: {} already has a client", address, s.robot));
       s.fd = c.peer->fd();
@@ -332,17 +347,13 @@ class HlvsBridgeImpl {
         return;
       }
       rejects_.Reject(std::string("request.") + ErrorName(r.error), fmt::format("{}: {}", s.robot, r.detail));
-      s.queued.clear();  // nothing of this client's unapplied input moves the robot
-      s.fd = -1;
+      Vacate(&s);  // nothing of this client's unapplied input moves the robot
       server_->MarkDrop(c.peer->fd(), "sent a refused request");
     };
     h.left = [this](const FrontEndClient& c) {
       if (c.agent < 0) return;
       Slot& s = slots_[c.agent];
-      if (s.fd == c.peer->fd()) {
-        s.fd = -1;
-        s.queued.clear();
-      }
+      if (s.fd == c.peer->fd()) Vacate(&s);
       stats_.Update([&](HlvsBridgeStats& s) {
         ++s.dropped_clients;
         --s.clients;

@@ -68,16 +68,16 @@ TEST(CameraFeed, ImagesWhoseSizesDoNotAddUpAreRefused) {
 TEST(CameraFeed, TakesTheNewestAtOrBeforeTheTimeAndNeverTwice) {
   CameraFeed feed;
   EXPECT_FALSE(feed.Take("r/c", 100).has_value());
-  feed.Put("r/c", Frame(10, 'a'));
-  feed.Put("r/c", Frame(30, 'c'));
-  feed.Put("r/c", Frame(20, 'b'));  // late, kept in its place in time
+  EXPECT_EQ(feed.Put("r/c", Frame(10, 'a'), 1000), Error::kOk);
+  EXPECT_EQ(feed.Put("r/c", Frame(30, 'c'), 1000), Error::kOk);
+  EXPECT_EQ(feed.Put("r/c", Frame(20, 'b'), 1000), Error::kOk);  // late, kept in its place in time
   EXPECT_FALSE(feed.Take("r/c", 5).has_value());
   EXPECT_FALSE(feed.Take("other/c", 100).has_value());
   auto f = feed.Take("r/c", 25);
   ASSERT_TRUE(f.has_value());
   EXPECT_EQ(f->stamp_ns, 20);
   EXPECT_FALSE(feed.Take("r/c", 25).has_value()) << "20 was taken, 10 is older";
-  feed.Put("r/c", Frame(15, 'x'));  // older than what was taken: never given out
+  EXPECT_EQ(feed.Put("r/c", Frame(15, 'x'), 1000), Error::kOk);  // older than what was taken: never given out
   f = feed.Take("r/c", 100);
   ASSERT_TRUE(f.has_value());
   EXPECT_EQ(f->stamp_ns, 30);
@@ -86,11 +86,29 @@ TEST(CameraFeed, TakesTheNewestAtOrBeforeTheTimeAndNeverTwice) {
 
 TEST(CameraFeed, KeepsOnlyTheNewestFewFrames) {
   CameraFeed feed;
-  for (int i = 1; i <= 10; ++i) feed.Put("r/c", Frame(i * 10, 'a'));
+  for (int i = 1; i <= 10; ++i) EXPECT_EQ(feed.Put("r/c", Frame(i * 10, 'a'), 1000), Error::kOk);
   EXPECT_FALSE(feed.Take("r/c", 60).has_value()) << "frames up to 60 are gone: only the newest 4 are kept";
   auto f = feed.Take("r/c", 75);
   ASSERT_TRUE(f.has_value());
   EXPECT_EQ(f->stamp_ns, 70);
+}
+
+// Frames stamped far past the known time (a forged or broken renderer's) are refused; four of them pushed every real
+// frame out for good (0 of 1000 real frames delivered afterwards).
+TEST(CameraFeed, FramesStampedFarAheadAreRefusedAndPushNothingOut) {
+  CameraFeed feed;
+  const int64_t now = 5'000'000'000;
+  for (int i = 0; i < 8; ++i)
+    EXPECT_EQ(feed.Put("r/c", Frame(INT64_C(2147483647) * 1'000'000'000 + i, 'f'), now), Error::kOutOfRange);
+  EXPECT_EQ(feed.Put("r/c", Frame(now + CameraFeed::kMaxAheadNs + 1, 'f'), now), Error::kOutOfRange);
+  EXPECT_EQ(feed.Put("r/c", Frame(now + CameraFeed::kMaxAheadNs, 'g'), now), Error::kOk);  // at the bound: kept
+  for (int i = 1; i <= 100; ++i) {
+    const int64_t t = now - 100 + i;
+    ASSERT_EQ(feed.Put("r/c", Frame(t, 'a'), t), Error::kOk);
+    auto f = feed.Take("r/c", t);
+    ASSERT_TRUE(f.has_value()) << "frame " << i;
+    EXPECT_EQ(f->stamp_ns, t);
+  }
 }
 
 }  // namespace

@@ -9,6 +9,8 @@
 #include <set>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "codecs/hlvs/session.h"
 
 namespace turf::hlvs {
@@ -168,14 +170,74 @@ TEST_F(HlvsSessionTest, TheImageSourceHearsEachCameraPeriodChangeOnce) {
   FixedCamera source;
   options_.cameras = &source;
   Session s(options_);
-  s.Apply(Steps({{"Camera", 16}}), 8);
-  s.Apply(Steps({{"Camera", 16}}), 16);  // the same again: nothing changes
-  s.Apply(Steps({{"Camera", 12}}), 24);  // refused (not a multiple of 8): nothing changes
-  s.Apply(Steps({{"Camera", 32}}), 32);
-  s.Apply(Steps({{"Camera", 0}}), 40);
-  s.Apply(Steps({{"Camera", 0}}), 48);  // already off
-  s.Apply(Steps({{"Gyro", 8}}), 56);    // not a camera
+  const std::vector<std::pair<uint32_t, uint32_t>> steps = {{16, 8},  {16, 16},  // the same again: nothing changes
+                                                            {12, 24},  // refused (not a multiple of 8): nothing changes
+                                                            {32, 32}, {0, 40},  {0, 48}};  // already off
+  for (const auto& [period, t] : steps) {
+    s.Apply(Steps({{"Camera", period}}), t);
+    s.Measure(reading_, t, 1);
+  }
+  s.Apply(Steps({{"Gyro", 8}}), 56);  // not a camera
+  s.Measure(reading_, 56, 1);
   EXPECT_EQ(source.enables, (std::vector<std::string>{"red_1/camera@16", "red_1/camera@32", "red_1/camera@0"}));
+}
+
+// A client switching a camera on and off in every entry of its requests: the source hears the step's final period
+// once (it heard every switch: 196,622 log lines and as many DDS writes in 8 s, the match at a tenth of real time).
+TEST_F(HlvsSessionTest, SwitchingACameraWithinAStepReachesTheSourceOnceAtMost) {
+  FixedCamera source;
+  options_.cameras = &source;
+  Session s(options_);
+  std::vector<NamedStep> toggles;
+  for (int i = 0; i < 1024; ++i) toggles.push_back({"Camera", i % 2 == 0 ? 16u : 0u});
+  for (int request = 0; request < 30; ++request) s.Apply(Steps(toggles), 8);  // ends off: as before
+  s.Measure(reading_, 8, 1);
+  EXPECT_TRUE(source.enables.empty());
+  toggles.push_back({"Camera", 16});
+  s.Apply(Steps(toggles), 16);  // ends on
+  s.Measure(reading_, 16, 1);
+  EXPECT_EQ(source.enables, (std::vector<std::string>{"red_1/camera@16"}));
+}
+
+// 30 requests of 1024 unknown motors made 30,000 warnings in one message (1.5 MB): past the connection's send
+// limit, so the client was dropped, with a wrong reason.
+TEST_F(HlvsSessionTest, AMessageListsAtMostKMaxWarnings) {
+  Session s(options_);
+  ActuatorRequests r;
+  for (int i = 0; i < 1024; ++i) r.positions.push_back({"Tail" + std::to_string(i), 1});
+  for (int request = 0; request < 30; ++request) s.Apply(r, 8);
+  const SensorMeasurements m = s.Measure(reading_, 8, 1);
+  ASSERT_EQ(m.messages.size(), kMaxWarnings + 1);
+  EXPECT_EQ(m.messages[0].text, "Motor \"Tail0\" not found, position command ignored.");
+  EXPECT_EQ(m.messages.back().text, fmt::format("{} more warnings, not listed.", 30 * 1024 - kMaxWarnings));
+  EXPECT_TRUE(s.Measure(reading_, 16, 1).messages.empty());  // the count starts again
+  EXPECT_LT(FrameSensorMeasurements(m).framed.size(), size_t{16} * 1024);
+}
+
+// A client that leaves takes its sensors with it: the next client got the first one's sensors (and its camera
+// stayed on at turf-render until the bridge exited). Motor commands stay.
+TEST_F(HlvsSessionTest, AClientLeavingSwitchesItsSensorsOffAndKeepsTheMotors) {
+  FixedCamera source;
+  options_.cameras = &source;
+  Session s(options_);
+  ActuatorRequests r = Steps({{"Camera", 16}, {"NeckS", 8}});
+  r.positions.push_back({options_.model->motors[0].motor, 0.5});
+  r.positions.push_back({"Tail", 1});  // a warning pending
+  s.Apply(r, 8);
+  s.Measure(reading_, 8, 1);
+  ASSERT_EQ(s.SensorPeriods().size(), 2u);
+  s.Apply(Steps({{"Nose", 8}}), 16);  // another warning, never sent
+  s.ClientLeft();
+  EXPECT_EQ(source.enables, (std::vector<std::string>{"red_1/camera@16", "red_1/camera@0"}));
+  EXPECT_TRUE(s.SensorPeriods().empty());
+  const SensorMeasurements next = s.Measure(reading_, 16, 1);
+  EXPECT_TRUE(next.messages.empty());
+  EXPECT_TRUE(next.position_sensors.empty());
+  EXPECT_TRUE(next.cameras.empty());
+  const std::vector<JointOutput> commands = s.Commands(reading_);
+  ASSERT_EQ(commands.size(), 1u);
+  EXPECT_EQ(commands[0].joint, options_.model->motors[0].joint);
+  EXPECT_GT(commands[0].value, 0.0);  // still driving toward 0.5 rad
 }
 
 TEST_F(HlvsSessionTest, CamerasNeedAnImageSource) {
