@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 
 #include <optional>
+#include <utility>
+
+#include "core/realism_fields.h"
 
 namespace turf::simproto {
 
@@ -17,29 +20,53 @@ bool IsErForce(const std::string& type_url) {
           type_url[type_url.size() - name.size() - 1] == '/');
 }
 
-// One ER-Force knob: its turf parameter, the factor to SI units and the
-// largest value the codec accepts (in ER-Force's units; turf-sim checks the
-// result against its own ranges too).
+// One ER-Force knob: its turf parameter and the factor to SI units. The accepted range is turf-sim's own
+// (core/realism_fields.h's table), so nothing the codec passes is refused there: a refusal there came after the
+// command's other requests had been applied.
 struct Knob {
   const char* name;
   idl::RealismParameter parameter;
   double scale;
-  double max;
   std::optional<double> (*read)(const ws::RealismConfigErForce&);
 };
+
+// turf-sim's range of a parameter, in SI units (the table's X-macro: the codec does not link turf_core).
+std::pair<double, double> RangeOf(idl::RealismParameter parameter) {
+  switch (parameter) {
+#define TURF_REALISM_RANGE(e, name, idl_constant, member, unit, min, max, meaning) \
+  case idl::idl_constant:                                                          \
+    return {min, max};
+    TURF_REALISM_FIELDS(TURF_REALISM_RANGE)
+#undef TURF_REALISM_RANGE
+    default:
+      return {0.0, 0.0};
+  }
+}
+
+// The knob's value in SI units if turf-sim takes it (the check on the converted double, as turf-sim's: a float
+// 3.1416 rad is above pi).
+bool Accepts(const Knob& knob, double value, Problems* p) {
+  const auto [lo, hi] = RangeOf(knob.parameter);
+  if (!p->Check(value, lo / knob.scale, hi / knob.scale, fmt::format("realism_config.{}", knob.name))) return false;
+  const double si = value * knob.scale;
+  if (si >= lo && si <= hi) return true;
+  p->Add(DecodeError::kOutOfRange,
+         fmt::format("realism_config.{} = {} is outside [{}, {}]", knob.name, value, lo / knob.scale, hi / knob.scale));
+  return false;
+}
 
 #define TURF_KNOB(knob) \
   [](const ws::RealismConfigErForce& e) { return e.has_##knob() ? std::optional<double>(e.knob()) : std::nullopt; }
 
 const Knob kErForceKnobs[] = {
-    {"stddev_ball_p", idl::REALISM_CAMERA_BALL_POSITION_STDDEV, 1.0, 1.0, TURF_KNOB(stddev_ball_p)},
-    {"stddev_robot_p", idl::REALISM_CAMERA_ROBOT_POSITION_STDDEV, 1.0, 1.0, TURF_KNOB(stddev_robot_p)},
-    {"stddev_robot_phi", idl::REALISM_CAMERA_ROBOT_ORIENTATION_STDDEV, 1.0, 3.1416, TURF_KNOB(stddev_robot_phi)},
-    {"missing_ball_detections", idl::REALISM_CAMERA_BALL_VANISH, 1.0, 1.0, TURF_KNOB(missing_ball_detections)},
-    {"vision_processing_time", idl::REALISM_CAMERA_PROCESSING_DELAY, 1e-9, 1e10, TURF_KNOB(vision_processing_time)},
-    {"vision_delay", idl::REALISM_CAMERA_LINK_LATENCY, 1e-9, 1e10, TURF_KNOB(vision_delay)},
-    {"robot_command_loss", idl::REALISM_COMMAND_LOSS, 1.0, 1.0, TURF_KNOB(robot_command_loss)},
-    {"enable_invisible_ball", idl::REALISM_CAMERA_BALL_OCCLUSION, 1.0, 1.0, TURF_KNOB(enable_invisible_ball)},
+    {"stddev_ball_p", idl::REALISM_CAMERA_BALL_POSITION_STDDEV, 1.0, TURF_KNOB(stddev_ball_p)},
+    {"stddev_robot_p", idl::REALISM_CAMERA_ROBOT_POSITION_STDDEV, 1.0, TURF_KNOB(stddev_robot_p)},
+    {"stddev_robot_phi", idl::REALISM_CAMERA_ROBOT_ORIENTATION_STDDEV, 1.0, TURF_KNOB(stddev_robot_phi)},
+    {"missing_ball_detections", idl::REALISM_CAMERA_BALL_VANISH, 1.0, TURF_KNOB(missing_ball_detections)},
+    {"vision_processing_time", idl::REALISM_CAMERA_PROCESSING_DELAY, 1e-9, TURF_KNOB(vision_processing_time)},
+    {"vision_delay", idl::REALISM_CAMERA_LINK_LATENCY, 1e-9, TURF_KNOB(vision_delay)},
+    {"robot_command_loss", idl::REALISM_COMMAND_LOSS, 1.0, TURF_KNOB(robot_command_loss)},
+    {"enable_invisible_ball", idl::REALISM_CAMERA_BALL_OCCLUSION, 1.0, TURF_KNOB(enable_invisible_ball)},
 };
 
 #undef TURF_KNOB
@@ -63,7 +90,7 @@ std::vector<idl::RealismValue> RealismValues(const ws::RealismConfig& config, Pr
     }
     for (const Knob& knob : kErForceKnobs) {
       const std::optional<double> v = knob.read(e);
-      if (!v || !p->Check(*v, 0.0, knob.max, fmt::format("realism_config.{}", knob.name))) continue;
+      if (!v || !Accepts(knob, *v, p)) continue;
       idl::RealismValue value;
       value.parameter(knob.parameter);
       value.value(*v * knob.scale);

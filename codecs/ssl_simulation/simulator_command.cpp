@@ -181,6 +181,10 @@ void ConvertRobot(const ws::TeleportRobot& in, int index, const ControlContext& 
 
 void ConvertSpeed(float speed, const ControlContext& ctx, Problems* p, std::vector<idl::SimControl>* out) {
   if (!p->Check(speed, 0.0, kMaxSimulationSpeed, "simulation_speed")) return;
+  if (speed > 0.0f && speed < kMinSimulationSpeed)
+    return p->Add(DecodeError::kOutOfRange, "simulation_speed " + std::to_string(speed) +
+                                                " is neither 0 (pause) nor in [" + std::to_string(kMinSimulationSpeed) +
+                                                ", " + std::to_string(kMaxSimulationSpeed) + "]");
   if (ctx.sync)
     return p->AddUnsupported(kUnsupportedSyncSpeed,
                              "simulation_speed on the sync port: sync requests step the "

@@ -41,8 +41,11 @@
 
 namespace turf::simproto {
 
-inline constexpr double kMaxSimulationSpeed = 1000.0;  // as turf-sim's own limit
-inline constexpr double kSafeTeleportMargin = 0.05;    // m between a pushed robot and the ball
+// turf-sim's own limits (kernel/time_control.h's kMinTimeSpeed, kMaxTimeSpeed; a test holds them equal): a speed
+// turf-sim refuses must be refused here, before any other request of the command is applied. 0 pauses.
+inline constexpr double kMinSimulationSpeed = 0.01;
+inline constexpr double kMaxSimulationSpeed = 1000.0;
+inline constexpr double kSafeTeleportMargin = 0.05;  // m between a pushed robot and the ball
 
 struct ControlContext {
   const idl::SslField* field = nullptr;    // robots_per_team, walls, radii; nullptr: not known yet

@@ -451,6 +451,7 @@ void LeggedIslands::State(LeggedWorldState* out) const {
     s.id = scene_.robots[r].id;
   }
   for (size_t g = 0; g < groups_.size(); ++g) {
+    if (!groups_[g].world) continue;  // emptied: its scratch is an older make-up's (its robots are gone)
     for (RobotContact c : scratch_[g].robot_contacts) {
       c.robot_a = groups_[g].robots[c.robot_a];
       c.robot_b = groups_[g].robots[c.robot_b];

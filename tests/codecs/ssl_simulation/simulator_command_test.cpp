@@ -6,6 +6,8 @@
 #include <limits>
 
 #include "codecs/ssl_simulation/simulator_command.h"
+#include "core/realism_fields.h"
+#include "kernel/time_control.h"
 #include "tests/codecs/ssl_simulation/test_util.h"
 
 namespace turf::simproto {
@@ -243,6 +245,12 @@ TEST_F(SimulatorCommandCodec, SimulationSpeed) {
 
   ExpectRefused(speed(-1.0f), DecodeError::kOutOfRange);
   ExpectRefused(speed(5000.0f), DecodeError::kOutOfRange);
+  // turf-sim's own range: a speed it refuses is refused here, before the command's teleports are applied (0.005 was
+  // passed on: turf-sim refused it after moving the ball, and resumed a paused match).
+  static_assert(kMinSimulationSpeed == kMinTimeSpeed && kMaxSimulationSpeed == kMaxTimeSpeed);
+  ExpectRefused(speed(0.005f), DecodeError::kOutOfRange);
+  ExpectRefused(speed(std::nextafter(static_cast<float>(kMinSimulationSpeed), 0.0f)), DecodeError::kOutOfRange);
+  EXPECT_EQ(speed(0.0101f).error, DecodeError::kOk);
 
   context_.sync = true;  // sync mode owns time
   d = speed(2.0f);
@@ -294,6 +302,34 @@ TEST_F(SimulatorCommandCodec, ErForceRealismKnobsBecomeARealismRequest) {
   e.set_stddev_robot_p(NAN);
   any->set_value(e.SerializeAsString());
   EXPECT_EQ(Convert(c).error, DecodeError::kNotFinite);
+}
+
+// Each knob at turf-sim's bound (core/realism_fields.h) is passed on, and the float just above it is refused here:
+// a float 3.1416 for stddev_robot_phi (above pi) was passed on and refused by turf-sim after the command's teleport.
+TEST_F(SimulatorCommandCodec, ErForceKnobsAreCheckedAgainstTurfSimsRanges) {
+  auto knob = [&](void (*set)(ws::RealismConfigErForce*, float), float value) {
+    ws::SimulatorCommand c;
+    c.mutable_control()->mutable_teleport_ball()->set_x(1.0f);
+    ws::RealismConfigErForce e;
+    set(&e, value);
+    auto* any = c.mutable_config()->mutable_realism_config()->add_custom();
+    any->set_type_url("type.googleapis.com/RealismConfigErForce");
+    any->set_value(e.SerializeAsString());
+    return Convert(c);
+  };
+  auto phi = [](ws::RealismConfigErForce* e, float v) { e->set_stddev_robot_phi(v); };
+  auto ball_p = [](ws::RealismConfigErForce* e, float v) { e->set_stddev_ball_p(v); };
+  auto loss = [](ws::RealismConfigErForce* e, float v) { e->set_robot_command_loss(v); };
+  const double pi_max = Info(RealismField::kCameraRobotOrientationStddev).max;
+  const float below_pi = std::nextafter(static_cast<float>(pi_max), 0.0f);
+  ASSERT_LT(below_pi, pi_max);
+  EXPECT_EQ(knob(phi, below_pi).error, DecodeError::kOk);
+  const SimulatorCommandDecode over = knob(phi, 3.1416f);
+  ExpectRefused(over, DecodeError::kOutOfRange);
+  EXPECT_TRUE(over.requests.empty()) << "the teleport is not applied either";
+  EXPECT_EQ(knob(ball_p, 1.0f).error, DecodeError::kOk);
+  ExpectRefused(knob(ball_p, std::nextafter(1.0f, 2.0f)), DecodeError::kOutOfRange);
+  ExpectRefused(knob(loss, std::nextafter(1.0f, 2.0f)), DecodeError::kOutOfRange);
 }
 
 // Each knob alone: its one parameter and value (the mapping table row by row).

@@ -123,6 +123,39 @@ TEST(LeggedIslands, RobotsThatMayTouchStepTogether) {
   EXPECT_LT(worst, 1e-6);
 }
 
+// Robots touching in both groups, then every robot in one pile: one group is left empty. Its last state's robot
+// contacts were read as if it still held robots (turf-sim and `import turf` segfaulted on a 22-robot pile).
+TEST(LeggedIslands, AGroupLeftEmptyReportsNothing) {
+  LeggedIslands islands(Robots({-6, -2, 2, 6}, 0, false, 2));
+  ASSERT_NE(islands.GroupOf(0), islands.GroupOf(3));
+  auto drop = [&](int robot, double x, double z) {
+    RobotPlacement p;
+    p.position = {x, 0, z};
+    ASSERT_EQ(islands.PlaceRobot(robot, p), PlacementError::kOk);
+  };
+  drop(1, -6, 1.6);  // on robot 0's head
+  drop(3, 2, 1.6);   // on robot 2's head
+  bool both_touch = false;
+  for (int i = 0; i < 400 && !both_touch; ++i) {
+    islands.Step();
+    const LeggedWorldState s = islands.State();
+    both_touch = s.robot_contacts.size() >= 2;
+  }
+  ASSERT_TRUE(both_touch) << "the dropped robots never landed";
+  ASSERT_NE(islands.GroupOf(0), islands.GroupOf(2));
+  for (int r = 1; r < 4; ++r) drop(r, -6, 1.0 + 0.8 * r);  // everyone on robot 0
+  for (int i = 0; i < 50; ++i) {
+    islands.Step();
+    const LeggedWorldState s = islands.State();
+    ASSERT_EQ(s.robots.size(), 4u);
+    for (const RobotContact& c : s.robot_contacts) {
+      EXPECT_GE(c.robot_a, 0);
+      EXPECT_LT(c.robot_b, 4);
+    }
+  }
+  EXPECT_EQ(islands.GroupOf(0), islands.GroupOf(3));
+}
+
 // The ball rolled from its own island at a robot: it joins the robot's group before it arrives, and the robot
 // records the touch in the same step as in one world.
 TEST(LeggedIslands, TheBallJoinsTheGroupOfTheRobotItRollsAt) {
