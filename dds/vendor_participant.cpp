@@ -102,13 +102,22 @@ fdds::DataWriterQos WriterQos(fdds::Publisher* publisher, bool large_samples) {
   return qos;
 }
 
-// A best-effort reader matches best-effort and reliable writers alike.
+// A best-effort reader matches best-effort and reliable writers alike. Keyed topics (turf's camera switch: one
+// instance per camera) hold up to kMaxInstances live instances: Fast DDS's default of 10 let a live writer of ten
+// other cameras' keys make every further switch vanish unread (a scene of more than ten cameras could not switch
+// the eleventh).
+constexpr int32_t kReaderDepth = 8;
+constexpr int32_t kMaxInstances = 1024;
 fdds::DataReaderQos ReaderQos(fdds::Subscriber* subscriber) {
   fdds::DataReaderQos qos = subscriber->get_default_datareader_qos();
   qos.reliability().kind = fdds::BEST_EFFORT_RELIABILITY_QOS;
   qos.durability().kind = fdds::VOLATILE_DURABILITY_QOS;
   qos.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
-  qos.history().depth = 8;
+  qos.history().depth = kReaderDepth;
+  qos.resource_limits().max_instances = kMaxInstances;
+  qos.resource_limits().max_samples_per_instance = kReaderDepth;
+  qos.resource_limits().max_samples = kMaxInstances * kReaderDepth;
+  qos.resource_limits().allocated_samples = kReaderDepth;
   return qos;
 }
 

@@ -111,7 +111,7 @@ void AddPixelNoise(std::vector<uint8_t>* pixels, double stddev, uint64_t scene_s
 }
 
 FrameSchedule::FrameSchedule(double rate_hz)
-    : period_ns_(std::max<int64_t>(1, static_cast<int64_t>(std::llround(1e9 / rate_hz)))) {}
+    : period_ns_(std::llround(std::clamp(1e9 / rate_hz, 1.0, 1e9 / kMinCameraRateHz))) {}
 
 bool FrameSchedule::Offer(int64_t sim_time_ns) {
   if (!next_due_ns_ || sim_time_ns < last_ns_) next_due_ns_ = CeilToMultiple(sim_time_ns, period_ns_);

@@ -48,6 +48,7 @@ struct CameraSpec {
 // Limits a declaration is checked against.
 inline constexpr int kMaxImageSide = 4096;
 inline constexpr double kMaxCameraRateHz = 1000.0;
+inline constexpr double kMinCameraRateHz = 1e-3;  // a frame every 1000 s (1e-10 Hz overflowed the period: every state)
 
 // "t1/camera": the camera's unique name in a scene.
 std::string CameraId(const CameraSpec& camera);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/legged/legged_mjcf.h"
@@ -20,7 +21,9 @@ std::string OwnName(const std::string& composed, const std::string& robot) {
 std::array<double, 4> QuatFromXyAxes(const std::array<double, 6>& xy, bool* ok) {
   mjtNum x[3] = {xy[0], xy[1], xy[2]};
   mjtNum y[3] = {xy[3], xy[4], xy[5]};
-  *ok = mju_normalize3(x) > mjMINVAL;
+  // Components up to 1e6 (1e300 squared to infinity: the axis normalized to zero and the camera turned anyhow).
+  *ok = std::all_of(xy.begin(), xy.end(), [](double v) { return std::isfinite(v) && std::abs(v) <= 1e6; });
+  *ok = mju_normalize3(x) > mjMINVAL && *ok;
   const mjtNum d = mju_dot3(x, y);
   for (int i = 0; i < 3; ++i) y[i] -= d * x[i];
   *ok = *ok && mju_normalize3(y) > mjMINVAL;
@@ -55,7 +58,9 @@ void Apply(const CameraDecl& d, const mjModel* m, bool from_model, double model_
   if (d.xyaxes) {
     bool ok = false;
     c->quat = QuatFromXyAxes(*d.xyaxes, &ok);
-    if (!ok) errors->push_back(fmt::format("{}: xyaxes must be two independent non-zero vectors", where));
+    if (!ok)
+      errors->push_back(
+          fmt::format("{}: xyaxes must be two independent non-zero vectors, components within 1e6", where));
   }
   if (d.width) c->width = *d.width;
   if (d.height) c->height = *d.height;
@@ -86,8 +91,8 @@ std::vector<std::string> ValidateCamera(const CameraSpec& c) {
     e.push_back(fmt::format("height {} must be 1..{}", c.height, kMaxImageSide));
   if (!(c.hfov > 0 && c.hfov < M_PI * 170.0 / 180.0))
     e.push_back(fmt::format("hfov_deg {} must be in (0, 170)", c.hfov * 180.0 / M_PI));
-  if (!(c.rate_hz > 0 && c.rate_hz <= kMaxCameraRateHz))
-    e.push_back(fmt::format("rate_hz {} must be in (0, {}]", c.rate_hz, kMaxCameraRateHz));
+  if (!(c.rate_hz >= kMinCameraRateHz && c.rate_hz <= kMaxCameraRateHz))
+    e.push_back(fmt::format("rate_hz {} must be in [{}, {}]", c.rate_hz, kMinCameraRateHz, kMaxCameraRateHz));
   if (c.jpeg_quality < 1 || c.jpeg_quality > 100)
     e.push_back(fmt::format("jpeg_quality {} must be 1..100", c.jpeg_quality));
   if (!(c.noise_stddev >= 0 && c.noise_stddev <= 255))

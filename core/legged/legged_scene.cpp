@@ -5,6 +5,7 @@
 #include <cmath>
 #include <set>
 
+#include "core/legged/legged_world.h"
 #include "core/legged/placement_limits.h"
 
 namespace turf {
@@ -117,14 +118,17 @@ std::vector<std::string> ValidateLeggedScene(const LeggedScene& s) {
     for (const JointStart& j : r.start_joints) {
       if (!joints.insert(j.joint).second) e.push_back(fmt::format("{}.joints.{}: duplicate joint", where, j.joint));
       if (!std::isfinite(j.position)) e.push_back(fmt::format("{}.joints.{}: q must be finite", where, j.joint));
-      if (!NonNegative(j.kp) || !NonNegative(j.kd))
-        e.push_back(fmt::format("{}.joints.{}: kp and kd must be finite and non-negative", where, j.joint));
+      if (!NonNegative(j.kp) || !NonNegative(j.kd) || j.kp > kMaxPdKp || j.kd > kMaxPdKd)
+        e.push_back(fmt::format("{}.joints.{}: kp and kd must be finite and non-negative, kp at most {}, kd at most {}",
+                                where, j.joint, kMaxPdKp, kMaxPdKd));
     }
     const MotorParams& m = r.motors;
     if (!Positive(m.max_torque) || !Positive(m.max_speed) || !NonNegative(m.velocity_kp) ||
         !NonNegative(m.velocity_kd) || !NonNegative(m.position_kp) || !NonNegative(m.position_kd) ||
         !NonNegative(m.max_reference_lead))
       e.push_back(fmt::format("{}: motor limits must be positive and gains non-negative", where));
+    if (m.velocity_kp > kMaxPdKp || m.position_kp > kMaxPdKp || m.velocity_kd > kMaxPdKd || m.position_kd > kMaxPdKd)
+      e.push_back(fmt::format("{}: motor kp gains must be at most {}, kd gains at most {}", where, kMaxPdKp, kMaxPdKd));
   }
   return e;
 }

@@ -407,7 +407,8 @@ JointCommandError LeggedWorld::CheckJointCommand(int robot, const JointCommand& 
   switch (c.mode) {
     case JointMode::kVelocity:
       return std::abs(c.value) > motors.max_speed ? JointCommandError::kOutOfRange : JointCommandError::kOk;
-    case JointMode::kPosition:
+    case JointMode::kPosition:  // gains: negative for the robot's defaults, else as PD's (1e308 made the row inf)
+      if (c.kp > kMaxPdKp || c.kd > kMaxPdKd) return JointCommandError::kOutOfRange;
       return j.limited && (c.value < j.lo || c.value > j.hi) ? JointCommandError::kOutOfRange : JointCommandError::kOk;
     case JointMode::kTorque:
       return std::abs(c.value) > j.effort_limit ? JointCommandError::kOutOfRange : JointCommandError::kOk;

@@ -77,9 +77,10 @@ struct JointCommand {
 };
 
 // Joint commands answer kOk, kUnknownRobot, kUnknownJoint, kNotFinite or
-// kOutOfRange (beyond max speed, max torque or the joint's range; negative
-// gains; kPd: |q|, |dq|, |tau| above kMaxPdTarget, kMaxPdSpeed, kMaxPdTau, kp
-// or kd negative or above kMaxPdKp / kMaxPdKd): core/errors.h.
+// kOutOfRange (beyond max speed, max torque or the joint's range; position
+// mode: kp or kd above kMaxPdKp / kMaxPdKd; kPd: |q|, |dq|, |tau| above
+// kMaxPdTarget, kMaxPdSpeed, kMaxPdTau, kp or kd negative or above kMaxPdKp /
+// kMaxPdKd): core/errors.h.
 
 // Where a robot's root body goes (a SimSpark beam, a trainer's move, parking).
 struct RobotPlacement {

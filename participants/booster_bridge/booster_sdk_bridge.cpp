@@ -23,6 +23,7 @@ namespace bi = booster_interface::msg::dds_;
 
 namespace {
 
+constexpr int kMaxDdsDomain = 232;  // RTPS's port arithmetic with the default port parameters
 constexpr const char* kLowState = "rt/low_state";
 constexpr const char* kJointCtrl = "rt/joint_ctrl";
 constexpr const char* kOdometer = "rt/odometer_state";
@@ -119,6 +120,19 @@ class BoosterSdkBridge::Impl {
     for (const idl::JointState& j : frame.joints()) {
       const auto model = booster::IdentifyRobot(j.name());
       if (!model) continue;
+      if (domain > kMaxDdsDomain) {  // Fast DDS would exit the process (its port numbers overflow)
+        spdlog::error(
+            "Booster SDK: robot {} is not served: its DDS domain would be {}, past {} (give --booster-sdk "
+            "a lower first domain)",
+            j.robot(), domain, kMaxDdsDomain);
+        continue;
+      }
+      if (domain == options_.turf_domain)
+        spdlog::warn(
+            "Booster SDK: robot {}'s DDS domain {} is turf's own: a program there can also write turf's "
+            "topics (its control and every robot's joint commands); give --booster-sdk a domain apart where "
+            "robot programs are not trusted (README, Access control)",
+            j.robot(), domain);
       auto r = std::make_unique<Robot>(j.robot(), *model, domain++);
       r->low_state = r->dds.MakeWriter<bi::LowState_PubSubType>(kLowState);
       r->odometer = r->dds.MakeWriter<bi::Odometer_PubSubType>(kOdometer);

@@ -33,6 +33,7 @@ namespace turf {
 
 struct BoosterSdkOptions {
   int domain = 0;                                  // the first Booster robot's DDS domain
+  int turf_domain = -1;                            // turf's own (a robot's on it is warned of); -1: unknown
   std::chrono::milliseconds command_timeout{500};  // a LowCmd older than this (source timestamp) is refused
 };
 

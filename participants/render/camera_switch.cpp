@@ -26,9 +26,9 @@ std::optional<CameraControlRequest> ParseCameraSwitch(const std::string& text, s
   if (state.size() > 2) {
     char* end = nullptr;
     r.rate_hz = std::strtod(state.c_str() + 3, &end);
-    if (end == state.c_str() + 3 || *end != '\0' || !std::isfinite(r.rate_hz) || r.rate_hz <= 0 ||
+    if (end == state.c_str() + 3 || *end != '\0' || !std::isfinite(r.rate_hz) || r.rate_hz < kMinCameraRateHz ||
         r.rate_hz > kMaxCameraRateHz) {
-      *why = fmt::format("'{}': the rate is a number of Hz in (0, {}]", text, kMaxCameraRateHz);
+      *why = fmt::format("'{}': the rate is a number of Hz in [{}, {}]", text, kMinCameraRateHz, kMaxCameraRateHz);
       return std::nullopt;
     }
   }
@@ -48,8 +48,10 @@ size_t CameraSwitch::Find(const std::string& robot, const std::string& camera) c
 CameraSwitch::Outcome CameraSwitch::Apply(const CameraControlRequest& r, std::string* why) {
   const size_t i = Find(r.robot, r.camera);
   if (i == cameras_.size()) return Outcome::kNotMine;
-  if (!std::isfinite(r.rate_hz) || r.rate_hz < 0 || r.rate_hz > kMaxCameraRateHz) {
-    *why = fmt::format("rate_hz {} is not in [0, {}]", r.rate_hz, kMaxCameraRateHz);
+  if (!std::isfinite(r.rate_hz) || r.rate_hz < 0 || (r.rate_hz > 0 && r.rate_hz < kMinCameraRateHz) ||
+      r.rate_hz > kMaxCameraRateHz) {
+    *why = fmt::format("rate_hz {} is neither 0 (the scene's rate) nor in [{}, {}]", r.rate_hz, kMinCameraRateHz,
+                       kMaxCameraRateHz);
     return Outcome::kRefused;
   }
   State& s = cameras_[i];

@@ -15,6 +15,7 @@
 #include "dds/camera_topics.h"
 #include "dds/participant.h"
 #include "dds/vendor_participant.h"
+#include "participants/common/process.h"
 #include "participants/common/stalled_authentication.h"
 #include "participants/common/wakeup.h"
 #include "participants/render/camera_messages.h"
@@ -206,8 +207,8 @@ class RenderNode::Impl {
       if (outcome == CameraSwitch::Outcome::kRefused) {
         ++stats_.controls_refused;
         if (stats_.controls_refused <= 5 || stats_.controls_refused % 100 == 0)
-          spdlog::warn("camera control for {}/{} from '{}' refused ({} so far): {}", r.robot, r.camera, r.source,
-                       stats_.controls_refused, why);
+          spdlog::warn("camera control for {}/{} from '{}' refused ({} so far): {}", Printable(Clipped(r.robot)),
+                       Printable(Clipped(r.camera)), Printable(Clipped(r.source)), stats_.controls_refused, why);
         continue;
       }
       if (outcome != CameraSwitch::Outcome::kChanged) continue;
@@ -216,8 +217,11 @@ class RenderNode::Impl {
       CameraOutput& o = outs[i];
       o.dropped_before += o.schedule.dropped();
       o.schedule = FrameSchedule(switch_.rate_hz(i));
-      spdlog::info("camera {} {}{} (asked by '{}')", CameraId(o.spec), r.enabled ? "on" : "off",
-                   r.enabled ? fmt::format(" at {} Hz of sim time", switch_.rate_hz(i)) : "", r.source);
+      // A sender may switch a camera on and off in every sample: at most a line a second per kind.
+      switches_.Reject(
+          r.enabled ? "on" : "off",
+          fmt::format("camera {} {}{} (asked by '{}')", CameraId(o.spec), r.enabled ? "on" : "off",
+                      r.enabled ? fmt::format(" at {} Hz of sim time", switch_.rate_hz(i)) : "", Clipped(r.source)));
     }
     std::lock_guard<std::mutex> lock(stats_mutex_);
     stats_.cameras_on = switch_.enabled_count();
@@ -301,6 +305,7 @@ class RenderNode::Impl {
   int unknown_warned_ = 0;
   mutable std::mutex stats_mutex_;
   RenderStats stats_;
+  RejectLog switches_{"camera switched", std::chrono::seconds(1), LogLine::kEvent};
 };
 
 RenderNode::RenderNode(RenderOptions options, LeggedScene scene, std::vector<CameraSpec> cameras)

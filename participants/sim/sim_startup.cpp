@@ -119,7 +119,10 @@ int RunScene(SceneKind scene, const SimCommandLine& command_line, bool legged) {
     InProcessFrontEnds front_ends;
     if (legged && command_line.simspark) front_ends.simspark = command_line.simspark_options;
     if (legged && command_line.rcssservermj) front_ends.rcssservermj = command_line.rcssservermj_options;
-    if (legged && command_line.booster) front_ends.booster = command_line.booster_options;
+    if (legged && command_line.booster) {
+      front_ends.booster = command_line.booster_options;
+      front_ends.booster->turf_domain = options.domain;
+    }
     if (!legged) front_ends.simproto = command_line.simproto_options;
     SimHost host(std::move(scene), options, std::move(front_ends));
     return RunAlone(host.participant(), [&] { host.Run(StopRequested); });

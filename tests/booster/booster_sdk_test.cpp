@@ -198,5 +198,22 @@ TEST(BoosterSdkRobots, EachRobotGetsTheNextDomain) {
   EXPECT_EQ(robots[1], "t1_b (T1) on domain " + std::to_string(domain + 1));
 }
 
+// Robots past DDS domain 232 are not served, and the process goes on: Fast DDS exited turf-sim (status 1, no log
+// line of turf's) when it made the second robot's participant on domain 233.
+TEST(BoosterSdkRobots, ARobotPastTheLastDomainIsNotServed) {
+  LeggedScene scene = test::LoadScene("t1_stand.yaml");
+  LeggedRobot second = scene.robots[0];
+  second.name = "t1_b";
+  second.x = 2.0;
+  scene.robots.push_back(second);
+  test::BoosterRig rig(std::move(scene), 232);
+  const auto deadline = Clock::now() + 20s;
+  while (rig.bridge().Robots().empty() && Clock::now() < deadline) ASSERT_TRUE(rig.Step(4).ok());
+  for (int i = 0; i < 5; ++i) ASSERT_TRUE(rig.Step(4).ok());
+  const std::vector<std::string> robots = rig.bridge().Robots();
+  ASSERT_EQ(robots.size(), 1u);
+  EXPECT_EQ(robots[0], "t1 (T1) on domain 232");
+}
+
 }  // namespace
 }  // namespace turf

@@ -87,6 +87,15 @@ TEST(FrameSchedule, StatesSlowerThanTheRateRenderEveryStateAndCountTheRest) {
   EXPECT_EQ(s.dropped(), 10u);
 }
 
+// A rate below the minimum (1e-10 Hz overflowed 1e9 / rate: a period of 1 ns, every state rendered) is at worst the
+// slowest schedule, never the fastest.
+TEST(FrameSchedule, ATinyRateIsTheSlowestScheduleNotTheFastest) {
+  FrameSchedule s(1e-10);
+  EXPECT_TRUE(s.Offer(0));
+  for (int i = 1; i <= 100; ++i) EXPECT_FALSE(s.Offer(i * 10'000'000LL)) << i;
+  EXPECT_EQ(s.dropped(), 0u);
+}
+
 TEST(FrameSchedule, StartsOverWhenTimeGoesBack) {
   FrameSchedule s(10.0);
   EXPECT_TRUE(s.Offer(5'000'000'000LL));

@@ -53,7 +53,7 @@ TEST(CameraSwitch, SwitchesItsOwnCamerasOnAndOffAtARate) {
 
 TEST(CameraSwitch, ABadRateIsRefusedAndChangesNothing) {
   CameraSwitch s(Three());
-  for (double bad : {std::nan(""), -1.0, double{INFINITY}, kMaxCameraRateHz + 1}) {
+  for (double bad : {std::nan(""), -1.0, double{INFINITY}, kMaxCameraRateHz + 1, 1e-10, kMinCameraRateHz / 2}) {
     std::string why;
     EXPECT_EQ(s.Apply({"t1", "c", true, bad, "test"}, &why), CameraSwitch::Outcome::kRefused) << bad;
     EXPECT_NE(why.find("rate_hz"), std::string::npos);
@@ -75,9 +75,9 @@ TEST(CameraSwitch, ParsesCommandLineSwitches) {
   auto off = ParseCameraSwitch("nao_1/top=off", &why);
   ASSERT_TRUE(off.has_value()) << why;
   EXPECT_FALSE(off->enabled);
-  for (const char* bad :
-       {"nao_1/top", "nao_1=on", "/top=on", "nao_1/=on", "nao_1/top=yes", "nao_1/top=on@", "nao_1/top=on@0",
-        "nao_1/top=on@-3", "nao_1/top=on@nan", "nao_1/top=on@5000", "nao_1/top=on@5x", "nao_1/top=onn"}) {
+  for (const char* bad : {"nao_1/top", "nao_1=on", "/top=on", "nao_1/=on", "nao_1/top=yes", "nao_1/top=on@",
+                          "nao_1/top=on@0", "nao_1/top=on@-3", "nao_1/top=on@nan", "nao_1/top=on@5000",
+                          "nao_1/top=on@5x", "nao_1/top=onn", "nao_1/top=on@1e-10"}) {
     why.clear();
     EXPECT_FALSE(ParseCameraSwitch(bad, &why).has_value()) << bad;
     EXPECT_FALSE(why.empty()) << bad;

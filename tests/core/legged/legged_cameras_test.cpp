@@ -76,6 +76,9 @@ TEST(LeggedCameras, BadDeclarationsAreRefusedByName) {
   EXPECT_TRUE(HasError(Resolve(head + "      - {name: camera, hfov_deg: 180}\n"), "hfov_deg 180"));
   EXPECT_TRUE(HasError(Resolve(head + "      - {name: camera, jpeg_quality: 0}\n"), "jpeg_quality 0"));
   EXPECT_TRUE(HasError(Resolve(head + "      - {name: camera, xyaxes: [1, 0, 0, 2, 0, 0]}\n"), "xyaxes"));
+  // 1e300 squared is infinite: the axis was normalized to zero and the camera pointed anywhere.
+  EXPECT_TRUE(HasError(Resolve(head + "      - {name: camera, xyaxes: [1e300, 0, 0, 0, 1, 0]}\n"), "xyaxes"));
+  EXPECT_TRUE(HasError(Resolve(head + "      - {name: camera, rate_hz: 1e-10}\n"), "rate_hz 1e-10"));
   // A camera name that cannot be part of a ROS topic name.
   EXPECT_TRUE(HasError(Resolve(head + "      - {name: my-eye, body: H2}\n"), "cannot name a ROS topic"));
 }

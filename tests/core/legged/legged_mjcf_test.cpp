@@ -53,6 +53,20 @@ TEST(LeggedMjcfTest, ARobotOfAnyMjcfWorks) {
   for (int i = 0; i < 1000; ++i) w.Step();
   EXPECT_NEAR(w.State().robots[0].joint_positions[0], 0.5, 0.05);
   EXPECT_FALSE(w.State().robots[0].has_imu);
+  // Position-mode gains are bounded as PD's (kp 1e308 made the motor's row infinite: the joint missed its target).
+  EXPECT_EQ(w.SetJointCommand(0, {"shoulder", JointMode::kPosition, 0.1, 1e308, 1.79e308}),
+            JointCommandError::kOutOfRange);
+  EXPECT_EQ(w.SetJointCommand(0, {"shoulder", JointMode::kPosition, 0.1, kMaxPdKp * 1.01, 5.0}),
+            JointCommandError::kOutOfRange);
+  EXPECT_EQ(w.SetJointCommand(0, {"shoulder", JointMode::kPosition, 0.1, 100.0, kMaxPdKd * 1.01}),
+            JointCommandError::kOutOfRange);
+  EXPECT_EQ(w.SetJointCommand(0, {"shoulder", JointMode::kPosition, 0.1, kMaxPdKp, kMaxPdKd}), JointCommandError::kOk);
+  EXPECT_EQ(w.SetJointCommand(0, {"shoulder", JointMode::kPosition, 0.1, -1.0, -1.0}), JointCommandError::kOk);
+  for (int i = 0; i < 1000; ++i) w.Step();
+  EXPECT_NEAR(w.State().robots[0].joint_positions[0], 0.1, 0.05) << "the robot's default gains";
+  LeggedScene huge = NaoScene(1);
+  huge.robots[0].motors.position_kp = 1e300;
+  EXPECT_FALSE(ValidateLeggedScene(huge).empty());
 }
 
 TEST(LeggedMjcfTest, RefusesBadRobotFiles) {
