@@ -3,6 +3,7 @@
 #include <climits>
 #include <cmath>
 #include <initializer_list>
+#include <set>
 #include <utility>
 
 #include "codecs/proto/grsim.pb.h"
@@ -121,9 +122,20 @@ GrsimError ConvertCommand(const wire::grSim_Robot_Command& in, idl::Team team, c
   return ConvertKick(in, config, out, field);
 }
 
-GrsimError ConvertBall(const wire::grSim_BallReplacement& in, idl::SimControl* out, std::string* field) {
+// Inside the walls less `radius` (true while the walls are unknown).
+bool InsideWalls(double x, double y, double radius, const GrsimCodecConfig& config) {
+  if (config.wall_x <= 0 || config.wall_y <= 0) return true;
+  return std::abs(x) <= config.wall_x - radius && std::abs(y) <= config.wall_y - radius;
+}
+
+GrsimError ConvertBall(const wire::grSim_BallReplacement& in, const GrsimCodecConfig& config, idl::SimControl* out,
+                       std::string* field) {
   GrsimError e = CheckFinite({{"x", in.x()}, {"y", in.y()}, {"vx", in.vx()}, {"vy", in.vy()}}, field);
   if (e != GrsimError::kOk) return e;
+  if (!InsideWalls(in.x(), in.y(), config.ball_radius, config)) {
+    *field = "x";
+    return GrsimError::kOutsideField;
+  }
   if (std::hypot(in.vx(), in.vy()) > kMaxTeleportSpeed) {
     *field = "vx";
     return GrsimError::kOutOfRange;
@@ -151,11 +163,16 @@ GrsimError ConvertRobot(const wire::grSim_RobotReplacement& in, const GrsimCodec
     *field = "id";
     return GrsimError::kUnknownRobot;
   }
+  const bool on_field = in.has_turnon() ? in.turnon() : true;
+  if (on_field && !InsideWalls(in.x(), in.y(), config.robot_radius, config)) {
+    *field = "x";
+    return GrsimError::kOutsideField;
+  }
   out->op(idl::OP_TELEPORT_ROBOT);
   idl::RobotTeleport& r = out->robot();
   r.team(in.yellowteam() ? idl::TEAM_YELLOW : idl::TEAM_BLUE);
   r.id(static_cast<uint8_t>(in.id()));
-  r.on_field(in.has_turnon() ? in.turnon() : true);
+  r.on_field(on_field);
   r.position().x(in.x());
   r.position().y(in.y());
   r.orientation(std::remainder(in.dir() * kDegToRad, 2 * M_PI));  // degrees -> (-pi, pi]
@@ -192,6 +209,8 @@ std::string CheckConfig(const GrsimCodecConfig& c) {
   if (!(std::isfinite(c.max_flat_kick_speed) && c.max_flat_kick_speed >= 0 && std::isfinite(c.max_chip_kick_speed) &&
         c.max_chip_kick_speed >= 0))
     return "kick speed limits must be >= 0 (0: none)";
+  for (double v : {c.wall_x, c.wall_y, c.ball_radius, c.robot_radius})
+    if (!(std::isfinite(v) && v >= 0 && v <= 1000)) return "walls and radii must be in [0, 1000] m (0: unknown)";
   return "";
 }
 
@@ -222,15 +241,18 @@ GrsimDecodeResult Decode(const uint8_t* bytes, size_t size, const GrsimCodecConf
   }
   if (packet.has_replacement()) {
     const wire::grSim_Replacement& replacement = packet.replacement();
+    std::set<std::pair<bool, uint32_t>> replaced;  // each robot once (490 replacements a packet: as many states)
     for (int i = 0; i < replacement.robots_size(); ++i) {
       idl::SimControl control;
       const GrsimError e = ConvertRobot(replacement.robots(i), config, &control, &field);
       if (e != GrsimError::kOk) return Fail(e, Indexed("replacement.robots", i, field));
+      if (!replaced.insert({replacement.robots(i).yellowteam(), replacement.robots(i).id()}).second)
+        return Fail(GrsimError::kDuplicateRobot, Indexed("replacement.robots", i, "id"));
       out.controls.push_back(std::move(control));
     }
     if (replacement.has_ball()) {
       idl::SimControl control;
-      const GrsimError e = ConvertBall(replacement.ball(), &control, &field);
+      const GrsimError e = ConvertBall(replacement.ball(), config, &control, &field);
       if (e != GrsimError::kOk) return Fail(e, "replacement.ball." + field);
       out.controls.push_back(std::move(control));
     }

@@ -42,6 +42,13 @@ struct GrsimCodecConfig {
   // > 0: clamp kicks to these (SslField.max_flat/chip_kick_speed); 0: leave it to turf-sim.
   double max_flat_kick_speed = 0.0;
   double max_chip_kick_speed = 0.0;
+  // > 0: the walls (SslField: |x| <= length / 2 + boundary_width_goal_line, |y| <= width / 2 + boundary_width),
+  // which a replacement's ball (less ball_radius) and robots on the field (less robot_radius) must fit inside, so a
+  // packet turf-sim would refuse in part is refused whole here; 0: unknown (turf-sim checks).
+  double wall_x = 0.0;
+  double wall_y = 0.0;
+  double ball_radius = 0.0;
+  double robot_radius = 0.0;
 };
 
 // Empty if `config` is usable, else why not. Decode assumes a usable config.
@@ -49,7 +56,8 @@ std::string CheckConfig(const GrsimCodecConfig& config);
 
 // turf's one taxonomy (core/errors.h). The codec answers kEmpty, kOversized (more
 // than max_datagram_size bytes), kMalformed, kMissingRequired, kNotFinite,
-// kOutOfRange (also a negative kick) and kUnknownRobot (id >= robots_per_team).
+// kOutOfRange (also a negative kick), kUnknownRobot (id >= robots_per_team), kDuplicateRobot (a robot replaced
+// twice in one packet) and kOutsideField (a replacement beyond the walls, when they are known).
 using GrsimError = turf::Error;
 inline const char* GrsimErrorName(GrsimError error) { return turf::ErrorName(error); }
 

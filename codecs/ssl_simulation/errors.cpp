@@ -3,6 +3,7 @@
 #include <google/protobuf/descriptor.h>
 #include <google/protobuf/unknown_field_set.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -22,13 +23,24 @@ std::string DecodeErrorCode(DecodeError error) {
 
 SimError MakeError(DecodeError error, std::string message) { return {DecodeErrorCode(error), std::move(message)}; }
 
+// `text` cut to at most `max` bytes, not inside a UTF-8 sequence (a protobuf string must stay valid UTF-8).
+std::string ClipUtf8(const std::string& text, size_t max) {
+  if (text.size() <= max) return text;
+  size_t cut = max - 3;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  return text.substr(0, cut) + "...";
+}
+
 void ToWire(const SimError& error, wire::simulation::SimulatorError* out) {
   out->set_code(error.code);
-  out->set_message(error.message);
+  out->set_message(ClipUtf8(error.message, kMaxErrorMessage));
 }
 
 void AppendErrors(const std::vector<SimError>& errors, pb::RepeatedPtrField<wire::simulation::SimulatorError>* out) {
-  for (const SimError& e : errors) ToWire(e, out->Add());
+  const size_t room = kMaxListedErrors - std::min<size_t>(kMaxListedErrors, out->size());
+  for (size_t i = 0; i < errors.size() && i < room; ++i) ToWire(errors[i], out->Add());
+  if (errors.size() > room)
+    ToWire({kMoreErrors, std::to_string(errors.size() - room) + " more errors, not listed"}, out->Add());
 }
 
 DecodeError CheckSize(size_t size, std::string* why) {
@@ -150,7 +162,10 @@ void ReportUnknownFields(const pb::Message& message, std::vector<SimError>* erro
   const std::vector<std::string> unknown = UnknownFields(message);
   if (unknown.empty()) return;
   std::string list;
-  for (const std::string& u : unknown) list += (list.empty() ? "" : ", ") + u;
+  for (size_t i = 0; i < unknown.size() && i < kMaxListedUnknownFields; ++i)
+    list += (list.empty() ? "" : ", ") + unknown[i];
+  if (unknown.size() > kMaxListedUnknownFields)
+    list += " and " + std::to_string(unknown.size() - kMaxListedUnknownFields) + " more";
   errors->push_back({kUnknownField, "fields (or enum values) turf does not know were not applied: " + list});
 }
 

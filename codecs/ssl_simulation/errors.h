@@ -54,6 +54,12 @@ inline constexpr char kSimNotAvailable[] = "TURF_SIM_NOT_AVAILABLE";
 inline constexpr char kSyncDisabled[] = "TURF_SYNC_DISABLED";
 // The sender's address is not on the port's source allowlist (--blue-allow, --yellow-allow, --operator-allow).
 inline constexpr char kNotAllowed[] = "TURF_NOT_ALLOWED";
+// A response lists at most kMaxListedErrors errors, each message at most kMaxErrorMessage bytes, then this one
+// ("N more errors, not listed"): a datagram of 3.6 KB was answered with 65 KB (an amplifier), or not at all.
+inline constexpr char kMoreErrors[] = "TURF_MORE_ERRORS";
+inline constexpr size_t kMaxListedErrors = 16;
+inline constexpr size_t kMaxErrorMessage = 512;
+inline constexpr size_t kMaxListedUnknownFields = 16;
 
 struct SimError {
   std::string code;

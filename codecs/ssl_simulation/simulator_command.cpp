@@ -229,8 +229,16 @@ SimulatorCommandDecode ConvertSimulatorCommand(const ws::SimulatorCommand& messa
     if (control.has_teleport_ball()) ConvertBall(control.teleport_ball(), ctx, &p, &out.requests, &safely);
     std::vector<idl::SimControl> robots;
     std::set<std::pair<idl::Team, uint8_t>> teleported;
-    for (int i = 0; i < control.teleport_robot_size(); ++i)
+    std::set<std::pair<int, uint32_t>> listed;  // each robot once (2040 teleports of one robot were 2040 states)
+    for (int i = 0; i < control.teleport_robot_size(); ++i) {
+      const ws::RobotId& id = control.teleport_robot(i).id();
+      if (!listed.insert({static_cast<int>(id.team()), id.id()}).second) {
+        p.Add(DecodeError::kDuplicateRobot, "teleport_robot[" + std::to_string(i) + "]: robot " +
+                                                std::to_string(id.id()) + " of that team is teleported twice");
+        break;
+      }
       ConvertRobot(control.teleport_robot(i), i, ctx, &p, &robots);
+    }
     for (const idl::SimControl& r : robots) teleported.insert({r.robot().team(), r.robot().id()});
     if (safely && p.ok()) ClearBallTarget(out.requests.back().ball(), ctx, teleported, &out.requests);
     out.requests.insert(out.requests.end(), robots.begin(), robots.end());

@@ -204,6 +204,10 @@ class GrsimBridge::Impl {
     next.wheel_radius = field.wheel_radius();
     next.max_flat_kick_speed = field.max_flat_kick_speed();
     next.max_chip_kick_speed = field.max_chip_kick_speed();
+    next.wall_x = field.field_length() / 2 + field.boundary_width_goal_line();
+    next.wall_y = field.field_width() / 2 + field.boundary_width();
+    next.ball_radius = field.ball_radius();
+    next.robot_radius = field.max_robot_radius();
     const std::string why = grsim::CheckConfig(next);
     if (!why.empty()) {
       spdlog::warn("ignoring {} from turf-sim: {}", participant_.TopicName(dds::Topic::kSslField), why);

@@ -221,13 +221,17 @@ TEST(GrsimBridge, ReplacementPlacesBallAndRobots) {
       << f.observer.state().ball().position().x() << ", " << f.observer.state().ball().position().y() << ")";
   EXPECT_EQ(f.stack.bridge().Stats().controls, 3u);
 
-  // A ball outside the walls: turf-sim refuses it, the bridge reports the refusal.
+  // A ball outside the walls, with a robot: the bridge knows the walls from ssl/field and refuses the packet whole
+  // (turf-sim refused the ball after placing the robot).
   wire::grSim_Packet outside;
+  *outside.mutable_replacement()->add_robots() = Placed(0, false, -2.0, -1.0, 0.0);
   outside.mutable_replacement()->mutable_ball()->set_x(50.0);
   f.team.Send(outside);
   EXPECT_TRUE(
-      f.observer.Wait([&](const idl::WorldState&) { return f.stack.bridge().Rejected("control_rejected") == 1; }, 15s));
+      f.observer.Wait([&](const idl::WorldState&) { return f.stack.bridge().Rejected("outside_field") == 1; }, 15s));
+  EXPECT_EQ(f.stack.bridge().Rejected("control_rejected"), 0u);
   EXPECT_NEAR(f.observer.state().ball().position().x(), -1.0, 1e-3);
+  EXPECT_NEAR(FindRobot(f.observer.state(), idl::TEAM_BLUE, 0)->position().x(), 2.0, 1e-3) << "the robot stays";
 }
 
 TEST(GrsimBridge, KickAndRobotStatus) {

@@ -300,6 +300,36 @@ TEST(GrsimCodec, AbsurdReplacementsAreRefusedWhateverTurnonSays) {
   EXPECT_FALSE(r.requests.controls[0].robot().on_field());
 }
 
+// A packet turf-sim would refuse in part is refused whole: a robot twice (490 a packet were 490 world states), or,
+// once the walls are known, a ball or robot beyond them (the robots before a ball at x = 50 were placed).
+TEST(GrsimCodec, AReplacementIsWholeOrRefused) {
+  wire::grSim_Packet twice;
+  *twice.mutable_replacement()->add_robots() = Placed(3, false, 1.0, 1.0, 0.0);
+  *twice.mutable_replacement()->add_robots() = Placed(3, true, 1.0, -1.0, 0.0);  // the other team's 3: fine
+  *twice.mutable_replacement()->add_robots() = Placed(3, false, 2.0, 1.0, 0.0);
+  ExpectRefused(DecodeBytes(Bytes(twice)), GrsimError::kDuplicateRobot, "replacement.robots[2].id");
+
+  GrsimCodecConfig walls;  // division A: 12 x 9 m, 0.3 m to the walls
+  walls.wall_x = 6.3;
+  walls.wall_y = 4.8;
+  walls.ball_radius = 0.0215;
+  walls.robot_radius = 0.09;
+  wire::grSim_Packet far_ball;
+  *far_ball.mutable_replacement()->add_robots() = Placed(3, false, 1.0, 1.0, 0.0);
+  far_ball.mutable_replacement()->mutable_ball()->set_x(50.0);
+  far_ball.mutable_replacement()->mutable_ball()->set_y(0.0);
+  ExpectRefused(DecodeBytes(Bytes(far_ball), walls), GrsimError::kOutsideField, "replacement.ball.x");
+  EXPECT_TRUE(DecodeBytes(Bytes(far_ball)).ok()) << "walls unknown: turf-sim checks";
+  far_ball.mutable_replacement()->mutable_ball()->set_x(6.27);
+  EXPECT_TRUE(DecodeBytes(Bytes(far_ball), walls).ok());
+
+  wire::grSim_Packet far_robot;
+  *far_robot.mutable_replacement()->add_robots() = Placed(3, false, 0.0, 4.75, 0.0);
+  ExpectRefused(DecodeBytes(Bytes(far_robot), walls), GrsimError::kOutsideField, "replacement.robots[0].x");
+  far_robot.mutable_replacement()->mutable_robots(0)->set_turnon(false);  // taken off: anywhere
+  EXPECT_TRUE(DecodeBytes(Bytes(far_robot), walls).ok());
+}
+
 TEST(GrsimCodec, UnknownRobotsAreRefused) {
   ExpectRefused(DecodeRobot(GrsimRobot(16)), GrsimError::kUnknownRobot, "id");
   ExpectRefused(DecodeRobot(GrsimRobot(4000000000u)), GrsimError::kUnknownRobot, "id");

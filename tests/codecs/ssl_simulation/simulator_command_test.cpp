@@ -221,6 +221,24 @@ TEST_F(SimulatorCommandCodec, BadValuesAnywhereRefuseEverything) {
   ExpectRefused(Convert(c), DecodeError::kNotFinite);
 }
 
+// Each robot once: 2040 teleports of one robot in a datagram were 2040 world states (and lost replies).
+TEST_F(SimulatorCommandCodec, ARobotTeleportedTwiceRefusesTheCommand) {
+  ws::SimulatorCommand c;
+  auto place = [&](ws::Team team, float x) {
+    ws::TeleportRobot* t = Robot(&c, team, 1);
+    t->set_x(x);
+    t->set_y(0.5f);
+    t->set_present(true);
+  };
+  place(ws::BLUE, 0.5f);
+  place(ws::YELLOW, -0.5f);  // the other team's 1: fine
+  const SimulatorCommandDecode ok = Convert(c);
+  ASSERT_EQ(ok.error, DecodeError::kOk) << (ok.errors.empty() ? "" : ok.errors[0].message);
+  EXPECT_EQ(ok.requests.size(), 2u);
+  place(ws::BLUE, 1.0f);
+  ExpectRefused(Convert(c), DecodeError::kDuplicateRobot);
+}
+
 TEST_F(SimulatorCommandCodec, SimulationSpeed) {
   auto speed = [&](float s) {
     ws::SimulatorCommand c;
