@@ -1,5 +1,7 @@
 #include "participants/viewer/http_rules.h"
 
+#include <unistd.h>
+
 #include <cctype>
 
 namespace turf::viewer {
@@ -29,6 +31,29 @@ bool Token(std::string_view s) {
   for (char c : s)
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
   return true;
+}
+
+// An IPv4 address in dots or a bracketed IPv6 one: no DNS lookup, so no rebinding.
+bool IpLiteral(std::string_view name) {
+  if (name.size() >= 2 && name.front() == '[' && name.back() == ']') return true;
+  if (name.empty()) return false;
+  for (char c : name)
+    if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '.')) return false;
+  return true;
+}
+
+bool SameName(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i]))) return false;
+  return true;
+}
+
+bool NamedHost(std::string_view name, const std::vector<std::string>& names) {
+  if (IpLiteral(name) || SameName(name, "localhost")) return true;
+  for (const std::string& n : names)
+    if (SameName(name, n)) return true;
+  return false;
 }
 
 }  // namespace
@@ -66,11 +91,24 @@ std::string ContentType(std::string_view path) {
   return "application/octet-stream";
 }
 
-bool UpgradeAllowed(std::string_view host, std::string_view origin, bool loopback_only) {
+std::vector<std::string> PageHostNames(const std::vector<std::string>& extra) {
+  std::vector<std::string> names = extra;
+  char host[256] = {};
+  if (gethostname(host, sizeof(host) - 1) == 0 && host[0] != '\0') {
+    names.emplace_back(host);
+    names.push_back(std::string(host) + ".local");
+  }
+  return names;
+}
+
+bool UpgradeAllowed(std::string_view host, std::string_view origin, bool loopback_only,
+                    const std::vector<std::string>& names) {
   if (host.empty()) return false;
+  const std::string_view name = HostName(host);
   if (loopback_only) {
-    const std::string_view name = HostName(host);
     if (name != "127.0.0.1" && name != "localhost" && name != "[::1]") return false;
+  } else if (!NamedHost(name, names)) {
+    return false;
   }
   if (origin.empty()) return true;
   const size_t scheme = origin.find("://");

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace turf::viewer {
 
@@ -32,8 +33,14 @@ std::string ContentType(std::string_view path);
 // drive the simulator, so the Origin's host:port must equal the Host header.
 // A request without Origin (not from a browser) is allowed. With
 // `loopback_only` (the default 127.0.0.1 binding) the Host must also be a
-// loopback name, which stops DNS-rebinding pages.
-bool UpgradeAllowed(std::string_view host, std::string_view origin, bool loopback_only);
+// loopback name, which stops DNS-rebinding pages; on another binding it must
+// be an IP address, localhost or one of `names` (this machine's name and
+// --allow-host's, any case): a rebinding site's own name is none of them.
+bool UpgradeAllowed(std::string_view host, std::string_view origin, bool loopback_only,
+                    const std::vector<std::string>& names = {});
+// The names a page on a non-loopback binding may use besides addresses: `extra` (--allow-host), this machine's
+// host name and that name with ".local" (mDNS).
+std::vector<std::string> PageHostNames(const std::vector<std::string>& extra);
 
 // At most `per_second` messages in any one-second window; more are refused.
 class RateLimit {

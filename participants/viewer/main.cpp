@@ -22,6 +22,10 @@ int main(int argc, char** argv) {
   app.add_option("--rate", options.rate_hz, "state messages to the page per second, at most")
       ->capture_default_str()
       ->check(CLI::Range(1.0, 1000.0));
+  app.add_option("--allow-host", options.allow_hosts,
+                 "with --listen other than loopback: a name the page may be reached by besides IP addresses, "
+                 "localhost and this machine's name (repeatable; other names are refused: DNS rebinding)")
+      ->type_name("NAME");
   app.add_option("--recording", options.recording,
                  "show this turf-record MCAP file instead of DDS, with a time slider (no DDS; see README)");
   return participant.Run(argc, argv, [&] {

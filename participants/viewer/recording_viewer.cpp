@@ -11,6 +11,7 @@
 
 #include "participants/common/mcap_file.h"
 #include "participants/common/process.h"
+#include "participants/viewer/http_rules.h"
 #include "participants/viewer/recording.h"
 #include "participants/viewer/viewer_json.h"
 #include "participants/viewer/web_server.h"
@@ -45,6 +46,7 @@ class RecordingViewer::Impl {
                    recording_->damage().Describe());
     viewer::WebServerOptions web;
     web.listen = options_.listen;
+    web.host_names = viewer::PageHostNames(options_.allow_hosts);
     web.port = options_.port;
     web.web_root = options_.web_root;
     web.hello = viewer::HelloJson(options_.prefix);

@@ -26,6 +26,7 @@
 #include "participants/common/stalled_authentication.h"
 #include "participants/common/wakeup.h"
 #include "participants/viewer/camera_frames.h"
+#include "participants/viewer/http_rules.h"
 #include "participants/viewer/viewer_json.h"
 #include "participants/viewer/viewer_model.h"
 #include "participants/viewer/web_server.h"
@@ -73,6 +74,7 @@ class ViewerNode::Impl {
         rejects_("input") {
     viewer::WebServerOptions web;
     web.listen = options_.listen;
+    web.host_names = viewer::PageHostNames(options_.allow_hosts);
     web.port = options_.port;
     web.web_root = options_.web_root;
     web.hello = model_.Hello();

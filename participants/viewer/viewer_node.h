@@ -27,6 +27,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/pinned.h"
 #include "participants/common/participant_options.h"
@@ -36,10 +37,11 @@ namespace turf {
 struct ViewerOptions : ParticipantOptions {
   ViewerOptions() { name = "turf-viewer"; }
   std::string listen = "127.0.0.1";
-  uint16_t port = 8080;   // 0: any free port (see ViewerNode::port())
-  std::string web_root;   // must hold index.html
-  double rate_hz = 60.0;  // state messages to the pages, at most
-  std::string recording;  // an MCAP file to show instead of DDS (recording_viewer.h); empty: live
+  uint16_t port = 8080;                  // 0: any free port (see ViewerNode::port())
+  std::string web_root;                  // must hold index.html
+  double rate_hz = 60.0;                 // state messages to the pages, at most
+  std::string recording;                 // an MCAP file to show instead of DDS (recording_viewer.h); empty: live
+  std::vector<std::string> allow_hosts;  // --allow-host: names the page may be reached by (non-loopback --listen)
 };
 
 struct ViewerStats {

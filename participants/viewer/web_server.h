@@ -26,6 +26,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/pinned.h"
 
@@ -44,6 +45,9 @@ struct WebServerOptions {
   size_t max_clients_per_address = 24;
   int max_messages_per_second = 200;
   size_t max_queued_events = 64;  // per page
+  // On a non-loopback binding: the names a page may reach the server by besides IP addresses and localhost
+  // (http_rules.h's DNS-rebinding guard; PageHostNames).
+  std::vector<std::string> host_names;
 };
 
 struct WebServerHandlers {

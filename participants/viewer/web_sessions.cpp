@@ -83,7 +83,8 @@ void HttpSession::Upgrade(http::request<http::string_body> request) {
     Respond(Plain(http::status::not_found, request.version(), false, "WebSocket path is /ws\n"));
     return;
   }
-  if (!UpgradeAllowed(Std(request[http::field::host]), Std(request[http::field::origin]), shared.loopback_only)) {
+  if (!UpgradeAllowed(Std(request[http::field::host]), Std(request[http::field::origin]), shared.loopback_only,
+                      shared.options.host_names)) {
     shared.Refuse(0, "http.origin",
                   "WebSocket from origin '" + Clip(request[http::field::origin]) + "' for host '" +
                       Clip(request[http::field::host]) + "'");

@@ -228,9 +228,21 @@ TEST(HttpRules, WebSocketOnlyFromTheViewersOwnPage) {
   EXPECT_FALSE(UpgradeAllowed("127.0.0.1:8080", "http://127.0.0.1:9999", true));
   EXPECT_FALSE(UpgradeAllowed("127.0.0.1:8080", "null", true));
   EXPECT_FALSE(UpgradeAllowed("evil.example:8080", "http://evil.example:8080", true));  // DNS rebinding
-  EXPECT_TRUE(UpgradeAllowed("field-pc:8080", "http://field-pc:8080", false));          // --listen 0.0.0.0
-  EXPECT_FALSE(UpgradeAllowed("field-pc:8080", "http://evil.example", false));
+  const std::vector<std::string> names = {"field-pc"};
+  EXPECT_TRUE(UpgradeAllowed("field-pc:8080", "http://field-pc:8080", false, names));  // --listen 0.0.0.0
+  EXPECT_TRUE(UpgradeAllowed("Field-PC:8080", "http://Field-PC:8080", false, names));  // names have no case
+  EXPECT_FALSE(UpgradeAllowed("field-pc:8080", "http://evil.example", false, names));
   EXPECT_FALSE(UpgradeAllowed("", "", true));
+  // On the network the Host is an address, localhost or a name the viewer knows: a rebinding site's page (its own
+  // name resolved to this machine's address) has Origin == Host, which alone let it drive the simulator.
+  EXPECT_FALSE(UpgradeAllowed("evil.example:8080", "http://evil.example:8080", false, names));
+  EXPECT_TRUE(UpgradeAllowed("192.168.1.20:8080", "http://192.168.1.20:8080", false, names));
+  EXPECT_TRUE(UpgradeAllowed("[fe80::1]:8080", "http://[fe80::1]:8080", false, names));
+  EXPECT_TRUE(UpgradeAllowed("localhost:8080", "http://localhost:8080", false, names));
+  const std::vector<std::string> defaults = PageHostNames({"robots.lab"});
+  EXPECT_EQ(defaults.front(), "robots.lab");
+  EXPECT_GE(defaults.size(), 3u) << "this machine's name and its .local";
+  EXPECT_TRUE(UpgradeAllowed(defaults[1] + ":8080", "http://" + defaults[1] + ":8080", false, defaults));
 }
 
 TEST(HttpRules, RateLimitPerSecond) {
