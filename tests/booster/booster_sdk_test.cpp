@@ -182,14 +182,19 @@ TEST_F(BoosterSdkTest, BadCommandsAreRefusedAndTheRobotHoldsItsLastCommand) {
 }
 
 // Every T1 and K1 of a scene on a DDS domain of its own, in scene order.
-TEST(BoosterSdkRobots, EachRobotGetsTheNextDomain) {
+// t1_stand.yaml with a second T1, t1_b, 2 m along x.
+LeggedScene TwoT1() {
   LeggedScene scene = test::LoadScene("t1_stand.yaml");
   LeggedRobot second = scene.robots[0];
   second.name = "t1_b";
   second.x = 2.0;
   scene.robots.push_back(second);
+  return scene;
+}
+
+TEST(BoosterSdkRobots, EachRobotGetsTheNextDomain) {
   const int domain = test::TestDomain(41);
-  test::BoosterRig rig(std::move(scene), domain);
+  test::BoosterRig rig(TwoT1(), domain);
   const auto deadline = Clock::now() + 20s;
   while (rig.bridge().Robots().size() < 2 && Clock::now() < deadline) ASSERT_TRUE(rig.Step(4).ok());
   const std::vector<std::string> robots = rig.bridge().Robots();
@@ -201,12 +206,7 @@ TEST(BoosterSdkRobots, EachRobotGetsTheNextDomain) {
 // Robots past DDS domain 232 are not served, and the process goes on: Fast DDS exited turf-sim (status 1, no log
 // line of turf's) when it made the second robot's participant on domain 233.
 TEST(BoosterSdkRobots, ARobotPastTheLastDomainIsNotServed) {
-  LeggedScene scene = test::LoadScene("t1_stand.yaml");
-  LeggedRobot second = scene.robots[0];
-  second.name = "t1_b";
-  second.x = 2.0;
-  scene.robots.push_back(second);
-  test::BoosterRig rig(std::move(scene), 232);
+  test::BoosterRig rig(TwoT1(), 232);
   const auto deadline = Clock::now() + 20s;
   while (rig.bridge().Robots().empty() && Clock::now() < deadline) ASSERT_TRUE(rig.Step(4).ok());
   for (int i = 0; i < 5; ++i) ASSERT_TRUE(rig.Step(4).ok());

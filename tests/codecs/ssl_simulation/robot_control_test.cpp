@@ -258,6 +258,17 @@ TEST(RobotControlCodec, SyncPortMapsIdsSixteenUpToYellow) {
   ExpectRefused(Decode(Serialize(yellow_missing), Port::kSync, 6), DecodeError::kUnknownRobot);
 }
 
+// Robot 1 driving forward at 0.5 m/s.
+ws::RobotControl OneLocalCommand() {
+  ws::RobotControl rc;
+  ws::RobotCommand* c = rc.add_robot_commands();
+  c->set_id(1);
+  c->mutable_move_command()->mutable_local_velocity()->set_forward(0.5f);
+  c->mutable_move_command()->mutable_local_velocity()->set_left(0.0f);
+  c->mutable_move_command()->mutable_local_velocity()->set_angular(0.0f);
+  return rc;
+}
+
 TEST(RobotControlCodec, UnknownFieldsAreAppliedButNamed) {
   std::vector<uint8_t> bytes = kLocalVelocityAndKick;
   bytes[1] += 2;
@@ -273,12 +284,8 @@ TEST(RobotControlCodec, UnknownFieldsAreAppliedButNamed) {
 // A response stays small whatever the request: 1800 unknown fields in a 3.6 KB datagram were answered with 65 KB
 // (an 18x reflector), and 1500 duplicates were refused with an answer too big to send.
 TEST(RobotControlCodec, AResponseListsBoundedErrors) {
-  ws::RobotControl rc;
-  ws::RobotCommand* c = rc.add_robot_commands();
-  c->set_id(1);
-  c->mutable_move_command()->mutable_local_velocity()->set_forward(0.5f);
-  c->mutable_move_command()->mutable_local_velocity()->set_left(0.0f);
-  c->mutable_move_command()->mutable_local_velocity()->set_angular(0.0f);
+  ws::RobotControl rc = OneLocalCommand();
+  ws::RobotCommand* c = rc.mutable_robot_commands(0);
   for (int i = 0; i < 1800; ++i) c->mutable_move_command()->mutable_unknown_fields()->AddVarint(15, 0);
   const std::vector<uint8_t> request = Serialize(rc);
   const RobotControlDecode d = Decode(request);
@@ -299,12 +306,7 @@ TEST(RobotControlCodec, AResponseListsBoundedErrors) {
 // At every depth of a command (the top message, a command, its move, its velocity) an unknown field is named.
 TEST(RobotControlCodec, UnknownFieldsAreNamedAtEveryDepth) {
   auto with_unknown = [](const std::function<google::protobuf::UnknownFieldSet*(ws::RobotControl*)>& where) {
-    ws::RobotControl rc;
-    ws::RobotCommand* c = rc.add_robot_commands();
-    c->set_id(1);
-    c->mutable_move_command()->mutable_local_velocity()->set_forward(0.5f);
-    c->mutable_move_command()->mutable_local_velocity()->set_left(0.0f);
-    c->mutable_move_command()->mutable_local_velocity()->set_angular(0.0f);
+    ws::RobotControl rc = OneLocalCommand();
     where(&rc)->AddVarint(99, 1);
     return ConvertRobotControl(rc, Port::kBlue, 11);
   };
