@@ -248,6 +248,13 @@ JointOutput Session::MotorCommand(size_t i, double position) {
     m.has_last_error = true;
     o.value = Clamp(m.pid.x * error + m.pid.y * m.integral + m.pid.z * derivative, -limit, limit);
   }
+  // A reading that is no number (a forged robots/state sample) holds the joint: turf-sim refuses a step's commands
+  // whole, so one NaN would have cost every robot its commands for that step.
+  if (!std::isfinite(o.value)) {
+    o.value = 0;
+    m.integral = 0;
+    m.has_last_error = false;
+  }
   return o;
 }
 

@@ -304,6 +304,22 @@ TEST_F(HlvsSessionTest, AVelocityAloneHoldsWhereTheJointIs) {
   EXPECT_NEAR(out[0].value, 1.0, 1e-12);
 }
 
+// A joint angle that is no number (a forged robots/state sample) gives a holding command, never a NaN one: turf-sim
+// refuses a step's commands whole, so a NaN would have cost every robot its commands.
+TEST_F(HlvsSessionTest, AReadingThatIsNoNumberHoldsTheJoint) {
+  Session s(options_);
+  ActuatorRequests r;
+  r.positions.push_back({"Neck", 0.5});
+  s.Apply(r, 8);
+  reading_.position[0] = std::numeric_limits<double>::quiet_NaN();
+  auto out = s.Commands(reading_);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].value, 0.0);
+  reading_.position[0] = 0.0;  // numbers again: P 10 toward 0.5, no integral or derivative of the NaN left
+  out = s.Commands(reading_);
+  EXPECT_NEAR(out[0].value, 5.0, 1e-12);
+}
+
 TEST(HlvsQuota, KeepsTheLastSecondWithinTheQuota) {
   NetworkQuota q(4);  // 87.5 MiB/s
   const size_t mib = 1024 * 1024;
