@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "core/errors.h"
+#include "dds/memory_bus.h"
 #include "dds/request_id.h"
 
 namespace turf::dds {
@@ -75,7 +76,9 @@ std::string ControlOutcome::Describe() const {
 }
 
 ControlClient::ControlClient(Bus& bus, std::string name, std::function<void()> on_reply)
-    : name_(std::move(name)), on_reply_(std::move(on_reply)), next_id_(FirstRequestId()) {
+    : name_(std::move(name)),
+      on_reply_(std::move(on_reply)),
+      next_id_(dynamic_cast<MemoryBus*>(&bus) != nullptr ? InProcessFirstRequestId() : FirstRequestId()) {
   writer_ = bus.MakeWriter<idl::SimControlPubSubType>(Topic::kControl);
   reader_ = bus.MakeReader<idl::SimControlReplyPubSubType>(Topic::kControlReply, [this] {
     if (!ready_.load()) return;

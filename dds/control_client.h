@@ -4,9 +4,10 @@
 // - Request ids: the client names every request (`client` = its name) and
 //   numbers it from a per-process random start (dds/request_id.h), so replies
 //   a restarted client's predecessor left on the durable reply topic never
-//   match. A reply is matched by (client, request_id); one with our name and
-//   an id we are not waiting for, or with values out of range, is counted
-//   (stray_replies(), bad_replies()) and dropped.
+//   match (on an in-process MemoryBus, where there is no predecessor, from a
+//   fixed start: a run's recorded requests and replies are the same bytes). A reply is matched by (client, request_id);
+//   one with our name and an id we are not waiting for, or with values out of range, is counted (stray_replies(),
+//   bad_replies()) and dropped.
 // - Discovery: turf-sim is there when our control writer and reply reader are
 //   both matched (ServerMatched()). The blocking forms wait for it until their
 //   deadline and fail with kNoServer if it never came.

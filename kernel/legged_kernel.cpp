@@ -90,7 +90,7 @@ const char* LeggedStreamName(LeggedStream stream) {
 }
 
 LeggedKernel::LeggedKernel(LeggedScene scene)
-    : world_(std::move(scene)), sensors_(world_.scene().seed, RobotNames(world_.scene())) {
+    : world_(std::move(scene)), sensor_seed_(world_.scene().seed), sensors_(sensor_seed_, RobotNames(world_.scene())) {
   const LeggedScene& s = world_.scene();
   sensor_every_ = std::max<int64_t>(1, std::llround(1.0 / (s.rates.joint_state_hz * s.physics.step)));
   for (int r = 0; r < world_.RobotCount(); ++r) {
@@ -136,6 +136,10 @@ std::string LeggedKernel::SetRealism(const SensorRealism& realism) {
 
 void LeggedKernel::Reset() {
   world_.Reset();
+  if (sensor_seed_ != scene().seed) {  // after a snapshot of another seed: the scene's noise again
+    sensor_seed_ = scene().seed;
+    sensors_ = LeggedSensors(sensor_seed_, RobotNames(scene()));
+  }
   for (int r = 0; r < world_.RobotCount(); ++r) {
     for (int k = 0; k < kStreamsPerRobot; ++k) {
       const auto s = static_cast<LeggedStream>(k);
@@ -208,7 +212,7 @@ void LeggedKernel::CollectStats() {
 // The sections before the samples in flight, listed once (core/state_io.h).
 template <class Io, class Self>
 void LeggedKernel::Fields(Io& io, Self& self) {
-  io(self.world_, self.realism_);
+  io(self.world_, self.realism_, self.sensor_seed_);
   io.Tag(StateTag("LSTR"));
   for (auto& s : self.streams_) io(s.link, s.stats);
 }
@@ -225,6 +229,9 @@ void LeggedKernel::SaveTo(StateWriter& out) const {
 
 void LeggedKernel::RestoreFrom(StateReader& in) {
   Fields(in, *this);
+  // The snapshot's noise goes on: restored into a kernel of another seed, the readings were that seed's (ground
+  // truth equal, the gyro and encoders not).
+  sensors_ = LeggedSensors(sensor_seed_, RobotNames(scene()));
   world_.State(&scratch_);  // each robot's structure, for the samples
   in_flight_.resize(in.Count(kMaxInFlight));
   for (InFlight& f : in_flight_) {

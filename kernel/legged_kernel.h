@@ -103,6 +103,7 @@ class LeggedKernel : public Snapshots<LeggedKernel, KernelKind::kLegged> {
   static constexpr int kStreamsPerRobot = static_cast<int>(LeggedStream::kCount);
 
   LeggedIslands world_;
+  uint64_t sensor_seed_ = 0;  // the seed of sensors_' noise: the scene's, or a restored snapshot's
   LeggedSensors sensors_;
   SensorRealism realism_;
   int64_t sensor_every_ = 1;

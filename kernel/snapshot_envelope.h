@@ -13,7 +13,7 @@ namespace turf {
 
 enum class KernelKind : uint8_t { kSsl = 1, kLegged = 2 };
 
-inline constexpr uint32_t kSnapshotVersion = 5;
+inline constexpr uint32_t kSnapshotVersion = 6;  // 6: a legged snapshot carries its sensor noise's seed
 
 std::string SaveSnapshot(KernelKind kind, const std::function<void(StateWriter&)>& save);
 

@@ -46,6 +46,7 @@ const std::string kInputsTopic = dds::Topic::kAppliedInputs.info().suffix;
 // What a recording holds for a re-simulation.
 struct Recording {
   std::optional<idl::SimRun> run;
+  std::optional<idl::Clock> start;  // the clock at the run's first frame: its starting time mode
   std::vector<idl::AppliedInputs> inputs;
   OutputMatch outputs;
 };
@@ -85,6 +86,8 @@ void Read(const ResimulateOptions& o, Recording* r) {
       if (!r->run) r->run = Decode<idl::SimRunPubSubType>(m.data);
     } else if (topic->suffix == kInputsTopic) {
       if (auto in = Decode<idl::AppliedInputsPubSubType>(m.data)) r->inputs.push_back(std::move(*in));
+    } else if (topic->suffix == std::string(dds::Topic::kClock.info().suffix) && !r->start) {
+      if (auto clock = Decode<idl::ClockPubSubType>(m.data); clock && clock->frame() == 0) r->start = *clock;
     }
     if (!Skipped(o, topic->suffix)) r->outputs.Recorded(topic->suffix, m.publish_time, std::string(m.data));
   });
@@ -175,7 +178,11 @@ ResimulateResult Run(const ResimulateOptions& o, SceneKind scene, Recording& r, 
   auto schedule = std::make_shared<InputSchedule>(std::move(r.inputs));
   SimNodeOptions options;
   options.name = "turf-replay/resimulate";
-  options.mode = TimeMode::kFreeRunning;
+  // As the run began: a match started in lockstep (or paused) took its steps from STEP requests, which free-running
+  // refuses. Any other mode is never paced here.
+  const bool lockstep = r.start && r.start->mode() == idl::TIME_LOCKSTEP;
+  options.mode = lockstep ? TimeMode::kLockstep : TimeMode::kFreeRunning;
+  options.start_paused = r.start && r.start->paused();
   options.scene_source = SourceOf(*r.run);
   options.resimulate = schedule;
   dds::MemoryBus bus;

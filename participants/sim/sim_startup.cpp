@@ -115,6 +115,13 @@ int RunScene(SceneKind scene, const SimCommandLine& command_line, bool legged) {
     spdlog::error("--simspark and --rcssservermj both drive the match's clock: choose one");
     return kExitBadConfig;
   }
+  if (legged && (command_line.simspark || command_line.rcssservermj) && options.mode != TimeMode::kLockstep) {
+    // The front-end is the match's clock: from the first frame, so the world does not run on in real time until it
+    // has attached (it began 0 or 1 cycles later, by timing: the same agents' stream gave other perceptions).
+    options.mode = TimeMode::kLockstep;
+    spdlog::info("time: lockstep from the start (the {} front-end in this process is the clock)",
+                 command_line.simspark ? "SimSpark" : "RCSSServerMJ");
+  }
   if (legged ? (command_line.simspark || command_line.rcssservermj || command_line.booster) : command_line.simproto) {
     InProcessFrontEnds front_ends;
     if (legged && command_line.simspark) front_ends.simspark = command_line.simspark_options;

@@ -136,6 +136,17 @@ TEST(LeggedKernelTest, RestoreContinuesAT1UnderPdCommandsByteForByte) {
   LeggedKernel fresh(scene());
   ASSERT_EQ(fresh.Restore(snapshot), "");
   EXPECT_TRUE(drive(fresh, 400).first == first.first) << "outputs differ in a fresh kernel";
+  // Into a kernel of another seed: the snapshot's noise goes on (the readings were the other seed's, the ground truth
+  // equal), and a reset brings the kernel's own seed back.
+  LeggedScene other_scene = scene();
+  other_scene.seed += 96;
+  LeggedKernel other(other_scene);
+  const auto own = drive(other, 400);
+  other.Reset();
+  ASSERT_EQ(other.Restore(snapshot), "");
+  EXPECT_TRUE(drive(other, 400).first == first.first) << "outputs differ in a kernel of another seed";
+  other.Reset();
+  EXPECT_TRUE(drive(other, 400).first == own.first) << "a reset after the restore is the kernel's own seed again";
 }
 
 TEST(LeggedKernelTest, ReadingMoreOftenChangesNoReading) {

@@ -75,7 +75,8 @@ TEST(LaunchProfile, SimSparkRunsTheLeggedSceneAndTheBridge) {
   EXPECT_EQ(fs::path(p.scene).filename(), "simspark_match.yaml");
   EXPECT_TRUE(p.legged);
   EXPECT_TRUE(p.realism.empty());
-  EXPECT_TRUE(p.sim.flags.empty()) << "the bridge steps turf-sim: no speed";
+  ASSERT_EQ(p.sim.flags.size(), 1u) << "the bridge steps turf-sim: no speed";
+  EXPECT_EQ(p.sim.flags[0].name, "lockstep") << "the bridge is the clock from the first frame";
   ASSERT_EQ(p.bridges.size(), 2u);
   EXPECT_EQ(p.bridges[0].name, "simspark");
   EXPECT_EQ(p.bridges[1].name, "viewer");
@@ -266,7 +267,7 @@ TEST(LaunchPlan, HlvsPlan) {
   ASSERT_TRUE(plan.errors.empty()) << plan.errors[0];
   ASSERT_EQ(plan.commands.size(), 4u);  // turf-sim, the bridge, turf-render, the viewer
   const std::string build = std::string(TURF_BINARY_DIR) + "/participants/";
-  EXPECT_EQ(Args(plan.commands[0]), "--scene " + kScenes + "/hlvs.yaml --domain 0 --prefix turf ");
+  EXPECT_EQ(Args(plan.commands[0]), "--scene " + kScenes + "/hlvs.yaml --domain 0 --prefix turf --lockstep ");
   EXPECT_EQ(plan.commands[1].name, "hlvs");
   EXPECT_EQ(plan.commands[1].argv[0], build + "hlvs_bridge/turf-hlvs-bridge");
   EXPECT_EQ(Args(plan.commands[1]), "--domain 0 --prefix turf --listen 0.0.0.0 --realtime-factor 1 --team-players 4 ");
@@ -288,7 +289,7 @@ TEST(LaunchPlan, SimSparkPlanAndSyncMode) {
   const std::string build = std::string(TURF_BINARY_DIR) + "/participants/";
   EXPECT_EQ(plan.commands[0].name, "sim");
   EXPECT_EQ(plan.commands[0].argv[0], build + "sim/turf-sim");
-  EXPECT_EQ(Args(plan.commands[0]), "--scene " + kScenes + "/simspark_match.yaml --domain 0 --prefix turf ");
+  EXPECT_EQ(Args(plan.commands[0]), "--scene " + kScenes + "/simspark_match.yaml --domain 0 --prefix turf --lockstep ");
   EXPECT_EQ(plan.commands[1].name, "simspark");
   EXPECT_EQ(plan.commands[1].argv[0], build + "simspark_bridge/turf-simspark-bridge");
   EXPECT_EQ(Args(plan.commands[1]), "--domain 0 --prefix turf --listen 0.0.0.0 --agent-port 3100 --monitor-port 3200 ");

@@ -73,7 +73,7 @@ struct Recorded {
 // script on this thread at every clock sample it wakes up to.
 template <class SceneKind>
 Recorded RecordMatch(SceneKind scene, const SceneSource& source, double duration, const std::string& file,
-                     const MakeScript& make_script) {
+                     const MakeScript& make_script, TimeMode mode = TimeMode::kFreeRunning) {
   dds::MemoryBus bus;
   RecorderOptions ro;
   ro.file = file;
@@ -87,7 +87,7 @@ Recorded RecordMatch(SceneKind scene, const SceneSource& source, double duration
   auto clock_reader = bus.MakeReader(dds::Topic::kClock, [&wake] { wake.Wake(); });
   const std::unique_ptr<Script> script = make_script(bus);
   SimNodeOptions options;
-  options.mode = TimeMode::kFreeRunning;
+  options.mode = mode;
   options.duration = duration;
   options.scene_source = source;
   SimNode node(std::move(scene), options, bus);
@@ -159,6 +159,43 @@ class SslScript final : public Script {
   std::unique_ptr<dds::Writer<idl::SslRobotCommandPubSubType>> writers_[2];
   std::unique_ptr<dds::Writer<idl::SimControlPubSubType>> control_;
   int teleports_ = 0;
+};
+
+// A lockstep driver (as the simulation protocol's sync port): at each clock it wakes to, one STEP of 4 frames
+// carrying every blue robot's command; the ball teleported once.
+class LockstepScript final : public Script {
+ public:
+  explicit LockstepScript(dds::Bus& bus) : control_(bus.MakeWriter(dds::Topic::kControl)) {}
+
+  void At(int64_t t_ns, int round) override {
+    const double t = static_cast<double>(t_ns) * 1e-9;
+    idl::SimControl step;
+    step.client("resimulate_test");
+    step.request_id(static_cast<uint64_t>(round) + 1);
+    step.op(idl::OP_STEP);
+    step.step_count(4);
+    for (int id = 0; id < 6; ++id) {
+      idl::SslRobotCommand c;
+      c.team(idl::TEAM_BLUE);
+      c.id(static_cast<uint8_t>(id));
+      c.move(idl::MOVE_LOCAL_VELOCITY);
+      c.velocity().x(std::sin(t + id));
+      c.velocity().z(0.5 * std::cos(t));
+      step.commands().push_back(c);
+    }
+    if (round == 50) {
+      idl::SimControl teleport;
+      teleport.client("resimulate_test");
+      teleport.request_id(1'000'000);
+      teleport.op(idl::OP_TELEPORT_BALL);
+      teleport.ball().position().x(-1.0);
+      control_->Write(teleport);
+    }
+    control_->Write(step);
+  }
+
+ private:
+  std::unique_ptr<dds::Writer<idl::SimControlPubSubType>> control_;
 };
 
 struct File {
@@ -233,6 +270,28 @@ TEST_F(Resimulation, SslMatchWithNoiseAndCommandsIsReproducedByteForByte) {
   EXPECT_GT(r.recorded, 2000u + 1200u);
   EXPECT_EQ(r.reproduced, r.recorded) << r.verdict;
   EXPECT_GE(r.sim_time_ns, 20'000'000'000);
+}
+
+// A match started in lockstep (turf-sim --lockstep) took every step from a STEP request: re-simulated free-running,
+// each was refused and nothing matched. The recorded clock's first sample says how it began.
+TEST(ResimulationLockstep, AMatchStartedInLockstepIsReproducedByteForByte) {
+  SceneLoadResult loaded = LoadSceneFile(ScenePath("ssl_div_a.yaml"));
+  ASSERT_TRUE(loaded.scene);
+  loaded.scene->realism = *LoadRealism("realistic").realism;
+  const SceneSource source =
+      SourceOf(ScenePath("ssl_div_a.yaml"), "ssl", loaded.scene->name, loaded.scene->seed, "realistic");
+  const std::string file = TempFile("resim_lockstep");
+  const Recorded recorded = RecordMatch(
+      std::move(*loaded.scene), source, 3.0, file, [](dds::Bus& bus) { return std::make_unique<LockstepScript>(bus); },
+      TimeMode::kLockstep);
+  ASSERT_EQ(recorded.totals.dropped, 0u);
+  ASSERT_GT(recorded.rounds, 100);
+  const ResimulateResult r = Resimulate({file}, [] { return false; });
+  std::printf("%s\n", r.verdict.c_str());
+  EXPECT_TRUE(r.identical) << r.verdict;
+  EXPECT_GT(r.input_records, 100u);
+  EXPECT_GE(r.sim_time_ns, 2'900'000'000);
+  std::filesystem::remove(file);
 }
 
 TEST_F(Resimulation, ChangedInputsAreReportedAtTheFirstOutputTheyChange) {

@@ -42,7 +42,6 @@ struct FrontEndInSim {
     std::vector<std::string> a = {Built("participants/sim/turf-sim"),
                                   "--scene",
                                   std::string(TURF_SOURCE_DIR) + "/configs/scenes/" + scene,
-                                  "--lockstep",
                                   "--" + front_end,
                                   "--" + front_end + "-agent-port",
                                   std::to_string(agent_port),
