@@ -47,6 +47,9 @@ void InstallStopSignals() {
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
+  // A log written to a pipe whose reader has gone (a launcher killed, a closed terminal) fails with EPIPE instead of
+  // killing the process before it stops cleanly (every child of a SIGKILLed `turf launch` died of SIGPIPE).
+  signal(SIGPIPE, SIG_IGN);
 }
 
 bool StopRequested() { return g_stop_signals.load() > 0 || g_stop_requested.load(); }

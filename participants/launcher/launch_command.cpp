@@ -126,12 +126,13 @@ int LaunchCommand::Run() {
     std::printf("turf launch: made a CA and identities in %s (turf security init)\n", init.dir.c_str());
   }
 
+  // Checked before --print too: a printed line is one that would start (it printed `--nosuch 1` and exited 0).
+  if (const std::vector<std::string> unknown = UnknownFlags(plan); !unknown.empty()) return Fail(unknown);
+  if (!SetupLogging("turf", log_level_)) return 2;
   if (print_) {
     for (const auto& command : plan.commands) std::printf("%s\n", ShellLine(command).c_str());
     return 0;
   }
-  if (const std::vector<std::string> unknown = UnknownFlags(plan); !unknown.empty()) return Fail(unknown);
-  if (!SetupLogging("turf", log_level_)) return 2;
   spdlog::info("profile {} ({}): {} processes, DDS domain {}, prefix '{}', discovery {}", profile.name, profile.path,
                plan.commands.size(), plan.domain, plan.prefix,
                plan.discovery_server.empty() ? "multicast" : "server " + plan.discovery_server);

@@ -16,6 +16,8 @@
 #include <string>
 #include <string_view>
 
+#include "participants/common/process.h"
+
 namespace turf::launch {
 
 namespace {
@@ -81,6 +83,7 @@ class Supervisor {
     sigemptyset(&mask);
     sigaddset(&mask, SIGINT);
     sigaddset(&mask, SIGTERM);
+    sigaddset(&mask, SIGHUP);  // the terminal or SSH session closed: stop as for SIGTERM (it died without a line)
     sigaddset(&mask, SIGCHLD);
     sigaddset(&mask, SIGUSR1);  // try the processes given up on again
     sigprocmask(SIG_BLOCK, &mask, &old_mask_);
@@ -187,7 +190,11 @@ class Supervisor {
       }
       if (!stopping_) {
         spdlog::info("{}: stopping every process", strsignal(static_cast<int>(info.ssi_signo)));
+        stop_signal_at_ = Clock::now();
         BeginStop();
+      } else if (Clock::now() - stop_signal_at_ < std::chrono::nanoseconds(kSameStopNs)) {
+        // As the participants count it (process.h): a service manager and a terminal both signalling is one stop.
+        spdlog::info("{} again within 1 s: the same stop", strsignal(static_cast<int>(info.ssi_signo)));
       } else {
         spdlog::warn("{} again: SIGKILL to every process", strsignal(static_cast<int>(info.ssi_signo)));
         Signal(SIGKILL);
@@ -351,7 +358,8 @@ class Supervisor {
   void (*old_pipe_)(int) = SIG_DFL;
   int signal_fd_ = -1;
   bool stopping_ = false;
-  bool last_signalled_ = false;  // stop_last processes got their SIGTERM
+  Clock::time_point stop_signal_at_{};  // the first stop signal's time (a second within kSameStopNs is the same stop)
+  bool last_signalled_ = false;         // stop_last processes got their SIGTERM
   std::optional<Clock::time_point> kill_at_;
   int exit_code_ = 0;
 };

@@ -17,9 +17,10 @@
 //   again); turf-sim or the discovery server ends the launch with exit status 1.
 // - A process that exits with status 0 ends the launch: the others are stopped
 //   and `turf` exits 0 (e.g. turf-sim --duration).
-// - SIGINT/SIGTERM stop every process with SIGTERM (a stop_last one, the
-//   discovery server, once the others are gone), then SIGKILL after the grace
-//   period; a second signal sends SIGKILL at once. Exit status 0 when all
+// - SIGINT/SIGTERM/SIGHUP stop every process with SIGTERM (a stop_last one,
+//   the discovery server, once the others are gone), then SIGKILL after the
+//   grace period; a second signal a second or more later sends SIGKILL at once
+//   (one sooner is the same stop, as for the participants). Exit status 0 when all
 //   stopped within the grace period, 1 otherwise.
 #pragma once
 

@@ -21,11 +21,13 @@ int SendCameraSwitches(const RenderOptions& options, const std::vector<CameraCon
   const auto deadline = std::chrono::steady_clock::now() + wait;
   while (writer->Matched() < 1 && std::chrono::steady_clock::now() < deadline && !StopRequested())
     std::this_thread::sleep_for(std::chrono::milliseconds(50));  // discovery: nothing to wait on but time
+  if (StopRequested()) return kExitClean;  // asked to stop while waiting: nothing was sent, nothing is claimed
   if (writer->Matched() < 1) {
     spdlog::error("no turf-render reads {} on domain {} (is one running with this --prefix?)", topic, options.domain);
     return kExitFailure;
   }
-  for (int round = 0; round < 3 && !StopRequested(); ++round) {
+  bool sent = false;
+  for (int round = 0; round < 3 && !StopRequested(); ++round, sent = true) {
     if (round > 0) std::this_thread::sleep_for(std::chrono::milliseconds(200));
     for (const CameraControlRequest& r : switches) {
       idl::CameraControl c;
@@ -38,9 +40,10 @@ int SendCameraSwitches(const RenderOptions& options, const std::vector<CameraCon
     }
   }
   for (const CameraControlRequest& r : switches)
-    spdlog::info("{}/{} {} on {} ({} renderer(s) reading)", r.robot, r.camera,
-                 r.enabled ? (r.rate_hz > 0 ? fmt::format("on at {} Hz", r.rate_hz) : std::string("on")) : "off", topic,
-                 writer->Matched());
+    if (sent)
+      spdlog::info("{}/{} {} on {} ({} renderer(s) reading)", r.robot, r.camera,
+                   r.enabled ? (r.rate_hz > 0 ? fmt::format("on at {} Hz", r.rate_hz) : std::string("on")) : "off",
+                   topic, writer->Matched());
   spdlog::default_logger()->flush();
   return kExitClean;
 }

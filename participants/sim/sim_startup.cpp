@@ -70,6 +70,7 @@ int RunAlone(dds::Participant& dds, const std::function<void()>& run) {
     spdlog::error("{}", RefusalLine(dds, dds::Topic::kWorldState, *other));
     return kExitBadConfig;
   }
+  if (StopRequested()) return kExitClean;  // asked to stop while starting: nothing to run
   spdlog::debug(
       "no other simulator on {} after {} ms of discovery", dds.TopicName(dds::Topic::kWorldState),
       std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start).count());

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <optional>
@@ -79,6 +80,33 @@ TEST(StopSignals, ASecondOneLaterLeavesAtOnce) {
   const int status = child.Status();
   ASSERT_TRUE(WIFEXITED(status)) << status;
   EXPECT_EQ(WEXITSTATUS(status), 130);
+}
+
+// Writing to a pipe whose reader is gone (a killed launcher's output pipe) fails with EPIPE; it no longer kills the
+// process before it can stop cleanly (every child of a SIGKILLed `turf launch` died of SIGPIPE).
+TEST(StopSignals, AGonePipesReaderKillsNothing) {
+  int out[2], go[2];
+  ASSERT_EQ(pipe(out), 0);
+  ASSERT_EQ(pipe(go), 0);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(out[0]);
+    close(go[1]);
+    InstallStopSignals();
+    char c = 0;
+    if (read(go[0], &c, 1) != 1) _exit(4);  // the parent has closed the reader
+    const bool failed = write(out[1], "log line\n", 9) < 0 && errno == EPIPE;
+    _exit(failed ? 0 : 3);
+  }
+  close(go[0]);
+  close(out[0]);  // the reader is gone before the child writes
+  close(out[1]);
+  ASSERT_EQ(write(go[1], "x", 1), 1);
+  close(go[1]);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  EXPECT_EQ(WEXITSTATUS(status), 0);
 }
 
 }  // namespace
