@@ -55,8 +55,9 @@ inline CLI::Validator AddressRangeCheck(bool ipv4_only) {
 // A repeatable source allowlist flag of the SSL bridges' UDP ports (source_gate.h): IPv4 ranges, default anyone.
 inline CLI::Option* AddAllowOption(CLI::App& app, const std::string& name, std::vector<std::string>& entries,
                                    const std::string& help) {
-  return app.add_option(name, entries, help + "; repeatable; default: anyone (no check)")
+  return app.add_option(name, entries, help + "; repeatable or comma-separated; default: anyone (no check)")
       ->type_name("ADDR[/PREFIX]")
+      ->delimiter(',')
       ->check(AddressRangeCheck(/*ipv4_only=*/true));
 }
 

@@ -15,20 +15,26 @@ inline void AddHlvsBridgeFlags(ParticipantMain& participant, HlvsBridgeOptions& 
   CLI::App& app = participant.app();
   participant.AddCommonFlags(options);
   app.add_option("--listen", options.listen, "IPv4 address the robot ports bind to")->capture_default_str();
-  app.add_option("--red-ports", options.red_ports, "TCP ports of red players 1, 2, ... (0: any free port)")
+  app.add_option("--red-ports", options.red_ports,
+                 "TCP ports of red players 1, 2, ... (0: any free port; repeatable or comma-separated)")
       ->capture_default_str()
+      ->delimiter(',')
       ->check(CLI::Range(0, 65535));
-  app.add_option("--blue-ports", options.blue_ports, "TCP ports of blue players 1, 2, ... (0: any free port)")
+  app.add_option("--blue-ports", options.blue_ports,
+                 "TCP ports of blue players 1, 2, ... (0: any free port; repeatable or comma-separated)")
       ->capture_default_str()
+      ->delimiter(',')
       ->check(CLI::Range(0, 65535));
   app.add_option("--red-allow", options.red_allow,
-                 "a red robot's client may connect from this IPv4 address or range; repeatable; given, it replaces "
-                 "the default (game.json's)")
+                 "a red robot's client may connect from this IPv4 address or range; repeatable or comma-separated; "
+                 "given, it replaces the default (game.json's)")
       ->type_name("ADDR[/PREFIX]")
+      ->delimiter(',')
       ->check(AddressRangeCheck(/*ipv4_only=*/true))
       ->capture_default_str();
   app.add_option("--blue-allow", options.blue_allow, "the same for blue robots' clients")
       ->type_name("ADDR[/PREFIX]")
+      ->delimiter(',')
       ->check(AddressRangeCheck(/*ipv4_only=*/true))
       ->capture_default_str();
   app.add_option("--team-players", options.team_players,

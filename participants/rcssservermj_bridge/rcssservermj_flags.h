@@ -23,9 +23,10 @@ inline void AddRcssServerMjFlags(CLI::App& app, RcssServerMjOptions& o, const st
   app.add_option("--" + prefix + "monitor-allow", o.monitor_allow,
                  help_prefix +
                      "a monitor-port client from this IPv4/IPv6 address or range may connect (its commands move "
-                     "players and the ball, set play modes, stop the server); repeatable; given, it replaces the "
-                     "default (this machine)")
+                     "players and the ball, set play modes, stop the server); repeatable or comma-separated; given, "
+                     "it replaces the default (this machine)")
       ->type_name("ADDR[/PREFIX]")
+      ->delimiter(',')
       ->check(AddressRangeCheck(/*ipv4_only=*/false))
       ->capture_default_str();
   app.add_flag("--" + prefix + "sync", o.sync_mode,

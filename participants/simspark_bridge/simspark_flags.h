@@ -20,9 +20,10 @@ inline void AddSimSparkOperatorFlag(CLI::App& app, SimSparkBridgeOptions& o, con
                  help_prefix +
                      "a monitor-port client from this IPv4/IPv6 address or range is an operator, who alone may send "
                      "the trainer commands that end, restart or rewrite the match (killsim, kill, kickOff, time, "
-                     "score, turfResetTeam, playMode BeforeKickOff/KickOff_*/GameOver); repeatable; given, it "
-                     "replaces the default (this machine)")
+                     "score, turfResetTeam, playMode BeforeKickOff/KickOff_*/GameOver); repeatable or "
+                     "comma-separated; given, it replaces the default (this machine)")
       ->type_name("ADDR[/PREFIX]")
+      ->delimiter(',')
       ->check(AddressRangeCheck(/*ipv4_only=*/false))
       ->capture_default_str();
 }

@@ -24,8 +24,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1.0, 1000.0));
   app.add_option("--allow-host", options.allow_hosts,
                  "with --listen other than loopback: a name the page may be reached by besides IP addresses, "
-                 "localhost and this machine's name (repeatable; other names are refused: DNS rebinding)")
-      ->type_name("NAME");
+                 "localhost and this machine's name (repeatable or comma-separated; other names are refused: DNS "
+                 "rebinding)")
+      ->type_name("NAME")
+      ->delimiter(',');
   app.add_option("--recording", options.recording,
                  "show this turf-record MCAP file instead of DDS, with a time slider (no DDS; see README)");
   return participant.Run(argc, argv, [&] {

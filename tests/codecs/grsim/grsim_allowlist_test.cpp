@@ -103,6 +103,11 @@ TEST(GrsimAllowlist, FlagsDefaultToAnyoneAndRefuseBadEntries) {
   GrsimBridgeOptions bad;
   EXPECT_FALSE(Parse({"--blue-allow", "blue.example"}, &bad));
   EXPECT_FALSE(Parse({"--operator-allow", "::1"}, &bad));
+  // Comma-separated as well (a launch profile's list, or --set's value, comes so): each entry checked.
+  GrsimBridgeOptions listed;
+  ASSERT_TRUE(Parse({"--blue-allow", "10.0.0.11,10.0.1.0/24"}, &listed));
+  EXPECT_EQ(listed.allow.blue, (std::vector<std::string>{"10.0.0.11", "10.0.1.0/24"}));
+  EXPECT_FALSE(Parse({"--blue-allow", "10.0.0.11,blue.example"}, &bad));
 }
 
 }  // namespace
