@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "dds/topic_prefix.h"
 #include "participants/common/process.h"
 
 namespace turf {
@@ -25,7 +26,9 @@ ParticipantMain::ParticipantMain(const std::string& description)
 
 void ParticipantMain::AddCommonFlags(ParticipantOptions& options, const CommonFlagHelp& help) {
   app_.add_option("-d,--domain", options.domain, help.domain)->capture_default_str()->check(CLI::Range(0, 232));
-  app_.add_option("-p,--prefix", options.prefix, help.prefix)->capture_default_str();
+  app_.add_option("-p,--prefix", options.prefix, help.prefix)
+      ->capture_default_str()
+      ->check([](const std::string& prefix) { return dds::ValidTopicPrefix(prefix) ? "" : dds::kTopicPrefixRule; });
   app_.add_option("--qos", options.qos_file, "Fast DDS XML QoS profiles (default: configs/qos/turf_qos.xml)")
       ->check(CLI::ExistingFile);  // a missing file is a configuration error (exit 2), told before anything starts
   app_.add_option("--security", options.security,

@@ -202,6 +202,9 @@ class HlvsBridgeImpl {
       if (s.model != nullptr) {
         spdlog::info("{} player {}: robot '{}' ({}) on TCP {}:{}; clients from {}", s.team, s.player, s.robot,
                      s.model->name, options_.listen, ports_[i], s.allow->Describe());
+      } else {
+        spdlog::info("{} player {}: no robot '{}_{}' in the scene; TCP {}:{} refuses its clients", s.team, s.player,
+                     s.team, s.player, options_.listen, ports_[i]);
       }
     }
     spdlog::info("{} physics steps of {} ms per 8 ms step; {}; publishing {} (steps, joint commands)", steps_,

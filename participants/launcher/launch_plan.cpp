@@ -10,6 +10,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "dds/topic_prefix.h"
 #include "loader/realism_yaml.h"
 #include "participants/launcher/programs.h"
 
@@ -100,7 +101,7 @@ void ApplyOverrides(const LaunchOverrides& o, LaunchProfile* profile, std::vecto
     profile->domain = *o.domain;
   }
   if (o.prefix) {
-    if (!ValidPrefix(*o.prefix)) errors->push_back("--prefix: letters, digits, '_', '-' and '/' only, not empty");
+    if (!dds::ValidTopicPrefix(*o.prefix)) errors->push_back(std::string("--prefix: ") + dds::kTopicPrefixRule);
     profile->prefix = *o.prefix;
   }
   if (o.realism) {

@@ -10,6 +10,7 @@
 #include <optional>
 #include <set>
 
+#include "dds/topic_prefix.h"
 #include "loader/realism_yaml.h"
 #include "loader/text_file.h"
 #include "loader/yaml_reader.h"
@@ -181,12 +182,6 @@ bool ParseHostPort(const std::string& text, std::string* host, int* port) {
   return true;
 }
 
-bool ValidPrefix(const std::string& prefix) {
-  return !prefix.empty() && std::all_of(prefix.begin(), prefix.end(), [](unsigned char c) {
-    return std::isalnum(c) || c == '_' || c == '/' || c == '-';
-  });
-}
-
 bool ValidFlagName(const std::string& name) {
   return !name.empty() && std::islower(static_cast<unsigned char>(name[0])) &&
          std::all_of(name.begin(), name.end(),
@@ -240,8 +235,7 @@ ProfileLoadResult ParseLaunchProfile(const std::string& yaml_text, const std::st
     }
   }
   if (m.Int("domain", &p.domain) && (p.domain < 0 || p.domain > 232)) m.Fail("domain", "must be 0..232");
-  if (m.String("prefix", &p.prefix) && !ValidPrefix(p.prefix))
-    m.Fail("prefix", "letters, digits, '_', '-' and '/' only, not empty");
+  if (m.String("prefix", &p.prefix) && !dds::ValidTopicPrefix(p.prefix)) m.Fail("prefix", dds::kTopicPrefixRule);
   if (m.String("qos", &p.qos)) {
     p.qos = Absolute(p.qos, base_dir);
     if (!IsFile(p.qos)) m.Fail("qos", fmt::format("no such file: {}", p.qos));

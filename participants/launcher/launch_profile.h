@@ -100,8 +100,6 @@ std::string DefaultProfileDir();
 
 // Checks (and splits) "HOST:PORT"; HOST is an IPv4 address or a DNS name.
 bool ParseHostPort(const std::string& text, std::string* host, int* port);
-// A topic prefix turf accepts: letters, digits, '_' and '/'; not empty.
-bool ValidPrefix(const std::string& prefix);
 // A flag name: lowercase letters, digits and '-', starting with a letter.
 bool ValidFlagName(const std::string& name);
 

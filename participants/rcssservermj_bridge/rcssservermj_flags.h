@@ -15,11 +15,10 @@ namespace turf {
 // `prefix` goes before each flag's name ("rcssservermj-"), `help_prefix` before its help ("with --rcssservermj: ").
 inline void AddRcssServerMjFlags(CLI::App& app, RcssServerMjOptions& o, const std::string& prefix = "",
                                  const std::string& help_prefix = "") {
-  app.add_option("--" + prefix + "agent-port", o.agent_port, help_prefix + "TCP port for agents (0: any free port)")
-      ->capture_default_str();
-  app.add_option("--" + prefix + "monitor-port", o.monitor_port,
-                 help_prefix + "TCP port for monitor commands (0: any free port)")
-      ->capture_default_str();
+  AddPortOption(app, "--" + prefix + "agent-port", o.agent_port, help_prefix + "TCP port for agents (0: any free port)",
+                true);
+  AddPortOption(app, "--" + prefix + "monitor-port", o.monitor_port,
+                help_prefix + "TCP port for monitor commands (0: any free port)", true);
   app.add_option("--" + prefix + "monitor-allow", o.monitor_allow,
                  help_prefix +
                      "a monitor-port client from this IPv4/IPv6 address or range may connect (its commands move "

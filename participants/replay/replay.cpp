@@ -86,6 +86,7 @@ class Replayer {
   Replayer(const ReplayOptions& o, const std::function<bool()>& stop)
       : options_(o), stop_(stop), participant_(DdsOptions(o)), control_(participant_) {
     std::apply([this](const auto&... topic) { (Add(topic), ...); }, dds::kTypedTopics);
+    spdlog::info("replaying {} onto DDS domain {}, prefix '{}'", o.file, o.domain, o.prefix);
     participant_.LogTopics();
     spdlog::info("control: pause, resume, time mode (speed) and seek on {}, replies on {}",
                  participant_.TopicName(dds::Topic::kControl), participant_.TopicName(dds::Topic::kControlReply));

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "dds/topic_prefix.h"
 #include "python/src/sim_error.h"
 
 namespace turf::py {
@@ -15,11 +16,11 @@ int64_t UnixNowNs() {
       .count();
 }
 
-// turf-sim's --domain range; a prefix names topics, so it must name something.
+// turf-sim's --domain range and its topic prefix rule (dds/topic_prefix.h).
 dds::ParticipantOptions Checked(const PublishOptions& o) {
   if (o.domain < 0 || o.domain > 232) Check(Error::kOutOfRange, "domain " + std::to_string(o.domain) + " (0..232)");
-  if (o.prefix.empty() || o.prefix.find_first_of(" \t\n") != std::string::npos)
-    Check(Error::kMalformed, "prefix '" + o.prefix + "' (a topic name prefix: not empty, no spaces)");
+  if (!dds::ValidTopicPrefix(o.prefix))
+    Check(Error::kMalformed, "prefix '" + o.prefix + "' (a topic name prefix: " + dds::kTopicPrefixRule + ")");
   dds::ParticipantOptions d;
   d.domain = o.domain;
   d.name = o.name;

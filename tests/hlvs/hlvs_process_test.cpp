@@ -20,14 +20,16 @@ namespace {
 using namespace std::chrono_literals;
 
 TEST(HlvsBridgeProcess, AClientIsServedOverDdsAndBothStopCleanly) {
-  const int red = FreePort(SOCK_STREAM), blue = FreePort(SOCK_STREAM);
+  // Red player 2 has a port but no robot in the scene.
+  const int red = FreePort(SOCK_STREAM), red2 = FreePort(SOCK_STREAM), blue = FreePort(SOCK_STREAM);
   const std::string domain = std::to_string(TestDomain(29)), prefix = "hlvsproc" + std::to_string(getpid());
   Process sim("hlvs_sim",
               {Built("participants/sim/turf-sim"), "--scene",
                std::string(TURF_SOURCE_DIR) + "/configs/scenes/hlvs.yaml", "--domain", domain, "--prefix", prefix});
-  Process bridge("hlvs_bridge", {Built("participants/hlvs_bridge/turf-hlvs-bridge"), "--listen", "127.0.0.1",
-                                 "--red-ports", std::to_string(red), "--blue-ports", std::to_string(blue),
-                                 "--realtime-factor", "0", "--domain", domain, "--prefix", prefix});
+  Process bridge("hlvs_bridge",
+                 {Built("participants/hlvs_bridge/turf-hlvs-bridge"), "--listen", "127.0.0.1", "--red-ports",
+                  std::to_string(red) + "," + std::to_string(red2), "--blue-ports", std::to_string(blue),
+                  "--realtime-factor", "0", "--domain", domain, "--prefix", prefix});
   HlvsClient client;
   std::string greeting;
   const auto end = std::chrono::steady_clock::now() + 60s;
@@ -46,6 +48,10 @@ TEST(HlvsBridgeProcess, AClientIsServedOverDdsAndBothStopCleanly) {
     m = next;
   }
   EXPECT_NE(bridge.Log().find("robot 'red_1' (K1) on TCP 127.0.0.1:" + std::to_string(red)), std::string::npos)
+      << bridge.Log();
+  EXPECT_NE(bridge.Log().find("red player 2: no robot 'red_2' in the scene; TCP 127.0.0.1:" + std::to_string(red2) +
+                              " refuses its clients"),
+            std::string::npos)
       << bridge.Log();
   client.Close();
   const int bridge_status = bridge.Stop();

@@ -121,6 +121,9 @@ TEST_F(ParticipantMainTest, EveryRefusedFlagExits2) {
                                              {"--domain", "seven"},
                                              {"--no-such-flag"},
                                              {"--prefix"},
+                                             {"--prefix", ""},
+                                             {"--prefix", "a b"},
+                                             {"--prefix", "team*"},
                                              {"--log-level", "loud"},
                                              {"--qos", "/nonexistent/turf_qos.xml"}}) {
     ParticipantMain participant("turf-test", "refusals");

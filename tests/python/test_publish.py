@@ -30,7 +30,7 @@ def test_bad_options_are_refused_and_change_nothing():
         with pytest.raises(turf.TurfError) as e:
             sim.publish(domain=domain)
         assert e.value.error == "out_of_range"
-    for prefix in ("", "two words"):
+    for prefix in ("", "two words", "team*"):
         with pytest.raises(turf.TurfError) as e:
             sim.publish(domain=DOMAIN, prefix=prefix)
         assert e.value.error == "malformed"

@@ -20,7 +20,9 @@
 
 #include "codecs/rcssservermj/robots.h"
 #include "participants/rcssservermj_bridge/rcssservermj_bridge.h"
+#include "participants/rcssservermj_bridge/rcssservermj_flags.h"
 #include "tests/simspark/agent_client.h"
+#include "tests/support/cli_parse.h"
 #include "tests/support/front_end_on_bus.h"
 #include "tests/support/legged_scene.h"
 
@@ -415,6 +417,32 @@ TEST(RcssServerMjFrontEnd, TheK1SceneServesK1AgentsTheirTwentyTwoJointsAndRefuse
       [](const RcssServerMjStats& s) { return s.refused_by_kind.count("init_refused") > 0; }, 20s);
   EXPECT_EQ(stats.active_agents, 1);
   for (int i = 0; i < 3; ++i) ASSERT_TRUE(k1.Receive(20s)) << i;
+}
+
+// The port flags turf-rcssservermj-bridge and turf-sim --rcssservermj share: 0..65535 (0: any free port), refused
+// with the range rather than a conversion error.
+TEST(RcssServerMjFlags, PortsAreCheckedAgainstTheirRange) {
+  RcssServerMjOptions o;
+  CLI::App app;
+  AddRcssServerMjFlags(app, o, "rcssservermj-");
+  ASSERT_TRUE(test::ParseArgs(app, {"--rcssservermj-agent-port", "0", "--rcssservermj-monitor-port", "60101"}));
+  EXPECT_EQ(o.agent_port, 0);
+  EXPECT_EQ(o.monitor_port, 60101);
+  for (const char* bad : {"65536", "-1", "x"}) {
+    RcssServerMjOptions unchanged;
+    CLI::App strict;
+    AddRcssServerMjFlags(strict, unchanged);
+    EXPECT_FALSE(test::ParseArgs(strict, {"--agent-port", bad})) << bad;
+    EXPECT_EQ(unchanged.agent_port, 60000) << bad;
+  }
+  CLI::App message;
+  AddRcssServerMjFlags(message, o);
+  try {
+    message.parse(std::vector<std::string>{"70000", "--monitor-port"});
+    ADD_FAILURE() << "--monitor-port 70000 was accepted";
+  } catch (const CLI::ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("not in range"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
