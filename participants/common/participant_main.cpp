@@ -18,8 +18,12 @@
 
 namespace turf {
 
+// The stop signals first: a stop asked while the flags are declared and parsed (a launcher stopping what it has just
+// started) is the body's first StopRequested(), not a death by the signal's default action.
 ParticipantMain::ParticipantMain(std::string process_name, const std::string& description)
-    : process_name_(std::move(process_name)), app_(description) {}
+    : process_name_(std::move(process_name)), app_(description) {
+  InstallStopSignals();
+}
 
 ParticipantMain::ParticipantMain(const std::string& description)
     : ParticipantMain(description.substr(0, description.find(':')), description) {}
@@ -58,7 +62,6 @@ int ParticipantMain::Run(int argc, const char* const* argv, const std::function<
     return app_.exit(e) == 0 ? kExitClean : kExitBadConfig;
   }
   if (!SetupLogging(process_name_, log_level_)) return kExitBadConfig;
-  InstallStopSignals();
   int code = kExitFailure;
   try {
     code = body();

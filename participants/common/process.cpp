@@ -47,6 +47,13 @@ void InstallStopSignals() {
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
+  // A process started with them blocked (a parent's mask is inherited across exec) would otherwise never hear a
+  // stop; one already pending is delivered now, as a stop.
+  sigset_t stops;
+  sigemptyset(&stops);
+  sigaddset(&stops, SIGINT);
+  sigaddset(&stops, SIGTERM);
+  pthread_sigmask(SIG_UNBLOCK, &stops, nullptr);
   // A log written to a pipe whose reader has gone (a launcher killed, a closed terminal) fails with EPIPE instead of
   // killing the process before it stops cleanly (every child of a SIGKILLed `turf launch` died of SIGPIPE).
   signal(SIGPIPE, SIG_IGN);

@@ -18,7 +18,8 @@ bool SetupLogging(const std::string& process_name, const std::string& level);
 
 // SIGINT and SIGTERM set a flag that StopRequested() reads. A second signal a second or more after the first
 // exits at once (exit 130: an impatient Ctrl-C); one sooner is the same stop (`turf launch` and a service manager
-// both sending SIGTERM to the process).
+// both sending SIGTERM to the process). Installing them also unblocks them, so a stop asked before (pending while
+// blocked) is heard. ParticipantMain installs them when it is made, the first thing of every participant's main().
 inline constexpr int64_t kSameStopNs = 1'000'000'000;
 void InstallStopSignals();
 bool StopRequested();

@@ -6,8 +6,11 @@
 #include <gtest/gtest.h>
 #include <spdlog/sinks/ringbuffer_sink.h>
 #include <spdlog/spdlog.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -98,6 +101,23 @@ TEST_F(ParticipantMainTest, PortsAreCheckedAgainstTheirRange) {
     EXPECT_EQ(participant.Run(static_cast<int>(argv.size()), argv.data(), Clean), kExitBadConfig) << args[1];
     EXPECT_EQ(p, 1) << args[1];
   }
+}
+
+// Made first in every main(), it installs the stop signals before the flags are even declared: a launcher's SIGTERM
+// during start-up is a stop, not a death.
+TEST(ParticipantMainSignals, TheStopSignalsAreInstalledWhenItIsMade) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    signal(SIGTERM, SIG_DFL);  // as in a fresh process (this test's others have made one)
+    ParticipantMain participant("turf-test", "turf-test: made, not run");
+    struct sigaction after {};
+    sigaction(SIGTERM, nullptr, &after);
+    _exit(after.sa_handler != SIG_DFL && after.sa_handler != SIG_IGN ? 0 : 2);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << status;
+  EXPECT_EQ(WEXITSTATUS(status), 0);
 }
 
 TEST_F(ParticipantMainTest, DefaultsWithoutFlags) {

@@ -109,5 +109,25 @@ TEST(StopSignals, AGonePipesReaderKillsNothing) {
   EXPECT_EQ(WEXITSTATUS(status), 0);
 }
 
+// A stop asked while SIGTERM was blocked (a parent's mask, inherited across exec) is pending; installing the
+// handlers unblocks it and the stop is heard, not lost and not the signal's default death.
+TEST(StopSignals, OneBlockedBeforeTheHandlersIsHeardWhenTheyAreInstalled) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    sigset_t term;
+    sigemptyset(&term);
+    sigaddset(&term, SIGTERM);
+    if (pthread_sigmask(SIG_BLOCK, &term, nullptr) != 0) _exit(4);
+    if (raise(SIGTERM) != 0) _exit(5);  // pending
+    if (StopRequested()) _exit(3);
+    InstallStopSignals();
+    _exit(StopRequested() ? 0 : 2);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+}
+
 }  // namespace
 }  // namespace turf
