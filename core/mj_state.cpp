@@ -26,6 +26,12 @@ uint64_t ModelFingerprint(const mjModel* m) {
 
 namespace {
 
+// A snapshot's time at most: its frame's bound (MaxFrame), 2^62 ns.
+constexpr double kMaxTime = static_cast<double>(uint64_t{1} << 62) * 1e-9;
+
+// The first kStateArrays of Arrays() are the integration state, qpos to userdata.
+constexpr size_t kStateArrays = 10;
+
 // The arrays of the integration state (what the next step starts from), then
 // the last step's results that outputs read between steps (sensors, body and
 // site and shape frames). Each is (pointer, length) for a model and its data.
@@ -81,6 +87,28 @@ void RestoreContact(const mjModel* m, StateReader& in, mjContact* c) {
   if (!ok) in.Fail("contact out of range");
 }
 
+// Whether a snapshot's numbers are ones MuJoCo can step from: every one finite, and the first `bounded` (the
+// integration state) within MuJoCo's own bound for a sane value, mjMAXVAL (its step resets a world past it).
+// A snapshot is untrusted input: a changed byte had made a position 1e76, and the next step's Cholesky ended the
+// process through MuJoCo's fatal error handler.
+bool SaneValues(const std::vector<double>& values, size_t bounded) {
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (!std::isfinite(values[i]) || (i < bounded && std::abs(values[i]) > mjMAXVAL)) return false;
+  }
+  return true;
+}
+
+bool SaneContact(const mjContact& c) {
+  std::vector<double> v = {c.dist, c.includemargin, c.mu};
+  v.insert(v.end(), std::begin(c.pos), std::end(c.pos));
+  v.insert(v.end(), std::begin(c.frame), std::end(c.frame));
+  v.insert(v.end(), std::begin(c.friction), std::end(c.friction));
+  v.insert(v.end(), std::begin(c.solref), std::end(c.solref));
+  v.insert(v.end(), std::begin(c.solimp), std::end(c.solimp));
+  v.insert(v.end(), std::begin(c.H), std::end(c.H));
+  return SaneValues(v, 0);
+}
+
 }  // namespace
 
 void SaveMjData(const mjModel* m, const mjData* d, StateWriter& out) {
@@ -113,10 +141,17 @@ void RestoreMjData(const mjModel* m, mjData* d, StateReader& in) {
   for (const auto& a : arrays) total += a.second;
   std::vector<double> values(total);
   in.Bytes(values.data(), total * sizeof(double));
+  if (!std::isfinite(time) || time < 0 || time > kMaxTime) in.Fail("time out of range");
+  size_t state_values = 0;
+  for (size_t i = 0; i < kStateArrays; ++i) state_values += arrays[i].second;
+  if (in.ok() && !SaneValues(values, state_values)) in.Fail("a state value not finite or past MuJoCo's bound");
   const int ncon = in.Get<int>();
   if (ncon < 0 || ncon > m->nconmax) in.Fail("contact count out of range");
   std::vector<mjContact> contacts(in.ok() ? ncon : 0);
-  for (mjContact& c : contacts) RestoreContact(m, in, &c);
+  for (mjContact& c : contacts) {
+    RestoreContact(m, in, &c);
+    if (in.ok() && !SaneContact(c)) in.Fail("a contact value not finite");
+  }
   const int nefc = in.Get<int>();
   if (nefc < 0 || nefc > m->njmax) in.Fail("constraint count out of range");
   for (size_t i = 0; in.ok() && i < contacts.size(); ++i) {
@@ -125,6 +160,7 @@ void RestoreMjData(const mjModel* m, mjData* d, StateReader& in) {
   }
   std::vector<double> efc_force(in.ok() ? nefc : 0);
   in.Bytes(efc_force.data(), efc_force.size() * sizeof(double));
+  if (in.ok() && !SaneValues(efc_force, 0)) in.Fail("a constraint force not finite");
   if (!in.ok()) return;
 
   d->time = time;
@@ -138,6 +174,7 @@ void RestoreMjData(const mjModel* m, mjData* d, StateReader& in) {
   std::copy(contacts.begin(), contacts.end(), d->contact);
   d->nefc = nefc;
   std::copy(efc_force.begin(), efc_force.end(), d->efc_force);
+  d->pstack = 0;  // no step is under way between steps; one MuJoCo's error ended leaves its stack marked
 }
 
 void LastGoodState::Accept(const mjModel* m, const mjData* d) {
@@ -165,6 +202,8 @@ void LastGoodState::Restore(StateReader& in) {
   qvel.resize(in.Count(kMax));
   in.Bytes(qvel.data(), qvel.size() * sizeof(double));
   if (in.ok() && (qpos.size() != qpos_.size() || qvel.size() != qvel_.size())) in.Fail("wrong state size");
+  if (in.ok() && !(SaneValues(qpos, qpos.size()) && SaneValues(qvel, qvel.size())))
+    in.Fail("a last good state value not finite or past MuJoCo's bound");
   if (!in.ok()) return;
   qpos_ = std::move(qpos);
   qvel_ = std::move(qvel);

@@ -65,7 +65,7 @@ pyb::dict Observation(const LeggedSim& sim) {
 
 int RobotOf(const LeggedSim& sim, const pyb::handle& robot) {
   if (pyb::isinstance<pyb::str>(robot)) return sim.RobotIndex(robot.cast<std::string>());
-  if (pyb::isinstance<pyb::int_>(robot)) return robot.cast<int>();
+  if (pyb::isinstance<pyb::int_>(robot)) return IntOr(robot, -1);
   Check(Error::kUnknownRobot, "robot " + pyb::repr(robot).cast<std::string>() + " (a name or an index)");
   return -1;
 }
@@ -103,7 +103,8 @@ void BindLegged(pyb::module_& m) {
   BindKernelCommon(cls);
   cls.def(
          "step",
-         [](LeggedSim& sim, const pyb::object& commands, int64_t n) {
+         [](LeggedSim& sim, const pyb::object& commands, const pyb::object& steps) {
+           const int64_t n = StepCountOf(steps);
            LeggedSim::StepScope stepping(sim);
            std::vector<LeggedSim::RobotCommands> robots;
            const std::vector<pyb::array_t<double>> keep = RobotArrays(sim, commands, &robots);

@@ -96,8 +96,9 @@ void BindSsl(pyb::module_& m) {
   BindKernelCommon(cls);
   cls.def(
          "step",
-         [](pyb::object self, const pyb::object& commands, int64_t n) {
+         [](pyb::object self, const pyb::object& commands, const pyb::object& steps) {
            SslSim& sim = self.cast<SslSim&>();
+           const int64_t n = StepCountOf(steps);
            SslSim::StepScope stepping(sim);
            std::vector<SslSim::TeamCommands> teams;
            const std::vector<pyb::array_t<double>> keep = TeamArrays(sim, commands, &teams);

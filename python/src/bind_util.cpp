@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <limits>
+
 #include "core/realism_fields.h"
 #include "python/src/sim_error.h"
 
@@ -31,13 +33,32 @@ pyb::array_t<double> Copy(const std::vector<double>& values, pyb::ssize_t column
 
 pyb::array_t<double> Copy(const double* data, pyb::ssize_t size) { return pyb::array_t<double>({size}, data); }
 
+int IntOr(const pyb::handle& value, int outside) {
+  int overflow = 0;
+  const long long v = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
+  if (overflow != 0 || v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max()) {
+    PyErr_Clear();
+    return outside;
+  }
+  if (v == -1 && PyErr_Occurred()) {
+    PyErr_Clear();
+    return outside;
+  }
+  return static_cast<int>(v);
+}
+
+int64_t StepCountOf(const pyb::handle& n) {
+  if (!pyb::isinstance<pyb::int_>(n)) Check(Error::kMalformed, "n " + pyb::repr(n).cast<std::string>() + " (an int)");
+  return IntOr(n, 0);
+}
+
 Team TeamOf(const pyb::object& team) {
   if (pyb::isinstance<pyb::str>(team)) {
     const std::string name = team.cast<std::string>();
     if (name == "blue") return Team::kBlue;
     if (name == "yellow") return Team::kYellow;
   } else if (pyb::isinstance<pyb::int_>(team)) {
-    const int value = team.cast<int>();
+    const int value = IntOr(team, -1);
     if (value == 0 || value == 1) return static_cast<Team>(value);
   }
   Check(Error::kUnknownTeam, "team " + pyb::repr(team).cast<std::string>() + " (blue or yellow)");

@@ -25,6 +25,13 @@ pyb::array_t<double> Copy(const double* data, pyb::ssize_t size);
 // "blue"/"yellow" or 0/1; throws SimError (unknown_team).
 Team TeamOf(const pyb::object& team);
 
+// step()'s n: an int (else SimError malformed); one past int's range becomes 0, which step() refuses (out_of_range).
+int64_t StepCountOf(const pyb::handle& n);
+
+// A Python int as an int; `outside` for one past int's range (2**70), which the caller then refuses as it would
+// any other out-of-range value.
+int IntOr(const pyb::handle& value, int outside);
+
 // A C-contiguous float64 array of exactly `shape` from any array-like; throws SimError (malformed) naming `what`
 // and the shape expected.
 pyb::array_t<double> Shaped(const pyb::handle& value, const std::vector<pyb::ssize_t>& shape, const std::string& what);

@@ -44,8 +44,10 @@ class KernelHost {
   std::string Save() const { return kernel_->Save(); }
 
   // The world's topics on a DDS domain from now on (publication.h), replacing an earlier publication; Unpublish
-  // ends it. publication() is null while not publishing.
+  // ends it. publication() is null while not publishing. Options turf-sim would refuse leave the publication as
+  // it was.
   void Publish(const PublishOptions& options) {
+    CheckPublishOptions(options);
     publication_.reset();
     publication_ = std::make_unique<WorldPublication>(options, *kernel_);
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 
 #include "dds/topic_prefix.h"
 #include "python/src/sim_error.h"
@@ -16,11 +17,15 @@ int64_t UnixNowNs() {
       .count();
 }
 
-// turf-sim's --domain range and its topic prefix rule (dds/topic_prefix.h).
-dds::ParticipantOptions Checked(const PublishOptions& o) {
+}  // namespace
+
+// turf-sim's --domain range and its topic prefix rule (dds/topic_prefix.h); a QoS file that exists.
+dds::ParticipantOptions CheckPublishOptions(const PublishOptions& o) {
   if (o.domain < 0 || o.domain > 232) Check(Error::kOutOfRange, "domain " + std::to_string(o.domain) + " (0..232)");
   if (!dds::ValidTopicPrefix(o.prefix))
     Check(Error::kMalformed, "prefix '" + o.prefix + "' (a topic name prefix: " + dds::kTopicPrefixRule + ")");
+  if (!o.qos_file.empty() && !std::filesystem::is_regular_file(o.qos_file))
+    Check(Error::kMalformed, "qos_file '" + o.qos_file + "' (no such file)");
   dds::ParticipantOptions d;
   d.domain = o.domain;
   d.name = o.name;
@@ -29,6 +34,8 @@ dds::ParticipantOptions Checked(const PublishOptions& o) {
   return d;
 }
 
+namespace {
+
 double LeggedStateHz(const LeggedKernel& k) {
   return 1.0 / (k.scene().physics.step * static_cast<double>(k.sensor_every()));
 }
@@ -36,7 +43,7 @@ double LeggedStateHz(const LeggedKernel& k) {
 }  // namespace
 
 Publication::Publication(const PublishOptions& options, double step_s, double state_hz)
-    : participant_(Checked(options)),
+    : participant_(CheckPublishOptions(options)),
       options_(options),
       step_s_(step_s),
       state_every_(static_cast<uint64_t>(std::max<int64_t>(1, std::llround(1.0 / (state_hz * step_s))))),

@@ -32,6 +32,10 @@ struct PublishOptions {
   std::string name = "turf-python";
 };
 
+// The participant's options for `options`; throws SimError (out_of_range, malformed) for options turf-sim would
+// refuse, changing nothing.
+dds::ParticipantOptions CheckPublishOptions(const PublishOptions& options);
+
 // The participant and the clock both kinds share.
 class Publication {
  public:

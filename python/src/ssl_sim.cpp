@@ -82,17 +82,17 @@ void SslSim::SetRealism(const std::string& preset, const std::vector<std::pair<s
 
 void SslSim::Reset(std::optional<uint64_t> seed) {
   ResetKernel(seed);
-  ClearCameras();
   StateChanged();
 }
 
 void SslSim::Restore(const std::string& snapshot) {
   RestoreKernel(snapshot);
-  ClearCameras();
   StateChanged();
 }
 
+// A teleport, reset or restore: the observation it returns holds no camera frames (none was released since).
 void SslSim::StateChanged() {
+  ClearCameras();
   Refresh();
   if (publication_) publication_->PublishState(*kernel_, /*force=*/true);
 }

@@ -2,6 +2,7 @@
 // mismatched snapshot is refused with a reason and changes nothing.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -70,6 +71,38 @@ TEST(SnapshotTest, CorruptedValuesAreRefusedNotObeyed) {
     }
   }
   EXPECT_GT(refused, 0);
+}
+
+// MuJoCo's state in a snapshot (core/mj_state.cpp) must be one MuJoCo can step from: a position made NaN or 1e76
+// (one changed byte, the top of a double) was accepted, and the next step ended the process in MuJoCo's fatal
+// error handler ("Rank-defficient Hessian"). Every such value is refused, the kernel unchanged, and it still steps.
+TEST(SnapshotTest, NonFiniteOrHugeMujocoStateIsRefused) {
+  SslKernel k(SslMatch("realistic"));
+  for (int i = 0; i < 100; ++i) k.Step();
+  const std::string good = k.Save();
+  const size_t tag = good.find("MJDA");
+  ASSERT_NE(tag, std::string::npos);
+  // The tag, the model's fingerprint, time, then 8 warnings of two ints: qpos starts after them.
+  const size_t time_at = tag + 4 + 8, qpos_at = time_at + 8 + 8 * 2 * 4;
+  const auto with_double = [&](size_t at, double value) {
+    std::string bad = good;
+    std::memcpy(&bad[at], &value, sizeof(value));
+    return bad;
+  };
+  ExpectRefusedAndUnchanged(k, with_double(time_at, std::nan("")), "NaN time");
+  ExpectRefusedAndUnchanged(k, with_double(time_at, -1.0), "negative time");
+  for (size_t i = 0; i < 60; ++i) {
+    const size_t at = qpos_at + 8 * i;
+    ExpectRefusedAndUnchanged(k, with_double(at, std::nan("")), "NaN state value");
+    ExpectRefusedAndUnchanged(k, with_double(at, 1e76), "huge state value");
+    std::string top_byte = good;
+    top_byte[at + 7] = 0x4F;  // the reviewer's change: the value becomes ~1e76 or ~1e-77
+    const std::string before = k.Save();
+    if (k.Restore(top_byte).empty()) ASSERT_EQ(k.Restore(good), "") << i;  // a tiny value: valid after all
+    EXPECT_TRUE(k.Restore(before).empty());
+  }
+  for (int i = 0; i < 10; ++i) k.Step();  // and the kernel still steps
+  EXPECT_TRUE(std::isfinite(k.world().Snapshot().ball.position.x));
 }
 
 // Camera frames still on their way (a delayed link) are in the snapshot; one whose camera the scene does not have

@@ -69,7 +69,8 @@ def test_bad_joint_commands_raise_and_change_nothing():
     garbage_target[14, 0] = 100.0
     for commands, error in [({"t1": nan}, "not_finite"), ({"t1": negative_gain}, "out_of_range"),
                             ({"t1": garbage_target}, "out_of_range"), ({"t1": good[:5]}, "malformed"),
-                            ({"nao_9": good}, "unknown_robot"), ({7: good}, "unknown_robot")]:
+                            ({"nao_9": good}, "unknown_robot"), ({7: good}, "unknown_robot"),
+                            ({2**40: good}, "unknown_robot")]:
         with pytest.raises(turf.TurfError) as e:
             sim.step(commands, 4)
         assert e.value.error == error, e.value
@@ -77,6 +78,7 @@ def test_bad_joint_commands_raise_and_change_nothing():
                         (lambda: sim.teleport_robot("t1", [np.nan, 0, 1]), "not_finite"),
                         (lambda: sim.joint_command("t1", "No_Such_Joint", "pd"), "unknown_joint"),
                         (lambda: sim.joint_command("t1", "Waist", "fly"), "unknown_enum"),
+                        (lambda: sim.joint_command(2**40, "Waist", "pd"), "unknown_robot"),
                         (lambda: sim.teleport_ball([0, 0, 1]), "no_ball")]:
         with pytest.raises(turf.TurfError) as e:
             call()

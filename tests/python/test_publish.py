@@ -35,6 +35,12 @@ def test_bad_options_are_refused_and_change_nothing():
             sim.publish(domain=DOMAIN, prefix=prefix)
         assert e.value.error == "malformed"
     assert sim.publishing is None and sim.state_readers == 0
+    sim.publish(domain=DOMAIN, prefix="pytest_refused_%d" % os.getpid())
+    for bad in ({"domain": 999}, {"prefix": ""}, {"qos_file": "/nonexistent/turf_qos.xml"}):
+        with pytest.raises(turf.TurfError):
+            sim.publish(**{"domain": DOMAIN, "prefix": "pytest_other", **bad})
+        assert sim.publishing["prefix"].startswith("pytest_refused_"), bad  # refused: the running one goes on
+    sim.unpublish()
 
 
 def test_publishing_changes_no_observation():

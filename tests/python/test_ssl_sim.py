@@ -141,13 +141,17 @@ def test_bad_commands_raise_and_change_nothing(bad, error):
 def test_bad_step_counts_and_teams():
     sim = turf.Sim("ssl_div_a", seed=1)
     before = sim.save()
-    for n in (0, -1, 2_000_000):
+    for n in (0, -1, 2_000_000, 2**63, -(2**70)):
         with pytest.raises(turf.TurfError) as e:
             sim.step(None, n)
         assert e.value.error == "out_of_range"
     with pytest.raises(turf.TurfError) as e:
-        sim.step({"green": np.zeros((RPT, 6))})
-    assert e.value.error == "unknown_team"
+        sim.step(None, 2.5)
+    assert e.value.error == "malformed"
+    for team in ("green", 2, 2**70):
+        with pytest.raises(turf.TurfError) as e:
+            sim.step({team: np.zeros((RPT, 6))})
+        assert e.value.error == "unknown_team"
     assert sim.save() == before
 
 
@@ -176,6 +180,38 @@ def test_teleports_and_their_errors():
             call()
         assert e.value.error == error, e.value
     assert sim.save() == before
+
+
+def test_a_teleport_returns_no_camera_frames_of_the_step_before():
+    sim = turf.Sim("ssl_div_a", seed=1)
+    o = sim.step(None, 50)
+    assert len(o["ball_detections"]) > 0
+    for o in (sim.teleport_ball(1.0, 1.0), sim.teleport_robot("blue", 0, x=-1.0, y=0.5)):
+        assert len(o["ball_detections"]) == 0 and len(o["robot_detections"]) == 0 and len(o["camera_frames"]) == 0
+
+
+def test_a_damaged_snapshot_is_refused_and_the_sim_steps_on():
+    """A changed byte made a position 1e76: restore() took it and the next step() ended the Python process in
+    MuJoCo's fatal error handler ("Rank-defficient Hessian ... Press Enter to exit")."""
+    sim = turf.Sim("ssl_div_a", seed=1, realism="harsh")
+    sim.step({"blue": np.tile([1, 0, 0, 3, 0, 100.0], (RPT, 1))}, 200)
+    good = sim.save()
+    qpos = good.index(b"MJDA") + 4 + 8 + 8 + 64  # tag, model fingerprint, time, warnings: then MuJoCo's qpos
+    refused = 0
+    for i in range(48):
+        for top in (0x4F, 0x7F):  # the top byte of a double: ~1e76, or NaN/inf
+            bad = bytearray(good)
+            bad[qpos + 8 * i + 7] = top
+            try:
+                sim.restore(bytes(bad))
+            except turf.TurfError as e:
+                assert e.error == "malformed", e
+                refused += 1
+            sim.step(None, 5)  # a snapshot accepted is one MuJoCo steps from
+            sim.restore(good)
+    assert refused >= 48
+    o = sim.step(None, 5)
+    assert np.isfinite(o["ball"]).all()
 
 
 def test_realism_changes_as_the_control_topic():
