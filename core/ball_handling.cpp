@@ -25,13 +25,15 @@ bool BallAtFront(const RobotKinematics& robot, const Vec3& ball, const RobotPara
   return gap > -ball_radius && gap <= reach + kReachRounding && std::abs(b.y) <= half_face && b.z <= 2.0 * ball_radius;
 }
 
-Vec3 KickVelocity(const RobotKinematics& robot, KickKind kind, double speed, double chip_angle,
-                  const KickerParams& kicker) {
+Vec3 KickVelocity(const RobotKinematics& robot, const Vec3& ball_velocity, KickKind kind, double speed,
+                  double chip_angle, const KickerParams& kicker) {
   const bool chip = kind == KickKind::kChip;
   const double angle = chip ? (chip_angle > 0.0 ? chip_angle : kicker.default_chip_angle) : 0.0;
   const double horizontal = speed * std::cos(angle);
-  Vec3 v{robot.vx + horizontal * std::cos(robot.yaw), robot.vy + horizontal * std::sin(robot.yaw),
-         speed * std::sin(angle)};
+  const double c = std::cos(robot.yaw), s = std::sin(robot.yaw);
+  // The ball's sideways velocity relative to the robot (along the heading's left normal).
+  const double across = -(ball_velocity.x - robot.vx) * s + (ball_velocity.y - robot.vy) * c;
+  Vec3 v{robot.vx + horizontal * c - across * s, robot.vy + horizontal * s + across * c, speed * std::sin(angle)};
   const double limit = chip ? kicker.max_chip_speed : kicker.max_flat_speed;
   const double total = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
   if (total > limit && total > 0.0) {

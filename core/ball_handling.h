@@ -42,10 +42,13 @@ bool BallAtFront(const RobotKinematics& robot, const Vec3& ball, const RobotPara
                  double reach);
 
 // The ball's velocity after a kick: the robot's own velocity plus `speed` along
-// the heading, raised by the chip angle; the total is clamped to the kicker's
-// limit for that kind. `chip_angle` 0 means the scene's default.
-Vec3 KickVelocity(const RobotKinematics& robot, KickKind kind, double speed, double chip_angle,
-                  const KickerParams& kicker);
+// the heading, raised by the chip angle, plus what the ball brought across the
+// heading (its velocity relative to the robot, sideways: the kicker plate pushes
+// along the heading only, so a redirected pass keeps it, as in grSim's kick and
+// ER-Force's impulse); the total is clamped to the kicker's limit for that kind.
+// `chip_angle` 0 means the scene's default.
+Vec3 KickVelocity(const RobotKinematics& robot, const Vec3& ball_velocity, KickKind kind, double speed,
+                  double chip_angle, const KickerParams& kicker);
 
 // The dribbler's pull on a captured ball (field frame, horizontal): a damped
 // spring to the hold point in front of the face, limited to max_force.

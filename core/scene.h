@@ -53,8 +53,10 @@ struct BallParams {
   double k_switch = 0.7;
   double floor_restitution = 0.5;  // vertical speed kept at a bounce
   double wall_restitution = 0.6;   // against walls, goals and robots
-  // Published for team software's chip prediction (SSL_BallModelChipFixedLoss).
-  double chip_damping_xy_first_hop = 0.75;
+  // Published for team software's chip prediction (SSL_BallModelChipFixedLoss): what this ball does, measured
+  // (Physics.ThePublishedChipModelIsWhatTheBallDoes: a chip's first bounce keeps 0.683 of its horizontal speed, the
+  // carpet's friction spinning it up towards rolling; the next ones 0.95).
+  double chip_damping_xy_first_hop = 0.68;
   double chip_damping_xy_other_hops = 0.95;
 };
 
@@ -67,7 +69,9 @@ struct DriveParams {
   // Wheel positions, counter-clockwise from the robot's forward axis (rad), in
   // the order front_right, back_right, back_left, front_left.
   std::array<double, 4> wheel_angles = {-1.0471975511965976, -2.356194490192345, 2.356194490192345, 1.0471975511965976};
-  double wheel_distance = 0.08;  // robot centre to wheel contact
+  // Robot centre to wheel contact: grSim's wheels (its radius 0.09 m less half the wheel's 5 mm thickness), so
+  // wheel speeds a team computes for grSim turn the robot as fast as there (0.08 had turned it 9 % faster).
+  double wheel_distance = 0.0875;
   double wheel_radius = 0.027;   // to convert wheel rad/s to rim m/s
 };
 

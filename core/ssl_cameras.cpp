@@ -66,12 +66,20 @@ float Confidence(double spread, Rng& rng) {
 
 }  // namespace
 
-CameraFrame Detect(const CameraSpec& camera, const WorldSnapshot& world, double robot_height) {
+Vec3 SeenBallPosition(const Vec3& camera, const Vec3& ball, double ball_radius) {
+  // Below the camera and above the plane only: a ball at (or pressed below) the plane is where it is.
+  if (ball.z <= ball_radius || camera.z <= ball.z) return {ball.x, ball.y, ball.z};
+  const double t = (camera.z - ball_radius) / (camera.z - ball.z);
+  return {camera.x + t * (ball.x - camera.x), camera.y + t * (ball.y - camera.y), ball_radius};
+}
+
+CameraFrame Detect(const CameraSpec& camera, const WorldSnapshot& world, double robot_height, double ball_radius) {
   CameraFrame frame;
   frame.camera_id = camera.id;
   frame.capture_time_ns = world.time_ns;
   frame.sent_time_ns = world.time_ns;
-  if (Sees(camera, world.ball.position.x, world.ball.position.y)) frame.balls.push_back({world.ball.position, 1.0f});
+  const Vec3 ball = SeenBallPosition(camera.position, world.ball.position, ball_radius);
+  if (Sees(camera, ball.x, ball.y)) frame.balls.push_back({ball, 1.0f});
   for (const RobotSnapshot& r : world.robots) {
     if (!r.on_field || !Sees(camera, r.x, r.y)) continue;
     frame.robots.push_back({r.team, r.id, r.x, r.y, r.yaw, robot_height, 1.0f});
@@ -103,7 +111,9 @@ void ApplyValueModel(const CameraSpec& camera, const CameraRealism& realism, con
     const double ny = rng.Normal(0.0, realism.ball_position_stddev);
     const float confidence = Confidence(realism.confidence_spread, rng);
     if (vanished) continue;
-    if (realism.ball_occlusion && BallOccluded(camera, b.position, world, robot.radius, robot.height)) continue;
+    // Occlusion is of the ball itself, wherever vision will report it.
+    if (realism.ball_occlusion && BallOccluded(camera, world.ball.position, world, robot.radius, robot.height))
+      continue;
     b.position.x += nx;
     b.position.y += ny;
     b.confidence = confidence;
@@ -142,7 +152,7 @@ void SslCameraSystem::Capture(const WorldSnapshot& world) {
   const int64_t processing_ns = std::llround(realism_.processing_delay * 1e9);
   for (size_t i = 0; i < cameras_.size(); ++i) {
     Stream& s = streams_[i];
-    CameraFrame frame = Detect(cameras_[i], world, scene_.robot.height);
+    CameraFrame frame = Detect(cameras_[i], world, scene_.robot.height, scene_.ball.radius);
     frame.frame_number = captures_;
     ApplyValueModel(cameras_[i], realism_, world, scene_.robot, s.values, &frame);
     frame.sent_time_ns = frame.capture_time_ns + processing_ns;

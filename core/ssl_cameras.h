@@ -54,8 +54,14 @@ struct CameraFrame {
   std::vector<DetectedRobot> robots;
 };
 
-// What one camera reports of a world snapshot, exactly.
-CameraFrame Detect(const CameraSpec& camera, const WorldSnapshot& world, double robot_height);
+// Where a camera reports the ball: SSL-Vision finds its blob in the image and projects it onto the plane of a ball
+// on the carpet (its centre's height, `ball_radius`), so a ball in the air is reported where the ray from the
+// camera through it meets that plane, further from the camera than it is, and at that plane's height (as real
+// vision does, and grSim and ER-Force's simulator model). A ball on the carpet is reported where it is.
+Vec3 SeenBallPosition(const Vec3& camera, const Vec3& ball, double ball_radius);
+
+// What one camera reports of a world snapshot, exactly (the ball as SeenBallPosition).
+CameraFrame Detect(const CameraSpec& camera, const WorldSnapshot& world, double robot_height, double ball_radius);
 
 // True if a robot stands between the camera and the ball's centre.
 bool BallOccluded(const CameraSpec& camera, const Vec3& ball, const WorldSnapshot& world, double robot_radius,

@@ -266,7 +266,8 @@ void World::StageBallHandling() {
     const RobotCommand& c = slot.command;
     if (slot.kick.kind != KickKind::kNone && time_ns() > slot.kick.until_ns) slot.kick = {};  // not fired in time
     if (slot.kick.kind != KickKind::kNone && BallAtFront(k, ball.position, params, r, params.kicker.reach)) {
-      const Vec3 v = KickVelocity(k, slot.kick.kind, slot.kick.speed, slot.kick.chip_angle, params.kicker);
+      const Vec3 v =
+          KickVelocity(k, ball.velocity, slot.kick.kind, slot.kick.speed, slot.kick.chip_angle, params.kicker);
       double* qv = data_->qvel + ball_qvel_;
       qv[0] = v.x;
       qv[1] = v.y;

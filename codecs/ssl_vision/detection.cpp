@@ -76,7 +76,7 @@ void FillDetectionFrame(const idl::CameraFrame& frame, const FrameTimes& times, 
     o->set_confidence(b.confidence());
     o->set_x(Mm(p.x()));
     o->set_y(Mm(p.y()));
-    o->set_z(Mm(p.z()));
+    // No z, as SSL-Vision: x and y are the blob's projection onto the carpet plane (core/ssl_cameras.h).
     pixels(p.x(), p.y(), p.z(), o);
   }
   for (const idl::DetectedRobot& r : frame.robots()) {

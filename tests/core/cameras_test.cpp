@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "tests/core/test_scenes.h"
 
 namespace turf {
@@ -26,7 +28,7 @@ WorldSnapshot OneRobotAt(double x, double y, Vec3 ball) {
 std::vector<int> CamerasSeeingRobot(const std::vector<CameraSpec>& cams, const WorldSnapshot& s) {
   std::vector<int> ids;
   for (const CameraSpec& c : cams)
-    if (!Detect(c, s, 0.15).robots.empty()) ids.push_back(c.id);
+    if (!Detect(c, s, 0.15, 0.0215).robots.empty()) ids.push_back(c.id);
   return ids;
 }
 
@@ -65,12 +67,40 @@ TEST(Cameras, ReportsExactPosesAndSkipsParkedRobots) {
   const auto cams = CameraLayout(test::EmptyDivA());
   WorldSnapshot s = OneRobotAt(1.5, 1.0, {2.0, 3.0, 0.0215});
   s.robots[0].yaw = 0.7;
-  const CameraFrame f = Detect(cams[0], s, 0.15);
+  const CameraFrame f = Detect(cams[0], s, 0.15, 0.0215);
   ASSERT_EQ(f.robots.size(), 1u);
   EXPECT_DOUBLE_EQ(f.robots[0].x, 1.5);
   EXPECT_DOUBLE_EQ(f.robots[0].orientation, 0.7);
   ASSERT_EQ(f.balls.size(), 1u);
   EXPECT_DOUBLE_EQ(f.balls[0].position.y, 3.0);
+}
+
+// A chipped ball is reported as SSL-Vision reports it: its blob projected from the camera onto the plane of a ball on
+// the carpet, so further from the camera than it is, by the similar triangles of the camera's height; two cameras
+// report it at two places. On the carpet it is where it is.
+TEST(Cameras, ABallInTheAirIsProjectedOntoTheCarpetFromEachCamera) {
+  const auto cams = CameraLayout(test::EmptyDivA());
+  ASSERT_GE(cams.size(), 2u);
+  const double r = 0.0215;
+  const Vec3 air{0.05, 0.05, 0.5};  // above the overlap of the cameras at the centre
+  for (const CameraSpec& c : cams) {
+    const Vec3 seen = SeenBallPosition(c.position, air, r);
+    const double t = (c.position.z - r) / (c.position.z - air.z);  // > 1: beyond the ball, seen from the camera
+    EXPECT_NEAR(seen.x, c.position.x + t * (air.x - c.position.x), 1e-12) << c.id;
+    EXPECT_NEAR(seen.y, c.position.y + t * (air.y - c.position.y), 1e-12) << c.id;
+    EXPECT_DOUBLE_EQ(seen.z, r);
+    EXPECT_GT(std::hypot(seen.x - air.x, seen.y - air.y), 0.2) << c.id << ": a 0.5 m high ball moves visibly";
+    const Vec3 resting = SeenBallPosition(c.position, {1.0, -2.0, r}, r);
+    EXPECT_DOUBLE_EQ(resting.x, 1.0);
+    EXPECT_DOUBLE_EQ(resting.y, -2.0);
+  }
+  const Vec3 in_quadrant{2.0, 1.5, 0.5};  // camera 0's (+x+y), its projection too
+  const CameraFrame f = Detect(cams[0], OneRobotAt(3, 3, in_quadrant), 0.15, r);
+  ASSERT_EQ(f.balls.size(), 1u);
+  const Vec3 expected = SeenBallPosition(cams[0].position, in_quadrant, r);
+  EXPECT_DOUBLE_EQ(f.balls[0].position.x, expected.x);
+  EXPECT_DOUBLE_EQ(f.balls[0].position.y, expected.y);
+  EXPECT_LT(expected.x, in_quadrant.x);  // away from the camera above the quadrant's middle
 }
 
 TEST(Cameras, CaptureAtTheConfiguredRateOnTheSimulationClock) {

@@ -59,6 +59,23 @@ TEST(Kicker, OneKickThenAPlainCommandBeforeTheNextStepStillKicks) {
   EXPECT_NEAR(BallSpeed(w), 4.0, 0.1);
 }
 
+// A pass redirected by a kick keeps what it brought across the kick's direction (the plate pushes along the
+// heading only; grSim's kick and ER-Force's impulse keep it too): crossing the face at 2 and 3 m/s, a 5 m/s kick
+// leaves at (5, 2) and (5, 3), -22 and -31 degrees off the heading of a team that aims as on those simulators.
+TEST(Kicker, ARedirectKeepsTheBallsSidewaysVelocity) {
+  for (const double side : {-3.0, 2.0}) {
+    World w(test::OneRobot());
+    const double x = w.scene().robot.center_to_dribbler + w.scene().ball.radius + 0.002;
+    ASSERT_EQ(w.TeleportBall({{x, 0.0, 0.0}, {0.0, side, 0.0}, false}), InputError::kOk);
+    ASSERT_EQ(w.SetCommand(Kick(5.0)), InputError::kOk);
+    w.Step();
+    ASSERT_EQ(Kicks(w), 1u) << side;
+    const Vec3 v = w.Snapshot().ball.velocity;
+    EXPECT_NEAR(v.x, 5.0, 0.05) << side;
+    EXPECT_NEAR(v.y, side, 0.05) << side;
+  }
+}
+
 TEST(Kicker, KickArmedBeforeTheBallArrivesFiresWhenItIsWithinReach) {
   // The kick reaches the robot before the ball's placement does.
   World w(test::OneRobot());

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "core/ball_handling.h"
 #include "core/ball_model.h"
@@ -225,6 +226,35 @@ TEST(Physics, ChipBouncesAndLosesVerticalSpeed) {
   }
   ASSERT_LT(before, -2.0);
   EXPECT_NEAR(after / -before, w.scene().ball.floor_restitution, 0.05);
+}
+
+// The chip model turf publishes in its geometry (SSL_BallModelChipFixedLoss) is what its ball does: a chipped ball
+// (sliding, no spin) keeps damping_xy_first_hop of its horizontal speed across its first bounce (the carpet's
+// friction during the bounce spins it up towards rolling), damping_xy_other_hops across the next, and
+// floor_restitution of its vertical speed. Team software predicts where a chip stops from these numbers.
+TEST(Physics, ThePublishedChipModelIsWhatTheBallDoes) {
+  for (const double v : {2.5, 3.0, 3.5}) {
+    World w(test::EmptyDivA());
+    const BallParams& b = w.scene().ball;
+    ASSERT_EQ(w.TeleportBall({{-4.0, 0, b.radius}, {v, 0, v}, false}), InputError::kOk);
+    // Horizontal speed when the ball last was airborne before each landing, and when first airborne after it.
+    const double airborne = b.radius + 0.005;
+    std::vector<double> before, after;
+    bool up_before = false;
+    double last_up = 0.0;
+    for (int i = 0; i < Steps(w, 3.0) && after.size() < 2; ++i) {
+      w.Step();
+      const BallSnapshot& ball = w.Snapshot().ball;
+      const bool up = ball.position.z > airborne;
+      if (up && !up_before && !before.empty()) after.push_back(std::hypot(ball.velocity.x, ball.velocity.y));
+      if (!up && up_before) before.push_back(last_up);
+      if (up) last_up = std::hypot(ball.velocity.x, ball.velocity.y);
+      up_before = up;
+    }
+    ASSERT_EQ(after.size(), 2u) << v;
+    EXPECT_NEAR(after[0] / before[0], b.chip_damping_xy_first_hop, 0.02) << "first hop, " << v << " m/s";
+    EXPECT_NEAR(after[1] / before[1], b.chip_damping_xy_other_hops, 0.02) << "second hop, " << v << " m/s";
+  }
 }
 
 // Straight ball: slides at acc_slide, switches to rolling at k_switch of its

@@ -61,7 +61,7 @@ def test_camera_detections_carry_the_modelled_noise():
         d = np.concatenate(seen)
         assert d.shape[1] == 7 and len(d) > 30
         errors[name] = np.abs(d[:, 3:5] - [1.0, 1.0]).max()
-    assert errors["ideal"] < 1e-9
+    assert errors["ideal"] < 1e-5  # a resting ball sits micrometres off its radius; vision projects from the camera
     assert errors["realistic"] > 1e-4  # millimetres of noise, well inside 5 cm
     assert errors["realistic"] < 0.05
 

@@ -58,16 +58,16 @@ idl::CameraFrame GoldenFrame() {
 
 // clang-format off
 const std::vector<uint8_t> kGoldenDetection = {
-    0x0A, 0x84, 0x01,                                // SSL_WrapperPacket.detection (1, LEN), 132 bytes
+    0x0A, 0x7F,                                      // SSL_WrapperPacket.detection (1, LEN), 127 bytes
     0x08, 0x07,                                      //   frame_number (1, varint) = 7
     0x11, 0, 0, 0, 0, 0, 0, 0xF0, 0x3F,              //   t_capture (2, fixed64) = 1.0
     0x19, 0, 0, 0, 0, 0, 0, 0xF8, 0x3F,              //   t_sent (3, fixed64) = 1.5
     0x20, 0x01,                                      //   camera_id (4, varint) = 1
-    0x2A, 0x1E,                                      //   balls (5, LEN), 30 bytes
+    0x2A, 0x19,                                      //   balls (5, LEN), 25 bytes
     0x0D, 0x00, 0x00, 0x80, 0x3F,                    //     confidence (1, fixed32) = 1.0f
     0x1D, 0x00, 0x00, 0xFA, 0x44,                    //     x (3) = 2000 mm
     0x25, 0x00, 0x00, 0x7A, 0xC4,                    //     y (4) = -1000 mm
-    0x2D, 0x00, 0x00, 0x16, 0x43,                    //     z (5) = 150 mm
+                                                     //     no z (5), as SSL-Vision: x, y on the carpet plane
     0x35, 0x00, 0x00, 0xFA, 0x43,                    //     pixel_x (6) = 500 = 400 + 400 * 1 m / 4 m
     0x3D, 0x00, 0x00, 0xFA, 0x43,                    //     pixel_y (7) = 500 = 300 - 400 * -2 m / 4 m
     0x32, 0x25,                                      //   robots_yellow (6, LEN), 37 bytes
@@ -116,7 +116,7 @@ TEST(SslVisionDetection, DecodesBackToMillimetresAndRadians) {
   ASSERT_EQ(d.balls_size(), 1);
   EXPECT_FLOAT_EQ(d.balls(0).x(), 2000.0f);
   EXPECT_FLOAT_EQ(d.balls(0).y(), -1000.0f);
-  EXPECT_FLOAT_EQ(d.balls(0).z(), 150.0f);
+  EXPECT_FALSE(d.balls(0).has_z());  // SSL-Vision never sends it: x and y are projected onto the carpet plane
   ASSERT_EQ(d.robots_blue_size(), 1);
   ASSERT_EQ(d.robots_yellow_size(), 1);
   const wire::vision::SSL_DetectionRobot& blue = d.robots_blue(0);

@@ -139,7 +139,7 @@ TEST(SslVisionGeometry, BallModels) {
   EXPECT_DOUBLE_EQ(straight.acc_roll(), -0.4);
   EXPECT_DOUBLE_EQ(straight.k_switch(), 0.7);
   const auto& chip = g.models().chip_fixed_loss();
-  EXPECT_DOUBLE_EQ(chip.damping_xy_first_hop(), 0.75);
+  EXPECT_DOUBLE_EQ(chip.damping_xy_first_hop(), 0.68);
   EXPECT_DOUBLE_EQ(chip.damping_xy_other_hops(), 0.95);
   EXPECT_DOUBLE_EQ(chip.damping_z(), 0.5);
 }
