@@ -451,7 +451,14 @@ void Participant::EnableSecurity(fdds::DomainParticipantQos& qos) const {
   AddSecurityProperties(options_.security, qos);
 }
 
+// Security needs multicast discovery or initial peers (a --qos file): a discovery server named by the environment
+// would be an unauthenticated participant (`turf launch` refuses its own --discovery-server with --security; a
+// participant started by hand with ROS_DISCOVERY_SERVER set ran, then aborted in Fast DDS's SecurityManager).
 void AddSecurityProperties(const std::string& dir, fdds::DomainParticipantQos& qos) {
+  if (const char* server = std::getenv("ROS_DISCOVERY_SERVER"); server != nullptr && *server != '\0')
+    throw std::invalid_argument(std::string("--security with ROS_DISCOVERY_SERVER=") + server +
+                                ": the discovery server would be an unauthenticated participant; use multicast "
+                                "discovery or initial peers in a --qos file, and unset ROS_DISCOVERY_SERVER");
   auto file = [&](const std::string& name) {
     const std::string path = dir + "/" + name;
     if (access(path.c_str(), R_OK) != 0)

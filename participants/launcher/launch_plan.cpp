@@ -207,8 +207,48 @@ namespace {
 // The value that follows `flag` in `argv`; `fallback` if the flag is not there.
 std::string FlagValue(const std::vector<std::string>& argv, const std::string& flag, const std::string& fallback) {
   for (size_t i = 1; i + 1 < argv.size(); ++i)
-    if (argv[i] == flag) return argv[i + 1];
+    if (argv[i] == flag && argv[i + 1].rfind("--", 0) != 0) return argv[i + 1];
   return fallback;
+}
+
+bool HasFlag(const std::vector<std::string>& argv, const std::string& flag) {
+  return std::find(argv.begin(), argv.end(), flag) != argv.end();
+}
+
+// The ports of a front-end whose flags carry `p` (empty in its own bridge, "simproto-" ... in turf-sim), bound to
+// `listen`; `where` names the process when it is not the front-end's own bridge.
+std::string SimprotoLine(const ProcessCommand& c, const std::string& p, const std::string& listen,
+                         const std::string& where) {
+  auto v = [&](const char* flag, const char* fallback) { return FlagValue(c.argv, "--" + p + flag, fallback); };
+  const std::string sync = HasFlag(c.argv, "--" + p + "sync")
+                               ? fmt::format("sync {}:{}", v("sync-listen", "127.0.0.1"), v("sync-port", "10303"))
+                               : std::string("sync off");
+  return fmt::format("SSL simulation protocol{}: UDP {}: control {}, blue {}, yellow {}; {}", where, listen,
+                     v("control-port", "10300"), v("blue-port", "10301"), v("yellow-port", "10302"), sync);
+}
+
+std::string SimSparkLine(const ProcessCommand& c, const std::string& p, const std::string& listen,
+                         const std::string& where) {
+  auto v = [&](const char* flag, const char* fallback) { return FlagValue(c.argv, "--" + p + flag, fallback); };
+  return fmt::format("SimSpark{}: TCP {}: agents {}, monitors and trainers {}", where, listen, v("agent-port", "3100"),
+                     v("monitor-port", "3200"));
+}
+
+// What turf-sim serves itself: --simproto, --simspark, --rcssservermj, --booster-sdk.
+void InSimLines(const ProcessCommand& c, std::vector<std::string>* lines) {
+  auto v = [&c](const std::string& flag, const char* fallback) { return FlagValue(c.argv, flag, fallback); };
+  const std::string here = " (in turf-sim)";
+  if (HasFlag(c.argv, "--simproto")) lines->push_back(SimprotoLine(c, "simproto-", v("--simproto", "127.0.0.1"), here));
+  if (HasFlag(c.argv, "--simspark")) lines->push_back(SimSparkLine(c, "simspark-", v("--simspark", "127.0.0.1"), here));
+  if (HasFlag(c.argv, "--rcssservermj"))
+    lines->push_back(fmt::format("RCSSServerMJ{}: TCP {}: agents {}, monitor commands {}", here,
+                                 v("--rcssservermj", "127.0.0.1"), v("--rcssservermj-agent-port", "60000"),
+                                 v("--rcssservermj-monitor-port", "60001")));
+  if (HasFlag(c.argv, "--booster-sdk"))
+    lines->push_back(
+        fmt::format("Booster SDK{}: the first robot's topics on DDS domain {}, the next robot's on the "
+                    "next domain",
+                    here, v("--booster-sdk", "0")));
 }
 
 }  // namespace
@@ -229,19 +269,14 @@ std::vector<std::string> WhereToLook(const LaunchPlan& plan) {
     } else if (c.name == "vision") {
       lines.push_back(fmt::format("SSL-Vision: UDP {}:{}", v("--address", "224.5.23.2"), v("--port", "10020")));
     } else if (c.name == "simproto") {
-      lines.push_back(fmt::format("SSL simulation protocol: UDP {}: control {}, blue {}, yellow {}, sync {}",
-                                  v("--listen", "0.0.0.0"), v("--control-port", "10300"), v("--blue-port", "10301"),
-                                  v("--yellow-port", "10302"), v("--sync-port", "10303")));
-    } else if (c.name == "sim" && std::find(c.argv.begin(), c.argv.end(), "--rcssservermj") != c.argv.end()) {
-      lines.push_back(fmt::format("RCSSServerMJ (in turf-sim): TCP {}: agents {}, monitor commands {}",
-                                  v("--rcssservermj", "127.0.0.1"), v("--rcssservermj-agent-port", "60000"),
-                                  v("--rcssservermj-monitor-port", "60001")));
+      lines.push_back(SimprotoLine(c, "", v("--listen", "0.0.0.0"), ""));
+    } else if (c.name == "sim") {
+      InSimLines(c, &lines);
     } else if (c.name == "hlvs") {
       lines.push_back(fmt::format("HLVS robot API: TCP {}: red players {}, blue players {}", v("--listen", "0.0.0.0"),
                                   v("--red-ports", "10001-10004"), v("--blue-ports", "10021-10024")));
     } else if (c.name == "simspark") {
-      lines.push_back(fmt::format("SimSpark: TCP {}: agents {}, monitors and trainers {}", v("--listen", "0.0.0.0"),
-                                  v("--agent-port", "3100"), v("--monitor-port", "3200")));
+      lines.push_back(SimSparkLine(c, "", v("--listen", "0.0.0.0"), ""));
     }
   }
   return lines;

@@ -173,6 +173,11 @@ bool ControlLoop::ServeInCaller() {
 }
 
 void ControlLoop::ReportTimeMode() const {
+  spdlog::info(
+      "publishing {} (latched: the run's scene, seed and options) and {} (every input applied, at its step: "
+      "for turf replay --resimulate)",
+      dds::TopicName(options_.prefix, dds::Topic::kSimRun),
+      dds::TopicName(options_.prefix, dds::Topic::kAppliedInputs));
   spdlog::info("time: {}{}{}", TimeModeName(time_.mode()),
                time_.mode() == TimeMode::kScaled ? fmt::format(" x{}", time_.speed()) : "",
                time_.paused() ? ", paused" : "");

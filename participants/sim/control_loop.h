@@ -145,7 +145,8 @@ class ControlLoop : Pinned {
   }
   // Counts and logs (rate-limited) a refused input of `kind`.
   void Reject(const std::string& kind, const std::string& detail) { rejects_.Reject(kind, detail); }
-  // Logs the time mode, as the last line of a node's startup report.
+  // Logs the loop's own topics (sim/run, sim/applied_inputs) and the time mode, the last lines of a node's
+  // startup report.
   void ReportTimeMode() const;
   // The status line a node logs every 10 s: sim time, frame, real-time factor, refusals, then the node's `health`.
   void ReportStatusLine(const std::string& health) const;

@@ -144,12 +144,13 @@ class LeggedNode final : public KernelNode<LeggedKernel, LeggedPublisher> {
                    r.forces.size(), r.has_imu ? ", IMU" : "");
     spdlog::info("{}", bus_.Describe());
     auto name = [this](dds::Topic t) { return bus_.TopicName(t); };
+    const bool ball = kernel_.world().State().has_ball;  // world_state carries only the ball
     spdlog::info(
         "publishing {}, {}, {} per robot through their modelled links, at {:.0f} Hz of sim time; {} (all in one "
-        "sample), {}, {} and {} at the same rate; {}, {} every second of sim time, {} (latched)",
+        "sample), {}, {}{} at the same rate; {}, {} every second of sim time, {} (latched)",
         name(dds::Topic::kRobotJointState), name(dds::Topic::kRobotImu), name(dds::Topic::kRobotForce),
-        s.rates.joint_state_hz, name(dds::Topic::kRobotsState), name(dds::Topic::kRobotLinks),
-        name(dds::Topic::kWorldState), name(dds::Topic::kClock), name(dds::Topic::kControlReply),
+        s.rates.joint_state_hz, name(dds::Topic::kRobotsState), name(dds::Topic::kRobotLinks), name(dds::Topic::kClock),
+        ball ? " and " + name(dds::Topic::kWorldState) + " (the ball)" : std::string(), name(dds::Topic::kControlReply),
         name(dds::Topic::kStats), name(dds::Topic::kLeggedScene));
     const SensorRealism& r = kernel_.realism();
     spdlog::info(

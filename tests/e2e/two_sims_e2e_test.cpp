@@ -76,6 +76,10 @@ TEST(TwoSims, TheSecondOnTheSameDomainAndPrefixExitsTwoNamingTheFirst) {
   Process first(d.prefix + "_first", SimArgs(d));
   dds::Participant watcher(d.Participant("test-watcher"));
   ASSERT_TRUE(WaitForWorldStateOf(watcher, first.pid())) << first.Log();
+  // Its start-up report names every topic it publishes, the run's own ones too.
+  EXPECT_TRUE(WaitForLog(first, "publishing " + d.prefix + "/sim/run (latched") &&
+              WaitForLog(first, d.prefix + "/sim/applied_inputs (every input applied"))
+      << first.Log();
 
   Process second(d.prefix + "_second", SimArgs(d));
   const auto status = second.Wait(kDeadline);

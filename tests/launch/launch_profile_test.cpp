@@ -342,8 +342,25 @@ TEST(LaunchPlan, WhereToLookNamesTheViewerAndThePorts) {
   ASSERT_EQ(lines.size(), 4u);
   EXPECT_EQ(lines[0].rfind("grSim commands and replacement: UDP 0.0.0.0:20111 ", 0), 0u) << lines[0];
   EXPECT_EQ(lines[1], "SSL-Vision: UDP 224.5.23.2:10020");
-  EXPECT_EQ(lines[2], "SSL simulation protocol: UDP 0.0.0.0: control 10300, blue 10301, yellow 10302, sync 10303");
+  EXPECT_EQ(lines[2], "SSL simulation protocol: UDP 0.0.0.0: control 10300, blue 10301, yellow 10302; sync off");
   EXPECT_EQ(lines[3], "viewer: http://127.0.0.1:8181/");
+  // The sync port binds 127.0.0.1 unless told otherwise; a front-end in turf-sim has its line too.
+  LaunchOverrides sync;
+  sync.sets = {"simproto.sync=true"};
+  EXPECT_EQ(WhereToLook(BuildPlan(*r.profile, sync, kLauncherDir))[2],
+            "SSL simulation protocol: UDP 0.0.0.0: control 10300, blue 10301, yellow 10302; sync 127.0.0.1:10303");
+  LaunchOverrides in_sim;
+  in_sim.only = {"sim"};
+  in_sim.sets = {"sim.simproto=0.0.0.0", "sim.simproto-control-port=10400"};
+  EXPECT_EQ(WhereToLook(BuildPlan(*r.profile, in_sim, kLauncherDir)),
+            std::vector<std::string>{"SSL simulation protocol (in turf-sim): UDP 0.0.0.0: control 10400, blue 10301, "
+                                     "yellow 10302; sync off"});
+  const ProfileLoadResult b = LoadLaunchProfile("booster", DefaultProfileDir());
+  ASSERT_TRUE(b.profile.has_value());
+  const std::vector<std::string> booster = WhereToLook(BuildPlan(*b.profile, {}, kLauncherDir));
+  ASSERT_FALSE(booster.empty());
+  EXPECT_EQ(booster[0],
+            "Booster SDK (in turf-sim): the first robot's topics on DDS domain 0, the next robot's on the next domain");
   const ProfileLoadResult s = LoadLaunchProfile("simspark", DefaultProfileDir());
   ASSERT_TRUE(s.profile.has_value());
   LaunchOverrides only_sim;

@@ -399,6 +399,17 @@ TEST_F(SecurityE2e, ATamperedPermissionsFileOrAMissingKeyMakesTurfSimRefuseToSta
   EXPECT_NE(sim2.Log().find("no readable key.pem"), std::string::npos) << sim2.Log();
 }
 
+// A discovery server would be an unauthenticated participant: `turf launch` refuses its --discovery-server with
+// --security, and a participant started by hand with ROS_DISCOVERY_SERVER set refuses too (it ran, then aborted).
+TEST_F(SecurityE2e, SecurityWithADiscoveryServerInTheEnvironmentIsRefused) {
+  Process sim("security_sim_discovery_server", SimArgs(dir_ + "/sim"), {{"ROS_DISCOVERY_SERVER", "127.0.0.1:47999"}});
+  const std::optional<int> status = sim.Wait(60s);
+  ASSERT_TRUE(status.has_value()) << sim.Log();
+  ASSERT_TRUE(WIFEXITED(*status)) << sim.Log();
+  EXPECT_EQ(WEXITSTATUS(*status), 2) << sim.Log();
+  EXPECT_NE(sim.Log().find("--security with ROS_DISCOVERY_SERVER=127.0.0.1:47999"), std::string::npos) << sim.Log();
+}
+
 TEST_F(SecurityE2e, InTheTournamentProfileATeamCanNeitherReadTheWorldStateNorControl) {
   Init(dds::SecurityProfile::kTournament);
   dds::Participant blue(As("blue", "test-blue"));
