@@ -121,6 +121,7 @@ TEST(HlvsBridge, SensorsAtTheirStepsAndACommandedJointMoves) {
   EXPECT_EQ(accs, 8);
   // Neck (the K1's head yaw) to 0.5 rad: Webots' P 10 gives a time constant of 0.1 s; within 0.02 rad after
   // ln(25) / 10 = 0.32 s. Allow 1 s of simulated time; then it holds.
+  ASSERT_TRUE(Sensor(*m, "NeckS"));
   const double start = *Sensor(*m, "NeckS");
   EXPECT_NEAR(start, 0.0, 0.01);
   ASSERT_TRUE(c.Send(Position("Neck", 0.5)));
@@ -129,6 +130,7 @@ TEST(HlvsBridge, SensorsAtTheirStepsAndACommandedJointMoves) {
   while (m && m->time() < sent + 1000 && reached == 0) {
     m = c.Receive();
     ASSERT_TRUE(m);
+    ASSERT_TRUE(Sensor(*m, "NeckS"));
     if (std::abs(*Sensor(*m, "NeckS") - 0.5) < 0.02) reached = m->time();
   }
   ASSERT_NE(reached, 0u) << "Neck did not reach 0.5 rad within 1 s of simulated time";
@@ -136,6 +138,7 @@ TEST(HlvsBridge, SensorsAtTheirStepsAndACommandedJointMoves) {
   RecordProperty("neck_settle_ms", static_cast<int>(reached - sent));
   for (int i = 0; i < 50; ++i) m = c.Receive();
   ASSERT_TRUE(m);
+  ASSERT_TRUE(Sensor(*m, "NeckS"));
   EXPECT_NEAR(*Sensor(*m, "NeckS"), 0.5, 0.02);
 }
 

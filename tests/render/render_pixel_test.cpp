@@ -192,10 +192,11 @@ TEST_F(RenderPixel, TheFieldIsGreenWithWhiteLinesOfTheirWidth) {
 }
 
 TEST(TeamColours, TheNameSaysTheTeam) {
-  EXPECT_TRUE(TeamColour("red_1").has_value());
+  ASSERT_TRUE(TeamColour("red_1").has_value());
   EXPECT_TRUE(TeamColour("Blue-3").has_value());
   EXPECT_TRUE(TeamColour("yellow2").has_value());
   EXPECT_TRUE(TeamColour("blue").has_value());
+  ASSERT_TRUE(TeamColour("blue_1").has_value());
   EXPECT_FALSE(TeamColour("redshirt").has_value());
   EXPECT_FALSE(TeamColour("nao_1").has_value());
   EXPECT_FALSE(TeamColour("").has_value());

@@ -128,6 +128,7 @@ bool WsClient::ReadUntil(const std::function<bool(const std::string&)>& done, st
     }
     if (result) {
       open_ = false;
+      closed_ = true;
       return false;
     }
     const std::string text = beast::buffers_to_string(buffer_.data());

@@ -46,6 +46,8 @@ class WsClient {
   bool ReadUntil(const std::function<bool(const std::string&)>& done,
                  std::chrono::milliseconds timeout = std::chrono::seconds(5));
   bool open() const { return open_; }
+  // The connection ended by the peer or an error, not by a ReadUntil timeout.
+  bool closed() const { return closed_; }
 
  private:
   bool Write(const std::string& message, bool binary);  // one text or binary frame
@@ -53,6 +55,7 @@ class WsClient {
   std::unique_ptr<boost::beast::websocket::stream<boost::beast::tcp_stream>> ws_;
   boost::beast::flat_buffer buffer_;
   bool open_ = false;
+  bool closed_ = false;
 };
 
 }  // namespace turf::test

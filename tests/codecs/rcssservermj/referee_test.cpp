@@ -17,8 +17,10 @@ struct RefereeFixture : ::testing::Test {
   }
   void KickOffAndPlay(Side side) {
     ref.KickOff(side);
-    ASSERT_EQ(*Step({0, 0, kR}), Eigen::Vector3d(0, 0, kR));  // the ball to the centre
-    Step({0.3, 0, kR}, side);                                 // kicked: play on
+    const auto centre = Step({0, 0, kR});
+    ASSERT_TRUE(centre);
+    ASSERT_EQ(*centre, Eigen::Vector3d(0, 0, kR));  // the ball to the centre
+    Step({0.3, 0, kR}, side);                       // kicked: play on
     ASSERT_EQ(ref.play_mode(), PlayMode::kPlayOn);
   }
 };
@@ -67,6 +69,7 @@ TEST_F(RefereeFixture, OverTheBarOrBesideThePostIsNoGoal) {
 TEST_F(RefereeFixture, GoalKickWhenTheAttackersTouchedItLast) {
   KickOffAndPlay(Side::kLeft);
   const auto place = Step({53, -5, kR}, Side::kLeft);
+  ASSERT_TRUE(place);
   EXPECT_EQ(ref.play_mode(), PlayMode::kGoalKickRight);
   EXPECT_EQ(*place, Eigen::Vector3d(47, 0, kR));
 }
@@ -74,6 +77,7 @@ TEST_F(RefereeFixture, GoalKickWhenTheAttackersTouchedItLast) {
 TEST_F(RefereeFixture, KickInForTheTeamThatDidNotTouchLast) {
   KickOffAndPlay(Side::kLeft);
   const auto place = Step({10, -34.2, kR}, Side::kLeft);
+  ASSERT_TRUE(place);
   EXPECT_EQ(ref.play_mode(), PlayMode::kKickInRight);
   EXPECT_EQ(*place, Eigen::Vector3d(10, -34, kR));
   Step(*place);
@@ -109,6 +113,7 @@ TEST(Referee, HalvesOfTheSsim2025RuleBook) {
   while (ref.play_mode() == PlayMode::kPlayOn) ref.Update(kDt, {0, 0, kR}, std::nullopt);
   EXPECT_EQ(ref.play_mode(), PlayMode::kGameOver);
   EXPECT_NEAR(ref.play_time(), 600.0, 1e-9);
+  ASSERT_NE(FindRuleBook("fifa"), nullptr);
   EXPECT_EQ(FindRuleBook("fifa")->half_s, 45 * 60);
 }
 
