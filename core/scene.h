@@ -72,7 +72,7 @@ struct DriveParams {
   // Robot centre to wheel contact: grSim's wheels (its radius 0.09 m less half the wheel's 5 mm thickness), so
   // wheel speeds a team computes for grSim turn the robot as fast as there (0.08 had turned it 9 % faster).
   double wheel_distance = 0.0875;
-  double wheel_radius = 0.027;   // to convert wheel rad/s to rim m/s
+  double wheel_radius = 0.027;  // to convert wheel rad/s to rim m/s
 };
 
 struct KickerParams {
