@@ -116,6 +116,9 @@ void ConvertBall(const ws::TeleportBall& in, const ControlContext& ctx, Problems
     p->Add(DecodeError::kOutsideField, "teleport_ball.z = " + std::to_string(z) + " is outside [0, 10] m");
   if (std::sqrt(in.vx() * in.vx() + in.vy() * in.vy() + in.vz() * in.vz()) > kMaxTeleportSpeed)
     p->Add(DecodeError::kOutOfRange, "teleport_ball speed above " + std::to_string(kMaxTeleportSpeed) + " m/s");
+  // ER-Force's simulator, the protocol's reference, reads z as the ball's height above the carpet and adds its radius;
+  // turf's control topic takes the centre's (an absent z keeps the centre where it is).
+  if (in.has_z()) z += radius;
   idl::SimControl c = Request(idl::OP_TELEPORT_BALL);
   c.ball().position(V3(x, y, z));
   c.ball().velocity(V3(in.vx(), in.vy(), in.vz()));

@@ -77,6 +77,17 @@ class SecurityE2e : public ::testing::Test {
             identity_dir};
   }
 
+  // turf-sim with the identity in `identity_dir` (and `env`) exits 2 at start, saying `why`.
+  void ExpectSimRefusesToStart(const std::string& name, const std::string& identity_dir, const std::string& why,
+                               const Process::Env& env = {}) const {
+    Process sim(name, SimArgs(identity_dir), env);
+    const std::optional<int> status = sim.Wait(60s);
+    ASSERT_TRUE(status.has_value()) << sim.Log();
+    ASSERT_TRUE(WIFEXITED(*status)) << sim.Log();
+    EXPECT_EQ(WEXITSTATUS(*status), 2) << sim.Log();
+    EXPECT_NE(sim.Log().find(why), std::string::npos) << sim.Log();
+  }
+
   // Below, with StalledSim.
   void RestartsAndMeetsTheNextOne(StalledSim& stalled, const WaitingBridge& b, const std::function<void()>& pace);
 
@@ -381,33 +392,20 @@ TEST_F(SecurityE2e, ATamperedPermissionsFileOrAMissingKeyMakesTurfSimRefuseToSta
     p7s.replace(at, from.size(), prefix_ + "/ssl/cameRa");  // one letter of the signed text
     std::ofstream(tampered + "/permissions.p7s", std::ios::trunc) << p7s;
   }
-  Process sim("security_sim_tampered", SimArgs(tampered));
-  const std::optional<int> status = sim.Wait(60s);
-  ASSERT_TRUE(status.has_value()) << sim.Log();
-  ASSERT_TRUE(WIFEXITED(*status)) << sim.Log();
-  EXPECT_EQ(WEXITSTATUS(*status), 2) << sim.Log();
-  EXPECT_NE(sim.Log().find("DDS Security refused the identity in " + tampered), std::string::npos) << sim.Log();
+  ExpectSimRefusesToStart("security_sim_tampered", tampered, "DDS Security refused the identity in " + tampered);
 
   const std::string keyless = dir_ + "/sim-keyless";
   fs::copy(dir_ + "/sim", keyless);
   fs::remove(keyless + "/key.pem");
-  Process sim2("security_sim_keyless", SimArgs(keyless));
-  const std::optional<int> status2 = sim2.Wait(60s);
-  ASSERT_TRUE(status2.has_value()) << sim2.Log();
-  ASSERT_TRUE(WIFEXITED(*status2)) << sim2.Log();
-  EXPECT_EQ(WEXITSTATUS(*status2), 2) << sim2.Log();
-  EXPECT_NE(sim2.Log().find("no readable key.pem"), std::string::npos) << sim2.Log();
+  ExpectSimRefusesToStart("security_sim_keyless", keyless, "no readable key.pem");
 }
 
 // A discovery server would be an unauthenticated participant: `turf launch` refuses its --discovery-server with
 // --security, and a participant started by hand with ROS_DISCOVERY_SERVER set refuses too (it ran, then aborted).
 TEST_F(SecurityE2e, SecurityWithADiscoveryServerInTheEnvironmentIsRefused) {
-  Process sim("security_sim_discovery_server", SimArgs(dir_ + "/sim"), {{"ROS_DISCOVERY_SERVER", "127.0.0.1:47999"}});
-  const std::optional<int> status = sim.Wait(60s);
-  ASSERT_TRUE(status.has_value()) << sim.Log();
-  ASSERT_TRUE(WIFEXITED(*status)) << sim.Log();
-  EXPECT_EQ(WEXITSTATUS(*status), 2) << sim.Log();
-  EXPECT_NE(sim.Log().find("--security with ROS_DISCOVERY_SERVER=127.0.0.1:47999"), std::string::npos) << sim.Log();
+  ExpectSimRefusesToStart("security_sim_discovery_server", dir_ + "/sim",
+                          "--security with ROS_DISCOVERY_SERVER=127.0.0.1:47999",
+                          {{"ROS_DISCOVERY_SERVER", "127.0.0.1:47999"}});
 }
 
 TEST_F(SecurityE2e, InTheTournamentProfileATeamCanNeitherReadTheWorldStateNorControl) {

@@ -67,7 +67,8 @@ TEST_F(SimulatorCommandCodec, GoldenTeleportBall) {
   EXPECT_EQ(r.op(), idl::OP_TELEPORT_BALL);
   EXPECT_EQ(r.ball().position().x(), 1.5);
   EXPECT_EQ(r.ball().position().y(), -1.0);
-  EXPECT_EQ(r.ball().position().z(), 0.0);
+  // z is the ball's height above the carpet, as ER-Force's simulator reads it: the centre is a radius higher.
+  EXPECT_EQ(r.ball().position().z(), field_.ball_radius());
   EXPECT_EQ(r.ball().velocity().x(), 2.0);
   EXPECT_EQ(r.ball().velocity().y(), 0.0);  // absent velocities are 0
   EXPECT_EQ(r.ball().velocity().z(), 0.0);
@@ -436,6 +437,25 @@ TEST_F(SimulatorCommandCodec, ByForceIsNamedAndNotDone) {
   ASSERT_EQ(d.errors.size(), 2u);
   EXPECT_EQ(d.errors[0].code, kUnsupportedByForce);
   EXPECT_EQ(d.errors[1].code, kUnsupportedByForce);
+}
+
+// ER-Force's simulator adds the ball's radius to a teleport's z (a ball 0.5 m above the carpet); an absent z keeps
+// the ball's centre at its height now.
+TEST_F(SimulatorCommandCodec, TeleportBallZIsTheHeightAboveTheCarpet) {
+  ws::SimulatorCommand c;
+  auto* b = c.mutable_control()->mutable_teleport_ball();
+  b->set_x(1.0f);
+  b->set_y(1.0f);
+  b->set_z(0.5f);
+  SimulatorCommandDecode d = Convert(c);
+  ASSERT_EQ(d.error, DecodeError::kOk);
+  ASSERT_EQ(d.requests.size(), 1u);
+  EXPECT_NEAR(d.requests[0].ball().position().z(), 0.5 + field_.ball_radius(), 1e-7);
+  b->clear_z();
+  d = Convert(c);
+  ASSERT_EQ(d.error, DecodeError::kOk);
+  ASSERT_EQ(d.requests.size(), 1u);
+  EXPECT_EQ(d.requests[0].ball().position().z(), world_.ball().position().z());
 }
 
 TEST_F(SimulatorCommandCodec, TeleportSafelyPushesRobotsOutOfTheBallsWay) {
