@@ -252,7 +252,7 @@ TEST_F(ViewerBrowser, DrawsTheWorldDragsTheBallPausesAndSavesScreenshots) {
 
   // 3. Pause: simulation time stops, in turf-sim and on the page.
   const std::string running = SimTimeText();
-  ASSERT_TRUE(Within(2000, [&] { return SimTimeText() != running; })) << "time does not advance before pausing";
+  ASSERT_TRUE(Within(30000, [&] { return SimTimeText() != running; })) << "time does not advance before pausing";
   const auto pause = driver_->Find("#pause");
   ASSERT_TRUE(pause);
   ASSERT_TRUE(driver_->Click(*pause)) << driver_->error();
@@ -260,7 +260,7 @@ TEST_F(ViewerBrowser, DrawsTheWorldDragsTheBallPausesAndSavesScreenshots) {
   ASSERT_TRUE(client_->WaitClock([](const idl::Clock& c) { return c.paused(); }));
   const auto paused_frame = static_cast<int64_t>(client_->clock().frame());
   const int64_t sim_paused_at = client_->clock().sim_time_ns();
-  ASSERT_TRUE(Within(3000, [&] { return PagePaused() && PageFrame() == paused_frame; }))
+  ASSERT_TRUE(Within(30000, [&] { return PagePaused() && PageFrame() == paused_frame; }))
       << "page at frame " << PageFrame() << ", turf-sim paused at " << paused_frame;
   const std::string paused_at = SimTimeText();
   // Time stands still: later requests, each a turn of turf-sim's loop that
@@ -272,7 +272,7 @@ TEST_F(ViewerBrowser, DrawsTheWorldDragsTheBallPausesAndSavesScreenshots) {
     ASSERT_TRUE(Ok(probe));
     EXPECT_EQ(static_cast<int64_t>(probe->frame()), paused_frame);
   }
-  ASSERT_TRUE(Within(3000, [&] { return PageReceived("state") > states_before; }));
+  ASSERT_TRUE(Within(30000, [&] { return PageReceived("state") > states_before; }));
   EXPECT_EQ(PageFrame(), paused_frame);
   EXPECT_EQ(SimTimeText(), paused_at);
   client_->Poll();
@@ -284,7 +284,7 @@ TEST_F(ViewerBrowser, DrawsTheWorldDragsTheBallPausesAndSavesScreenshots) {
   EXPECT_TRUE(SavePng(driver_->Screenshot(), "viewer_truth.png")) << driver_->error();
   const auto both = driver_->Find("button[data-view=both]");
   ASSERT_TRUE(both && driver_->Click(*both));
-  EXPECT_TRUE(Within(2000, [&] {
+  EXPECT_TRUE(Within(30000, [&] {
     const auto active =
         driver_->Execute("return document.querySelector('button[data-view=both]').classList.contains('active');");
     return active && *active == true;
@@ -297,16 +297,16 @@ TEST_F(ViewerBrowser, DrawsTheWorldDragsTheBallPausesAndSavesScreenshots) {
   const auto cameras = driver_->Find("button[data-view=cameras]");
   const auto resume = driver_->Find("#resume");
   ASSERT_TRUE(cameras && driver_->Click(*cameras) && resume && driver_->Click(*resume));
-  EXPECT_TRUE(Within(3000, [&] {
+  EXPECT_TRUE(Within(30000, [&] {
     const auto seen = driver_->Execute(
         "const s = window.turfViewer.state(); return !!s && !s.clock.paused && s.detections.length > 0;");
     return seen && *seen == true;
   })) << "no camera detections on the page";
   const auto message = driver_->Find("#message");
-  EXPECT_TRUE(Within(2000, [&] { return message && driver_->Text(*message).value_or("").rfind("resume", 0) == 0; }));
+  EXPECT_TRUE(Within(30000, [&] { return message && driver_->Text(*message).value_or("").rfind("resume", 0) == 0; }));
   // Half a second of simulation with detections on the page before the screenshot.
   const double detections_from = PageTime();
-  EXPECT_TRUE(Within(5000, [&] { return PageTime() > detections_from + 0.5; }));
+  EXPECT_TRUE(Within(30000, [&] { return PageTime() > detections_from + 0.5; }));
   EXPECT_TRUE(SavePng(driver_->Screenshot(), "viewer_cameras.png")) << driver_->error();
   EXPECT_TRUE(client_->WaitClock([](const idl::Clock& c) { return !c.paused(); }));
 
@@ -334,23 +334,23 @@ TEST_F(ViewerBrowser, DrawsTheWorldDragsTheBallPausesAndSavesScreenshots) {
   const int a_replies = replies();  // to its drags, pause, realism and resume so far
   const auto step = driver_->Find("#step");
   ASSERT_TRUE(step && driver_->Click(*step)) << driver_->error();
-  EXPECT_TRUE(Within(3000, [&] { return message_text().rfind("turf-sim refused step (not_allowed): ", 0) == 0; }))
+  EXPECT_TRUE(Within(30000, [&] { return message_text().rfind("turf-sim refused step (not_allowed): ", 0) == 0; }))
       << message_text();
   ASSERT_TRUE(driver_->SwitchTo(*page_b));
   const auto b_pause = driver_->Find("#pause");
   ASSERT_TRUE(b_pause && driver_->Click(*b_pause)) << driver_->error();
-  EXPECT_TRUE(Within(3000, [&] { return message_text().rfind("pause: ok", 0) == 0; })) << message_text();
+  EXPECT_TRUE(Within(30000, [&] { return message_text().rfind("pause: ok", 0) == 0; })) << message_text();
   EXPECT_EQ(replies(), 1);  // its pause's, not A's step's
-  EXPECT_TRUE(Within(3000, [&] { return script_true("return window.turfViewer.state().clock.paused;"); }));
+  EXPECT_TRUE(Within(30000, [&] { return script_true("return window.turfViewer.state().clock.paused;"); }));
   // Page A steps again, now accepted. Its reply comes after B's pause's (turf-sim
   // wrote that first), so A has had both of its replies and, were B's sent to
   // it too, that one as well.
   ASSERT_TRUE(driver_->SwitchTo(*page_a));
   const auto a_step = driver_->Find("#step");
   ASSERT_TRUE(a_step && driver_->Click(*a_step)) << driver_->error();
-  EXPECT_TRUE(Within(3000, [&] { return message_text().rfind("step: ok", 0) == 0; })) << message_text();
+  EXPECT_TRUE(Within(30000, [&] { return message_text().rfind("step: ok", 0) == 0; })) << message_text();
   EXPECT_EQ(replies(), a_replies + 2);  // its two steps', not B's pause's
-  EXPECT_TRUE(Within(3000, [&] { return script_true("return window.turfViewer.state().clock.paused;"); }));
+  EXPECT_TRUE(Within(30000, [&] { return script_true("return window.turfViewer.state().clock.paused;"); }));
 
   EXPECT_EQ(viewer_->Stop(), 0) << viewer_->Log();  // SIGTERM: a clean exit
   EXPECT_NE(viewer_->Log().find("stopped cleanly"), std::string::npos);
@@ -387,7 +387,7 @@ TEST_F(ViewerBrowser, LeggedSceneDrawsRobotsWhereTheirLinksAreAndDragsBallAndRob
   const auto legged = driver_->Execute("return window.turfViewer.legged();");
   ASSERT_TRUE(legged && legged->is_object()) << "no legged scene on the page";
   EXPECT_DOUBLE_EQ((*legged)["field"]["length"].get<double>(), 30.0);
-  ASSERT_TRUE(Within(5000, [&] {
+  ASSERT_TRUE(Within(30000, [&] {
     const auto n = driver_->Execute("return window.turfViewer.leggedDrawn().length;");
     return n && *n == 2;
   }));
@@ -474,7 +474,7 @@ TEST_F(ViewerBrowser, LeggedSceneDrawsRobotsWhereTheirLinksAreAndDragsBallAndRob
   ASSERT_TRUE(pause && driver_->Click(*pause)) << driver_->error();
   ASSERT_TRUE(truth.WaitFor([&] { return truth.clock && truth.clock->paused(); }, 3000));
   const auto paused_frame = static_cast<int64_t>(truth.clock->frame());
-  ASSERT_TRUE(Within(3000, [&] { return PagePaused() && PageFrame() == paused_frame; }))
+  ASSERT_TRUE(Within(30000, [&] { return PagePaused() && PageFrame() == paused_frame; }))
       << "page at frame " << PageFrame() << ", turf-sim paused at " << paused_frame;
   const std::string paused_at = SimTimeText();
   // Later requests are answered at the same frame; the states after them reach
@@ -485,7 +485,7 @@ TEST_F(ViewerBrowser, LeggedSceneDrawsRobotsWhereTheirLinksAreAndDragsBallAndRob
     ASSERT_TRUE(probe);
     EXPECT_EQ(static_cast<int64_t>(probe->frame()), paused_frame);
   }
-  ASSERT_TRUE(Within(3000, [&] { return PageReceived("state") > states_before; }));
+  ASSERT_TRUE(Within(30000, [&] { return PageReceived("state") > states_before; }));
   EXPECT_EQ(PageFrame(), paused_frame);
   EXPECT_EQ(SimTimeText(), paused_at);
   const auto badge = driver_->Execute("return !document.getElementById('paused-badge').classList.contains('hidden');");

@@ -50,7 +50,7 @@ std::optional<json> ReadType(
 
 // Polls `done` until it holds or the timeout passes (counters are updated on
 // the viewer's threads, a moment after the client sees the effect).
-bool Eventually(const std::function<bool()>& done, std::chrono::milliseconds timeout = 3s) {
+bool Eventually(const std::function<bool()>& done, std::chrono::milliseconds timeout = 30s) {
   const auto end = Clock::now() + timeout;
   while (!done()) {
     if (Clock::now() > end) return false;

@@ -238,7 +238,7 @@ TEST(GrsimBridge, KickAndRobotStatus) {
   Fixture f(test::OneRobot());  // blue 0 at the origin facing +x
   ASSERT_TRUE(f.Ready());
   // A first command tells the bridge where blue's status goes.
-  ASSERT_TRUE(f.observer.Wait([&](const idl::WorldState&) { return f.stack.bridge().Stats().commands > 0; }, 3s,
+  ASSERT_TRUE(f.observer.Wait([&](const idl::WorldState&) { return f.stack.bridge().Stats().commands > 0; }, 15s,
                               [&] { f.team.Send(GrsimCommands(false, {GrsimRobot(0)})); }));
   // The ball at rest against the front face.
   wire::grSim_Packet place;
@@ -264,7 +264,7 @@ TEST(GrsimBridge, KickAndRobotStatus) {
         fastest = std::max(fastest, BallSpeed(s));
         return fastest > 1.0;
       },
-      3s, [&] { f.team.Send(GrsimCommands(false, {fastest > 1.0 ? GrsimRobot(0) : kick})); });
+      15s, [&] { f.team.Send(GrsimCommands(false, {fastest > 1.0 ? GrsimRobot(0) : kick})); });
   ASSERT_TRUE(kicked);
   // The first world state after the kick (<= 10 ms of sliding later) shows the commanded speed.
   EXPECT_NEAR(fastest, 4.0, 0.1);
