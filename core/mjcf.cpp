@@ -39,21 +39,6 @@ std::string RobotHullVertices(const RobotParams& r) {
   return v;
 }
 
-// A ball contact as a damped spring that keeps `restitution` of the normal
-// speed, with a half period of several steps so that integration stays
-// stable. In MuJoCo's standard form (timeconst, dampratio) the spring is
-// k = 1 / (timeconst * dampratio)^2 and the damping b = 2 / timeconst; the
-// constant impedance (solimp) keeps them as given.
-struct BallSpring {
-  double timeconst;
-  double dampratio;
-};
-BallSpring BallContactSpring(double restitution, double step) {
-  constexpr double kStepsPerContact = 6.0;
-  const double omega = M_PI / (kStepsPerContact * step);
-  const double zeta = DampingRatioForRestitution(restitution);
-  return {1.0 / (omega * zeta), zeta};
-}
 constexpr const char* kBallSolimp = "0.99 0.99 0.001";
 
 // `geoms` in a static body of their own (no joint: welded to the world).
@@ -123,6 +108,16 @@ std::string FieldGeoms(const FieldParams& f, int wall_segments) {
 }  // namespace
 
 std::string RobotBodyName(Team team, int id) { return fmt::format("{}_{}", TeamName(team), id); }
+
+// A half period of several steps, so that integration stays stable. In MuJoCo's standard form (timeconst,
+// dampratio) the spring is k = 1 / (timeconst * dampratio)^2 and the damping b = 2 / timeconst; the constant
+// impedance (solimp) keeps them as given.
+BallSpring BallContactSpring(double restitution, double step) {
+  constexpr double kStepsPerContact = 6.0;
+  const double omega = M_PI / (kStepsPerContact * step);
+  const double zeta = DampingRatioForRestitution(restitution);
+  return {1.0 / (omega * zeta), zeta};
+}
 
 double DampingRatioForRestitution(double restitution) {
   const double l = std::log(restitution);

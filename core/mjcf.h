@@ -18,6 +18,14 @@ std::string RobotBodyName(Team team, int id);
 // in a bounce (a damped spring: e = exp(-zeta pi / sqrt(1 - zeta^2))).
 double DampingRatioForRestitution(double restitution);
 
+// A ball contact as MuJoCo's solref (timeconst, dampratio): a damped spring that keeps `restitution` of the normal
+// speed, over several physics steps of `step` s.
+struct BallSpring {
+  double timeconst;
+  double dampratio;
+};
+BallSpring BallContactSpring(double restitution, double step);
+
 // Where a robot that is off the field waits: outside the walls, apart from
 // every other parked robot, so it touches nothing.
 Pose2 ParkingPose(const Scene& scene, Team team, int id);

@@ -103,6 +103,7 @@ std::vector<std::string> ValidateScene(const Scene& s) {
   c.Range("robot.kicker.default_chip_angle", r.kicker.default_chip_angle, 0.05, 1.5);
   c.Range("robot.kicker.reach", r.kicker.reach, 0, 0.1);
   c.Range("robot.kicker.arm_time", r.kicker.arm_time, 0, 0.5);
+  c.Range("robot.dribbler.restitution", r.dribbler.restitution, 0.01, 0.95);
   c.Range("robot.dribbler.max_force", r.dribbler.max_force, 0, 100);
   c.Range("robot.dribbler.stiffness", r.dribbler.stiffness, 0, 1e4);
   c.Range("robot.dribbler.damping", r.dribbler.damping, 0, 1e3);

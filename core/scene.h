@@ -87,6 +87,9 @@ struct KickerParams {
 };
 
 struct DribblerParams {
+  // The dribbler bar's bounce: the share of its speed a ball hitting the flat front keeps (ER-Force's simulator:
+  // 0.2 for the bar, against 0.6 for the robot's body), so a pass is caught rather than bounced back.
+  double restitution = 0.2;
   double max_force = 1.0;           // N the dribbler can pull the ball with
   double stiffness = 40.0;          // N/m towards the hold point
   double damping = 2.0;             // N s/m relative to the hold point

@@ -36,6 +36,32 @@ namespace {
 
 MjModelPtr CompileModel(const Scene& scene);
 
+// mj_step for turf's SSL model (Euler) in MuJoCo's own order, with a stage of turf's between MuJoCo's collision
+// and the constraints it makes from the contacts: there a contact's parameters can still change. MuJoCo 2.2.2's
+// mj_step is mj_checkPos, mj_checkVel, mj_forward (mj_fwdPosition's calls below, then mj_sensorPos and the rest
+// of mj_forwardSkip), mj_checkAcc and mj_Euler.
+template <class ContactStage>
+void StepWithContactStage(const mjModel* m, mjData* d, ContactStage contacts) {
+  mj_checkPos(m, d);
+  mj_checkVel(m, d);
+  mj_kinematics(m, d);
+  mj_comPos(m, d);
+  mj_camlight(m, d);
+  mj_tendon(m, d);
+  mj_crb(m, d);
+  mj_factorM(m, d);
+  mj_collision(m, d);
+  contacts();
+  mj_makeConstraint(m, d);
+  mj_transmission(m, d);
+  mj_projectConstraint(m, d);
+  mj_sensorPos(m, d);
+  if (m->opt.enableflags & mjENBL_ENERGY) mj_energyPos(m, d);
+  mj_forwardSkip(m, d, mjSTAGE_POS, 0);
+  mj_checkAcc(m, d);
+  mj_Euler(m, d);
+}
+
 double WrapAngle(double a) { return std::remainder(a, 2.0 * M_PI); }
 
 }  // namespace
@@ -314,11 +340,35 @@ double World::FloorNormalForce() const {
   return 0.0;
 }
 
+// The ball against a robot's flat front (the dribbler bar) bounces with the bar's restitution, not the body's: in
+// MuJoCo's contacts of this step, before they become constraints.
+void World::StageDribblerContacts() {
+  const RobotParams& r = scene_.robot;
+  // The flat front's edges seen from the centre: a contact whose normal lies closer to the heading than they do is
+  // on the front (a sphere on the flat face has the heading as its normal, on the round body a radial one).
+  const double half_face = std::sqrt(r.radius * r.radius - r.center_to_dribbler * r.center_to_dribbler);
+  const double cos_face = r.center_to_dribbler / std::hypot(r.center_to_dribbler, half_face);
+  for (int i = 0; i < data_->ncon; ++i) {
+    mjContact& c = data_->contact[i];
+    const int other = c.geom1 == ball_geom_ ? c.geom2 : (c.geom2 == ball_geom_ ? c.geom1 : -1);
+    if (other < 0) continue;
+    const int body = model_->geom_bodyid[other];
+    if (model_->body_jntnum[body] != 3) continue;  // a robot: x, y, yaw; walls, goals and the carpet have none
+    const double* q = data_->qpos + model_->jnt_qposadr[model_->body_jntadr[body]];
+    const double along = std::abs(c.frame[0] * std::cos(q[2]) + c.frame[1] * std::sin(q[2]));  // |normal . heading|
+    const double ahead = (c.pos[0] - q[0]) * std::cos(q[2]) + (c.pos[1] - q[1]) * std::sin(q[2]);
+    if (along < cos_face || ahead <= 0.0) continue;  // the round body, or the back
+    const BallSpring bar = BallContactSpring(r.dribbler.restitution, scene_.physics.step);
+    c.solref[0] = bar.timeconst;
+    c.solref[1] = bar.dampratio;
+  }
+}
+
 bool World::StagePhysics() {
   last_good_.Accept(model_.get(), data_.get());
   const int bad_before = data_->warning[mjWARN_BADQACC].number + data_->warning[mjWARN_BADQVEL].number +
                          data_->warning[mjWARN_BADQPOS].number;
-  mj_step(model_.get(), data_.get());
+  StepWithContactStage(model_.get(), data_.get(), [this] { StageDribblerContacts(); });
   if (data_->solver_iter >= model_->opt.iterations) ++health_.solver_capped_steps;
   floor_normal_force_ = FloorNormalForce();
   const int bad_after = data_->warning[mjWARN_BADQACC].number + data_->warning[mjWARN_BADQVEL].number +

@@ -4,7 +4,8 @@
 // A step runs in named stages; inputs enter only between steps:
 //   inputs   SetCommand / TeleportBall / TeleportRobot / Reset (validated)
 //   Step():  1 watchdog  2 drive  3 ball handling (kick, dribble)
-//            4 ball model  5 physics (mj_step)  6 containment  7 feedback
+//            4 ball model  5 physics (mj_step's calls; between MuJoCo's collision and its constraints, the dribbler
+//            bar's contacts)  6 containment  7 feedback
 //   outputs  Snapshot() and the accessors (read-only)
 // Time is the step counter times the scene's step: never a wall clock.
 #pragma once
@@ -99,6 +100,7 @@ class World : Pinned {
   void StageDrive();
   void StageBallHandling();
   void StageBallModel();
+  void StageDribblerContacts();
   bool StagePhysics();
   void StageContainment();
   void StageFeedback();

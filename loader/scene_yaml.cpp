@@ -98,6 +98,7 @@ void ReadKicker(MapReader m, KickerParams* k) {
 }
 
 void ReadDribbler(MapReader m, DribblerParams* d) {
+  m.Number("restitution", &d->restitution);
   m.Number("max_force", &d->max_force);
   m.Number("stiffness", &d->stiffness);
   m.Number("damping", &d->damping);

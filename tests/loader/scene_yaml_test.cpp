@@ -188,6 +188,7 @@ TEST(SceneYaml, EveryKeyLandsInItsMember) {
       {"robot.kicker.default_chip_angle_deg", "30", kPi / 6,
        [](const Scene& s) { return s.robot.kicker.default_chip_angle; }},
       {"robot.kicker.reach", "0.02", 0.02, [](const Scene& s) { return s.robot.kicker.reach; }},
+      {"robot.dribbler.restitution", "0.3", 0.3, [](const Scene& s) { return s.robot.dribbler.restitution; }},
       {"robot.dribbler.max_force", "2", 2, [](const Scene& s) { return s.robot.dribbler.max_force; }},
       {"robot.dribbler.stiffness", "50", 50, [](const Scene& s) { return s.robot.dribbler.stiffness; }},
       {"robot.dribbler.damping", "3", 3, [](const Scene& s) { return s.robot.dribbler.damping; }},
